@@ -1,0 +1,25 @@
+#pragma once
+// Wide (4-way) bounding volume hierarchy over triangles. Node bounds are stored in float (rounded outward) for
+// both scalar types so that one SSE instruction tests a ray against four children.
+#include <cstdint>
+#include <vector>
+
+namespace gq {
+
+struct alignas(16) Bvh4Node {
+  // Structure-of-arrays child bounds: lane i belongs to child i.
+  float minX[4], minY[4], minZ[4];
+  float maxX[4], maxY[4], maxZ[4];
+  // child[i]: an inner node index, or a leaf (kLeafBit set): first primitive and count, see bvh kernels.
+  std::uint32_t child[4];
+  static constexpr std::uint32_t kLeafBit = 0x80000000u;
+  static constexpr std::uint32_t kEmpty = 0xffffffffu;
+};
+
+struct Bvh4 {
+  std::vector<Bvh4Node> nodes;  // nodes[0] is the root (absent when the mesh has one leaf's worth or less)
+  std::uint32_t rootChild = Bvh4Node::kEmpty;  // root reference: node index or a leaf
+  std::size_t bytes() const { return nodes.size() * sizeof(Bvh4Node); }
+};
+
+}  // namespace gq

@@ -1,0 +1,112 @@
+#pragma once
+// Cooking: convex hulls (qhull), validated triangle meshes with a BVH, heightfields, and mesh files (assimp).
+// Cooked data is immutable and shared: std::shared_ptr<const X>, safe to use from any number of threads.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gq/bvh.h"
+#include "gq/geometry.h"
+#include "gq/math.h"
+#include "gq/status.h"
+
+namespace gq {
+
+// ---- Convex hull -------------------------------------------------------------------------------------------
+template <class T> struct HullPolygon {
+  Vec3<T> normal;           // outward unit normal
+  T d;                      // plane: dot(normal, x) + d = 0; inside: dot(normal, x) + d <= 0
+  std::uint32_t indexBase;  // first entry in ConvexMesh::polygonVertices
+  std::uint32_t indexCount; // number of vertices, counter-clockwise seen from outside
+};
+
+template <class T> struct ConvexMesh {
+  std::vector<Vec3<T>> vertices;
+  std::vector<HullPolygon<T>> polygons;       // faceIndex of a convex hit is an index in here
+  std::vector<std::uint32_t> polygonVertices; // vertex indices of every polygon, concatenated
+  // Vertex adjacency along hull edges (CSR), for hill-climbing support mapping.
+  std::vector<std::uint32_t> adjacencyOffsets;  // size vertices.size() + 1
+  std::vector<std::uint32_t> adjacency;
+  Bounds3<T> localBounds;
+  Vec3<T> center;  // a strictly interior point (centroid of the vertices)
+};
+
+struct ConvexCookParams {
+  // Facets whose planes agree within this distance, relative to the hull size, merge into one polygon.
+  double planeTolerance = 1e-9;
+};
+
+// Cooks the convex hull of `points` with qhull. Fails with DegenerateMesh for < 4 points or coplanar sets, and
+// InvalidArgument for non-finite points.
+template <class T>
+Status cookConvexMesh(const std::vector<Vec3<T>>& points, std::shared_ptr<const ConvexMesh<T>>& out,
+                      const ConvexCookParams& params = ConvexCookParams());
+
+// ---- Triangle mesh -----------------------------------------------------------------------------------------
+using TriangleIndices = std::array<std::uint32_t, 3>;
+inline constexpr std::uint32_t kRemovedTriangle = 0xffffffffu;
+
+template <class T> struct TriangleMesh {
+  std::vector<Vec3<T>> vertices;           // as given
+  std::vector<TriangleIndices> triangles;  // cooked order (BVH leaf order), degenerate triangles removed
+  std::vector<std::uint32_t> inputIndex;   // cooked -> input triangle index (reported as faceIndex)
+  std::vector<std::uint32_t> cookedIndex;  // input -> cooked index, kRemovedTriangle if removed
+  Bvh4 bvh;
+  Bounds3<T> localBounds;
+  std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
+};
+
+struct MeshCookReport {
+  std::uint32_t inputTriangles = 0;
+  std::uint32_t removedDegenerate = 0;  // zero-area (or collinear) triangles dropped
+  std::uint32_t cookedTriangles = 0;
+  std::size_t bvhBytes = 0;
+};
+
+// Validates and cooks a triangle mesh: indices out of range and non-finite vertices fail (InvalidArgument);
+// zero-area triangles are removed and counted; a mesh with no triangle left fails (DegenerateMesh).
+template <class T>
+Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<TriangleIndices>& triangles,
+                        std::shared_ptr<const TriangleMesh<T>>& out, MeshCookReport* report = nullptr);
+
+// ---- Heightfield -------------------------------------------------------------------------------------------
+template <class T> struct HeightFieldDesc {
+  std::uint32_t rows = 0;     // samples along local X
+  std::uint32_t columns = 0;  // samples along local Z
+  std::vector<T> heights;     // rows * columns, row-major: heights[row * columns + column]
+  std::vector<std::uint32_t> holes;  // cell indices (row * (columns - 1) + column) with no triangles
+};
+
+// Cell (r, c) has corners v00=(r,c), v01=(r,c+1), v10=(r+1,c), v11=(r+1,c+1) and two triangles:
+// 2*cell = (v00, v01, v10) and 2*cell+1 = (v01, v11, v10); both face +Y when the scales are positive.
+template <class T> struct HeightField {
+  std::uint32_t rows = 0, columns = 0;
+  std::vector<T> heights;
+  std::vector<std::uint8_t> hole;  // per cell
+  T minHeight = T(0), maxHeight = T(0);
+  // Per-block height range for raycast/overlap culling: blocks of kBlock x kBlock cells.
+  static constexpr std::uint32_t kBlock = 8;
+  std::uint32_t blockRows = 0, blockColumns = 0;
+  std::vector<T> blockMin, blockMax;
+  T height(std::uint32_t r, std::uint32_t c) const { return heights[std::size_t(r) * columns + c]; }
+  bool isHole(std::uint32_t r, std::uint32_t c) const { return hole[std::size_t(r) * (columns - 1) + c] != 0; }
+};
+
+template <class T>
+Status cookHeightField(const HeightFieldDesc<T>& desc, std::shared_ptr<const HeightField<T>>& out);
+
+// ---- Mesh files --------------------------------------------------------------------------------------------
+template <class T> struct MeshData {
+  std::vector<Vec3<T>> vertices;
+  std::vector<TriangleIndices> triangles;
+};
+
+// Loads OBJ, STL (ASCII and binary) and DAE through assimp; all meshes of the file are merged in world frame of
+// the file's node hierarchy, except that a DAE root-node transform (its up-axis) is ignored when
+// `ignoreRootTransform` is set (what ROS tools do). Missing file: FileError; malformed: ParseError.
+template <class T>
+Status loadMeshFile(const std::string& path, MeshData<T>& out, bool ignoreRootTransform = false);
+
+}  // namespace gq

@@ -1,0 +1,82 @@
+#pragma once
+// The geometry queries (the spec's PxGeometryQuery). All functions:
+//  - take every vector and pose in one (world) space and answer in it;
+//  - validate their input and return a Status; on failure they write no output;
+//  - never throw;
+//  - are instantiated for float and double.
+#include <cstdint>
+
+#include "gq/geometry.h"
+#include "gq/hit.h"
+#include "gq/math.h"
+#include "gq/status.h"
+#include "gq/tolerances.h"
+#include "gq/transform.h"
+
+namespace gq {
+
+// Raycast against one geometry. maxDist in [0, inf); maxHits >= 1; `hits` holds maxHits entries.
+// Solids (sphere, capsule, box, convex, custom) and planes report at most one hit; meshes and heightfields
+// report up to maxHits with HitFlag::MeshMultiple. `hitCount` receives the number of hits written.
+template <class T>
+Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount);
+
+// World AABB of `geom` at `pose`: extents grow by `offset`, then scale about the centre by `inflation`.
+template <class T>
+Status computeGeomBounds(Bounds3<T>& bounds, const Geometry<T>& geom, const Transform<T>& pose, T offset = T(0),
+                         T inflation = T(tol::kDefaultBoundsInflation));
+
+template <class T> struct PointDistanceResult {
+  T distance = T(0);                  // Euclidean (not squared); 0 inside a solid
+  Vec3<T> closestPoint = Vec3<T>::Zero();
+  std::uint32_t closestIndex = kInvalidFaceIndex;  // triangle index for meshes
+};
+
+// Distance from a point to a sphere, capsule, box, convex or triangle mesh (others: Unsupported).
+template <class T>
+Status pointDistance(const Vec3<T>& point, const Geometry<T>& geom, const Transform<T>& pose,
+                     PointDistanceResult<T>& result);
+
+// Boolean overlap; touching counts as overlapping. Plane vs plane/mesh/heightfield: Unsupported.
+template <class T>
+Status overlap(const Geometry<T>& geom0, const Transform<T>& pose0, const Geometry<T>& geom1,
+               const Transform<T>& pose1, bool& overlapping);
+
+template <class T> struct PenetrationResult {
+  bool penetrating = false;
+  Vec3<T> direction = Vec3<T>::Zero();  // unit; translate geom0 by direction * depth to separate
+  T depth = T(0);                       // >= 0
+};
+
+// Minimum translational distance (MTD) for convex pairs (including plane and custom convex).
+template <class T>
+Status computePenetration(PenetrationResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
+                          const Geometry<T>& geom1, const Transform<T>& pose1);
+
+template <class T> struct DistanceResult {
+  T distance = T(0);                 // signed: > 0 separation, < 0 penetration depth (convex pairs)
+  Vec3<T> point0 = Vec3<T>::Zero();  // witness on geom0 (world)
+  Vec3<T> point1 = Vec3<T>::Zero();  // witness on geom1 (world)
+  Vec3<T> normal = Vec3<T>::Zero();  // unit, from geom0 towards geom1
+};
+
+// Warm-start state for distance(): pass the same cache for the same pair across frames.
+template <class T> struct GjkCache {
+  Vec3<T> direction = Vec3<T>::Zero();  // last separating direction, in geom0's local frame (0 = cold)
+  std::uint32_t iterations = 0;         // iterations the last call took (diagnostic)
+};
+
+// Signed separation distance with witness points and normal.
+template <class T>
+Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
+                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache = nullptr);
+
+// Sweeps geom0 from pose0 along unitDir up to maxDist against geom1 at pose1. `hasHit` says whether `hit` was
+// written. `inflation` grows geom0 by a rounded shell.
+template <class T>
+Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const Transform<T>& pose0,
+             const Geometry<T>& geom1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit,
+             HitFlags hitFlags = kDefaultHitFlags, T inflation = T(0));
+
+}  // namespace gq

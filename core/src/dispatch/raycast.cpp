@@ -1,0 +1,66 @@
+// Raycast façade: validation, then one dispatch table indexed by GeometryType.
+#include <array>
+
+#include "common/validate.h"
+#include "gq/query.h"
+#include "raycast/raycast.h"
+
+namespace gq {
+namespace {
+
+template <class T> using RaycastFn = std::uint32_t (*)(const Geometry<T>&, const Transform<T>&,
+                                                        const detail::RayQuery<T>&, RaycastHit<T>*);
+
+// Adapts a kernel on a concrete geometry type to the table's signature.
+template <class T, class G,
+          std::uint32_t (*Kernel)(const G&, const Transform<T>&, const detail::RayQuery<T>&, RaycastHit<T>*)>
+std::uint32_t call(const Geometry<T>& g, const Transform<T>& pose, const detail::RayQuery<T>& ray, RaycastHit<T>* hits) {
+  return Kernel(g.template get<G>(), pose, ray, hits);
+}
+
+template <class T> constexpr std::array<RaycastFn<T>, kGeometryTypeCount> kRaycastTable = {
+    call<T, SphereGeometry<T>, detail::raycastSphere<T>>,
+    call<T, PlaneGeometry<T>, detail::raycastPlane<T>>,
+    call<T, CapsuleGeometry<T>, detail::raycastCapsule<T>>,
+    call<T, BoxGeometry<T>, detail::raycastBox<T>>,
+    call<T, ConvexMeshGeometry<T>, detail::raycastConvex<T>>,
+    call<T, TriangleMeshGeometry<T>, detail::raycastTriangleMesh<T>>,
+    call<T, HeightFieldGeometry<T>, detail::raycastHeightField<T>>,
+    call<T, CustomGeometry<T>, detail::raycastCustom<T>>,
+};
+
+template <class T>
+Status validateRaycast(const Vec3<T>& origin, const Vec3<T>& dir, const Geometry<T>& geom, const Transform<T>& pose,
+                       T maxDist, HitFlags flags, std::uint32_t maxHits, const RaycastHit<T>* hits) {
+  if (Status s = detail::checkFinite(origin, "ray origin"); !s.ok()) return s;
+  if (Status s = detail::checkUnitDirection(dir, "ray direction"); !s.ok()) return s;
+  if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
+  if (maxHits == 0) return Status::invalid("maxHits must be >= 1");
+  if (hits == nullptr) return Status::invalid("hit buffer is null");
+  if (flags.has(HitFlag::Mtd) || flags.has(HitFlag::PreciseSweep) || flags.has(HitFlag::AssumeNoInitialOverlap))
+    return Status::invalid("mtd, preciseSweep and assumeNoInitialOverlap are sweep flags, not raycast flags");
+  return detail::checkGeometryAndPose(geom, pose, "geometry pose");
+}
+
+}  // namespace
+
+template <class T>
+Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = validateRaycast(origin, unitDir, geom, pose, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
+    // Several hits only with MeshMultiple (the spec); solids cap themselves at one.
+    const std::uint32_t cap = hitFlags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
+    const detail::RayQuery<T> ray{origin, unitDir, maxDist, hitFlags, cap};
+    hitCount = kRaycastTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, ray, hits);
+    return Status();
+  });
+}
+
+template Status raycast<float>(const Vec3<float>&, const Vec3<float>&, const Geometry<float>&, const Transform<float>&,
+                               float, HitFlags, std::uint32_t, RaycastHit<float>*, std::uint32_t&);
+template Status raycast<double>(const Vec3<double>&, const Vec3<double>&, const Geometry<double>&,
+                                const Transform<double>&, double, HitFlags, std::uint32_t, RaycastHit<double>*,
+                                std::uint32_t&);
+
+}  // namespace gq

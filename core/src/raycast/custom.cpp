@@ -1,0 +1,14 @@
+// PLACEHOLDER: replaced by the real kernel.
+#include "raycast/raycast.h"
+
+namespace gq::detail {
+
+template <class T>
+std::uint32_t raycastCustom(const CustomGeometry<T>&, const Transform<T>&, const RayQuery<T>&, RaycastHit<T>*) {
+  return 0;
+}
+
+template std::uint32_t raycastCustom<float>(const CustomGeometry<float>&, const Transform<float>&, const RayQuery<float>&, RaycastHit<float>*);
+template std::uint32_t raycastCustom<double>(const CustomGeometry<double>&, const Transform<double>&, const RayQuery<double>&, RaycastHit<double>*);
+
+}  // namespace gq::detail

@@ -1,0 +1,14 @@
+// PLACEHOLDER: replaced by the real kernel.
+#include "raycast/raycast.h"
+
+namespace gq::detail {
+
+template <class T>
+std::uint32_t raycastSphere(const SphereGeometry<T>&, const Transform<T>&, const RayQuery<T>&, RaycastHit<T>*) {
+  return 0;
+}
+
+template std::uint32_t raycastSphere<float>(const SphereGeometry<float>&, const Transform<float>&, const RayQuery<float>&, RaycastHit<float>*);
+template std::uint32_t raycastSphere<double>(const SphereGeometry<double>&, const Transform<double>&, const RayQuery<double>&, RaycastHit<double>*);
+
+}  // namespace gq::detail

@@ -1,0 +1,13 @@
+# cmake -P script: install, configure a consumer against the prefix, build it, run it.
+file(REMOVE_RECURSE ${GQ_WORK_DIR})
+set(prefix ${GQ_WORK_DIR}/prefix)
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endfunction()
+run(${CMAKE_COMMAND} --install ${GQ_BUILD_DIR} --prefix ${prefix} --component Unspecified)
+run(${CMAKE_COMMAND} -S ${GQ_CONSUMER_DIR} -B ${GQ_WORK_DIR}/build -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} --build ${GQ_WORK_DIR}/build)
+run(${GQ_WORK_DIR}/build/consumer)
