@@ -2,9 +2,6 @@
 #include "bounds/bounds.h"
 namespace gq::detail {
 template <class T> Bounds3<T> boundsTriangleMesh(const TriangleMeshGeometry<T>&, const Transform<T>&) { return {}; }
-template <class T> Bounds3<T> boundsHeightField(const HeightFieldGeometry<T>&, const Transform<T>&) { return {}; }
 template Bounds3<float> boundsTriangleMesh<float>(const TriangleMeshGeometry<float>&, const Transform<float>&);
 template Bounds3<double> boundsTriangleMesh<double>(const TriangleMeshGeometry<double>&, const Transform<double>&);
-template Bounds3<float> boundsHeightField<float>(const HeightFieldGeometry<float>&, const Transform<float>&);
-template Bounds3<double> boundsHeightField<double>(const HeightFieldGeometry<double>&, const Transform<double>&);
 }  // namespace gq::detail
