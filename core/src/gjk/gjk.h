@@ -1,0 +1,112 @@
+#pragma once
+// GJK distance, GJK boolean overlap and EPA penetration on two support-mapped convex shapes, in world space.
+//
+// A shape is a "core" (point, segment, box, scaled convex hull or custom convex) swept by a ball of radius
+// `margin`: spheres are points + radius and capsules are segments + radius, so GJK stays exact on curved shapes
+// (it only ever runs on the polytope-like cores; the margins are subtracted in closed form afterwards).
+//
+// Sign conventions (shared with gq::distance):
+//  - normal is unit and points from shape a towards shape b;
+//  - point0 lies on a's surface, point1 on b's surface, and point1 = point0 + distance * normal;
+//  - for penetration (distance < 0), translating b by depth * normal (or a by -depth * normal) separates them.
+#include <array>
+#include <cstdint>
+#include <limits>
+
+#include "gq/cooking.h"
+#include "gq/custom.h"
+#include "gq/geometry.h"
+#include "gq/query.h"
+#include "gq/status.h"
+#include "gq/tolerances.h"
+#include "gq/transform.h"
+
+namespace gq::detail {
+
+// Convex hulls with more vertices than this use hill-climbing over the hull's edge adjacency; smaller ones are
+// searched exhaustively (cheaper than the climb's bookkeeping).
+inline constexpr std::uint32_t kHillClimbMinVertices = 32;
+// GJK/EPA stopping tolerance = max(Rel<T>::kGjkTolerance, kGjkRoundoffUlps * machine epsilon) * length scale:
+// the floor keeps float from chasing an error bound below its own rounding of the support points.
+inline constexpr double kGjkRoundoffUlps = 16.0;
+inline constexpr std::uint32_t kGjkMaxIterations = 128;
+inline constexpr std::uint32_t kEpaMaxIterations = 128;
+
+// A support mapping for one convex Geometry<T> at a pose. Holds raw pointers into the geometry's cooked data or
+// callbacks: it must not outlive the Geometry it was made from.
+template <class T> struct ConvexShape {
+  enum class Kind : std::uint8_t { Point, Segment, Box, Hull, Custom };
+
+  Kind kind = Kind::Point;
+  Transform<T> pose;
+  T margin = T(0);                              // radius of the rounded shell (sphere, capsule), else 0
+  Vec3<T> halfExtents = Vec3<T>::Zero();        // box half extents; segment: (halfHeight, 0, 0)
+  const ConvexMesh<T>* hull = nullptr;          // Kind::Hull
+  Mat3<T> hullScale = Mat3<T>::Identity();      // symmetric MeshScale matrix (Kind::Hull)
+  bool hullScaled = false;                      // false: hullScale is the identity
+  const CustomGeometryCallbacks<T>* custom = nullptr;  // Kind::Custom
+  T size = T(0);                                // length scale of the shape (bounding radius incl. margin)
+  mutable std::uint32_t climbStart = 0;         // hill-climbing warm start (last support vertex)
+
+  // Point of the core farthest along `dir` (world, need not be unit), in world space.
+  Vec3<T> support(const Vec3<T>& dir) const { return pose.transform(supportLocal(pose.rotateInv(dir))); }
+  // Same in the shape's local frame.
+  Vec3<T> supportLocal(const Vec3<T>& dirLocal) const;
+  // A point inside the core (world).
+  Vec3<T> center() const;
+};
+
+// Sphere, capsule, box, convex mesh and convex custom geometry (check isConvexShapeType first; planes, meshes and
+// heightfields have no bounded support mapping).
+bool isConvexShapeType(GeometryType type);
+template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Transform<T>& pose);
+
+// Support point of the Minkowski difference a - b, with the two points it came from (needed for witnesses).
+template <class T> struct SupportPoint {
+  Vec3<T> w = Vec3<T>::Zero();  // a - b
+  Vec3<T> a = Vec3<T>::Zero();  // on a's core
+  Vec3<T> b = Vec3<T>::Zero();  // on b's core
+};
+
+template <class T> struct GjkSimplex {
+  std::array<SupportPoint<T>, 4> points;
+  std::uint32_t size = 0;
+};
+
+template <class T> struct GjkResult {
+  Status status;               // Ok, or NotConverged when the final error bound exceeds the tolerance
+  bool coresOverlap = false;   // the cores intersect (within tolerance): run EPA for depth and normal
+  T distance = T(0);           // shapes' signed distance = core distance - margins (valid when !coresOverlap)
+  Vec3<T> point0 = Vec3<T>::Zero();  // on a's surface (world)
+  Vec3<T> point1 = Vec3<T>::Zero();  // on b's surface (world)
+  Vec3<T> normal = Vec3<T>::UnitX(); // unit, from a to b
+  T errorBound = T(0);         // upper bound on |core distance - exact| (from the duality gap)
+  std::uint32_t iterations = 0;
+  GjkSimplex<T> simplex;       // final simplex (handed to EPA when the cores overlap)
+};
+
+// Distance between a and b. `cache` (optional): warm-start direction in a's local frame, updated on return.
+template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache = nullptr);
+
+// Boolean overlap of the full shapes (margins included); returns as soon as a separating axis is found.
+// Touching counts as overlapping.
+template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b);
+
+template <class T> struct EpaResult {
+  Status status;                     // Ok, or NotConverged (best face found is reported)
+  T depth = T(0);                    // >= 0 penetration depth of the full shapes (margins included)
+  Vec3<T> normal = Vec3<T>::UnitX(); // unit, from a to b: translate b by depth * normal to separate
+  Vec3<T> point0 = Vec3<T>::Zero();  // deepest point of a inside b (world), on a's surface
+  Vec3<T> point1 = Vec3<T>::Zero();  // deepest point of b inside a, on b's surface: point1 = point0 - depth*normal
+  std::uint32_t iterations = 0;
+};
+
+// Penetration depth and normal of two overlapping shapes. Runs GJK first; if the cores are separated the answer
+// is GJK's in closed form (depth = max(0, -distance): exact for rounded shells), else EPA on the cores. `start` (optional) is an enclosing simplex from gjkDistance.
+template <class T>
+EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkSimplex<T>* start = nullptr);
+
+// GJK/EPA stopping tolerance for a pair (see kGjkRoundoffUlps).
+template <class T> T gjkTolerance(const ConvexShape<T>& a, const ConvexShape<T>& b);
+
+}  // namespace gq::detail

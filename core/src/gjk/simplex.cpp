@@ -1,0 +1,137 @@
+// Signed-volume closest point on a simplex (see simplex.h).
+#include "gjk/simplex.h"
+
+#include <cmath>
+
+namespace gq::detail {
+namespace {
+
+// A sub-simplex candidate: indices into the simplex, weights and the closest point.
+template <class T> struct Candidate {
+  std::array<std::uint32_t, 4> index = {0, 0, 0, 0};
+  std::array<T, 4> lambda = {T(1), T(0), T(0), T(0)};
+  std::uint32_t count = 1;
+  Vec3<T> v = Vec3<T>::Zero();
+  bool containsOrigin = false;
+};
+
+template <class T> constexpr T kDegenerate = T(16) * std::numeric_limits<T>::epsilon();
+
+template <class T> Candidate<T> vertexCandidate(const GjkSimplex<T>& s, std::uint32_t i) {
+  Candidate<T> c;
+  c.index[0] = i;
+  c.v = s.points[i].w;
+  return c;
+}
+
+template <class T> const Candidate<T>& closer(const Candidate<T>& x, const Candidate<T>& y) {
+  return y.v.squaredNorm() < x.v.squaredNorm() ? y : x;
+}
+
+// Segment i-j: t = -p_i.(p_j - p_i) / |p_j - p_i|^2, clamped to the end points.
+template <class T> Candidate<T> segmentCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j) {
+  const Vec3<T>& p = s.points[i].w;
+  const Vec3<T> e = s.points[j].w - p;
+  const T ee = e.squaredNorm();
+  if (!(ee > T(0))) return vertexCandidate(s, i);
+  const T t = -p.dot(e) / ee;
+  if (t <= T(0)) return vertexCandidate(s, i);
+  if (t >= T(1)) return vertexCandidate(s, j);
+  Candidate<T> c;
+  c.index = {i, j, 0, 0};
+  c.count = 2;
+  c.lambda = {T(1) - t, t, T(0), T(0)};
+  c.v = p + t * e;
+  return c;
+}
+
+template <class T>
+Candidate<T> bestEdge(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+  const Candidate<T> a = segmentCandidate(s, i, j), b = segmentCandidate(s, j, k), c = segmentCandidate(s, k, i);
+  return closer(closer(a, b), c);
+}
+
+// Triangle i-j-k: project the origin on the plane; the weights are the signed areas of the sub-triangles
+// (dotted with the normal n) over |n|^2. Outside the triangle (or degenerate) the closest point is on an edge.
+template <class T>
+Candidate<T> triangleCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+  const Vec3<T>&p0 = s.points[i].w, &p1 = s.points[j].w, &p2 = s.points[k].w;
+  const Vec3<T> n = (p1 - p0).cross(p2 - p0);
+  const T nn = n.squaredNorm();
+  const T edge2 = std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()});
+  if (!(nn > kDegenerate<T> * edge2 * edge2 * kDegenerate<T>)) return bestEdge(s, i, j, k);
+  const Vec3<T> p = n * (n.dot(p0) / nn);
+  const T l0 = n.dot((p1 - p).cross(p2 - p)) / nn;
+  const T l1 = n.dot((p2 - p).cross(p0 - p)) / nn;
+  const T l2 = T(1) - l0 - l1;
+  if (!(l0 > T(0) && l1 > T(0) && l2 > T(0))) return bestEdge(s, i, j, k);
+  Candidate<T> c;
+  c.index = {i, j, k, 0};
+  c.count = 3;
+  c.lambda = {l0, l1, l2, T(0)};
+  c.v = l0 * p0 + l1 * p1 + l2 * p2;
+  return c;
+}
+
+template <class T> Candidate<T> bestFace(const GjkSimplex<T>& s) {
+  const Candidate<T> a = triangleCandidate(s, 0, 1, 2), b = triangleCandidate(s, 0, 1, 3);
+  const Candidate<T> c = triangleCandidate(s, 0, 2, 3), d = triangleCandidate(s, 1, 2, 3);
+  return closer(closer(a, b), closer(c, d));
+}
+
+template <class T> T tripleProduct(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) { return a.dot(b.cross(c)); }
+
+// Tetrahedron: the origin's barycentric weights are signed volumes with the origin replacing one vertex.
+template <class T> Candidate<T> tetrahedronCandidate(const GjkSimplex<T>& s) {
+  const Vec3<T>&p0 = s.points[0].w, &p1 = s.points[1].w, &p2 = s.points[2].w, &p3 = s.points[3].w;
+  const T det = tripleProduct<T>(p1 - p0, p2 - p0, p3 - p0);
+  T edge = T(0);
+  for (const auto& q : {p1, p2, p3}) edge = std::max(edge, (q - p0).norm());
+  if (!(std::abs(det) > kDegenerate<T> * edge * edge * edge)) return bestFace(s);
+  const Vec3<T> o = Vec3<T>::Zero();
+  const std::array<T, 4> l = {tripleProduct<T>(p1 - o, p2 - o, p3 - o) / det,
+                              tripleProduct<T>(p0 - o, p3 - o, p2 - o) / det,
+                              tripleProduct<T>(p0 - o, p1 - o, p3 - o) / det,
+                              tripleProduct<T>(p0 - o, p2 - o, p1 - o) / det};
+  if (!(l[0] > T(0) && l[1] > T(0) && l[2] > T(0) && l[3] > T(0))) return bestFace(s);
+  Candidate<T> c;
+  c.index = {0, 1, 2, 3};
+  c.count = 4;
+  c.lambda = l;
+  c.v = Vec3<T>::Zero();
+  c.containsOrigin = true;
+  return c;
+}
+
+}  // namespace
+
+template <class T> SimplexClosest<T> closestOnSimplex(GjkSimplex<T>& s) {
+  Candidate<T> c;
+  switch (s.size) {
+    case 1: c = vertexCandidate(s, 0); break;
+    case 2: c = segmentCandidate(s, 0, 1); break;
+    case 3: c = triangleCandidate(s, 0, 1, 2); break;
+    default: c = tetrahedronCandidate(s); break;
+  }
+  GjkSimplex<T> reduced;
+  for (std::uint32_t k = 0; k < c.count; ++k) reduced.points[k] = s.points[c.index[k]];
+  reduced.size = c.count;
+  s = reduced;
+  return SimplexClosest<T>{c.v, c.lambda, c.containsOrigin};
+}
+
+template <class T> void simplexWitnesses(const GjkSimplex<T>& s, const std::array<T, 4>& lambda, Vec3<T>& a, Vec3<T>& b) {
+  a.setZero();
+  b.setZero();
+  for (std::uint32_t k = 0; k < s.size; ++k) {
+    a += lambda[k] * s.points[k].a;
+    b += lambda[k] * s.points[k].b;
+  }
+}
+
+template SimplexClosest<float> closestOnSimplex<float>(GjkSimplex<float>&);
+template SimplexClosest<double> closestOnSimplex<double>(GjkSimplex<double>&);
+template void simplexWitnesses<float>(const GjkSimplex<float>&, const std::array<float, 4>&, Vec3<float>&, Vec3<float>&);
+template void simplexWitnesses<double>(const GjkSimplex<double>&, const std::array<double, 4>&, Vec3<double>&, Vec3<double>&);
+
+}  // namespace gq::detail
