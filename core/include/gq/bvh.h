@@ -14,6 +14,17 @@ struct alignas(16) Bvh4Node {
   std::uint32_t child[4];
   static constexpr std::uint32_t kLeafBit = 0x80000000u;
   static constexpr std::uint32_t kEmpty = 0xffffffffu;
+  // Leaf reference layout: kLeafBit | (count - 1) << kLeafCountShift | first primitive (28 bits).
+  static constexpr std::uint32_t kLeafCountShift = 28;
+  static constexpr std::uint32_t kMaxLeafSize = 4;
+  static constexpr std::uint32_t kLeafFirstMask = (1u << kLeafCountShift) - 1u;
+
+  static constexpr std::uint32_t makeLeaf(std::uint32_t first, std::uint32_t count) {
+    return kLeafBit | ((count - 1u) << kLeafCountShift) | first;
+  }
+  static constexpr bool isLeaf(std::uint32_t ref) { return (ref & kLeafBit) != 0 && ref != kEmpty; }
+  static constexpr std::uint32_t leafFirst(std::uint32_t ref) { return ref & kLeafFirstMask; }
+  static constexpr std::uint32_t leafCount(std::uint32_t ref) { return ((ref >> kLeafCountShift) & 7u) + 1u; }
 };
 
 struct Bvh4 {

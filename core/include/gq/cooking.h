@@ -55,6 +55,9 @@ template <class T> struct TriangleMesh {
   std::vector<std::uint32_t> cookedIndex;  // input -> cooked index, kRemovedTriangle if removed
   Bvh4 bvh;
   Bounds3<T> localBounds;
+  // Vertices on the convex hull of the used vertices (all used vertices when the mesh is flat): the exact
+  // world AABB under any scale and pose is the AABB of these.
+  std::vector<std::uint32_t> hullVertices;
   std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
 };
 

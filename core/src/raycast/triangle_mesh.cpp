@@ -1,14 +1,156 @@
-// PLACEHOLDER: replaced by the real kernel.
+// Raycast against a triangle mesh (spec "Raycasts against Triangle Meshes"). The ray is taken into mesh space,
+// x_mesh = S^-1 R^T (x_world - p), keeping its parameter: o' + t d' maps to o + t dir, so t is the world distance
+// even under non-uniform scale. Triangles are tested with the watertight test (mesh/triangle.h) in T; the BVH4
+// (bvh/traverse.h) is walked front to back with the closest distance found so far as early-out.
+// Modes: closest hit (default), any hit (AnyHit, maxHits 1), or up to maxHits hits (MeshMultiple): we keep the
+// maxHits closest hits and return them sorted by distance.
+#include <algorithm>
+
+#include "bvh/traverse.h"
+#include "mesh/mesh_instance.h"
+#include "mesh/triangle.h"
 #include "raycast/raycast.h"
 
 namespace gq::detail {
+namespace {
 
-template <class T>
-std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>&, const Transform<T>&, const RayQuery<T>&, RaycastHit<T>*) {
-  return 0;
+template <class T> struct RawHit {
+  std::uint32_t cooked;
+  TriangleRayHit<T> tri;
+};
+
+// Float upper bound of a T distance, for the BVH's float slab tests.
+template <class T> float floatCeil(T t) {
+  const float f = static_cast<float>(t);
+  return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-template std::uint32_t raycastTriangleMesh<float>(const TriangleMeshGeometry<float>&, const Transform<float>&, const RayQuery<float>&, RaycastHit<float>*);
-template std::uint32_t raycastTriangleMesh<double>(const TriangleMeshGeometry<double>&, const Transform<double>&, const RayQuery<double>&, RaycastHit<double>*);
+template <class T> class MeshRaycaster {
+ public:
+  MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir, bool cullBackFaces)
+      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), bvhRay_(makeBvhRay(org, dir)), cull_(cullBackFaces) {}
+
+  bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
+    const TriangleIndices& idx = mesh_.triangles[cooked];
+    return intersectRayTriangle(ray_, mesh_.vertices[idx[0]], mesh_.vertices[idx[1]], mesh_.vertices[idx[2]], maxT,
+                                cull_, hit);
+  }
+
+  // Closest hit (anyHit = false) or the first hit found (anyHit = true) within maxDist.
+  bool single(T maxDist, bool anyHit, RawHit<T>& best) const {
+    T bestT = maxDist;
+    float tMax = floatCeil(maxDist);
+    bool found = false;
+    traverseRay(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t first, std::uint32_t count) {
+      for (std::uint32_t c = first; c < first + count; ++c) {
+        TriangleRayHit<T> h;
+        if (!testTriangle(c, bestT, h)) continue;
+        // Equal distances (shared edges) keep the lower input index, so the answer does not depend on the tree.
+        if (found && h.t == bestT && mesh_.inputIndex[c] > mesh_.inputIndex[best.cooked]) continue;
+        best = RawHit<T>{c, h};
+        bestT = h.t;
+        found = true;
+        if (anyHit) return true;
+      }
+      tMax = floatCeil(bestT);
+      return false;
+    });
+    return found;
+  }
+
+  // Up to `cap` closest hits within maxDist, sorted by distance.
+  std::uint32_t multiple(T maxDist, std::uint32_t cap, std::vector<RawHit<T>>& hits) const {
+    auto farther = [](const RawHit<T>& a, const RawHit<T>& b) { return a.tri.t < b.tri.t; };  // max-heap on t
+    T limit = maxDist;
+    float tMax = floatCeil(maxDist);
+    traverseRay(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t first, std::uint32_t count) {
+      for (std::uint32_t c = first; c < first + count; ++c) {
+        TriangleRayHit<T> h;
+        if (!testTriangle(c, limit, h)) continue;
+        if (hits.size() == cap) {
+          std::pop_heap(hits.begin(), hits.end(), farther);
+          hits.pop_back();
+        }
+        hits.push_back(RawHit<T>{c, h});
+        std::push_heap(hits.begin(), hits.end(), farther);
+        // Once full, only hits closer than the farthest kept one matter.
+        if (hits.size() == cap) {
+          limit = hits.front().tri.t;
+          tMax = floatCeil(limit);
+        }
+      }
+      return false;
+    });
+    std::sort_heap(hits.begin(), hits.end(), farther);
+    return std::uint32_t(hits.size());
+  }
+
+ private:
+  const TriangleMesh<T>& mesh_;
+  WatertightRay<T> ray_;
+  BvhRay bvhRay_;
+  bool cull_;
+};
+
+// Fills the requested fields of one hit. The world normal of the (reported-order) triangle is S^-1 n_mesh rotated by
+// the pose, with S^-1 = S^-T: under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way.
+template <class T>
+RaycastHit<T> makeHit(const MeshInstance<T>& inst, const RayQuery<T>& ray, bool doubleSided, const RawHit<T>& raw) {
+  RaycastHit<T> hit;
+  hit.distance = raw.tri.t;
+  hit.faceIndex = inst.mesh.inputIndex[raw.cooked];
+  HitFlags flags = HitFlag::FaceIndex;
+  if (ray.flags.has(HitFlag::Position)) {
+    hit.position = ray.origin + ray.dir * raw.tri.t;
+    flags |= HitFlag::Position;
+  }
+  if (ray.flags.has(HitFlag::Normal)) {
+    const TriangleIndices& idx = inst.mesh.triangles[raw.cooked];
+    const Vec3<T>& v0 = inst.mesh.vertices[idx[0]];
+    const Vec3<T> meshNormal = (inst.mesh.vertices[idx[1]] - v0).cross(inst.mesh.vertices[idx[2]] - v0);
+    Vec3<T> n = inst.pose.rotate(inst.invScale * meshNormal);
+    const T len = n.norm();
+    n = len > T(0) ? Vec3<T>(n / len) : Vec3<T>(-ray.dir);
+    if (doubleSided && !raw.tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
+    hit.normal = n;
+    flags |= HitFlag::Normal;
+  }
+  if (ray.flags.has(HitFlag::UV)) {
+    hit.u = inst.flips ? raw.tri.v : raw.tri.u;
+    hit.v = inst.flips ? raw.tri.u : raw.tri.v;
+    flags |= HitFlag::UV;
+  }
+  hit.flags = flags;
+  return hit;
+}
+
+}  // namespace
+
+template <class T>
+std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray,
+                                  RaycastHit<T>* hits) {
+  if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
+  const MeshInstance<T> inst(g, pose);
+  const Vec3<T> org = inst.invScale * pose.transformInv(ray.origin);
+  const Vec3<T> dir = inst.invScale * pose.rotateInv(ray.dir);
+  const bool cull = !(g.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
+  const MeshRaycaster<T> caster(inst.mesh, org, dir, cull);
+  if (ray.maxHits > 1) {
+    std::vector<RawHit<T>> raw;
+    raw.reserve(std::min<std::uint32_t>(ray.maxHits, 64));
+    const std::uint32_t n = caster.multiple(ray.maxDist, ray.maxHits, raw);
+    for (std::uint32_t i = 0; i < n; ++i) hits[i] = makeHit(inst, ray, g.doubleSided(), raw[i]);
+    return n;
+  }
+  RawHit<T> best;
+  if (!caster.single(ray.maxDist, ray.flags.has(HitFlag::AnyHit), best)) return 0;
+  hits[0] = makeHit(inst, ray, g.doubleSided(), best);
+  return 1;
+}
+
+template std::uint32_t raycastTriangleMesh<float>(const TriangleMeshGeometry<float>&, const Transform<float>&,
+                                                  const RayQuery<float>&, RaycastHit<float>*);
+template std::uint32_t raycastTriangleMesh<double>(const TriangleMeshGeometry<double>&, const Transform<double>&,
+                                                   const RayQuery<double>&, RaycastHit<double>*);
 
 }  // namespace gq::detail

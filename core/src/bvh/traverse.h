@@ -1,0 +1,158 @@
+#pragma once
+// BVH4 traversal kernels: front-to-back ray traversal with early-out at the current closest distance, and a
+// best-first closest-point traversal. They take the leaf handler as a callable, so they are inline templates.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "gq/bvh.h"
+#include "gq/math.h"
+
+#ifdef GQ_SSE42
+#include <smmintrin.h>
+#endif
+
+namespace gq::detail {
+
+// Bounded by the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels) times 4 pushes.
+inline constexpr int kBvhStackSize = 256;
+
+// The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
+// ray that the triangles are tested against.
+struct BvhRay {
+  alignas(16) float org[3];
+  float invDir[3];
+  float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |invDir|
+  // Relative padding on [tNear, tFar] covering the rounding of the slab arithmetic and of the float direction.
+  static constexpr float kRelPad = 16.0f * std::numeric_limits<float>::epsilon();
+};
+
+template <class T> inline BvhRay makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
+  // Components this small would give infinite inverses (and 0 * inf = NaN); clamping keeps slabs correct.
+  constexpr float kTinyDir = 1e-20f;
+  BvhRay r;
+  for (int i = 0; i < 3; ++i) {
+    r.org[i] = static_cast<float>(org[i]);
+    float d = static_cast<float>(dir[i]);
+    if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
+    r.invDir[i] = 1.0f / d;
+    const double originError = std::abs(double(org[i]) - double(r.org[i]));
+    r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+  }
+  return r;
+}
+
+// Tests the ray against the 4 children of `node` for t in [0, tMax]; returns a 4-bit hit mask and the entry
+// distances of the children in tNear.
+inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax, float tNear[4]) {
+#ifdef GQ_SSE42
+  const __m128 ox = _mm_set1_ps(ray.org[0]), oy = _mm_set1_ps(ray.org[1]), oz = _mm_set1_ps(ray.org[2]);
+  const __m128 ix = _mm_set1_ps(ray.invDir[0]), iy = _mm_set1_ps(ray.invDir[1]), iz = _mm_set1_ps(ray.invDir[2]);
+  const __m128 sx = _mm_set1_ps(ray.slack[0]), sy = _mm_set1_ps(ray.slack[1]), sz = _mm_set1_ps(ray.slack[2]);
+  const __m128 x0 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.minX), ox), ix);
+  const __m128 x1 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.maxX), ox), ix);
+  const __m128 y0 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.minY), oy), iy);
+  const __m128 y1 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.maxY), oy), iy);
+  const __m128 z0 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.minZ), oz), iz);
+  const __m128 z1 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.maxZ), oz), iz);
+  const __m128 nearX = _mm_sub_ps(_mm_min_ps(x0, x1), sx), farX = _mm_add_ps(_mm_max_ps(x0, x1), sx);
+  const __m128 nearY = _mm_sub_ps(_mm_min_ps(y0, y1), sy), farY = _mm_add_ps(_mm_max_ps(y0, y1), sy);
+  const __m128 nearZ = _mm_sub_ps(_mm_min_ps(z0, z1), sz), farZ = _mm_add_ps(_mm_max_ps(z0, z1), sz);
+  __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
+  __m128 tf = _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax)));
+  tn = _mm_mul_ps(tn, _mm_set1_ps(1.0f - BvhRay::kRelPad));
+  tf = _mm_mul_ps(tf, _mm_set1_ps(1.0f + BvhRay::kRelPad));
+  _mm_storeu_ps(tNear, tn);
+  return _mm_movemask_ps(_mm_cmple_ps(tn, tf));
+#else
+  const float* lo[3] = {node.minX, node.minY, node.minZ};
+  const float* hi[3] = {node.maxX, node.maxY, node.maxZ};
+  int mask = 0;
+  for (int i = 0; i < 4; ++i) {
+    float tn = 0.0f, tf = tMax;
+    for (int a = 0; a < 3; ++a) {
+      const float t0 = (lo[a][i] - ray.org[a]) * ray.invDir[a];
+      const float t1 = (hi[a][i] - ray.org[a]) * ray.invDir[a];
+      tn = std::max(tn, std::min(t0, t1) - ray.slack[a]);
+      tf = std::min(tf, std::max(t0, t1) + ray.slack[a]);
+    }
+    tn *= 1.0f - BvhRay::kRelPad;
+    tf *= 1.0f + BvhRay::kRelPad;
+    tNear[i] = tn;
+    if (tn <= tf) mask |= 1 << i;
+  }
+  return mask;
+#endif
+}
+
+// Visits leaves whose boxes the ray enters within [0, tMax], nearest child first. `leaf(first, count)` tests the
+// primitives and returns true to stop; it may lower tMax (a float reference owned by the caller) to prune.
+template <class LeafFn> inline void traverseRay(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
+  struct Entry { std::uint32_t ref; float tNear; };
+  Entry stack[kBvhStackSize];
+  int top = 0;
+  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  stack[top++] = {bvh.rootChild, 0.0f};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    if (e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
+    std::uint32_t ref = e.ref;
+    // Descend through inner nodes, pushing the farther children and continuing with the nearest.
+    while (!Bvh4Node::isLeaf(ref)) {
+      const Bvh4Node& node = bvh.nodes[ref];
+      float tn[4];
+      int mask = intersectChildren(node, ray, tMax, tn);
+      if (mask == 0) { ref = Bvh4Node::kEmpty; break; }
+      // Collect hit children sorted by entry distance (insertion sort of at most 4).
+      Entry hit[4];
+      int n = 0;
+      while (mask) {
+        const int i = __builtin_ctz(unsigned(mask));
+        mask &= mask - 1;
+        Entry c{node.child[i], tn[i]};
+        int j = n++;
+        while (j > 0 && hit[j - 1].tNear < c.tNear) { hit[j] = hit[j - 1]; --j; }
+        hit[j] = c;  // descending: nearest last
+      }
+      for (int i = 0; i < n - 1; ++i) stack[top++] = hit[i];
+      ref = hit[n - 1].ref;
+    }
+    if (ref == Bvh4Node::kEmpty) continue;
+    if (leaf(Bvh4Node::leafFirst(ref), Bvh4Node::leafCount(ref))) return;
+  }
+}
+
+// Best-first traversal for nearest-primitive queries. `childLowerBound(node, lane)` returns a lower bound of the
+// squared distance to anything inside that child (or +inf); `leaf(first, count)` tests primitives and may lower
+// bestSq (owned by the caller).
+template <class T, class BoundFn, class LeafFn>
+inline void traverseNearest(const Bvh4& bvh, T& bestSq, BoundFn&& childLowerBound, LeafFn&& leaf) {
+  struct Entry { std::uint32_t ref; T lower; };
+  Entry stack[kBvhStackSize];
+  int top = 0;
+  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  stack[top++] = {bvh.rootChild, T(0)};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    if (e.lower > bestSq) continue;
+    if (Bvh4Node::isLeaf(e.ref)) {
+      leaf(Bvh4Node::leafFirst(e.ref), Bvh4Node::leafCount(e.ref));
+      continue;
+    }
+    const Bvh4Node& node = bvh.nodes[e.ref];
+    Entry hit[4];
+    int n = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (node.child[i] == Bvh4Node::kEmpty) continue;
+      const T lb = childLowerBound(node, i);
+      if (lb > bestSq) continue;
+      Entry c{node.child[i], lb};
+      int j = n++;
+      while (j > 0 && hit[j - 1].lower < c.lower) { hit[j] = hit[j - 1]; --j; }
+      hit[j] = c;
+    }
+    for (int i = 0; i < n; ++i) stack[top++] = hit[i];  // nearest pushed last, popped first
+  }
+}
+
+}  // namespace gq::detail
