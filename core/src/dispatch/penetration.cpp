@@ -1,13 +1,142 @@
-// PLACEHOLDER: every pair answers Unsupported until this family lands.
+// Penetration (MTD) façade: validation, then one dispatch table indexed [type0][type1].
+//
+// Sign convention (the one place it is written): when `penetrating`, translating geom0 by direction * depth
+// separates the shapes; direction is unit and depth >= 0 (0 when touching, which counts as penetrating, so that
+// overlap() and computePenetration() agree). The plane is the solid half-space x <= 0 of its frame.
+// Kernels run with both poses relative to pose0 (shapes far from the origin keep their relative precision); the
+// direction is rotated back to world space here.
+#include <array>
+#include <string>
+
+#include "common/validate.h"
+#include "gq/custom.h"
 #include "gq/query.h"
+#include "penetration/penetration.h"
 
 namespace gq {
+namespace {
 
 template <class T>
-Status computePenetration(PenetrationResult<T>&, const Geometry<T>&, const Transform<T>&, const Geometry<T>&, const Transform<T>&) {
-  return Status::unsupported("computePenetration is not implemented yet");
+using PenetrationFn = Status (*)(const Geometry<T>&, const Transform<T>&, const Geometry<T>&, const Transform<T>&, PenetrationResult<T>&);
+template <class T> using PenetrationTable = std::array<std::array<PenetrationFn<T>, kGeometryTypeCount>, kGeometryTypeCount>;
+
+// Adapts a kernel on concrete geometry types to the table's signature.
+template <class T, class G0, class G1,
+          bool (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&, Vec3<T>&, T&)>
+Status pairKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                  PenetrationResult<T>& result) {
+  result.penetrating = Kernel(g0.template get<G0>(), p0, g1.template get<G1>(), p1, result.direction, result.depth);
+  return Status();
 }
-template Status computePenetration<float>(PenetrationResult<float>&, const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&);
-template Status computePenetration<double>(PenetrationResult<double>&, const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&);
+
+// The one generic wrapper for swapped pairs: moving geom1 by +v separates as moving geom0 by -v does.
+template <class T, PenetrationFn<T> Fn>
+Status swapped(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+               PenetrationResult<T>& result) {
+  if (Status s = Fn(g1, p1, g0, p0, result); !s.ok()) return s;
+  result.direction = -result.direction;
+  return Status();
+}
+
+template <class T> const CustomGeometryCallbacks<T>& callbacksOf(const Geometry<T>& g) {
+  return *g.template get<CustomGeometry<T>>().callbacks;
+}
+
+// Custom geometry on either side: GJK on the support mappings, for convex custom shapes only.
+template <class T>
+Status customKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                    PenetrationResult<T>& result) {
+  for (const Geometry<T>* g : {&g0, &g1})
+    if (g->type() == GeometryType::Custom && !callbacksOf(*g).isConvex())
+      return Status::unsupported(std::string("penetration with the non-convex custom geometry '") + callbacksOf(*g).name() +
+                                 "' (only raycast and bounds are available for it)");
+  return detail::penetrationCustomAny(g0, p0, g1, p1, result.penetrating, result.direction, result.depth);
+}
+
+template <class T>
+Status notDefinedBySpec(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&, PenetrationResult<T>&) {
+  return Status::unsupported(std::string("penetration of ") + toString(g0.type()) + " and " + toString(g1.type()) +
+                             " is not defined by the spec (PhysX does not support this pair)");
+}
+
+template <class T>
+Status notYetImplemented(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&, PenetrationResult<T>&) {
+  return Status::unsupported(std::string("penetration of ") + toString(g0.type()) + " and " + toString(g1.type()) +
+                             " is not implemented yet");
+}
+
+template <class T, GeometryType A, GeometryType B, PenetrationFn<T> Fn> constexpr void setPair(PenetrationTable<T>& table) {
+  static_assert(A <= B, "pairs are registered once, in GeometryType order; the swapped cell is derived");
+  table[std::size_t(A)][std::size_t(B)] = Fn;
+  if constexpr (A != B) table[std::size_t(B)][std::size_t(A)] = swapped<T, Fn>;
+}
+
+template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
+  using GT = GeometryType;
+  PenetrationTable<T> t{};
+  for (auto& row : t)
+    for (auto& cell : row) cell = notYetImplemented<T>;  // other triangle mesh / heightfield pairs: a later task
+  setPair<T, GT::Sphere, GT::Sphere, pairKernel<T, SphereGeometry<T>, SphereGeometry<T>, detail::penetrationSphereSphere<T>>>(t);
+  setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::penetrationSpherePlane<T>>>(t);
+  setPair<T, GT::Sphere, GT::Capsule, pairKernel<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::penetrationSphereCapsule<T>>>(t);
+  setPair<T, GT::Sphere, GT::Box, pairKernel<T, SphereGeometry<T>, BoxGeometry<T>, detail::penetrationSphereBox<T>>>(t);
+  setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationSphereConvex<T>>>(t);
+  setPair<T, GT::Sphere, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Plane, GT::Plane, notDefinedBySpec<T>>(t);
+  setPair<T, GT::Plane, GT::Capsule, pairKernel<T, PlaneGeometry<T>, CapsuleGeometry<T>, detail::penetrationPlaneCapsule<T>>>(t);
+  setPair<T, GT::Plane, GT::Box, pairKernel<T, PlaneGeometry<T>, BoxGeometry<T>, detail::penetrationPlaneBox<T>>>(t);
+  setPair<T, GT::Plane, GT::ConvexMesh, pairKernel<T, PlaneGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationPlaneConvex<T>>>(t);
+  setPair<T, GT::Plane, GT::TriangleMesh, notDefinedBySpec<T>>(t);
+  setPair<T, GT::Plane, GT::HeightField, notDefinedBySpec<T>>(t);
+  setPair<T, GT::Plane, GT::Custom, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::penetrationPlaneCustom<T>>>(t);
+  setPair<T, GT::Capsule, GT::Capsule, pairKernel<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::penetrationCapsuleCapsule<T>>>(t);
+  setPair<T, GT::Capsule, GT::Box, pairKernel<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::penetrationCapsuleBox<T>>>(t);
+  setPair<T, GT::Capsule, GT::ConvexMesh, pairKernel<T, CapsuleGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationCapsuleConvex<T>>>(t);
+  setPair<T, GT::Capsule, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Box, GT::Box, pairKernel<T, BoxGeometry<T>, BoxGeometry<T>, detail::penetrationBoxBox<T>>>(t);
+  setPair<T, GT::Box, GT::ConvexMesh, pairKernel<T, BoxGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationBoxConvex<T>>>(t);
+  setPair<T, GT::Box, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationConvexConvex<T>>>(t);
+  setPair<T, GT::ConvexMesh, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Custom, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::TriangleMesh, GT::TriangleMesh, notDefinedBySpec<T>>(t);
+  setPair<T, GT::TriangleMesh, GT::HeightField, notDefinedBySpec<T>>(t);
+  setPair<T, GT::HeightField, GT::HeightField, notDefinedBySpec<T>>(t);
+  return t;
+}
+
+template <class T> constexpr PenetrationTable<T> kPenetrationTable = makePenetrationTable<T>();
+static_assert(std::tuple_size_v<PenetrationTable<float>> == kGeometryTypeCount &&
+                  std::tuple_size_v<PenetrationTable<float>::value_type> == kGeometryTypeCount,
+              "one row and one column per GeometryType");
+
+}  // namespace
+
+template <class T>
+Status computePenetration(PenetrationResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
+                          const Geometry<T>& geom1, const Transform<T>& pose1) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = detail::checkGeometryAndPose(geom0, pose0, "pose0"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(geom1, pose1, "pose1"); !s.ok()) return s;
+    const Transform<T> relative1 = pose1.relativeTo(pose0);
+    PenetrationResult<T> local;
+    const PenetrationFn<T> fn = kPenetrationTable<T>[std::size_t(geom0.type())][std::size_t(geom1.type())];
+    if (Status s = fn(geom0, Transform<T>(), geom1, relative1, local); !s.ok()) return s;
+    if (!local.penetrating) {
+      result = PenetrationResult<T>();
+      return Status();
+    }
+    local.direction = pose0.rotate(local.direction);
+    if (!isFinite(local.direction) || !std::isfinite(local.depth))
+      return Status::internal("computePenetration produced a non-finite result");
+    result = local;
+    return Status();
+  });
+}
+
+template Status computePenetration<float>(PenetrationResult<float>&, const Geometry<float>&, const Transform<float>&,
+                                          const Geometry<float>&, const Transform<float>&);
+template Status computePenetration<double>(PenetrationResult<double>&, const Geometry<double>&,
+                                           const Transform<double>&, const Geometry<double>&, const Transform<double>&);
 
 }  // namespace gq

@@ -1,0 +1,15 @@
+// Capsule/convex overlap: exact segment-hull test (SAT) then segment-hull distance <= r.
+#include "overlap/overlap.h"
+#include "overlap/polytope.h"
+
+namespace gq::detail {
+
+template <class T>
+bool overlapCapsuleConvex(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
+  return overlapRoundedPolytope(capsuleCore(g0, p0), makeConvexPolytope(g1, p1));
+}
+
+template bool overlapCapsuleConvex<float>(const CapsuleGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);
+template bool overlapCapsuleConvex<double>(const CapsuleGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&);
+
+}  // namespace gq::detail

@@ -1,0 +1,31 @@
+#pragma once
+// Boolean overlap kernels, one per pair (overlap/<a>_<b>.cpp, a <= b in GeometryType order). Touching counts as
+// overlapping. Inputs are validated by the façade (dispatch/overlap.cpp), which also expresses both poses relative
+// to pose0 so that far-from-origin poses keep their precision.
+#include "gq/geometry.h"
+#include "gq/transform.h"
+
+namespace gq::detail {
+
+template <class T> bool overlapSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0, const SphereGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapSpherePlane(const SphereGeometry<T>& g0, const Transform<T>& p0, const PlaneGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapSphereBox(const SphereGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapSphereConvex(const SphereGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapPlaneCapsule(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapPlaneBox(const PlaneGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapPlaneConvex(const PlaneGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapCapsuleBox(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapCapsuleConvex(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapBoxBox(const BoxGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapBoxConvex(const BoxGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1);
+template <class T> bool overlapConvexConvex(const ConvexMeshGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1);
+
+}  // namespace gq::detail
+
+namespace gq::detail {
+template <class T> bool overlapPlaneCustom(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CustomGeometry<T>& g1, const Transform<T>& p1);
+// Convex custom geometry (either side) against sphere, capsule, box, convex or custom: GJK.
+template <class T> bool overlapCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);
+}  // namespace gq::detail

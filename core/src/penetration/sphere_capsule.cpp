@@ -1,0 +1,27 @@
+// Sphere/capsule MTD: sphere against the closest segment point; a centre on the segment pushes
+// perpendicular to it (every perpendicular gives the same depth r0 + r1).
+#include "penetration/penetration.h"
+#include "overlap/closest_points.h"
+
+namespace gq::detail {
+
+template <class T>
+bool penetrationSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1,
+                              Vec3<T>& direction, T& depth) {
+  const Vec3<T> axis = p1.rotate(Vec3<T>(g1.halfHeight, T(0), T(0)));
+  const Vec3<T> q = closestPointOnSegment(Segment<T>{p1.p - axis, p1.p + axis}, p0.p);
+  const Vec3<T> d = p0.p - q;
+  const T len = d.norm();
+  const T pen = g0.radius + g1.radius - len;
+  if (!(pen >= T(0))) return false;
+  direction = len > T(0) ? Vec3<T>(d / len) : anyPerpendicular(p1.rotate(Vec3<T>::UnitX()));
+  depth = pen;
+  return true;
+}
+
+template bool penetrationSphereCapsule<float>(const SphereGeometry<float>&, const Transform<float>&, const CapsuleGeometry<float>&, const Transform<float>&,
+                                             Vec3<float>&, float&);
+template bool penetrationSphereCapsule<double>(const SphereGeometry<double>&, const Transform<double>&, const CapsuleGeometry<double>&, const Transform<double>&,
+                                              Vec3<double>&, double&);
+
+}  // namespace gq::detail

@@ -1,0 +1,18 @@
+// Sphere/convex MTD: exact (point core + radius against the hull, see polytope.h).
+#include "penetration/penetration.h"
+#include "overlap/polytope.h"
+
+namespace gq::detail {
+
+template <class T>
+bool penetrationSphereConvex(const SphereGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1,
+                             Vec3<T>& direction, T& depth) {
+  return penetrationRoundedPolytope(sphereCore(g0, p0), makeConvexPolytope(g1, p1), direction, depth);
+}
+
+template bool penetrationSphereConvex<float>(const SphereGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&,
+                                            Vec3<float>&, float&);
+template bool penetrationSphereConvex<double>(const SphereGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&,
+                                             Vec3<double>&, double&);
+
+}  // namespace gq::detail
