@@ -1,0 +1,31 @@
+#include <utility>
+
+#include "backend.h"
+#include "gq_backend.h"
+
+namespace gq::cases {
+namespace {
+
+// One entry per backend; native backends (fcl, bullet, libccd, embree) add theirs here.
+const std::vector<std::pair<std::string, BackendFactory>>& registry() {
+  static const std::vector<std::pair<std::string, BackendFactory>> entries = {
+      {"gq", [] { return std::unique_ptr<Backend>(new GqBackend()); }},
+  };
+  return entries;
+}
+
+}  // namespace
+
+std::vector<std::string> backendNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : registry()) names.push_back(entry.first);
+  return names;
+}
+
+std::unique_ptr<Backend> makeBackend(const std::string& name) {
+  for (const auto& entry : registry())
+    if (entry.first == name) return entry.second();
+  return nullptr;
+}
+
+}  // namespace gq::cases
