@@ -6,6 +6,7 @@
 #include "gq/cooking.h"
 #include "gq/custom.h"
 #include "gq/tolerances.h"
+#include "cook/height_field_layout.h"
 
 namespace gq {
 
@@ -55,14 +56,20 @@ template <class T> struct Validator {
   }
   Status operator()(const ConvexMeshGeometry<T>& g) const {
     if (!g.mesh) return Status::invalid("convex geometry has no cooked mesh");
+    if (g.mesh->vertices.size() < 4 || g.mesh->polygons.empty())
+      return Status::degenerate("convex mesh is empty (cook it with cookConvexMesh)");
     return checkScale(g.scale, false);
   }
   Status operator()(const TriangleMeshGeometry<T>& g) const {
     if (!g.mesh) return Status::invalid("triangle mesh geometry has no cooked mesh");
+    if (g.mesh->triangles.empty() || g.mesh->bvh.rootChild == Bvh4Node::kEmpty)
+      return Status::degenerate("triangle mesh is empty (cook it with cookTriangleMesh)");
     return checkScale(g.scale, true);
   }
   Status operator()(const HeightFieldGeometry<T>& g) const {
     if (!g.heightField) return Status::invalid("heightfield geometry has no cooked heightfield");
+    if (!detail::heightFieldIsWellFormed(*g.heightField))
+      return Status::degenerate("heightfield is empty or malformed (cook it with cookHeightField)");
     if (!positive(g.heightScale) || !positive(g.rowScale) || !positive(g.columnScale))
       return Status::invalid("heightfield scales must be finite and > 0");
     return {};
