@@ -35,8 +35,9 @@ RunSummary runCases(std::istream& in, const std::string& baseDir, Backend& backe
 
 bool runCaseFile(const std::string& path, Backend& backend, int repeat, std::ostream& out, std::string& error,
                  RunSummary* summary) {
+  std::error_code ec;
   std::ifstream in(path);
-  if (!in) {
+  if (!in || std::filesystem::is_directory(path, ec)) {
     error = "cannot read case file '" + path + "'";
     return false;
   }

@@ -46,6 +46,7 @@ struct Row {
   std::uint32_t rays = 0, hits = 0;
   double nsPerRay = 0;
   std::optional<double> maxError;      // |d - d_exact| over rays both hit
+  std::optional<double> maxRelError;   // |d - d_exact| / max(d_exact, bounding radius)
   std::optional<std::uint32_t> mismatches;  // hit/miss disagreements with the exact answer
 };
 
@@ -75,7 +76,8 @@ template <class T> void checkExact(const DemoShape<T>& shape, const std::vector<
                                    const std::vector<T>& distances, Row& row) {
   const Eigen::Quaternion<Real> q = shape.pose.q.template cast<Real>();
   const VecR p = shape.pose.p.template cast<Real>();
-  double maxError = 0;
+  double maxError = 0, maxRelError = 0;
+  const Real scale = Real(shape.boundingRadius);
   std::uint32_t mismatches = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const VecR o = rays[i].origin.cast<T>().template cast<Real>();
@@ -83,9 +85,13 @@ template <class T> void checkExact(const DemoShape<T>& shape, const std::vector<
     const Real exact = shape.exact(q.conjugate() * (o - p), (q.conjugate() * d).normalized(), Real(kMaxDist));
     const bool exactHit = exact >= 0, gqHit = distances[i] >= T(0);
     if (exactHit != gqHit) ++mismatches;
-    else if (exactHit) maxError = std::max(maxError, double(std::abs(Real(distances[i]) - exact)));
+    if (exactHit != gqHit || !exactHit) continue;
+    const Real err = std::abs(Real(distances[i]) - exact);
+    maxError = std::max(maxError, double(err));
+    maxRelError = std::max(maxRelError, double(err / std::max(exact, scale)));
   }
   row.maxError = maxError;
+  row.maxRelError = maxRelError;
   row.mismatches = mismatches;
 }
 
@@ -118,17 +124,17 @@ template <class T> void measure(const char* precision, const DemoOptions& option
   }
 }
 
-std::string formatError(const Row& row) {
-  if (!row.maxError) return "-";
+std::string formatError(const std::optional<double>& error) {
+  if (!error) return "-";
   std::ostringstream s;
-  s << std::scientific << std::setprecision(2) << *row.maxError;
+  s << std::scientific << std::setprecision(2) << *error;
   return s.str();
 }
 
 void printTable(const std::vector<Row>& rows, std::ostream& out) {
   out << std::left << std::setw(14) << "geometry" << std::setw(10) << "precision" << std::right << std::setw(9)
-      << "rays" << std::setw(9) << "hits" << std::setw(8) << "hit %" << std::setw(10) << "ns/ray" << std::setw(13)
-      << "max |err|" << std::setw(12) << "mismatches" << '\n';
+      << "rays" << std::setw(9) << "hits" << std::setw(8) << "hit %" << std::setw(10) << "ns/ray" << std::setw(12)
+      << "max |err|" << std::setw(12) << "max rel" << std::setw(12) << "mismatches" << '\n';
   for (const Row& row : rows) {
     out << std::left << std::setw(14) << row.geometry << std::setw(10) << row.precision << std::right;
     if (!row.error.empty()) {
@@ -137,7 +143,7 @@ void printTable(const std::vector<Row>& rows, std::ostream& out) {
     }
     out << std::setw(9) << row.rays << std::setw(9) << row.hits << std::setw(8) << std::fixed << std::setprecision(1)
         << 100.0 * row.hits / std::max<std::uint32_t>(row.rays, 1) << std::setw(10) << row.nsPerRay
-        << std::setw(13) << formatError(row) << std::setw(12)
+        << std::setw(12) << formatError(row.maxError) << std::setw(12) << formatError(row.maxRelError) << std::setw(12)
         << (row.mismatches ? std::to_string(*row.mismatches) : std::string("-")) << '\n';
   }
 }
@@ -147,7 +153,7 @@ void printTable(const std::vector<Row>& rows, std::ostream& out) {
 void printRaycastSection(const DemoOptions& options, std::ostream& out) {
   out << "== Raycast: " << options.rays << " seeded rays per geometry, flags position|normal|faceIndex ==\n"
       << "ns/ray: median of " << options.repetitions << " passes. max |err|: largest |distance - exact| (closed form "
-      << "in long double) over rays both hit; mismatches: hit/miss disagreements. '-': no closed form.\n";
+      << "in long double) over rays both hit; max rel: the same over max(exact, shape radius); mismatches: hit/miss disagreements. '-': no closed form.\n";
   std::vector<Row> rows;
   measure<float>("float", options, rows);
   measure<double>("double", options, rows);
