@@ -143,6 +143,21 @@ template <class T> class SupportSphere : public CustomGeometryCallbacks<T> {
   bool convex_;
 };
 
+// A box of half extent h by support mapping.
+template <class T> class SupportBox : public CustomGeometryCallbacks<T> {
+ public:
+  explicit SupportBox(T h) : h_(h) {}
+  const char* name() const override { return "support box"; }
+  Bounds3<T> localBounds() const override { return Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>::Constant(h_)); }
+  Vec3<T> support(const Vec3<T>& d) const override {
+    return Vec3<T>(d.x() < T(0) ? -h_ : h_, d.y() < T(0) ? -h_ : h_, d.z() < T(0) ? -h_ : h_);
+  }
+  bool raycast(const Vec3<T>&, const Vec3<T>&, T, HitFlags, RaycastHit<T>&) const override { return false; }
+
+ private:
+  T h_;
+};
+
 TYPED_TEST(Overlap, ConvexCustomGeometryUsesItsSupportMapping) {
   using T = TypeParam;
   const Geometry<T> custom = CustomGeometry<T>(std::make_shared<SupportSphere<T>>(T(1), true));
@@ -160,6 +175,36 @@ TYPED_TEST(Overlap, ConvexCustomGeometryUsesItsSupportMapping) {
   const Geometry<T> nonConvex = CustomGeometry<T>(std::make_shared<SupportSphere<T>>(T(1), false));
   bool out = false;
   EXPECT_EQ(overlap<T>(nonConvex, Transform<T>(), BoxGeometry<T>(1, 1, 1), Transform<T>(), out).code, StatusCode::Unsupported);
+  EXPECT_EQ(overlap<T>(PlaneGeometry<T>(), Transform<T>(), nonConvex, Transform<T>(), out).code, StatusCode::Unsupported);
+  PenetrationResult<T> r;
+  EXPECT_EQ(computePenetration<T>(r, nonConvex, Transform<T>(), SphereGeometry<T>(1), Transform<T>()).code, StatusCode::Unsupported);
+  // Custom against custom and against a plane.
+  const Geometry<T> customBox = CustomGeometry<T>(std::make_shared<SupportBox<T>>(T(1)));
+  const auto cc = penetration<T>(customBox, Transform<T>(Vec3<T>(0.2, 0.1, 1.5)), customBox, Transform<T>());
+  ASSERT_TRUE(cc.penetrating);
+  EXPECT_NEAR(double(cc.depth), 0.5, tol);
+  EXPECT_NEAR(double(cc.direction.z()), 1.0, tol);
+  const auto pc = penetration<T>(PlaneGeometry<T>(), Transform<T>(), custom, Transform<T>(Vec3<T>(0.75, 0, 0)));
+  ASSERT_TRUE(pc.penetrating);
+  EXPECT_NEAR(double(pc.depth), 0.25, tol);
+  EXPECT_NEAR(double(pc.direction.x()), -1.0, tol);
+}
+
+TYPED_TEST(Overlap, MeshPairsNotYetImplementedSaySo) {
+  using T = TypeParam;
+  std::shared_ptr<const TriangleMesh<T>> mesh;
+  ASSERT_TRUE(cookTriangleMesh<T>({Vec3<T>(0, 0, 0), Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0)}, {{0, 1, 2}}, mesh).ok());
+  const Geometry<T> tri = TriangleMeshGeometry<T>(mesh);
+  bool out = false;
+  const Status s = overlap<T>(SphereGeometry<T>(1), Transform<T>(), tri, Transform<T>(), out);
+  EXPECT_EQ(s.code, StatusCode::Unsupported);
+  EXPECT_NE(s.message.find("not implemented yet"), std::string::npos) << s.message;
+  const Status p = overlap<T>(tri, Transform<T>(), PlaneGeometry<T>(), Transform<T>(), out);
+  EXPECT_EQ(p.code, StatusCode::Unsupported);
+  EXPECT_NE(p.message.find("not defined by the spec"), std::string::npos) << p.message;
+  PenetrationResult<T> r;
+  const Status m = computePenetration<T>(r, tri, Transform<T>(), tri, Transform<T>());
+  EXPECT_NE(m.message.find("not defined by the spec"), std::string::npos) << m.message;
 }
 
 }  // namespace

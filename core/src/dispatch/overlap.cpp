@@ -38,16 +38,19 @@ template <class T> const CustomGeometryCallbacks<T>& callbacksOf(const Geometry<
   return *g.template get<CustomGeometry<T>>().callbacks;
 }
 
-// Custom geometry on either side: GJK on the support mappings, for convex custom shapes only.
+// Custom geometry on either side: GJK on the support mappings (convexity is checked by the façade).
 template <class T>
 Status customKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
                     bool& overlapping) {
-  for (const Geometry<T>* g : {&g0, &g1})
-    if (g->type() == GeometryType::Custom && !callbacksOf(*g).isConvex())
-      return Status::unsupported(std::string("overlap with the non-convex custom geometry '") + callbacksOf(*g).name() +
-                                 "' (only raycast and bounds are available for it)");
   overlapping = detail::overlapCustomAny(g0, p0, g1, p1);
   return Status();
+}
+
+// Non-convex custom shapes answer only raycast and bounds (gq/custom.h).
+template <class T> Status checkConvexCustom(const Geometry<T>& g) {
+  if (g.type() != GeometryType::Custom || callbacksOf(g).isConvex()) return Status();
+  return Status::unsupported(std::string("overlap with the non-convex custom geometry '") + callbacksOf(g).name() +
+                             "' (only raycast and bounds are available for it)");
 }
 
 template <class T>
@@ -112,6 +115,8 @@ Status overlap(const Geometry<T>& geom0, const Transform<T>& pose0, const Geomet
   return detail::guarded([&]() -> Status {
     if (Status s = detail::checkGeometryAndPose(geom0, pose0, "pose0"); !s.ok()) return s;
     if (Status s = detail::checkGeometryAndPose(geom1, pose1, "pose1"); !s.ok()) return s;
+    if (Status s = checkConvexCustom(geom0); !s.ok()) return s;
+    if (Status s = checkConvexCustom(geom1); !s.ok()) return s;
     const Transform<T> relative1 = pose1.relativeTo(pose0);
     bool result = false;
     const OverlapFn<T> fn = kOverlapTable<T>[std::size_t(geom0.type())][std::size_t(geom1.type())];
