@@ -142,16 +142,19 @@ TYPED_TEST(ConvexCook, DegenerateInputsAreRejectedWithAMessage) {
   }
 }
 
-TYPED_TEST(ConvexCook, QhullPrintsNothingOnFailure) {
+TYPED_TEST(ConvexCook, QhullPrintsNothing) {
   using T = TypeParam;
   const std::vector<Vec3<T>> flat = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-  std::shared_ptr<const ConvexMesh<T>> hull;
+  std::shared_ptr<const ConvexMesh<T>> hull, cube;
   ::testing::internal::CaptureStderr();
   ::testing::internal::CaptureStdout();
   const Status s = cookConvexMesh(flat, hull);
+  const Status ok = cookConvexMesh(cubeCorners(T(1)), cube);
   const std::string out = ::testing::internal::GetCapturedStdout();
   const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_FALSE(s.ok());
+  EXPECT_TRUE(ok.ok());
+  EXPECT_NE(s.message.find("qhull: QH"), std::string::npos) << "qhull's reason belongs in the status: " << s.message;
   EXPECT_EQ(out, "");
   EXPECT_EQ(err, "");
 }

@@ -1,7 +1,6 @@
 // Convex hull cooking with qhull's reentrant C API (libqhull_r). qhull builds the hull with premerged facets
-// ("C-n": facets whose centrums lie within n of a neighbour's plane merge, n = planeTolerance * hull size, and
-// never below qhull's own round-off bound; "Qx" exact pre-merges), so coplanar input triangles come out as one
-// facet; qh_facet3vertex gives each facet's vertices in boundary order, which we orient counter-clockwise seen
+// ("C-n": facets whose centrums lie within n of a neighbour's plane merge, n = planeTolerance * hull size;
+// "Qx": exact pre-merges), so coplanar hull points form one facet; qh_facet3vertex gives each facet's vertices in boundary order, which we orient counter-clockwise seen
 // from outside. Only hull vertices are kept; planes are recomputed in double with Newell's method.
 #include <algorithm>
 #include <cmath>
