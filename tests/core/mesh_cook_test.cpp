@@ -1,0 +1,131 @@
+// cookTriangleMesh: validation messages, degenerate-triangle removal, index maps, and BVH invariants.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "gq/cooking.h"
+#include "mesh_test_helpers.h"
+
+namespace gq {
+namespace {
+
+using meshtest::Scalars;
+
+template <class T> class MeshCook : public ::testing::Test {};
+TYPED_TEST_SUITE(MeshCook, Scalars);
+
+TYPED_TEST(MeshCook, OutOfRangeIndexIsInvalidArgumentNamingTheTriangle) {
+  using T = TypeParam;
+  const MeshData<T> m = meshtest::quadStack<T>(1);
+  std::vector<TriangleIndices> tris = m.triangles;
+  tris[1][2] = 4;
+  std::shared_ptr<const TriangleMesh<T>> out;
+  const Status s = cookTriangleMesh(m.vertices, tris, out);
+  EXPECT_EQ(s.code, StatusCode::InvalidArgument);
+  EXPECT_NE(s.message.find("triangle 1"), std::string::npos) << s.message;
+  EXPECT_EQ(out, nullptr);
+}
+
+TYPED_TEST(MeshCook, NonFiniteVertexIsInvalidArgumentNamingTheVertex) {
+  using T = TypeParam;
+  MeshData<T> m = meshtest::quadStack<T>(1);
+  m.vertices[2].y() = std::numeric_limits<T>::quiet_NaN();
+  std::shared_ptr<const TriangleMesh<T>> out;
+  const Status s = cookTriangleMesh(m.vertices, m.triangles, out);
+  EXPECT_EQ(s.code, StatusCode::InvalidArgument);
+  EXPECT_NE(s.message.find("vertex 2"), std::string::npos) << s.message;
+  EXPECT_EQ(out, nullptr);
+}
+
+TYPED_TEST(MeshCook, DegenerateTrianglesAreRemovedAndCounted) {
+  using T = TypeParam;
+  MeshData<T> m = meshtest::quadStack<T>(2);
+  m.vertices.push_back({T(0.5), T(-1), T(0)});  // on the edge 0-1: collinear with it
+  std::vector<TriangleIndices> tris = {{0, 0, 1}, m.triangles[0], {0, 8, 1}, m.triangles[1], m.triangles[2],
+                                       m.triangles[3]};
+  std::shared_ptr<const TriangleMesh<T>> out;
+  MeshCookReport report;
+  ASSERT_TRUE(cookTriangleMesh(m.vertices, tris, out, &report).ok());
+  EXPECT_EQ(report.inputTriangles, 6u);
+  EXPECT_EQ(report.removedDegenerate, 2u);
+  EXPECT_EQ(report.cookedTriangles, 4u);
+  EXPECT_EQ(out->triangles.size(), 4u);
+  EXPECT_EQ(out->cookedIndex[0], kRemovedTriangle);
+  EXPECT_EQ(out->cookedIndex[2], kRemovedTriangle);
+  // The maps are inverse of each other and cooked triangles are the input ones.
+  for (std::uint32_t c = 0; c < out->triangles.size(); ++c) {
+    EXPECT_EQ(out->cookedIndex[out->inputIndex[c]], c);
+    EXPECT_EQ(out->triangles[c], tris[out->inputIndex[c]]);
+  }
+}
+
+TYPED_TEST(MeshCook, AllDegenerateOrEmptyMeshIsDegenerateMesh) {
+  using T = TypeParam;
+  const std::vector<Vec3<T>> v = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  std::shared_ptr<const TriangleMesh<T>> out;
+  EXPECT_EQ(cookTriangleMesh(v, {{0, 1, 2}, {1, 1, 2}}, out).code, StatusCode::DegenerateMesh);
+  EXPECT_EQ(cookTriangleMesh(v, {}, out).code, StatusCode::DegenerateMesh);
+  EXPECT_EQ(out, nullptr);
+}
+
+// Every cooked triangle sits in exactly one leaf of <= 4 triangles, inside the float box of every ancestor slot
+// (compared in T: the float boxes are rounded outward, so double vertices are inside too).
+template <class T> void checkBvh(const TriangleMesh<T>& mesh) {
+  std::vector<int> seen(mesh.triangles.size(), 0);
+  std::function<void(std::uint32_t, const Bounds3<T>&)> walk = [&](std::uint32_t ref, const Bounds3<T>& box) {
+    if (Bvh4Node::isLeaf(ref)) {
+      const std::uint32_t first = Bvh4Node::leafFirst(ref), count = Bvh4Node::leafCount(ref);
+      ASSERT_LE(count, 4u);
+      for (std::uint32_t c = first; c < first + count; ++c) {
+        ASSERT_LT(c, mesh.triangles.size());
+        ++seen[c];
+        for (std::uint32_t v : mesh.triangles[c]) ASSERT_TRUE(box.contains(mesh.vertices[v]));
+      }
+      return;
+    }
+    ASSERT_LT(ref, mesh.bvh.nodes.size());
+    const Bvh4Node& n = mesh.bvh.nodes[ref];
+    for (int i = 0; i < 4; ++i) {
+      if (n.child[i] == Bvh4Node::kEmpty) continue;
+      Bounds3<T> b = Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[i]), T(n.minY[i]), T(n.minZ[i])),
+                                            Vec3<T>(T(n.maxX[i]), T(n.maxY[i]), T(n.maxZ[i])));
+      ASSERT_TRUE(box.contains(b.min) && box.contains(b.max));
+      walk(n.child[i], b);
+    }
+  };
+  const T inf = std::numeric_limits<T>::infinity();
+  walk(mesh.bvh.rootChild, Bounds3<T>::fromMinMax(Vec3<T>::Constant(-inf), Vec3<T>::Constant(inf)));
+  for (int s : seen) ASSERT_EQ(s, 1);
+}
+
+TYPED_TEST(MeshCook, BvhLeavesHoldEveryTriangleOnceInsideTheirBoxes) {
+  using T = TypeParam;
+  // Coordinates like 0.1 are not floats: the double mesh checks the outward rounding.
+  MeshData<T> m = meshtest::icosphere<T>(3);
+  for (auto& v : m.vertices) v = v * T(0.1) + Vec3<T>(T(0.3), T(-0.7), T(1.1));
+  const auto mesh = meshtest::cook(m.vertices, m.triangles);
+  checkBvh(*mesh);
+  const auto small = meshtest::cook(meshtest::quadStack<T>(1).vertices, meshtest::quadStack<T>(1).triangles);
+  EXPECT_TRUE(Bvh4Node::isLeaf(small->bvh.rootChild));  // 2 triangles: one leaf, no nodes
+  checkBvh(*small);
+}
+
+TYPED_TEST(MeshCook, BunnyBvhUsesAtMost32BytesPerTriangle) {
+  using T = TypeParam;
+  const MeshData<T> b = meshtest::bunny<T>();
+  ASSERT_EQ(b.triangles.size(), 69451u);
+  std::shared_ptr<const TriangleMesh<T>> mesh;
+  MeshCookReport report;
+  ASSERT_TRUE(cookTriangleMesh(b.vertices, b.triangles, mesh, &report).ok());
+  const double perTriangle = double(report.bvhBytes) / double(report.cookedTriangles);
+  std::printf("bunny: %u triangles cooked, %u removed, BVH %zu bytes = %.2f bytes/triangle, %zu hull vertices\n",
+              report.cookedTriangles, report.removedDegenerate, report.bvhBytes, perTriangle,
+              mesh->hullVertices.size());
+  EXPECT_LE(perTriangle, 32.0);
+  checkBvh(*mesh);
+}
+
+}  // namespace
+}  // namespace gq
