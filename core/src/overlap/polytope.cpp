@@ -16,14 +16,6 @@ template <class T> void addFace(Polytope<T>& poly, const Vec3<T>& normal, std::i
   poly.faceBegin.push_back(static_cast<std::uint32_t>(poly.faceVertices.size()));
 }
 
-// Appends `dir` (unit) unless a parallel direction is already present: parallel axes give the same overlap.
-template <class T> void addUniqueDirection(std::vector<Vec3<T>>& dirs, const Vec3<T>& dir) {
-  const T eps = T(tol::Rel<T>::kEpsilon);
-  for (const Vec3<T>& d : dirs)
-    if (d.cross(dir).squaredNorm() <= eps * eps) return;
-  dirs.push_back(dir);
-}
-
 template <class T> struct Interval {
   T lo, hi;
 };
@@ -60,6 +52,57 @@ template <class T> bool insidePolygon(const Polytope<T>& poly, std::size_t f, co
   return true;
 }
 
+// An edge's Gauss-map arc: the normals n1, n2 of its two faces (negated for the subtracted shape), the arc's
+// plane normal n1 x n2 and the unit edge direction.
+template <class T> struct EdgeArc {
+  Vec3<T> n1, n2, plane, dir;
+};
+
+template <class T> std::vector<EdgeArc<T>> edgeArcs(const Polytope<T>& poly, T sign) {
+  std::vector<EdgeArc<T>> arcs;
+  arcs.reserve(poly.edges.size());
+  for (std::size_t i = 0; i < poly.edges.size(); ++i) {
+    const Vec3<T> n1 = poly.faceNormals[poly.edgeFaces[i][0]] * sign, n2 = poly.faceNormals[poly.edgeFaces[i][1]] * sign;
+    const Vec3<T> d = poly.vertices[poly.edges[i][1]] - poly.vertices[poly.edges[i][0]];
+    arcs.push_back({n1, n2, n1.cross(n2), d.normalized()});
+  }
+  return arcs;
+}
+
+// Whether q (on the arc's great circle) lies between the arc's ends, with slack `slack`.
+template <class T> bool onArc(const EdgeArc<T>& arc, const Vec3<T>& q, T slack) {
+  return arc.n1.cross(q).dot(arc.plane) >= -slack && q.cross(arc.n2).dot(arc.plane) >= -slack;
+}
+
+// Whether two Gauss-map arcs (each shorter than a half circle) may cross. Conservative: near-degenerate
+// configurations answer true, since an extra axis never makes SAT wrong, a missing one would.
+template <class T> bool arcsMayCross(const EdgeArc<T>& a, const EdgeArc<T>& c) {
+  const T tol = T(tol::Rel<T>::kEpsilon);
+  const Vec3<T> p = a.plane.cross(c.plane);  // the great circles meet at +-p
+  const T len = p.norm();
+  if (len <= tol) return true;
+  const T slack = tol * len;
+  return (onArc(a, p, slack) && onArc(c, p, slack)) || (onArc(a, Vec3<T>(-p), slack) && onArc(c, Vec3<T>(-p), slack));
+}
+
+// Edge-edge axes of a and b whose edges can form a face of the Minkowski difference a - b: the normal cone of
+// a's edge (arc between its face normals) must cross the negated normal cone of b's edge.
+template <class T> void testPrunedEdgeAxes(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated,
+                                           SatResult<T>& best) {
+  const T eps = T(tol::Rel<T>::kEpsilon);
+  const std::vector<EdgeArc<T>> arcsA = edgeArcs(a, T(1)), arcsB = edgeArcs(b, T(-1));
+  for (const EdgeArc<T>& ea : arcsA) {
+    for (const EdgeArc<T>& eb : arcsB) {
+      if (!arcsMayCross(ea, eb)) continue;
+      const Vec3<T> c = ea.dir.cross(eb.dir);
+      const T len2 = c.squaredNorm();
+      if (len2 <= eps * eps) continue;
+      testAxis(a, b, Vec3<T>(c / std::sqrt(len2)), best);
+      if (stopWhenSeparated && best.depth < T(0)) return;
+    }
+  }
+}
+
 }  // namespace
 
 template <class T> Polytope<T> makePointPolytope(const Vec3<T>& p) {
@@ -76,6 +119,7 @@ template <class T> Polytope<T> makeSegmentPolytope(const Segment<T>& s) {
   const Vec3<T> d = s.b - s.a;
   if (d.squaredNorm() > T(0)) {
     poly.edges.push_back({0u, 1u});
+    poly.edgeFaces.push_back({0u, 0u});  // none: edgeFacesKnown stays false
     poly.edgeDirections.push_back(d.normalized());
   }
   return poly;
@@ -97,9 +141,15 @@ template <class T> Polytope<T> makeBoxPolytope(const BoxGeometry<T>& box, const 
   addFace<T>(poly, -r.col(1), {0, 1, 5, 4});
   addFace<T>(poly, r.col(2), {4, 5, 7, 6});
   addFace<T>(poly, -r.col(2), {0, 2, 3, 1});
+  // Faces are ordered +X, -X, +Y, -Y, +Z, -Z: the face of axis j on vertex i's side is 2j + (bit j clear).
+  const auto faceOf = [](std::uint32_t i, std::uint32_t j) { return 2 * j + ((i & (1u << j)) ? 0u : 1u); };
   for (std::uint32_t i = 0; i < 8; ++i)
     for (std::uint32_t k = 0; k < 3; ++k)
-      if (!(i & (1u << k))) poly.edges.push_back({i, i | (1u << k)});
+      if (!(i & (1u << k))) {
+        poly.edges.push_back({i, i | (1u << k)});
+        poly.edgeFaces.push_back({faceOf(i, (k + 1) % 3), faceOf(i, (k + 2) % 3)});
+      }
+  poly.edgeFacesKnown = true;
   poly.satNormals = {r.col(0), r.col(1), r.col(2)};
   poly.edgeDirections = poly.satNormals;
   return poly;
@@ -112,6 +162,7 @@ template <class T> Polytope<T> makeConvexPolytope(const ConvexMeshGeometry<T>& c
   const Mat3<T> r = pose.q.toRotationMatrix();
   const Mat3<T> normalMap = r * s.inverse();
   Polytope<T> poly;
+  std::vector<std::array<std::uint32_t, 3>> sides;  // (lower vertex, upper vertex, face) per polygon side
   poly.vertices.reserve(mesh.vertices.size());
   for (const Vec3<T>& v : mesh.vertices) poly.vertices.push_back(pose.transform(s * v));
   poly.faceBegin = {0};
@@ -120,20 +171,32 @@ template <class T> Polytope<T> makeConvexPolytope(const ConvexMeshGeometry<T>& c
     const Vec3<T> n = (normalMap * f.normal).normalized();
     poly.faceNormals.push_back(n);
     poly.faceOffsets.push_back(-n.dot(poly.vertices[mesh.polygonVertices[f.indexBase]]));
+    const std::uint32_t face = std::uint32_t(poly.faceNormals.size() - 1);
     for (std::uint32_t i = 0; i < f.indexCount; ++i) {
       const std::uint32_t v0 = mesh.polygonVertices[f.indexBase + i];
       const std::uint32_t v1 = mesh.polygonVertices[f.indexBase + (i + 1) % f.indexCount];
       poly.faceVertices.push_back(v0);
-      poly.edges.push_back({std::min(v0, v1), std::max(v0, v1)});
+      sides.push_back({std::min(v0, v1), std::max(v0, v1), face});
     }
     poly.faceBegin.push_back(static_cast<std::uint32_t>(poly.faceVertices.size()));
-    addUniqueDirection(poly.satNormals, n);
   }
-  std::sort(poly.edges.begin(), poly.edges.end());
-  poly.edges.erase(std::unique(poly.edges.begin(), poly.edges.end()), poly.edges.end());
+  // Parallel faces repeat an axis; skipping them would cost more (O(F^2)) than the extra projection.
+  poly.satNormals = poly.faceNormals;
+  // Each edge appears once per adjacent face; pair them up (a manifold hull has exactly two per edge).
+  std::sort(sides.begin(), sides.end());
+  poly.edgeFacesKnown = true;
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i + 1;
+    while (j < sides.size() && sides[j][0] == sides[i][0] && sides[j][1] == sides[i][1]) ++j;
+    poly.edges.push_back({sides[i][0], sides[i][1]});
+    poly.edgeFaces.push_back({sides[i][2], sides[j - 1][2]});
+    if (j - i != 2) poly.edgeFacesKnown = false;
+    i = j;
+  }
+  // Duplicated directions only matter on the direct edge-pair path, which runs for small products only.
   for (const auto& e : poly.edges) {
     const Vec3<T> d = poly.vertices[e[1]] - poly.vertices[e[0]];
-    if (d.squaredNorm() > T(0)) addUniqueDirection(poly.edgeDirections, Vec3<T>(d.normalized()));
+    if (d.squaredNorm() > T(0)) poly.edgeDirections.push_back(d.normalized());
   }
   return poly;
 }
@@ -150,6 +213,11 @@ template <class T> SatResult<T> satMinimumOverlap(const Polytope<T>& a, const Po
   }
   // Edge-edge axes; (nearly) parallel edges give no facet of the Minkowski difference and are skipped. Any unit
   // axis bounds the depth from above, so a slightly noisy axis never makes the answer wrong, only a zero one would.
+  if (a.edgeFacesKnown && b.edgeFacesKnown &&
+      a.edgeDirections.size() * b.edgeDirections.size() > kDirectEdgePairLimit) {
+    testPrunedEdgeAxes(a, b, stopWhenSeparated, best);
+    return best;
+  }
   const T eps = T(tol::Rel<T>::kEpsilon);
   for (const Vec3<T>& ea : a.edgeDirections) {
     for (const Vec3<T>& eb : b.edgeDirections) {

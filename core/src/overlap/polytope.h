@@ -26,6 +26,10 @@ template <class T> struct Polytope {
   std::vector<std::uint32_t> faceBegin;  // size faces + 1, into faceVertices
   std::vector<std::uint32_t> faceVertices;
   std::vector<std::array<std::uint32_t, 2>> edges;  // each hull edge once
+  // The two faces beside each edge (boxes, hulls). Without them (points, segments, non-manifold input) every
+  // edge pair is tried as a SAT axis.
+  std::vector<std::array<std::uint32_t, 2>> edgeFaces;
+  bool edgeFacesKnown = false;
   // Candidate SAT axes contributed by this shape: face normals (one per parallel pair suffices) and edge directions.
   std::vector<Vec3<T>> satNormals;
   std::vector<Vec3<T>> edgeDirections;
@@ -37,6 +41,11 @@ template <class T> Polytope<T> makePointPolytope(const Vec3<T>& p);
 template <class T> Polytope<T> makeSegmentPolytope(const Segment<T>& s);
 template <class T> Polytope<T> makeBoxPolytope(const BoxGeometry<T>& box, const Transform<T>& pose);
 template <class T> Polytope<T> makeConvexPolytope(const ConvexMeshGeometry<T>& convex, const Transform<T>& pose);
+
+// Edge-pair axes are tried directly (all pairs of distinct edge directions) when there are at most this many
+// pairs; above it only pairs whose Gauss-map arcs may cross (those that can form a face of the Minkowski
+// difference) are projected.
+inline constexpr std::size_t kDirectEdgePairLimit = 64;
 
 template <class T> struct SatResult {
   T depth;            // min overlap over the axes; < 0 means separated (then a lower bound of -distance)
