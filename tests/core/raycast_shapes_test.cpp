@@ -283,6 +283,25 @@ TYPED_TEST(Raycast, FarAwaySphereRaysKeepPrecision) {
 // shrinks), or nothing. Rays whose answer changes between the shape grown and shrunk by a small margin are
 // grazing (ill-conditioned); only their existence is not compared.
 using Reference = std::function<std::optional<LD>(const Vec3L& o, const Vec3L& d, LD grow)>;
+// The error of a reported unit normal at an exact surface point (world), given the tolerance used to decide which
+// faces the point lies on; 0 when exact.
+using NormalError = std::function<LD(const Vec3L& position, const Vec3L& normal, LD onFace)>;
+
+// Box faces |x_i| = h_i in a frame where x_frame = toFrame * (x - origin): the smallest error against the normal of
+// any face the point is on; face normals are toFrame^T e_i (the inverse-transpose of the point map), normalised.
+LD boxFaceNormalError(const Mat3L& toFrame, const Vec3L& origin, const Vec3L& h, const Vec3L& position,
+                      const Vec3L& normal, LD onFace) {
+  const Vec3L x = toFrame * (position - origin);
+  LD best = std::numeric_limits<LD>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    for (int sign : {-1, 1}) {
+      if (std::abs(x[i] - sign * h[i]) > onFace) continue;
+      const Vec3L n = (toFrame.transpose() * Vec3L::Unit(i) * LD(sign)).normalized();
+      best = std::min(best, (n - normal).norm());
+    }
+  }
+  return best;
+}
 
 std::optional<LD> sphereEntryLD(const Vec3L& m, const Vec3L& d, LD r) {
   const LD a = d.squaredNorm(), b = m.dot(d), c = m.squaredNorm() - r * r;
@@ -315,7 +334,7 @@ template <class T> Vec3L toLocal(const Transform<T>& pose, const Vec3L& p) {
 
 template <class T>
 void checkRandomRays(const Geometry<T>& g, const Transform<T>& pose, double size, const Reference& ref,
-                     std::uint64_t seed) {
+                     const NormalError& normalError, std::uint64_t seed) {
   test::Rng rng(seed);
   int compared = 0, hits = 0, inside = 0;
   for (int i = 0; i < 10000; ++i) {
@@ -342,6 +361,11 @@ void checkRandomRays(const Geometry<T>& g, const Transform<T>& pose, double size
     ASSERT_NEAR(double(r.hit.distance), double(*exact), test::Tol<T>::kRel * scale) << "ray " << i;
     const Vec3L position = o + *exact * d;
     ASSERT_LT(double((test::toLD(r.hit.position) - position).norm()), test::Tol<T>::kRel * scale * 2) << "ray " << i;
+    if (*exact > 0) {  // from outside: the surface normal at the exact hit point (inside hits are -dir, tested apart)
+      const LD onFace = LD(test::Tol<T>::kRel * scale * 2);
+      ASSERT_LT(double(normalError(position, test::toLD(r.hit.normal), onFace)), 10 * test::Tol<T>::kRel * scale / size)
+          << "ray " << i << " normal " << r.hit.normal.transpose();
+    }
   }
   EXPECT_GT(compared, 9000);
   EXPECT_GT(hits, 1000);
@@ -357,7 +381,10 @@ TYPED_TEST(Raycast, RandomRaysMatchClosedFormSphere) {
     const Reference ref = [&](const Vec3L& o, const Vec3L& d, LD grow) {
       return sphereEntryLD(o - test::toLD(pose.p), d, LD(r) + grow);
     };
-    checkRandomRays<T>(SphereGeometry<T>(r), pose, double(r), ref, 100 + shape);
+    const NormalError normal = [&](const Vec3L& p, const Vec3L& n, LD) {
+      return (n - (p - test::toLD(pose.p)) / LD(r)).norm();
+    };
+    checkRandomRays<T>(SphereGeometry<T>(r), pose, double(r), ref, normal, 100 + shape);
   }
 }
 
@@ -385,7 +412,12 @@ TYPED_TEST(Raycast, RandomRaysMatchClosedFormCapsule) {
       }
       return best;
     };
-    checkRandomRays<T>(CapsuleGeometry<T>(r, hh), pose, double(r + hh), ref, 200 + shape);
+    const NormalError normal = [&](const Vec3L& p, const Vec3L& n, LD) {
+      const Vec3L local = toLocal(pose, p);
+      const Vec3L axis(std::clamp(local.x(), -LD(hh), LD(hh)), 0, 0);
+      return (n - test::rotationLD(pose.q) * (local - axis).normalized()).norm();
+    };
+    checkRandomRays<T>(CapsuleGeometry<T>(r, hh), pose, double(r + hh), ref, normal, 200 + shape);
   }
 }
 
@@ -399,7 +431,10 @@ TYPED_TEST(Raycast, RandomRaysMatchClosedFormBox) {
       return boxEntryLD(toLocal(pose, o), test::rotationLD(pose.q).transpose() * d,
                         test::toLD(h) + Vec3L::Constant(grow));
     };
-    checkRandomRays<T>(BoxGeometry<T>(h), pose, double(h.norm()), ref, 300 + shape);
+    const NormalError normal = [&](const Vec3L& p, const Vec3L& n, LD onFace) {
+      return boxFaceNormalError(test::rotationLD(pose.q).transpose(), test::toLD(pose.p), test::toLD(h), p, n, onFace);
+    };
+    checkRandomRays<T>(BoxGeometry<T>(h), pose, double(h.norm()), ref, normal, 300 + shape);
   }
 }
 
@@ -421,7 +456,12 @@ TYPED_TEST(Raycast, RandomRaysMatchClosedFormScaledConvexBox) {
       const Mat3L toMesh = Sinv * test::rotationLD(pose.q).transpose();
       return boxEntryLD(toMesh * (o - test::toLD(pose.p)), toMesh * d, test::toLD(h) + Vec3L::Constant(grow / smax));
     };
-    checkRandomRays<T>(ConvexMeshGeometry<T>(cookBox<T>(h), scale), pose, double(h.norm() * smax), ref, 400 + shape);
+    const NormalError normal = [&](const Vec3L& p, const Vec3L& n, LD onFace) {
+      return boxFaceNormalError(Mat3L(Sinv * test::rotationLD(pose.q).transpose()), test::toLD(pose.p), test::toLD(h),
+                                p, n, onFace);
+    };
+    checkRandomRays<T>(ConvexMeshGeometry<T>(cookBox<T>(h), scale), pose, double(h.norm() * smax), ref, normal,
+                       400 + shape);
   }
 }
 
