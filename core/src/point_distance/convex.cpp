@@ -14,21 +14,21 @@
 namespace gq::detail {
 namespace {
 
-// Closest point to p on a convex polygon `pts` (counter-clockwise about n), p given with its plane projection.
-template <class T>
-Vec3<T> closestPointOnPolygon(const std::vector<Vec3<T>>& pts, const Vec3<T>& n, const Vec3<T>& p,
+// Closest point to p on a convex polygon of `count` vertices `vertex(k)` (counter-clockwise about n), given p's
+// projection onto the polygon's plane.
+template <class T, class VertexFn>
+Vec3<T> closestPointOnPolygon(std::uint32_t count, const VertexFn& vertex, const Vec3<T>& n, const Vec3<T>& p,
                               const Vec3<T>& projected) {
   bool inside = true;
-  for (std::size_t k = 0; k < pts.size() && inside; ++k) {
-    const Vec3<T>& a = pts[k];
-    const Vec3<T>& b = pts[(k + 1) % pts.size()];
-    if ((b - a).cross(projected - a).dot(n) < T(0)) inside = false;
+  for (std::uint32_t k = 0; k < count && inside; ++k) {
+    const Vec3<T> a = vertex(k);
+    if ((vertex((k + 1) % count) - a).cross(projected - a).dot(n) < T(0)) inside = false;
   }
   if (inside) return projected;
-  Vec3<T> best = pts[0];
+  Vec3<T> best = vertex(0);
   T bestDist2 = std::numeric_limits<T>::infinity();
-  for (std::size_t k = 0; k < pts.size(); ++k) {
-    const Vec3<T> c = closestPointOnSegment(pts[k], pts[(k + 1) % pts.size()], p);
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const Vec3<T> c = closestPointOnSegment(vertex(k), vertex((k + 1) % count), p);
     const T d2 = (c - p).squaredNorm();
     if (d2 < bestDist2) {
       bestDist2 = d2;
@@ -49,15 +49,14 @@ void pointDistanceConvex(const ConvexMeshGeometry<T>& g, const Transform<T>& pos
   out.closestIndex = kInvalidFaceIndex;
   T bestDist2 = std::numeric_limits<T>::infinity();
   Vec3<T> best = p;
-  std::vector<Vec3<T>> pts;
   for (const HullPolygon<T>& poly : hull.polygons) {
-    pts.clear();
-    for (std::uint32_t k = 0; k < poly.indexCount; ++k)
-      pts.push_back(scale.pointToShape(hull.vertices[hull.polygonVertices[poly.indexBase + k]]));
+    const auto vertex = [&](std::uint32_t k) {
+      return scale.pointToShape(hull.vertices[hull.polygonVertices[poly.indexBase + k]]);
+    };
     const Vec3<T> n = scale.normalToShape(poly.normal);
-    const T height = n.dot(p - pts[0]);
+    const T height = n.dot(p - vertex(0));
     if (height <= T(0)) continue;  // behind this face: it cannot hold the closest point
-    const Vec3<T> c = closestPointOnPolygon(pts, n, p, Vec3<T>(p - height * n));
+    const Vec3<T> c = closestPointOnPolygon(poly.indexCount, vertex, n, p, Vec3<T>(p - height * n));
     const T d2 = (c - p).squaredNorm();
     if (d2 < bestDist2) {
       bestDist2 = d2;
