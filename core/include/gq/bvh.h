@@ -6,7 +6,8 @@
 
 namespace gq {
 
-struct alignas(16) Bvh4Node {
+// 64-byte aligned: a node is exactly two cache lines.
+struct alignas(64) Bvh4Node {
   // Structure-of-arrays child bounds: lane i belongs to child i.
   float minX[4], minY[4], minZ[4];
   float maxX[4], maxY[4], maxZ[4];

@@ -58,6 +58,9 @@ template <class T> struct TriangleMesh {
   // Vertices on the convex hull of the used vertices (all used vertices when the mesh is flat): the exact
   // world AABB under any scale and pose is the AABB of these.
   std::vector<std::uint32_t> hullVertices;
+  // Copies of the 3 vertices of every cooked triangle, in leaf order: a leaf's triangles are contiguous in memory
+  // (one cache-friendly read instead of an index load plus three scattered vertex loads per triangle).
+  std::vector<Vec3<T>> triangleVertices;
   std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
 };
 

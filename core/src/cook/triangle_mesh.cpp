@@ -113,12 +113,14 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
     mesh->triangles.resize(kept.size());
     mesh->inputIndex.resize(kept.size());
     mesh->cookedIndex.assign(triangles.size(), kRemovedTriangle);
+    mesh->triangleVertices.reserve(3 * kept.size());
     std::vector<char> usedFlag(vertices.size(), 0);
     for (std::uint32_t c = 0; c < order.size(); ++c) {
       const std::uint32_t input = kept[order[c]];
       mesh->triangles[c] = triangles[input];
       mesh->inputIndex[c] = input;
       mesh->cookedIndex[input] = c;
+      for (std::uint32_t v : triangles[input]) mesh->triangleVertices.push_back(vertices[v]);
       for (std::uint32_t v : triangles[input]) usedFlag[v] = 1;
     }
     std::vector<std::uint32_t> used;

@@ -31,9 +31,8 @@ template <class T> class MeshRaycaster {
       : mesh_(mesh), ray_(makeWatertightRay(org, dir)), bvhRay_(makeBvhRay(org, dir)), cull_(cullBackFaces) {}
 
   bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
-    const TriangleIndices& idx = mesh_.triangles[cooked];
-    return intersectRayTriangle(ray_, mesh_.vertices[idx[0]], mesh_.vertices[idx[1]], mesh_.vertices[idx[2]], maxT,
-                                cull_, hit);
+    const Vec3<T>* v = &mesh_.triangleVertices[3 * std::size_t(cooked)];
+    return intersectRayTriangle(ray_, v[0], v[1], v[2], maxT, cull_, hit);
   }
 
   // Closest hit (anyHit = false) or the first hit found (anyHit = true) within maxDist.
