@@ -4,6 +4,7 @@
 //  - validate their input and return a Status; on failure they write no output;
 //  - never throw;
 //  - are instantiated for float and double.
+#include <array>
 #include <cstdint>
 
 #include "gq/geometry.h"
@@ -65,6 +66,10 @@ template <class T> struct DistanceResult {
 template <class T> struct GjkCache {
   Vec3<T> direction = Vec3<T>::Zero();  // last separating direction, in geom0's local frame (0 = cold)
   std::uint32_t iterations = 0;         // iterations the last call took (diagnostic)
+  // Search directions (geom0's local frame) whose support points formed the last GJK simplex. The next call
+  // re-evaluates them to start from a simplex of valid support points (safe even if the shapes changed).
+  std::array<Vec3<T>, 4> simplexDirections{};
+  std::uint32_t simplexSize = 0;        // 0 = no simplex cached
 };
 
 // Signed separation distance with witness points and normal.

@@ -1,13 +1,149 @@
-// PLACEHOLDER: every pair answers Unsupported until this family lands.
+// Distance façade: validation, then one dispatch table indexed [type0][type1]. Closed forms are written for
+// a <= b in GeometryType order; the mirrored cells go through `swapped`, which exchanges the inputs and flips the
+// result (point0 <-> point1, normal -> -normal). Convex pairs without a closed form use GJK/EPA in either order.
+// Unsupported: plane-plane and everything with a triangle mesh or heightfield (until the BVH-based kernels land),
+// and non-convex custom shapes.
+#include <array>
+
+#include "common/validate.h"
+#include "distance/distance.h"
+#include "gq/custom.h"
 #include "gq/query.h"
 
 namespace gq {
+namespace {
+
+template <class T> using DistanceFn = Status (*)(const Geometry<T>&, const Transform<T>&, const Geometry<T>&,
+                                                 const Transform<T>&, GjkCache<T>*, DistanceResult<T>&);
+
+// Adapts a closed-form kernel on concrete types to the table's signature.
+template <class T, class G0, class G1,
+          void (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&, DistanceResult<T>&)>
+Status closedForm(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                  GjkCache<T>* cache, DistanceResult<T>& out) {
+  Kernel(g0.template get<G0>(), p0, g1.template get<G1>(), p1, out);
+  if (cache) cache->iterations = 0;
+  return {};
+}
+
+// Plane against a support-mapped shape (the kernel takes the Geometry).
+template <class T>
+Status planeConvex(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                   GjkCache<T>* cache, DistanceResult<T>& out) {
+  detail::distancePlaneConvex(g0.template get<PlaneGeometry<T>>(), p0, g1, p1, out);
+  if (cache) cache->iterations = 0;
+  return {};
+}
 
 template <class T>
-Status distance(DistanceResult<T>&, const Geometry<T>&, const Transform<T>&, const Geometry<T>&, const Transform<T>&, GjkCache<T>*) {
-  return Status::unsupported("distance is not implemented yet");
+Status gjk(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+           GjkCache<T>* cache, DistanceResult<T>& out) {
+  return detail::distanceGjk(g0, p0, g1, p1, cache, out);
 }
-template Status distance<float>(DistanceResult<float>&, const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&, GjkCache<float>*);
-template Status distance<double>(DistanceResult<double>&, const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&, GjkCache<double>*);
+
+template <class T>
+Status unsupported(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&,
+                   GjkCache<T>*, DistanceResult<T>&) {
+  return Status::unsupported(std::string("distance between ") + toString(g0.type()) + " and " + toString(g1.type()));
+}
+
+// The mirrored pair: runs Fn(geom1, geom0) and flips the answer. The cache direction lives in the caller's geom0
+// frame and points from geom0 to geom1's side of the Minkowski difference, so it is re-expressed for the swap.
+template <class T, DistanceFn<T> Fn>
+Status swapped(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+               GjkCache<T>* cache, DistanceResult<T>& out) {
+  // A direction d in geom0's frame (geom0 supports along d, geom1 along -d) is -d in geom1's frame.
+  const auto mirror = [](const Transform<T>& from, const Transform<T>& to, const Vec3<T>& d) {
+    return Vec3<T>(to.rotateInv(-from.rotate(d)));
+  };
+  GjkCache<T> inner;
+  if (cache) {
+    inner.direction = mirror(p0, p1, cache->direction);
+    inner.simplexSize = std::min<std::uint32_t>(cache->simplexSize, 4);
+    for (std::uint32_t k = 0; k < inner.simplexSize; ++k) inner.simplexDirections[k] = mirror(p0, p1, cache->simplexDirections[k]);
+  }
+  DistanceResult<T> flipped;
+  const Status s = Fn(g1, p1, g0, p0, cache ? &inner : nullptr, flipped);
+  if (!s.ok()) return s;
+  out.distance = flipped.distance;
+  out.point0 = flipped.point1;
+  out.point1 = flipped.point0;
+  out.normal = -flipped.normal;
+  if (cache) {
+    cache->direction = mirror(p1, p0, inner.direction);
+    cache->iterations = inner.iterations;
+    cache->simplexSize = inner.simplexSize;
+    for (std::uint32_t k = 0; k < inner.simplexSize; ++k) cache->simplexDirections[k] = mirror(p1, p0, inner.simplexDirections[k]);
+  }
+  return s;
+}
+
+template <class T> using Row = std::array<DistanceFn<T>, kGeometryTypeCount>;
+template <class T> using S = SphereGeometry<T>;
+template <class T> using P = PlaneGeometry<T>;
+template <class T> using C = CapsuleGeometry<T>;
+template <class T> using B = BoxGeometry<T>;
+
+template <class T> constexpr DistanceFn<T> kSphereSphere = closedForm<T, S<T>, S<T>, detail::distanceSphereSphere<T>>;
+template <class T> constexpr DistanceFn<T> kSpherePlane = closedForm<T, S<T>, P<T>, detail::distanceSpherePlane<T>>;
+template <class T> constexpr DistanceFn<T> kSphereCapsule = closedForm<T, S<T>, C<T>, detail::distanceSphereCapsule<T>>;
+template <class T> constexpr DistanceFn<T> kSphereBox = closedForm<T, S<T>, B<T>, detail::distanceSphereBox<T>>;
+template <class T> constexpr DistanceFn<T> kPlaneCapsule = closedForm<T, P<T>, C<T>, detail::distancePlaneCapsule<T>>;
+template <class T> constexpr DistanceFn<T> kPlaneBox = closedForm<T, P<T>, B<T>, detail::distancePlaneBox<T>>;
+template <class T> constexpr DistanceFn<T> kCapsuleCapsule = closedForm<T, C<T>, C<T>, detail::distanceCapsuleCapsule<T>>;
+
+// Rows geom0, columns geom1, in GeometryType order: Sphere, Plane, Capsule, Box, Convex, Mesh, HeightField, Custom.
+template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTable = {{
+    {kSphereSphere<T>, kSpherePlane<T>, kSphereCapsule<T>, kSphereBox<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
+    {swapped<T, kSpherePlane<T>>, unsupported<T>, kPlaneCapsule<T>, kPlaneBox<T>, planeConvex<T>, unsupported<T>,
+     unsupported<T>, planeConvex<T>},
+    {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, gjk<T>, gjk<T>, unsupported<T>,
+     unsupported<T>, gjk<T>},
+    {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, gjk<T>, gjk<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
+    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
+    {unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>,
+     unsupported<T>},
+    {unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>,
+     unsupported<T>},
+    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
+}};
+static_assert(kDistanceTable<double>.size() == kGeometryTypeCount && kDistanceTable<double>[0].size() == kGeometryTypeCount,
+              "one row and one column per GeometryType");
+
+template <class T> bool nonConvexCustom(const Geometry<T>& g) {
+  const auto* c = g.template getIf<CustomGeometry<T>>();
+  return c && !c->callbacks->isConvex();
+}
+
+template <class T> bool finiteResult(const DistanceResult<T>& r) {
+  return std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal);
+}
+
+}  // namespace
+
+template <class T>
+Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
+                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = detail::checkGeometryAndPose(geom0, pose0, "pose0"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(geom1, pose1, "pose1"); !s.ok()) return s;
+    if (nonConvexCustom(geom0) || nonConvexCustom(geom1))
+      return Status::unsupported("distance needs a convex custom geometry (isConvex() is false)");
+    // Normalise the poses' rotations (validation accepts |q| within 1e-3 of 1).
+    const Transform<T> q0(pose0.p, pose0.q.normalized()), q1(pose1.p, pose1.q.normalized());
+    DistanceResult<T> r;
+    const auto fn = kDistanceTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())];
+    const Status s = fn(geom0, q0, geom1, q1, cache, r);
+    if (!s.ok()) return s;
+    if (!finiteResult(r)) return Status::internal("distance produced a non-finite result");
+    result = r;
+    return s;
+  });
+}
+
+template Status distance<float>(DistanceResult<float>&, const Geometry<float>&, const Transform<float>&,
+                                const Geometry<float>&, const Transform<float>&, GjkCache<float>*);
+template Status distance<double>(DistanceResult<double>&, const Geometry<double>&, const Transform<double>&,
+                                 const Geometry<double>&, const Transform<double>&, GjkCache<double>*);
 
 }  // namespace gq

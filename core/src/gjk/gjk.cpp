@@ -17,7 +17,20 @@ template <class T> SupportPoint<T> supportOfDifference(const ConvexShape<T>& a, 
   p.a = a.support(d);
   p.b = b.support(-d);
   p.w = p.a - p.b;
+  p.d = d;
   return p;
+}
+
+// Rebuilds the cached simplex from its search directions (valid support points whatever the poses now are).
+template <class T> void seedSimplex(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkCache<T>& cache, GjkSimplex<T>& s) {
+  for (std::uint32_t k = 0; k < std::min<std::uint32_t>(cache.simplexSize, 4); ++k) {
+    const Vec3<T>& local = cache.simplexDirections[k];
+    if (!isFinite(local) || !(local.squaredNorm() > T(0))) continue;
+    const SupportPoint<T> p = supportOfDifference(a, b, a.pose.rotate(local));
+    bool repeated = false;
+    for (std::uint32_t j = 0; j < s.size; ++j) repeated = repeated || s.points[j].w == p.w;
+    if (!repeated) s.points[s.size++] = p;
+  }
 }
 
 // First search direction: the cached one (a's local frame), else the centre difference, else +X.
@@ -54,8 +67,22 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
   std::array<T, 4> lambda = {T(1), T(0), T(0), T(0)};
   T gapBound = std::numeric_limits<T>::infinity();
   bool converged = false;
+  struct Best {
+    GjkSimplex<T> s;
+    std::array<T, 4> lambda;
+    Vec3<T> v;
+  } best{s, lambda, Vec3<T>::Constant(std::numeric_limits<T>::infinity())};
+  std::uint32_t stalls = 0;
   std::uint32_t it = 0;
-  while (it < kGjkMaxIterations) {
+  if (cache) seedSimplex(a, b, *cache, s);
+  if (s.size > 0) {
+    const SimplexClosest<T> c = closestOnSimplex(s);
+    r.coresOverlap = converged = c.containsOrigin || c.v.norm() <= tolerance;
+    v = c.v;
+    lambda = c.lambda;
+    best = {s, lambda, v};
+  }
+  while (!r.coresOverlap && it < kGjkMaxIterations) {
     ++it;
     const SupportPoint<T> p = supportOfDifference(a, b, Vec3<T>(-v));
     if (s.size > 0) {
@@ -65,8 +92,6 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
       converged = gapBound <= tolerance || alreadyInSimplex(s, p.w);
       if (converged) break;
     }
-    const GjkSimplex<T> previous = s;
-    const std::array<T, 4> previousLambda = lambda;
     s.points[s.size++] = p;
     const SimplexClosest<T> c = closestOnSimplex(s);
     if (c.containsOrigin || c.v.norm() <= tolerance) {
@@ -76,14 +101,18 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
       converged = true;
       break;
     }
-    // No strict decrease of |v|: rounding has taken over; keep the previous (better or equal) simplex.
-    if (previous.size > 0 && !(c.v.squaredNorm() < v.squaredNorm())) {
-      s = previous;
-      lambda = previousLambda;
-      break;
-    }
+    // |v| must decrease strictly. Near the origin rounding can stall it (the simplex is then nearly flat
+    // around the origin): keep going from the new simplex, which usually closes around the origin next, and
+    // give up after kGjkMaxStalls, answering with the best simplex seen.
+    if (!(c.v.squaredNorm() < best.v.squaredNorm()) && ++stalls > kGjkMaxStalls) break;
     v = c.v;
     lambda = c.lambda;
+    if (v.squaredNorm() < best.v.squaredNorm()) best = {s, lambda, v};
+  }
+  if (!r.coresOverlap && best.v.squaredNorm() < v.squaredNorm()) {
+    s = best.s;
+    lambda = best.lambda;
+    v = best.v;
   }
   r.iterations = it;
   r.errorBound = r.coresOverlap ? T(0) : gapBound;
@@ -100,6 +129,8 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
   if (cache) {
     cache->iterations = it;
     if (!r.coresOverlap) cache->direction = a.pose.rotateInv(v);
+    cache->simplexSize = s.size;
+    for (std::uint32_t k = 0; k < s.size; ++k) cache->simplexDirections[k] = a.pose.rotateInv(s.points[k].d);
   }
   return r;
 }
@@ -109,6 +140,8 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
   const T margins = a.margin + b.margin;
   GjkSimplex<T> s;
   Vec3<T> v = initialDirection<T>(a, b, nullptr);
+  T bestSquared = std::numeric_limits<T>::infinity();
+  std::uint32_t stalls = 0;
   for (std::uint32_t it = 0; it < kGjkMaxIterations; ++it) {
     const SupportPoint<T> p = supportOfDifference(a, b, Vec3<T>(-v));
     if (s.size > 0) {
@@ -118,12 +151,13 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
       // Converged: |v| is the core distance within tolerance.
       if (v.dot(v - p.w) <= tolerance * vNorm || alreadyInSimplex(s, p.w)) return vNorm <= margins + tolerance;
     }
-    const T previous = s.size > 0 ? v.squaredNorm() : std::numeric_limits<T>::infinity();
     s.points[s.size++] = p;
     const SimplexClosest<T> c = closestOnSimplex(s);
     if (c.containsOrigin || c.v.norm() <= margins + tolerance) return true;
-    if (!(c.v.squaredNorm() < previous)) return std::sqrt(previous) <= margins + tolerance;
+    // Rounding stall (see gjkDistance): keep going, at most kGjkMaxStalls times.
+    if (!(c.v.squaredNorm() < bestSquared) && ++stalls > kGjkMaxStalls) return std::sqrt(bestSquared) <= margins + tolerance;
     v = c.v;
+    bestSquared = std::min(bestSquared, v.squaredNorm());
   }
   return v.norm() <= margins + tolerance;
 }

@@ -31,6 +31,8 @@ inline constexpr std::uint32_t kHillClimbMinVertices = 32;
 inline constexpr double kGjkRoundoffUlps = 16.0;
 inline constexpr std::uint32_t kGjkMaxIterations = 128;
 inline constexpr std::uint32_t kEpaMaxIterations = 128;
+// GJK steps without a strict decrease of |v| tolerated before stopping (rounding stalls near the origin).
+inline constexpr std::uint32_t kGjkMaxStalls = 4;
 
 // A support mapping for one convex Geometry<T> at a pose. Holds raw pointers into the geometry's cooked data or
 // callbacks: it must not outlive the Geometry it was made from.
@@ -66,6 +68,7 @@ template <class T> struct SupportPoint {
   Vec3<T> w = Vec3<T>::Zero();  // a - b
   Vec3<T> a = Vec3<T>::Zero();  // on a's core
   Vec3<T> b = Vec3<T>::Zero();  // on b's core
+  Vec3<T> d = Vec3<T>::Zero();  // world search direction: a = s_A(d), b = s_B(-d)
 };
 
 template <class T> struct GjkSimplex {

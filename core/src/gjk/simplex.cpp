@@ -69,7 +69,9 @@ Candidate<T> triangleCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uin
   c.index = {i, j, k, 0};
   c.count = 3;
   c.lambda = {l0, l1, l2, T(0)};
-  c.v = l0 * p0 + l1 * p1 + l2 * p2;
+  // The plane projection, not sum(l_i p_i): near the origin the sum cancels and its direction (the next search
+  // direction) would be noise, while n is accurate to rounding of the edges.
+  c.v = p;
   return c;
 }
 

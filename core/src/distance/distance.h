@@ -1,0 +1,61 @@
+#pragma once
+// Signed-distance kernels, one per pair with a closed form (distance/<a>_<b>.cpp, a <= b in GeometryType order),
+// and the GJK/EPA kernel for every other convex pair. Inputs are validated by the façade (dispatch/distance.cpp).
+// Conventions (as gq::DistanceResult): normal is unit from geom0 towards geom1, point0 on geom0, point1 on geom1,
+// point1 = point0 + distance * normal; when penetrating, translating geom1 by -distance * normal separates them.
+// When the normal is undefined (coincident centres, intersecting axes) the kernels pick a documented direction.
+#include "gq/geometry.h"
+#include "gq/query.h"
+#include "gq/transform.h"
+
+namespace gq::detail {
+
+template <class T>
+void distanceSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& pose0, const SphereGeometry<T>& g1,
+                          const Transform<T>& pose1, DistanceResult<T>& out);
+template <class T>
+void distanceSpherePlane(const SphereGeometry<T>& g0, const Transform<T>& pose0, const PlaneGeometry<T>& g1,
+                         const Transform<T>& pose1, DistanceResult<T>& out);
+template <class T>
+void distanceSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& pose0, const CapsuleGeometry<T>& g1,
+                           const Transform<T>& pose1, DistanceResult<T>& out);
+template <class T>
+void distanceSphereBox(const SphereGeometry<T>& g0, const Transform<T>& pose0, const BoxGeometry<T>& g1,
+                       const Transform<T>& pose1, DistanceResult<T>& out);
+template <class T>
+void distancePlaneCapsule(const PlaneGeometry<T>& g0, const Transform<T>& pose0, const CapsuleGeometry<T>& g1,
+                          const Transform<T>& pose1, DistanceResult<T>& out);
+template <class T>
+void distancePlaneBox(const PlaneGeometry<T>& g0, const Transform<T>& pose0, const BoxGeometry<T>& g1,
+                      const Transform<T>& pose1, DistanceResult<T>& out);
+// Plane against a convex mesh or a convex custom shape, through the support mapping (exact: a plane's distance
+// to a convex set is attained at the support point along -normal).
+template <class T>
+void distancePlaneConvex(const PlaneGeometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1,
+                         const Transform<T>& pose1, DistanceResult<T>& out);
+template <class T>
+void distanceCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>& pose0, const CapsuleGeometry<T>& g1,
+                            const Transform<T>& pose1, DistanceResult<T>& out);
+
+// Any two of sphere, capsule, box, convex mesh, convex custom: GJK on the cores, EPA when they overlap. Returns Ok,
+// or Warning when GJK/EPA stopped with an error bound above tolerance (the best answer is still written).
+template <class T>
+Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
+                   GjkCache<T>* cache, DistanceResult<T>& out);
+
+// Closest points of segments [p0, q0] and [p1, q1] (either may have zero length); s, t in [0, 1].
+template <class T> struct SegmentClosest {
+  Vec3<T> c0, c1;
+  T s, t;
+};
+template <class T>
+SegmentClosest<T> closestSegmentSegment(const Vec3<T>& p0, const Vec3<T>& q0, const Vec3<T>& p1, const Vec3<T>& q1);
+template <class T> Vec3<T> closestOnSegment(const Vec3<T>& p, const Vec3<T>& q, const Vec3<T>& x);
+
+// Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide.
+template <class T>
+void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback, DistanceResult<T>& out);
+// A unit vector orthogonal to d (d non-zero), or +X for d = 0.
+template <class T> Vec3<T> anyOrthogonal(const Vec3<T>& d);
+
+}  // namespace gq::detail

@@ -1,0 +1,227 @@
+// gq::distance on the GJK/EPA pairs against exact brute-force references over polytope feature pairs (long double).
+#include "gjk_test_shapes.h"
+
+#include "gq/custom.h"
+
+namespace {
+
+using namespace gjktest;
+
+template <class T> class DistanceGjk : public ::testing::Test {};
+TYPED_TEST_SUITE(DistanceGjk, Scalars);
+
+constexpr int kPoses = 1000;
+
+// A core polytope (box, hull, segment or point) with the radius that rounds it.
+struct RoundedPolytope {
+  Polytope core;
+  L margin = 0;
+};
+
+// Exact signed distance of two rounded polytopes: separated cores -> feature distance - margins; intersecting
+// cores -> -(SAT depth + margins).
+inline L exactSignedDistance(const RoundedPolytope& a, const RoundedPolytope& b) {
+  const L sat = polytopePenetration(a.core, b.core);
+  if (sat < 0) return polytopeDistance(a.core, b.core) - a.margin - b.margin;
+  return -(sat + a.margin + b.margin);
+}
+
+// Signed distance of x from a rounded polytope's surface, valid near the surface.
+inline L surfaceResidual(const VL& x, const RoundedPolytope& p) {
+  if (p.core.tris.empty()) {  // point or segment: distance to the core minus the radius
+    const VL& a = p.core.v.front();
+    const VL& b = p.core.v.back();
+    return pointSegment(x, a, b) - p.margin;
+  }
+  return signedDistanceToPolytope(x, p.core) - p.margin;
+}
+
+template <class T> RoundedPolytope roundedBox(const Eigen::Vector3d& h, const gq::Transform<T>& pose) {
+  return {boxPolytope<T>(h.cast<T>(), pose), 0};
+}
+template <class T> RoundedPolytope roundedCapsule(const gq::CapsuleGeometry<T>& c, const gq::Transform<T>& pose) {
+  const auto [a, b] = capsuleSegment(c, pose);
+  RoundedPolytope p;
+  p.core.v = {a, b};
+  p.core.edges = {{0, 1}};
+  p.margin = L(c.radius);
+  return p;
+}
+template <class T> RoundedPolytope roundedSphere(T radius, const gq::Transform<T>& pose) {
+  RoundedPolytope p;
+  p.core.v = {toL(pose).p};
+  p.margin = L(radius);
+  return p;
+}
+template <class T> RoundedPolytope roundedHull(const gq::ConvexMesh<T>& mesh, const gq::MeshScale<T>& scale,
+                                               const gq::Transform<T>& pose) {
+  RoundedPolytope p{hullPolytope(mesh, gq::Transform<T>()), 0};
+  const Eigen::Matrix<L, 3, 3> S = scale.toMatrix().template cast<L>();
+  const PoseL t = toL(pose);
+  for (auto& v : p.core.v) v = t.apply(S * v);
+  return p;
+}
+
+// Runs distance both ways and checks value, witnesses on the surfaces, and the result's own consistency.
+template <class T>
+void checkPair(const gq::Geometry<T>& g0, const gq::Transform<T>& p0, const RoundedPolytope& r0,
+               const gq::Geometry<T>& g1, const gq::Transform<T>& p1, const RoundedPolytope& r1, int i) {
+  const double tol = kGjkTol<T>;
+  const L exact = exactSignedDistance(r0, r1);
+  gq::DistanceResult<T> r, m;
+  ASSERT_TRUE(gq::distance(r, g0, p0, g1, p1).ok());
+  ASSERT_TRUE(gq::distance(m, g1, p1, g0, p0).ok());
+  ASSERT_NEAR(double(r.distance), double(exact), tol) << "pose " << i;
+  ASSERT_NEAR(double(m.distance), double(exact), tol) << "pose " << i;
+  EXPECT_NEAR(double(surfaceResidual(toL(r.point0), r0)), 0.0, tol) << "pose " << i;
+  EXPECT_NEAR(double(surfaceResidual(toL(r.point1), r1)), 0.0, tol) << "pose " << i;
+  expectConsistent(r, tol);
+  expectConsistent(m, tol);
+}
+
+TYPED_TEST(DistanceGjk, BoxBoxSeparatedAlongFaceAxisIsTheGap) {
+  using T = TypeParam;
+  Rng rng(21);
+  const Eigen::Vector3d hA(1, 1, 1);
+  for (int i = 0; i < kPoses; ++i) {
+    // B's lowest point along -X sits `gap` above A's +X face and projects inside it.
+    const Eigen::Vector3d hB = rng.vec(0.1, 0.5);
+    const Eigen::Quaterniond q = rng.rotation();
+    const double gap = rng.uniform(1e-3, 1.0);
+    const double reach = (q.conjugate() * Eigen::Vector3d::UnitX()).cwiseAbs().dot(hB);
+    const Eigen::Vector3d c(1 + gap + reach, rng.uniform(-0.1, 0.1), rng.uniform(-0.1, 0.1));
+    const gq::Transform<T> pA, pB(c.cast<T>(), q.cast<T>());
+    gq::DistanceResult<T> r;
+    ASSERT_TRUE(gq::distance(r, box<T>(hA), pA, box<T>(hB), pB).ok());
+    ASSERT_NEAR(double(r.distance), gap, kGjkTol<T>) << "pose " << i;
+    EXPECT_NEAR(double(r.normal.x()), 1.0, kGjkTol<T>);
+    EXPECT_NEAR(double(r.point0.x()), 1.0, kGjkTol<T>);
+    expectConsistent(r, kGjkTol<T>);
+  }
+}
+
+TYPED_TEST(DistanceGjk, BoxBoxSeparatedAlongEdgeEdgeAxisIsTheGap) {
+  using T = TypeParam;
+  Rng rng(22);
+  const Eigen::Vector3d n = Eigen::Vector3d(1, 1, 0).normalized(), u = Eigen::Vector3d(1, -1, 0).normalized();
+  for (int i = 0; i < kPoses; ++i) {
+    // B's edge along u faces A's edge (x = y = 1, along z) across the axis n = (1,1,0)/sqrt2.
+    const double s = rng.uniform(0.2, 0.6), gap = rng.uniform(1e-3, 1.0), z0 = rng.uniform(-0.5, 0.5);
+    Eigen::Matrix3d R;
+    Eigen::Vector3d m = Eigen::Vector3d::UnitZ();
+    R.col(0) = u;
+    R.col(1) = (n + m) / std::sqrt(2.0);
+    R.col(2) = (n - m) / std::sqrt(2.0);
+    if (R.determinant() < 0) R.col(1).swap(R.col(2));
+    ASSERT_NEAR((R * Eigen::Vector3d(0, 1, 1)).normalized().dot(n), 1.0, 1e-12);
+    const Eigen::Vector3d c = Eigen::Vector3d(1, 1, z0) + (gap + s * std::sqrt(2.0)) * n;
+    const gq::Transform<T> pA, pB(c.cast<T>(), Eigen::Quaterniond(R).cast<T>());
+    gq::DistanceResult<T> r;
+    ASSERT_TRUE(gq::distance(r, box<T>(Eigen::Vector3d(1, 1, 1)), pA, box<T>(Eigen::Vector3d::Constant(s)), pB).ok());
+    ASSERT_NEAR(double(r.distance), gap, kGjkTol<T>) << "pose " << i;
+    EXPECT_NEAR(double(r.normal.template cast<double>().dot(n)), 1.0, kGjkTol<T>);
+    EXPECT_NEAR(double((r.point0.template cast<double>() - Eigen::Vector3d(1, 1, z0)).norm()), 0.0, 10 * kGjkTol<T>);
+    expectConsistent(r, kGjkTol<T>);
+  }
+}
+
+TYPED_TEST(DistanceGjk, BoxBoxMatchesBruteForceFeaturePairs) {
+  using T = TypeParam;
+  Rng rng(23);
+  int penetrating = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const Eigen::Vector3d h0 = rng.vec(0.2, 1), h1 = rng.vec(0.2, 1);
+    const auto p0 = randomPose<T>(rng, 1.2), p1 = randomPose<T>(rng, 1.2);
+    const RoundedPolytope r0 = roundedBox(h0, p0), r1 = roundedBox(h1, p1);
+    penetrating += polytopePenetration(r0.core, r1.core) >= 0;
+    checkPair<T>(box<T>(h0), p0, r0, box<T>(h1), p1, r1, i);
+  }
+  EXPECT_GT(penetrating, kPoses / 10);  // both regimes are exercised
+  EXPECT_LT(penetrating, kPoses - kPoses / 10);
+}
+
+TYPED_TEST(DistanceGjk, ConvexConvexMatchesBruteForceFeaturePairs) {
+  using T = TypeParam;
+  Rng rng(24);
+  for (int i = 0; i < kPoses; ++i) {
+    const auto h0 = makeHull<T>(pointsOnEllipsoid<T>(rng, 12 + i % 9, rng.vec(0.3, 1)));
+    const auto h1 = makeHull<T>(pointsOnEllipsoid<T>(rng, 12 + i % 7, rng.vec(0.3, 1)));
+    const auto p0 = randomPose<T>(rng, 1), p1 = randomPose<T>(rng, 1);
+    const gq::MeshScale<T> s0, s1(rng.vec(0.5, 1.5).cast<T>(), rng.rotation().cast<T>());
+    checkPair<T>(gq::ConvexMeshGeometry<T>(h0, s0), p0, roundedHull(*h0, s0, p0), gq::ConvexMeshGeometry<T>(h1, s1),
+                 p1, roundedHull(*h1, s1, p1), i);
+  }
+}
+
+TYPED_TEST(DistanceGjk, CapsuleBoxMatchesBruteForceSegmentFeatures) {
+  using T = TypeParam;
+  Rng rng(25);
+  for (int i = 0; i < kPoses; ++i) {
+    const gq::CapsuleGeometry<T> cap(T(rng.uniform(0.05, 0.5)), T(rng.uniform(0.1, 1.2)));
+    const Eigen::Vector3d h = rng.vec(0.2, 1);
+    const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 1.5);
+    checkPair<T>(cap, p0, roundedCapsule(cap, p0), box<T>(h), p1, roundedBox(h, p1), i);
+  }
+}
+
+TYPED_TEST(DistanceGjk, SphereConvexMatchesBruteForcePointFeatures) {
+  using T = TypeParam;
+  Rng rng(26);
+  const auto hull = makeHull<T>(pointsOnEllipsoid<T>(rng, 24, Eigen::Vector3d(1, 0.7, 0.5)));
+  for (int i = 0; i < kPoses; ++i) {
+    const T rad = T(rng.uniform(0.05, 0.8));
+    const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 0.5);
+    checkPair<T>(gq::SphereGeometry<T>(rad), p0, roundedSphere(rad, p0), gq::ConvexMeshGeometry<T>(hull), p1,
+                 roundedHull(*hull, gq::MeshScale<T>(), p1), i);
+  }
+}
+
+// A convex custom shape: a box given only by its support mapping.
+template <class T> class CustomBox : public gq::CustomGeometryCallbacks<T> {
+ public:
+  explicit CustomBox(const gq::Vec3<T>& h) : h_(h) {}
+  const char* name() const override { return "custom box"; }
+  gq::Bounds3<T> localBounds() const override { return gq::Bounds3<T>::fromMinMax(-h_, h_); }
+  gq::Vec3<T> support(const gq::Vec3<T>& d) const override {
+    return {d.x() < 0 ? -h_.x() : h_.x(), d.y() < 0 ? -h_.y() : h_.y(), d.z() < 0 ? -h_.z() : h_.z()};
+  }
+  bool raycast(const gq::Vec3<T>&, const gq::Vec3<T>&, T, gq::HitFlags, gq::RaycastHit<T>&) const override { return false; }
+
+ private:
+  gq::Vec3<T> h_;
+};
+
+TYPED_TEST(DistanceGjk, CustomConvexMatchesBruteForceThroughSupportMapping) {
+  using T = TypeParam;
+  Rng rng(27);
+  for (int i = 0; i < kPoses; ++i) {
+    const Eigen::Vector3d h0 = rng.vec(0.2, 1), h1 = rng.vec(0.2, 1);
+    const auto p0 = randomPose<T>(rng, 1.2), p1 = randomPose<T>(rng, 1.2);
+    const gq::Geometry<T> custom = gq::CustomGeometry<T>(std::make_shared<CustomBox<T>>(h0.cast<T>()));
+    checkPair<T>(custom, p0, roundedBox(h0, p0), box<T>(h1), p1, roundedBox(h1, p1), i);
+  }
+}
+
+TYPED_TEST(DistanceGjk, WarmStartedCallTakesNoMoreIterations) {
+  using T = TypeParam;
+  Rng rng(28);
+  const auto hull = makeHull<T>(pointsOnEllipsoid<T>(rng, 40, Eigen::Vector3d(1, 0.8, 0.6)));
+  const gq::Geometry<T> g0 = gq::ConvexMeshGeometry<T>(hull), g1 = box<T>(Eigen::Vector3d(0.5, 0.3, 0.4));
+  int fewer = 0;
+  for (int i = 0; i < 200; ++i) {
+    const auto p0 = randomPose<T>(rng, 0.2);
+    const gq::Transform<T> p1(gq::Vec3<T>(rng.unit().cast<T>() * T(2.5)), rng.rotation().cast<T>());
+    gq::GjkCache<T> cache;
+    gq::DistanceResult<T> cold, warm;
+    ASSERT_TRUE(gq::distance(cold, g0, p0, g1, p1, &cache).ok());
+    const std::uint32_t coldIterations = cache.iterations;
+    ASSERT_GT(cache.direction.norm(), T(0));
+    ASSERT_TRUE(gq::distance(warm, g0, p0, g1, p1, &cache).ok());
+    EXPECT_LE(cache.iterations, coldIterations) << "pose " << i;
+    fewer += cache.iterations < coldIterations;
+    EXPECT_NEAR(double(warm.distance), double(cold.distance), kGjkTol<T>);
+  }
+  EXPECT_GT(fewer, 100);  // the warm start actually helps
+}
+
+}  // namespace
