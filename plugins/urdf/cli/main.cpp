@@ -1,0 +1,275 @@
+// gq-urdf: info, check, never and bench on a URDF (+ SRDF) robot. Single thread throughout.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "gq/urdf/fcl_checker.h"
+#include "gq/urdf/robot.h"
+#include "gq/urdf/self_collision.h"
+
+namespace {
+
+using namespace gq::urdf;
+using Clock = std::chrono::steady_clock;
+
+struct CommonOptions {
+  std::string urdf, srdf, mode = "hull";
+  std::vector<std::string> packagePaths;
+};
+
+void addCommon(CLI::App& app, CommonOptions& o) {
+  app.add_option("--urdf", o.urdf, "URDF file")->required();
+  app.add_option("--srdf", o.srdf, "SRDF file (disable_collisions, group states)");
+  app.add_option("--mode", o.mode, "mesh | hull | box | box-aabb | capsule | sphere | best-primitive");
+  app.add_option("--package-path", o.packagePaths, "folder holding ROS packages (repeatable; ROS_PACKAGE_PATH also used)");
+}
+
+int fail(const gq::Status& s) {
+  std::cerr << "gq-urdf: " << s.toString() << "\n";
+  return s.code == gq::StatusCode::InvalidArgument ? 2 : 1;
+}
+
+gq::Status load(const CommonOptions& o, const std::string& mode, std::shared_ptr<const RobotModel<double>>& out) {
+  LoadOptions lo;
+  lo.packagePaths = o.packagePaths;
+  gq::Status s = parseRepresentation(mode, lo.representation);
+  if (!s.ok()) return s;
+  auto model = std::make_shared<RobotModel<double>>();
+  s = loadRobot(o.urdf, o.srdf, lo, *model);
+  if (!s.ok()) return s;
+  if (s.code == gq::StatusCode::Warning) std::cerr << "warning: " << s.message << "\n";
+  out = model;
+  return {};
+}
+
+std::string pairName(const RobotModel<double>& m, const LinkPair& p) {
+  return m.links[p.a].name + " - " + m.links[p.b].name;
+}
+
+int runInfo(const CommonOptions& o) {
+  std::shared_ptr<const RobotModel<double>> m;
+  if (gq::Status s = load(o, o.mode, m); !s.ok()) return fail(s);
+  std::printf("robot %s: %zu links, %zu joints, %zu variables, %zu shapes, representation %s, memory %.1f KiB\n",
+              m->name.c_str(), m->links.size(), m->joints.size(), m->variables.size(), m->shapes.size(),
+              o.mode.c_str(), m->memoryBytes() / 1024.0);
+  std::printf("\njoints:\n");
+  for (const auto& j : m->joints)
+    std::printf("  %-28s %-10s %s -> %s  [%g, %g]%s\n", j.name.c_str(), toString(j.type),
+                m->links[j.parentLink].name.c_str(), m->links[j.childLink].name.c_str(), double(j.lower),
+                double(j.upper), j.mimicJoint >= 0 ? "  (mimic)" : "");
+  std::printf("\nshapes (error: mesh->approximation / approximation->mesh, metres; sampled one-sided Hausdorff):\n");
+  for (const auto& sh : m->shapes)
+    std::printf("  %-20s %-9s as %-14s src tris %6u  model faces %5u  err %.5f / %.5f  %7.1f KiB  %s\n",
+                m->links[sh.link].name.c_str(), toString(sh.source),
+                sh.source == ShapeSource::Mesh ? toString(sh.representation)
+                : sh.source == ShapeSource::Cylinder ? "64-gon prism" : toString(sh.source),
+                sh.sourceTriangles, sh.modelTriangles, double(sh.error.meshToApproximation),
+                double(sh.error.approximationToMesh), sh.bytes / 1024.0, sh.file.c_str());
+  std::size_t checked = 0, allowed = 0;
+  for (std::uint32_t a = 0; a < m->links.size(); ++a)
+    for (std::uint32_t b = a + 1; b < m->links.size(); ++b) {
+      if (m->links[a].shapes.empty() || m->links[b].shapes.empty()) continue;
+      (m->isAllowed(a, b) ? allowed : checked)++;
+    }
+  std::printf("\nlink pairs with shapes: %zu checked, %zu allowed (adjacent / same link / SRDF)\nhome: %s\n", checked,
+              allowed, m->homeSource.c_str());
+  std::printf("cylinders: hull of a %u-gon prism, radial error r(1-cos(pi/%u)) = %.3g r\n", kCylinderSegments,
+              kCylinderSegments, 1.0 - std::cos(M_PI / kCylinderSegments));
+  return 0;
+}
+
+gq::Status readConfiguration(const std::string& path, const RobotModel<double>& m, std::vector<double>& q) {
+  std::ifstream in(path);
+  if (!in) return gq::Status::fileError("configuration file '" + path + "' cannot be opened");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded()) return gq::Status::parseError("configuration file '" + path + "' is not valid JSON");
+  q = m.home;
+  if (j.is_array()) {
+    if (j.size() != q.size() || !std::all_of(j.begin(), j.end(), [](auto& v) { return v.is_number(); }))
+      return gq::Status::invalid("configuration array needs " + std::to_string(q.size()) + " numbers");
+    for (std::size_t i = 0; i < q.size(); ++i) q[i] = j[i].get<double>();
+    return {};
+  }
+  if (!j.is_object()) return gq::Status::invalid("configuration must be an array or an object {joint: value}");
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const auto v = std::find(m.variables.begin(), m.variables.end(), it.key());
+    if (v == m.variables.end() || !it.value().is_number())
+      return gq::Status::invalid("configuration names unknown joint '" + it.key() + "' or has a non-number value");
+    q[std::size_t(v - m.variables.begin())] = it.value().get<double>();
+  }
+  return {};
+}
+
+void progress(std::size_t done, std::size_t total) {
+  if (total < 1000 || (done % (total / 100) != 0 && done != total)) return;
+  const int width = 40, filled = int(width * done / total);
+  std::fprintf(stderr, "\r[%s%s] %3zu%%", std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(),
+               done * 100 / total);
+  if (done == total) std::fprintf(stderr, "\n");
+}
+
+int runCheck(const CommonOptions& o, const std::string& config, std::size_t random, std::uint64_t seed) {
+  std::shared_ptr<const RobotModel<double>> m;
+  if (gq::Status s = load(o, o.mode, m); !s.ok()) return fail(s);
+  SelfCollisionChecker<double> checker(m);
+  if (random == 0) {
+    std::vector<double> q = m->home;
+    if (!config.empty())
+      if (gq::Status s = readConfiguration(config, *m, q); !s.ok()) return fail(s);
+    CollisionResult r;
+    const auto t0 = Clock::now();
+    if (gq::Status s = checker.checkSelfCollision(q, r); !s.ok()) return fail(s);
+    const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+    std::printf("%s (%s) in %.1f us\n", r.colliding ? "COLLIDING" : "collision-free",
+                config.empty() ? m->homeSource.c_str() : config.c_str(), us);
+    for (const auto& p : r.pairs) std::printf("  %s\n", pairName(*m, p).c_str());
+    SelfDistanceResult<double> d;
+    if (gq::Status s = checker.selfDistance(q, d); s.ok())
+      std::printf("self distance %.6f m between %s\n", d.distance, pairName(*m, d.pair).c_str());
+    else
+      std::printf("self distance: %s\n", s.toString().c_str());
+    return r.colliding ? 3 : 0;
+  }
+  std::uint64_t rng = seed;
+  std::size_t colliding = 0;
+  double seconds = 0;
+  std::map<LinkPair, std::size_t> counts;
+  for (std::size_t i = 0; i < random; ++i) {
+    const std::vector<double> q = randomConfiguration(*m, rng);
+    CollisionResult r;
+    const auto t0 = Clock::now();
+    if (gq::Status s = checker.checkSelfCollision(q, r); !s.ok()) return fail(s);
+    seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+    colliding += r.colliding;
+    for (const auto& p : r.pairs) ++counts[p];
+    progress(i + 1, random);
+  }
+  std::printf("%zu of %zu random configurations collide (seed %llu); %.2f us per check\n", colliding, random,
+              (unsigned long long)seed, 1e6 * seconds / double(random));
+  for (const auto& [p, n] : counts) std::printf("  %6zu  %s\n", n, pairName(*m, p).c_str());
+  return 0;
+}
+
+int runNever(const CommonOptions& o, std::uint64_t samples, std::uint64_t seed, const std::string& out) {
+  std::shared_ptr<const RobotModel<double>> m;
+  if (gq::Status s = load(o, o.mode, m); !s.ok()) return fail(s);
+  NeverCollidingResult r;
+  if (gq::Status s = neverColliding(m, samples, seed, r); !s.ok()) return fail(s);
+  const std::string srdf = writeSrdfDisableCollisions(*m, r.never);
+  if (out.empty()) {
+    std::cout << srdf;
+  } else {
+    std::ofstream f(out);
+    if (!(f << srdf)) return fail(gq::Status::fileError("cannot write '" + out + "'"));
+  }
+  std::fprintf(stderr, "%zu link pairs never collided in %llu samples\n", r.never.size(), (unsigned long long)samples);
+  return 0;
+}
+
+std::string machineName() {
+  std::ifstream cpu("/proc/cpuinfo");
+  for (std::string line; std::getline(cpu, line);)
+    if (line.rfind("model name", 0) == 0) {
+      std::string name = line.substr(line.find(':') + 2);
+      std::replace(name.begin(), name.end(), ',', ' ');
+      return name;
+    }
+  return "unknown";
+}
+
+// Checks per second over `qs`, or a negative value with the status when the backend cannot answer.
+template <class Check> double checksPerSecond(const std::vector<std::vector<double>>& qs, Check&& check, gq::Status& s) {
+  const auto t0 = Clock::now();
+  for (const auto& q : qs) {
+    CollisionResult r;
+    s = check(q, r);
+    if (!s.ok()) return -1;
+  }
+  return double(qs.size()) / std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+int runBench(const CommonOptions& o, std::size_t n, std::uint64_t seed, const std::string& csv) {
+  std::ofstream out;
+  if (!csv.empty()) {
+    const bool fresh = !std::ifstream(csv).good();
+    out.open(csv, std::ios::app);
+    if (fresh) out << "date,machine,robot,mode,backend,checks_per_s,ratio\n";
+  }
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
+  const std::string machine = machineName();
+  std::printf("%-15s %-8s %14s %10s\n", "mode", "backend", "checks/s", "gq/fcl");
+  for (const char* mode : {"mesh", "hull", "best-primitive"}) {
+    std::shared_ptr<const RobotModel<double>> m;
+    if (gq::Status s = load(o, mode, m); !s.ok()) return fail(s);
+    std::uint64_t rng = seed;
+    std::vector<std::vector<double>> qs;
+    for (std::size_t i = 0; i < n; ++i) qs.push_back(randomConfiguration(*m, rng));
+    CollisionRequest first;
+    first.allPairs = false;
+    SelfCollisionChecker<double> gqChecker(m);
+    std::unique_ptr<FclSelfCollisionChecker> fclChecker;
+    if (gq::Status s = FclSelfCollisionChecker::create(m, fclChecker); !s.ok()) return fail(s);
+    gq::Status sg, sf;
+    const double gqRate = checksPerSecond(qs, [&](auto& q, auto& r) { return gqChecker.checkSelfCollision(q, r, first); }, sg);
+    const double fclRate = checksPerSecond(qs, [&](auto& q, auto& r) { return fclChecker->checkSelfCollision(q, r, first); }, sf);
+    const double ratio = gqRate > 0 && fclRate > 0 ? gqRate / fclRate : 0;
+    for (auto [backend, rate, st] : {std::tuple{"gq", gqRate, sg}, std::tuple{"fcl", fclRate, sf}}) {
+      if (rate > 0) std::printf("%-15s %-8s %14.0f %10s\n", mode, backend, rate,
+                                std::string(backend) == "gq" ? std::to_string(ratio).substr(0, 5).c_str() : "");
+      else std::printf("%-15s %-8s %14s  (%s)\n", mode, backend, "n/a", st.message.c_str());
+      if (out.is_open())
+        out << date << "," << machine << "," << m->name << "," << mode << "," << backend << ","
+            << (rate > 0 ? std::to_string(rate) : "unsupported") << ","
+            << (std::string(backend) == "gq" ? std::to_string(ratio) : "1") << "\n";
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"gq-urdf: URDF/SRDF robot self-collision with GeomQuery"};
+  app.require_subcommand(1);
+  CommonOptions common;
+  auto* info = app.add_subcommand("info", "links, joints, shapes, triangle counts, approximation errors, memory");
+  addCommon(*info, common);
+  std::string config;
+  std::size_t random = 0, benchN = 2000;
+  std::uint64_t seed = 1, samples = 10000;
+  std::string out, csv;
+  auto* check = app.add_subcommand("check", "self-collision of one configuration (JSON) or of N random ones");
+  addCommon(*check, common);
+  check->add_option("--config", config, "JSON: [q0, q1, ...] or {\"joint\": value}; default: the home pose");
+  check->add_option("--random", random, "check N random configurations");
+  check->add_option("--seed", seed, "random seed");
+  auto* never = app.add_subcommand("never", "write the SRDF disable_collisions list (adjacent + never colliding)");
+  addCommon(*never, common);
+  never->add_option("--samples", samples, "random configurations");
+  never->add_option("--seed", seed, "random seed");
+  never->add_option("--out", out, "SRDF file to write (default: stdout)");
+  auto* bench = app.add_subcommand("bench", "checks/s in mesh, hull and primitive modes, gq next to FCL");
+  addCommon(*bench, common);
+  bench->add_option("--n", benchN, "random configurations per mode");
+  bench->add_option("--seed", seed, "random seed");
+  bench->add_option("--csv", csv, "append rows to this CSV");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*info) return runInfo(common);
+    if (*check) return runCheck(common, config, random, seed);
+    if (*never) return runNever(common, samples, seed, out);
+    if (*bench) return runBench(common, benchN, seed, csv);
+  } catch (const std::exception& e) {
+    std::cerr << "gq-urdf: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

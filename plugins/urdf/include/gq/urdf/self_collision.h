@@ -1,0 +1,84 @@
+#pragma once
+// Self-collision and self-distance of a RobotModel: forward kinematics, broadphase over link world AABBs
+// (sort and sweep on x), then gq::overlap / gq::distance on the shape pairs the allowed-collision matrix leaves.
+// A checker owns scratch buffers: use one per thread (the model itself is shared and immutable).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gq/math.h"
+#include "gq/query.h"
+#include "gq/urdf/robot.h"
+
+namespace gq::urdf {
+
+struct LinkPair {
+  std::uint32_t a = 0, b = 0;  // link indices, a < b
+  bool operator==(const LinkPair& o) const { return a == o.a && b == o.b; }
+  bool operator<(const LinkPair& o) const { return a != o.a ? a < o.a : b < o.b; }
+};
+
+struct CollisionRequest {
+  bool allPairs = true;  // false: stop at the first colliding pair
+};
+
+struct CollisionResult {
+  bool colliding = false;
+  std::vector<LinkPair> pairs;  // sorted; one entry at most when !allPairs
+};
+
+template <class T> struct SelfDistanceResult {
+  T distance = T(0);  // signed: < 0 is a penetration depth; +inf when no pair is checked
+  LinkPair pair;
+  Vec3<T> point0 = Vec3<T>::Zero(), point1 = Vec3<T>::Zero();  // witnesses on pair.a and pair.b (root frame)
+};
+
+template <class T> class SelfCollisionChecker {
+ public:
+  explicit SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model);
+
+  const RobotModel<T>& model() const { return *model_; }
+
+  // Unsupported when a checked pair has no gq overlap kernel (e.g. mesh mode before mesh-mesh overlap lands).
+  Status checkSelfCollision(const std::vector<T>& q, CollisionResult& result,
+                            const CollisionRequest& request = CollisionRequest());
+  Status selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result);
+  // colliding[i] = 1 when configuration i collides (first pair found ends that configuration's check).
+  Status checkSelfCollisionBatch(const std::vector<std::vector<T>>& qs, std::vector<std::uint8_t>& colliding);
+
+  // Shape pairs that survived the broadphase in the last call (diagnostic).
+  std::size_t lastNarrowPhasePairs() const { return lastNarrow_; }
+
+ private:
+  Status placeShapes(const std::vector<T>& q);
+  void broadphase();
+  Status narrowPhase(std::uint32_t shapeA, std::uint32_t shapeB, bool& hit);
+  Status collide(const CollisionRequest& request, CollisionResult& result);
+
+  std::shared_ptr<const RobotModel<T>> model_;
+  std::vector<Transform<T>> linkPoses_;
+  std::vector<Transform<T>> shapePoses_;
+  std::vector<Bounds3<T>> localBounds_;     // per shape, in the shape frame
+  std::vector<Bounds3<T>> shapeBounds_;
+  std::vector<Bounds3<T>> linkBounds_;
+  std::vector<std::uint32_t> order_;        // links with shapes sorted by bounds min x
+  std::vector<LinkPair> candidates_;        // link pairs whose bounds overlap and are not allowed
+  std::vector<GjkCache<T>> caches_;         // per shape pair (shapes x shapes), GJK warm start
+  std::size_t lastNarrow_ = 0;
+};
+
+// Pairs of links (with shapes, not already allowed) that never touched in `samples` random configurations.
+struct NeverCollidingResult {
+  std::vector<LinkPair> never;
+  std::vector<std::uint64_t> contactCount;  // per link pair (row-major links x links), configurations in contact
+  std::uint64_t samples = 0;
+};
+template <class T>
+Status neverColliding(std::shared_ptr<const RobotModel<T>> model, std::uint64_t samples, std::uint64_t seed,
+                      NeverCollidingResult& result);
+
+// The SRDF <disable_collisions> list: model's SRDF pairs and adjacent links, plus `never` with reason "Never".
+template <class T> std::string writeSrdfDisableCollisions(const RobotModel<T>& model, const std::vector<LinkPair>& never);
+
+}  // namespace gq::urdf

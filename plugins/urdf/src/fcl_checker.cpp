@@ -1,0 +1,133 @@
+// FCL reference checker. FCL's capsule and cylinder run along Z, gq's capsule along X: a quarter turn about Y maps
+// FCL's Z onto gq's X.
+#include "gq/urdf/fcl_checker.h"
+
+#include <fcl/fcl.h>
+
+#include <cmath>
+#include <string>
+
+#include "gq/cooking.h"
+
+namespace gq::urdf {
+
+struct FclSelfCollisionChecker::Impl {
+  std::shared_ptr<const RobotModel<double>> model;
+  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;  // one per shape
+  std::vector<fcl::Transform3d> offsets;                         // gq shape frame -> FCL geometry frame
+  std::vector<Transform<double>> linkPoses;
+  std::vector<fcl::AABBd> linkBounds;
+};
+
+namespace {
+
+std::shared_ptr<fcl::CollisionGeometryd> convexToFcl(const ConvexMesh<double>& hull) {
+  auto vertices = std::make_shared<std::vector<fcl::Vector3d>>(hull.vertices.begin(), hull.vertices.end());
+  auto faces = std::make_shared<std::vector<int>>();
+  for (const auto& poly : hull.polygons) {
+    faces->push_back(int(poly.indexCount));
+    for (std::uint32_t k = 0; k < poly.indexCount; ++k) faces->push_back(int(hull.polygonVertices[poly.indexBase + k]));
+  }
+  return std::make_shared<fcl::Convexd>(vertices, int(hull.polygons.size()), faces);
+}
+
+std::shared_ptr<fcl::CollisionGeometryd> meshToFcl(const TriangleMesh<double>& mesh) {
+  auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+  model->beginModel();
+  for (const auto& t : mesh.triangles) model->addTriangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+  model->endModel();
+  return model;
+}
+
+Status toFcl(const Shape<double>& shape, std::shared_ptr<fcl::CollisionGeometryd>& out, fcl::Transform3d& offset) {
+  offset = fcl::Transform3d::Identity();
+  const Geometry<double>& g = shape.geometry;
+  if (auto* s = g.getIf<SphereGeometry<double>>()) out = std::make_shared<fcl::Sphered>(s->radius);
+  else if (auto* b = g.getIf<BoxGeometry<double>>()) out = std::make_shared<fcl::Boxd>(2.0 * b->halfExtents);
+  else if (auto* c = g.getIf<CapsuleGeometry<double>>()) {
+    out = std::make_shared<fcl::Capsuled>(c->radius, 2.0 * c->halfHeight);
+    offset.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  } else if (auto* h = g.getIf<ConvexMeshGeometry<double>>()) out = convexToFcl(*h->mesh);
+  else if (auto* m = g.getIf<TriangleMeshGeometry<double>>()) out = meshToFcl(*m->mesh);
+  else return Status::unsupported(std::string("FCL checker: ") + toString(g.type()));
+  return {};
+}
+
+fcl::Transform3d toIsometry(const Transform<double>& t) {
+  fcl::Transform3d iso = fcl::Transform3d::Identity();
+  iso.linear() = t.q.toRotationMatrix();
+  iso.translation() = t.p;
+  return iso;
+}
+
+}  // namespace
+
+FclSelfCollisionChecker::FclSelfCollisionChecker(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+FclSelfCollisionChecker::~FclSelfCollisionChecker() = default;
+
+Status FclSelfCollisionChecker::create(std::shared_ptr<const RobotModel<double>> model,
+                                       std::unique_ptr<FclSelfCollisionChecker>& out) {
+  if (!model) return Status::invalid("FCL checker needs a model");
+  auto impl = std::make_unique<Impl>();
+  impl->model = model;
+  for (const auto& shape : model->shapes) {
+    std::shared_ptr<fcl::CollisionGeometryd> geom;
+    fcl::Transform3d offset;
+    Status s = toFcl(shape, geom, offset);
+    if (!s.ok()) return s;
+    impl->objects.push_back(std::make_unique<fcl::CollisionObjectd>(geom));
+    impl->offsets.push_back(offset);
+  }
+  impl->linkBounds.resize(model->links.size());
+  out.reset(new FclSelfCollisionChecker(std::move(impl)));
+  return {};
+}
+
+Status FclSelfCollisionChecker::checkSelfCollision(const std::vector<double>& q, CollisionResult& result,
+                                                   const CollisionRequest& request) {
+  Impl& m = *impl_;
+  const RobotModel<double>& model = *m.model;
+  Status s = forwardKinematics(model, q, m.linkPoses);
+  if (!s.ok()) return s;
+  for (std::uint32_t l = 0; l < model.links.size(); ++l) {
+    bool first = true;
+    for (std::uint32_t i : model.links[l].shapes) {
+      const Shape<double>& shape = model.shapes[i];
+      m.objects[i]->setTransform(toIsometry(m.linkPoses[l] * shape.origin) * m.offsets[i]);
+      m.objects[i]->computeAABB();
+      if (first) m.linkBounds[l] = m.objects[i]->getAABB();
+      else m.linkBounds[l] += m.objects[i]->getAABB();
+      first = false;
+    }
+  }
+  CollisionResult out;
+  fcl::CollisionRequestd fclRequest;  // one contact, boolean answer
+  for (std::uint32_t a = 0; a < model.links.size(); ++a)
+    for (std::uint32_t b = a + 1; b < model.links.size(); ++b) {
+      if (model.isAllowed(a, b) || model.links[a].shapes.empty() || model.links[b].shapes.empty()) continue;
+      if (!m.linkBounds[a].overlap(m.linkBounds[b])) continue;
+      bool hit = false;
+      for (std::uint32_t sa : model.links[a].shapes) {
+        for (std::uint32_t sb : model.links[b].shapes) {
+          if (!m.objects[sa]->getAABB().overlap(m.objects[sb]->getAABB())) continue;
+          fcl::CollisionResultd fclResult;
+          if (fcl::collide(m.objects[sa].get(), m.objects[sb].get(), fclRequest, fclResult) > 0) {
+            hit = true;
+            break;
+          }
+        }
+        if (hit) break;
+      }
+      if (!hit) continue;
+      out.colliding = true;
+      out.pairs.push_back({a, b});
+      if (!request.allPairs) {
+        result = std::move(out);
+        return {};
+      }
+    }
+  result = std::move(out);
+  return {};
+}
+
+}  // namespace gq::urdf

@@ -1,0 +1,58 @@
+#pragma once
+// Internal pieces of the URDF plugin shared between its source files.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gq/cooking.h"
+#include "gq/urdf/robot.h"
+
+namespace gq::urdf::detail {
+
+// SplitMix64: a small, portable generator, so sampled configurations are identical on every platform.
+inline std::uint64_t nextRandom(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+// Uniform in [0, 1) with 53 random bits.
+inline double uniform01(std::uint64_t& state) { return double(nextRandom(state) >> 11) * 0x1.0p-53; }
+
+// ---- SRDF (srdf.cpp) ----------------------------------------------------------------------------------------
+struct SrdfDisabledPair {
+  std::string link1, link2, reason;
+};
+struct SrdfGroupState {
+  std::string name;
+  std::vector<std::pair<std::string, double>> values;  // joint name -> position
+};
+struct SrdfData {
+  std::vector<SrdfDisabledPair> disabled;
+  std::vector<SrdfGroupState> states;
+};
+// ParseError with tinyxml2's line and message for malformed XML, or for a <disable_collisions> missing a link.
+Status parseSrdf(const std::string& xml, SrdfData& out);
+
+// ---- Shapes (cylinder.cpp, mesh_shape.cpp, approximation_error.cpp) -------------------------------------------
+template <class T> std::size_t hullBytes(const ConvexMesh<T>& hull);
+// The convex hull of the `segments`-gon prism inscribed in a cylinder along local Z (URDF convention).
+template <class T> Status cylinderShape(T radius, T length, std::uint32_t segments, Shape<T>& shape);
+
+// Fills shape.geometry and the fit's pose relative to the collision element frame (`fit`), per representation.
+template <class T>
+Status meshShape(const MeshData<T>& mesh, Representation rep, const LoadOptions& options, Shape<T>& shape,
+                 Transform<T>& fit);
+
+// Measures shape.error for a mesh source: `fit` places shape.geometry in the mesh frame.
+template <class T>
+Status measureApproximationError(const MeshData<T>& mesh, const Geometry<T>& approximation, const Transform<T>& fit,
+                                 const LoadOptions& options, ApproximationError<T>& error);
+
+// ---- Model semantics (allowed_collisions.cpp) ---------------------------------------------------------------
+// Fills model.allowed/allowedReason (adjacent links across fixed joints and shapeless links, same link, SRDF)
+// and model.home. Unknown link names in the SRDF are listed in `warnings`.
+template <class T> void computeAllowedCollisions(RobotModel<T>& model, const SrdfData& srdf, std::string& warnings);
+template <class T> void chooseHomeConfiguration(RobotModel<T>& model, const SrdfData& srdf);
+
+}  // namespace gq::urdf::detail

@@ -1,0 +1,60 @@
+// neverColliding: the sampled "never in collision" pairs, and the SRDF written from them.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "robot_paths.h"
+
+namespace gq::urdf::test {
+namespace {
+
+template <class T> class NeverColliding : public ::testing::Test {};
+TYPED_TEST_SUITE(NeverColliding, Scalars);
+
+TYPED_TEST(NeverColliding, ListsExactlyThePairsWithoutContactInTheSamples) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kUr5, Representation::Hull);
+  NeverCollidingResult r;
+  ASSERT_TRUE(neverColliding<T>(m, 2000, 3, r).ok());
+  const std::size_t n = m->links.size();
+  for (const auto& p : r.never) EXPECT_EQ(r.contactCount[p.a * n + p.b], 0u);
+  // Every checked pair with contacts is absent from the list; some pairs do collide on a UR5.
+  std::size_t touched = 0;
+  for (std::uint32_t a = 0; a < n; ++a)
+    for (std::uint32_t b = a + 1; b < n; ++b)
+      if (r.contactCount[a * n + b] > 0) {
+        ++touched;
+        EXPECT_EQ(std::find(r.never.begin(), r.never.end(), LinkPair{a, b}), r.never.end());
+      }
+  EXPECT_GT(touched, 0u);
+  // Same seed, same answer.
+  NeverCollidingResult again;
+  ASSERT_TRUE(neverColliding<T>(m, 2000, 3, again).ok());
+  EXPECT_EQ(again.never, r.never);
+}
+
+TYPED_TEST(NeverColliding, WrittenSrdfReloadsAndDisablesThePairs) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kUr5, Representation::Hull);
+  NeverCollidingResult r;
+  ASSERT_TRUE(neverColliding<T>(m, 1000, 11, r).ok());
+  const std::string srdf = writeSrdfDisableCollisions(*m, r.never);
+  EXPECT_NE(srdf.find("reason=\"Adjacent\""), std::string::npos);
+  std::ifstream in(robotFile(kUr5.urdf));
+  std::stringstream urdf;
+  urdf << in.rdbuf();
+  RobotModel<T> reloaded;
+  const Status s = loadRobotFromStrings(urdf.str(), srdf, "/", testOptions(Representation::Hull), reloaded);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  for (const auto& p : r.never) EXPECT_TRUE(reloaded.isAllowed(p.a, p.b)) << m->links[p.a].name << " " << m->links[p.b].name;
+}
+
+TYPED_TEST(NeverColliding, ZeroSamplesIsInvalid) {
+  NeverCollidingResult r;
+  EXPECT_EQ(neverColliding<TypeParam>(loadCached<TypeParam>(kUr5, Representation::Hull), 0, 1, r).code,
+            StatusCode::InvalidArgument);
+}
+
+}  // namespace
+}  // namespace gq::urdf::test

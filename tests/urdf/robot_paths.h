@@ -1,0 +1,73 @@
+#pragma once
+// Shared helpers of the URDF tests: robot paths, cached models (loading cooks hulls and measures errors once per
+// scalar type, robot and representation), and typed-test lists.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+
+#include "gq/urdf/robot.h"
+#include "gq/urdf/self_collision.h"
+
+namespace gq::urdf::test {
+
+inline std::string robotsDir() { return std::string(GQ_SHARED_DIR) + "/robots"; }
+inline std::string robotFile(const std::string& rel) {
+  return robotsDir() + "/example-robot-data/robots/" + rel;
+}
+
+struct RobotFiles {
+  const char* name;
+  const char* urdf;
+  const char* srdf;
+};
+inline const RobotFiles kPanda{"panda", "panda_description/urdf/panda.urdf", "panda_description/srdf/panda.srdf"};
+inline const RobotFiles kPandaPrimitives{"panda_collision", "panda_description/urdf/panda_collision.urdf",
+                                         "panda_description/srdf/panda.srdf"};
+inline const RobotFiles kUr5{"ur5", "ur_description/urdf/ur5_robot.urdf", "ur_description/srdf/ur5.srdf"};
+
+inline LoadOptions testOptions(Representation rep) {
+  LoadOptions o;
+  o.representation = rep;
+  o.packagePaths = {robotsDir()};
+  o.useRosPackagePath = false;
+  o.errorSamplesPerShape = 500;
+  return o;
+}
+
+template <class T> std::shared_ptr<const RobotModel<T>> loadCached(const RobotFiles& robot, Representation rep) {
+  static std::map<std::pair<std::string, int>, std::shared_ptr<const RobotModel<T>>> cache;
+  auto& slot = cache[{robot.name, int(rep)}];
+  if (!slot) {
+    auto model = std::make_shared<RobotModel<T>>();
+    const Status s = loadRobot(robotFile(robot.urdf), robotFile(robot.srdf), testOptions(rep), *model);
+    EXPECT_TRUE(s.ok()) << s.toString();
+    slot = model;
+  }
+  return slot;
+}
+
+template <class T> std::vector<T> castConfiguration(const std::vector<double>& q) {
+  return std::vector<T>(q.begin(), q.end());
+}
+
+template <class T> std::vector<T> namedConfiguration(const RobotModel<T>& m, const std::map<std::string, double>& values) {
+  std::vector<T> q = m.home;
+  for (const auto& [name, v] : values) {
+    const auto it = std::find(m.variables.begin(), m.variables.end(), name);
+    EXPECT_NE(it, m.variables.end()) << name;
+    if (it != m.variables.end()) q[std::size_t(it - m.variables.begin())] = T(v);
+  }
+  return q;
+}
+
+template <class T> LinkPair pairOf(const RobotModel<T>& m, const char* a, const char* b) {
+  const auto ia = std::uint32_t(m.findLink(a)), ib = std::uint32_t(m.findLink(b));
+  return {std::min(ia, ib), std::max(ia, ib)};
+}
+
+using Scalars = ::testing::Types<float, double>;
+
+}  // namespace gq::urdf::test

@@ -1,0 +1,136 @@
+// Self-collision and self-distance on the real robots: home poses are free, folded poses report the expected
+// pair, distance and collision agree, batches match single checks, mesh mode answers or says Unsupported.
+#include <gtest/gtest.h>
+
+#include "robot_paths.h"
+
+namespace gq::urdf::test {
+namespace {
+
+template <class T> class SelfCollision : public ::testing::Test {};
+TYPED_TEST_SUITE(SelfCollision, Scalars);
+
+const Representation kCheckedModes[] = {Representation::Hull, Representation::BestPrimitive, Representation::Capsule};
+
+TYPED_TEST(SelfCollision, SrdfHomePoseIsCollisionFree) {
+  using T = TypeParam;
+  for (const RobotFiles* r : {&kPanda, &kPandaPrimitives, &kUr5})
+    for (Representation rep : {Representation::Hull, Representation::BestPrimitive}) {
+      const auto m = loadCached<T>(*r, rep);
+      SelfCollisionChecker<T> checker(m);
+      CollisionResult result;
+      const Status s = checker.checkSelfCollision(m->home, result);
+      ASSERT_TRUE(s.ok()) << s.toString();
+      EXPECT_FALSE(result.colliding) << r->name << " " << toString(rep) << ": "
+                                     << (result.pairs.empty() ? "" : m->links[result.pairs[0].a].name + " - " +
+                                                                          m->links[result.pairs[0].b].name);
+      SelfDistanceResult<T> d;
+      ASSERT_TRUE(checker.selfDistance(m->home, d).ok());
+      EXPECT_GT(d.distance, T(0)) << r->name << " " << toString(rep);
+    }
+}
+
+// Folded by hand: Panda's shoulder pitched forward (joint2 = 1.7) with the elbow folded shut (joint4 = -3.0) brings
+// the forearm (link5) back down onto the base; UR5 with the upper arm horizontal (shoulder_lift = 0) and the elbow
+// folded (3.0 rad) lays the forearm onto the base.
+struct Folded {
+  const RobotFiles* robot;
+  std::map<std::string, double> q;
+  const char* linkA;
+  const char* linkB;
+};
+
+const std::map<std::string, double> kFoldedPanda = {{"panda_joint2", 1.7}, {"panda_joint4", -3.0}, {"panda_joint6", 0.0}};
+
+std::vector<Folded> foldedPoses() {
+  return {
+      {&kPanda, kFoldedPanda, "panda_link0", "panda_link5"},
+      {&kPandaPrimitives, kFoldedPanda, "panda_link0", "panda_link5"},
+      {&kUr5, {{"shoulder_lift_joint", 0.0}, {"elbow_joint", 3.0}}, "base_link", "forearm_link"},
+  };
+}
+
+TYPED_TEST(SelfCollision, FoldedArmReportsTheExpectedPair) {
+  using T = TypeParam;
+  for (const Folded& f : foldedPoses())
+    for (Representation rep : kCheckedModes) {
+      const auto m = loadCached<T>(*f.robot, rep);
+      SelfCollisionChecker<T> checker(m);
+      CollisionResult result;
+      ASSERT_TRUE(checker.checkSelfCollision(namedConfiguration(*m, f.q), result).ok());
+      EXPECT_TRUE(result.colliding) << f.robot->name << " " << toString(rep);
+      EXPECT_NE(std::find(result.pairs.begin(), result.pairs.end(), pairOf(*m, f.linkA, f.linkB)), result.pairs.end())
+          << f.robot->name << " " << toString(rep) << ": expected " << f.linkA << " - " << f.linkB;
+      SelfDistanceResult<T> d;
+      ASSERT_TRUE(checker.selfDistance(namedConfiguration(*m, f.q), d).ok());
+      EXPECT_LE(d.distance, T(0));
+    }
+}
+
+TYPED_TEST(SelfCollision, DistanceIsPositiveExactlyWhenNoPairCollides) {
+  using T = TypeParam;
+  const T tol = std::is_same_v<T, float> ? T(1e-4) : T(1e-8);
+  for (const RobotFiles* r : {&kPanda, &kUr5}) {
+    const auto m = loadCached<T>(*r, Representation::Hull);
+    SelfCollisionChecker<T> checker(m);
+    std::uint64_t rng = 99;
+    for (int k = 0; k < 300; ++k) {
+      const std::vector<T> q = randomConfiguration(*m, rng);
+      CollisionResult c;
+      SelfDistanceResult<T> d;
+      ASSERT_TRUE(checker.checkSelfCollision(q, c).ok());
+      ASSERT_TRUE(checker.selfDistance(q, d).ok());
+      if (std::abs(d.distance) <= tol) continue;  // touching: either answer is right
+      EXPECT_EQ(c.colliding, d.distance < T(0)) << r->name << " config " << k << " distance " << d.distance;
+      if (d.distance > T(0))  // witnesses are that far apart
+        EXPECT_NEAR((d.point1 - d.point0).norm(), d.distance, tol) << r->name << " config " << k;
+      EXPECT_TRUE(std::isfinite(d.distance));
+    }
+  }
+}
+
+TYPED_TEST(SelfCollision, BatchMatchesSingleChecks) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kPanda, Representation::Hull);
+  SelfCollisionChecker<T> checker(m);
+  std::uint64_t rng = 5;
+  std::vector<std::vector<T>> qs;
+  for (int k = 0; k < 500; ++k) qs.push_back(randomConfiguration(*m, rng));
+  std::vector<std::uint8_t> batch;
+  ASSERT_TRUE(checker.checkSelfCollisionBatch(qs, batch).ok());
+  ASSERT_EQ(batch.size(), qs.size());
+  std::size_t colliding = 0;
+  for (std::size_t k = 0; k < qs.size(); ++k) {
+    CollisionResult r;
+    ASSERT_TRUE(checker.checkSelfCollision(qs[k], r).ok());
+    EXPECT_EQ(batch[k] != 0, r.colliding) << k;
+    colliding += r.colliding;
+  }
+  EXPECT_GT(colliding, 0u);
+}
+
+TYPED_TEST(SelfCollision, InvalidConfigurationReturnsInvalidArgumentAndKeepsTheResult) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kUr5, Representation::Hull);
+  SelfCollisionChecker<T> checker(m);
+  CollisionResult r;
+  r.colliding = true;
+  EXPECT_EQ(checker.checkSelfCollision(std::vector<T>(3, T(0)), r).code, StatusCode::InvalidArgument);
+  std::vector<T> q = m->home;
+  q[1] = T(100);  // shoulder_lift beyond 2 pi
+  EXPECT_EQ(checker.checkSelfCollision(q, r).code, StatusCode::InvalidArgument);
+  EXPECT_TRUE(r.colliding);
+}
+
+TYPED_TEST(SelfCollision, MeshModeAnswersOrReportsUnsupportedThroughAStatus) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kUr5, Representation::Mesh);
+  SelfCollisionChecker<T> checker(m);
+  CollisionResult r;
+  const Status s = checker.checkSelfCollision(m->home, r);
+  EXPECT_TRUE(s.ok() || s.code == StatusCode::Unsupported) << s.toString();
+  if (s.ok()) EXPECT_FALSE(r.colliding);
+}
+
+}  // namespace
+}  // namespace gq::urdf::test
