@@ -132,9 +132,8 @@ TYPED_TEST(Penetration, BoxBoxTakesTheSmallestFacePushOut) {
 
 TYPED_TEST(Penetration, BoxBoxEdgeEdgeAxisGivesTheDepth) {
   using T = TypeParam;
-  // Box0 rotated 45 degrees about Z, box1 rotated 45 degrees about X, stacked along Z... edge against edge:
-  // box0's top edge (along Y... at height sqrt2?) Use: box0 = unit box rotated 45 about Y (top edge along Y at
-  // z = sqrt2), box1 = unit box rotated 45 about X (bottom edge along X at z = c - sqrt2). Depth along Z.
+  // Box0 turned 45 degrees about Y has its top edge along Y at z = sqrt2; box1 turned 45 degrees about X has its
+  // bottom edge along X at z = c - sqrt2. The edges cross with overlap 2 sqrt2 - c along Z = Y x X.
   const Quat<T> aboutY(Eigen::AngleAxis<T>(T(M_PI / 4), Vec3<T>::UnitY()));
   const Quat<T> aboutX(Eigen::AngleAxis<T>(T(M_PI / 4), Vec3<T>::UnitX()));
   const double c = 2 * std::sqrt(2.0) - 0.05;
