@@ -1,13 +1,182 @@
-// PLACEHOLDER: every pair answers Unsupported until this family lands.
+// Sweep façade: validation, the flag rules of the spec, then one dispatch table indexed [swept][target].
+//
+// Rules (documented in the README's sweep section):
+//  - the swept shape is a sphere, capsule, box or convex mesh (others: Unsupported); the target is any type (a
+//    non-convex custom target: Unsupported);
+//  - unitDir unit, maxDist >= 0 (NaN/negative: InvalidArgument); maxDist is clamped to tol::kMaxSweepDistance (1e8);
+//    maxDist = 0 is an overlap test; inflation finite and >= 0;
+//  - meshMultiple is rejected (InvalidArgument): a sweep returns at most one hit; anyHit is honoured for meshes;
+//  - mtd with preciseSweep or assumeNoInitialOverlap, preciseSweep with inflation > 0, and assumeNoInitialOverlap
+//    with maxDist = 0 return a Warning and the incompatible flag is ignored (the query runs);
+//  - preciseSweep is accepted and changes nothing: every sweep is exact to the GJK tolerance by default;
+//  - initial overlap (touching counts): hadInitialOverlap(); without mtd distance 0, normal -dir, no position; with
+//    mtd distance = -depth (<= 0), normal = depenetration direction of the swept shape (translating it by
+//    -normal * distance separates), position on the swept shape;
+//  - faceIndex: triangle index (mesh, heightfield), polygon index (convex mesh, on hits), else 0xffffffff.
+#include <array>
+#include <string>
+
+#include "common/validate.h"
+#include "gq/custom.h"
 #include "gq/query.h"
+#include "sweep/sweep.h"
 
 namespace gq {
+namespace {
+
+template <class T> using SweepFn = void (*)(const Geometry<T>&, const Transform<T>&, const Geometry<T>&,
+                                            const Transform<T>&, const detail::SweepQuery<T>&, detail::SweepOutcome<T>&);
 
 template <class T>
-Status sweep(const Vec3<T>&, T, const Geometry<T>&, const Transform<T>&, const Geometry<T>&, const Transform<T>&, SweepHit<T>&, bool&, HitFlags, T) {
-  return Status::unsupported("sweep is not implemented yet");
+void unsupported(const Geometry<T>&, const Transform<T>&, const Geometry<T>&, const Transform<T>&,
+                 const detail::SweepQuery<T>&, detail::SweepOutcome<T>&) {}
+
+template <class T> using Row = std::array<SweepFn<T>, kGeometryTypeCount>;
+
+// A row for a swept convex shape; the sphere row replaces its sphere cell by the closed form.
+template <class T> constexpr Row<T> convexRow(SweepFn<T> sphereCell) {
+  return {sphereCell,
+          detail::sweepConvexPlane<T>,
+          detail::sweepConvexConvex<T>,
+          detail::sweepConvexConvex<T>,
+          detail::sweepConvexConvex<T>,
+          detail::sweepConvexTriangleMesh<T>,
+          detail::sweepConvexHeightField<T>,
+          detail::sweepConvexConvex<T>};
 }
-template Status sweep<float>(const Vec3<float>&, float, const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&, SweepHit<float>&, bool&, HitFlags, float);
-template Status sweep<double>(const Vec3<double>&, double, const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&, SweepHit<double>&, bool&, HitFlags, double);
+template <class T> constexpr Row<T> unsupportedRow() {
+  return {unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>,
+          unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>};
+}
+
+// Rows: swept type; columns: target type, both in GeometryType order.
+template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kSweepTable = {{
+    convexRow<T>(detail::sweepSphereSphere<T>),   // sphere
+    unsupportedRow<T>(),                          // plane
+    convexRow<T>(detail::sweepConvexConvex<T>),   // capsule
+    convexRow<T>(detail::sweepConvexConvex<T>),   // box
+    convexRow<T>(detail::sweepConvexConvex<T>),   // convex mesh
+    unsupportedRow<T>(),                          // triangle mesh
+    unsupportedRow<T>(),                          // heightfield
+    unsupportedRow<T>(),                          // custom
+}};
+static_assert(kSweepTable<double>.size() == kGeometryTypeCount && kSweepTable<double>[0].size() == kGeometryTypeCount,
+              "one row and one column per GeometryType");
+
+bool isSweepable(GeometryType t) {
+  return t == GeometryType::Sphere || t == GeometryType::Capsule || t == GeometryType::Box ||
+         t == GeometryType::ConvexMesh;
+}
+
+template <class T>
+Status validateSweep(const Vec3<T>& dir, T maxDist, const Geometry<T>& g0, const Transform<T>& p0,
+                     const Geometry<T>& g1, const Transform<T>& p1, HitFlags flags, T inflation) {
+  if (Status s = detail::checkUnitDirection(dir, "sweep direction"); !s.ok()) return s;
+  if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
+  if (!std::isfinite(inflation) || inflation < T(0)) return Status::invalid("inflation must be finite and >= 0");
+  if (flags.has(HitFlag::MeshMultiple)) return Status::invalid("meshMultiple is not supported by sweeps (one hit)");
+  if (Status s = detail::checkGeometryAndPose(g0, p0, "pose0"); !s.ok()) return s;
+  if (Status s = detail::checkGeometryAndPose(g1, p1, "pose1"); !s.ok()) return s;
+  if (!isSweepable(g0.type()))
+    return Status::unsupported(std::string("sweeping a ") + toString(g0.type()) +
+                               " (the swept geometry must be a sphere, capsule, box or convex mesh)");
+  if (const auto* c = g1.template getIf<CustomGeometry<T>>(); c && !c->callbacks->isConvex())
+    return Status::unsupported("sweep against a non-convex custom geometry");
+  return {};
+}
+
+// Applies the spec's incompatibilities: returns the flags to use and a warning message ("" if none).
+template <class T> HitFlags resolveFlags(HitFlags flags, T maxDist, T inflation, std::string& warning) {
+  if (flags.has(HitFlag::Mtd) && (flags.has(HitFlag::PreciseSweep) || flags.has(HitFlag::AssumeNoInitialOverlap))) {
+    warning += "mtd is incompatible with preciseSweep and assumeNoInitialOverlap: those are ignored. ";
+    flags = flags.without(HitFlag::PreciseSweep | HitFlag::AssumeNoInitialOverlap);
+  }
+  if (flags.has(HitFlag::PreciseSweep) && inflation > T(0)) {
+    warning += "preciseSweep is incompatible with inflation: preciseSweep is ignored. ";
+    flags = flags.without(HitFlag::PreciseSweep);
+  }
+  if (flags.has(HitFlag::AssumeNoInitialOverlap) && maxDist == T(0)) {
+    warning += "assumeNoInitialOverlap with a zero-length sweep: ignored, the overlap is tested. ";
+    flags = flags.without(HitFlag::AssumeNoInitialOverlap);
+  }
+  return flags;
+}
+
+template <class T> bool targetDoubleSided(const Geometry<T>& g) {
+  if (const auto* m = g.template getIf<TriangleMeshGeometry<T>>()) return m->doubleSided();
+  if (const auto* h = g.template getIf<HeightFieldGeometry<T>>()) return h->doubleSided();
+  return false;
+}
+
+template <class T> bool finiteOutcome(const detail::SweepOutcome<T>& o) {
+  return std::isfinite(o.distance) && isFinite(o.normal) && isFinite(o.position) &&
+         (!o.mtdValid || (std::isfinite(o.mtdDepth) && isFinite(o.mtdNormal) && isFinite(o.mtdPosition)));
+}
+
+// Writes the hit from a kernel outcome (positions back in world: the kernels ran with the origin at pose0.p).
+template <class T>
+void writeHit(const detail::SweepOutcome<T>& o, const detail::SweepQuery<T>& q, const Vec3<T>& origin, SweepHit<T>& hit) {
+  hit = SweepHit<T>();
+  hit.initialOverlap = o.initialOverlap;
+  const bool asksFace = q.flags.has(HitFlag::FaceIndex);
+  if (o.initialOverlap) {
+    if (q.mtd && o.mtdValid) {
+      hit.distance = -o.mtdDepth;
+      hit.normal = o.mtdNormal;
+      hit.position = o.mtdPosition + origin;
+      hit.flags = HitFlag::Normal | HitFlag::Position;
+    } else {
+      hit.distance = T(0);
+      hit.normal = -q.dir;
+      hit.flags = HitFlag::Normal;
+    }
+  } else {
+    hit.distance = o.distance;
+    if (q.flags.has(HitFlag::Normal)) { hit.normal = o.normal; hit.flags |= HitFlag::Normal; }
+    if (q.flags.has(HitFlag::Position)) { hit.position = o.position + origin; hit.flags |= HitFlag::Position; }
+  }
+  if (asksFace) { hit.faceIndex = o.faceIndex; hit.flags |= HitFlag::FaceIndex; }
+}
+
+}  // namespace
+
+template <class T>
+Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const Transform<T>& pose0,
+             const Geometry<T>& geom1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit, HitFlags hitFlags,
+             T inflation) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = validateSweep(unitDir, maxDist, geom0, pose0, geom1, pose1, hitFlags, inflation); !s.ok()) return s;
+    std::string warning;
+    const T reach = std::min(maxDist, T(tol::kMaxSweepDistance));
+    const HitFlags flags = resolveFlags(hitFlags, reach, inflation, warning);
+
+    detail::SweepQuery<T> q;
+    q.dir = unitDir.normalized();
+    q.maxDist = reach;
+    q.flags = flags;
+    q.inflation = inflation;
+    q.testInitialOverlap = !flags.has(HitFlag::AssumeNoInitialOverlap);
+    q.mtd = flags.has(HitFlag::Mtd);
+    q.cullBackFaces = !flags.has(HitFlag::MeshBothSides) && !targetDoubleSided(geom1);
+    q.anyHit = flags.has(HitFlag::AnyHit);
+
+    // Origin at the swept shape's start: kernels work on small coordinates; rotations are normalised.
+    const Transform<T> local0(Vec3<T>::Zero(), pose0.q.normalized());
+    const Transform<T> local1(Vec3<T>(pose1.p - pose0.p), pose1.q.normalized());
+    detail::SweepOutcome<T> o;
+    kSweepTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())](
+        geom0, local0, geom1, local1, q, o);
+    if (!finiteOutcome(o)) return Status::internal("sweep produced a non-finite result");
+    hasHit = o.hit;
+    if (o.hit) writeHit(o, q, pose0.p, hit);
+    return warning.empty() ? Status() : Status::warning(warning);
+  });
+}
+
+template Status sweep<float>(const Vec3<float>&, float, const Geometry<float>&, const Transform<float>&,
+                             const Geometry<float>&, const Transform<float>&, SweepHit<float>&, bool&, HitFlags, float);
+template Status sweep<double>(const Vec3<double>&, double, const Geometry<double>&, const Transform<double>&,
+                              const Geometry<double>&, const Transform<double>&, SweepHit<double>&, bool&, HitFlags,
+                              double);
 
 }  // namespace gq

@@ -1,0 +1,64 @@
+// Cylinder along local X: |x| <= h, y^2 + z^2 <= r^2.
+// Support: (sign(d.x) h, r (d.y, d.z) / |(d.y, d.z)|). Raycast: the slab |x| <= h clipped with the infinite
+// cylinder, whose entry/exit are the roots of (o_yz + t d_yz)^2 = r^2.
+#include <cmath>
+
+#include "custom/ray_interval.h"
+#include "gq/custom_shapes.h"
+
+namespace gq {
+namespace {
+enum Surface { kCap = 0, kSide = 1 };
+}
+
+template <class T> Bounds3<T> CylinderCallbacks<T>::localBounds() const {
+  return Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>(halfHeight_, radius_, radius_));
+}
+
+template <class T> Vec3<T> CylinderCallbacks<T>::support(const Vec3<T>& d) const {
+  const T radial = std::sqrt(d.y() * d.y() + d.z() * d.z());
+  const T x = d.x() < T(0) ? -halfHeight_ : halfHeight_;
+  if (radial == T(0)) return Vec3<T>(x, T(0), T(0));
+  return Vec3<T>(x, radius_ * d.y() / radial, radius_ * d.z() / radial);
+}
+
+template <class T>
+bool CylinderCallbacks<T>::raycast(const Vec3<T>& o, const Vec3<T>& d, T maxDist, HitFlags flags,
+                                   RaycastHit<T>& hit) const {
+  detail::RayInterval<T> r;
+  detail::clipSlab(r, o.x(), d.x(), -halfHeight_, halfHeight_, kCap);
+  const T a = d.y() * d.y() + d.z() * d.z();
+  const T b = o.y() * d.y() + o.z() * d.z();
+  const T c = o.y() * o.y() + o.z() * o.z() - radius_ * radius_;
+  if (a == T(0)) {
+    if (c > T(0)) return false;  // parallel to the axis, outside the side
+  } else {
+    const T disc = b * b - a * c;
+    if (disc < T(0)) return false;
+    // Roots (-b -+ sqrt(disc)) / a, the first through c / (-b + sqrt) when that avoids cancellation.
+    const T s = std::sqrt(disc);
+    const T q = b >= T(0) ? -(b + s) : -(b - s);
+    T t0 = q / a, t1 = q != T(0) ? c / q : t0;
+    if (t0 > t1) std::swap(t0, t1);
+    r.clip(t0, t1, kSide);
+  }
+  const auto normalAt = [&](int surface, const Vec3<T>& p) {
+    if (surface == kCap) return Vec3<T>(d.x() < T(0) ? T(1) : T(-1), T(0), T(0));
+    return Vec3<T>(Vec3<T>(T(0), p.y(), p.z()).normalized());
+  };
+  return detail::writeIntervalHit(r, o, d, maxDist, flags, normalAt, hit);
+}
+
+template <class T> Status makeCylinder(T radius, T halfHeight, CustomGeometry<T>& out) {
+  if (!(std::isfinite(radius) && std::isfinite(halfHeight) && radius > T(0) && halfHeight > T(0)))
+    return Status::invalid("cylinder radius and halfHeight must be finite and > 0");
+  out = CustomGeometry<T>(std::make_shared<CylinderCallbacks<T>>(radius, halfHeight));
+  return {};
+}
+
+template class CylinderCallbacks<float>;
+template class CylinderCallbacks<double>;
+template Status makeCylinder<float>(float, float, CustomGeometry<float>&);
+template Status makeCylinder<double>(double, double, CustomGeometry<double>&);
+
+}  // namespace gq

@@ -1,0 +1,104 @@
+// Sweep of a support-mapped shape against a triangle mesh: the BVH gives the triangles whose boxes meet the swept
+// volume's box (in mesh space), each is culled and swept (sweep/convex_triangle.cpp), and the picker keeps the
+// closest hit (initial overlaps first; ties to the triangle facing the sweep most). faceIndex is the input triangle.
+#include <vector>
+
+#include "gq/cooking.h"
+#include "mesh/mesh_instance.h"
+#include "sweep/sweep.h"
+
+namespace gq::detail {
+namespace {
+
+// Float bounds of a T box, rounded outward, for the BVH's float node boxes.
+struct FloatBox {
+  float lo[3], hi[3];
+};
+template <class T> FloatBox toFloatBox(const Bounds3<T>& b) {
+  FloatBox f;
+  for (int i = 0; i < 3; ++i) {
+    f.lo[i] = std::nextafter(static_cast<float>(b.min[i]), -std::numeric_limits<float>::infinity());
+    f.hi[i] = std::nextafter(static_cast<float>(b.max[i]), std::numeric_limits<float>::infinity());
+  }
+  return f;
+}
+
+bool childOverlaps(const Bvh4Node& n, int lane, const FloatBox& q) {
+  return n.minX[lane] <= q.hi[0] && n.maxX[lane] >= q.lo[0] && n.minY[lane] <= q.hi[1] && n.maxY[lane] >= q.lo[1] &&
+         n.minZ[lane] <= q.hi[2] && n.maxZ[lane] >= q.lo[2];
+}
+
+// Cooked triangle indices in leaves whose boxes overlap `q`.
+void collectTriangles(const Bvh4& bvh, const FloatBox& q, std::vector<std::uint32_t>& out) {
+  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  std::vector<std::uint32_t> stack{bvh.rootChild};
+  while (!stack.empty()) {
+    const std::uint32_t ref = stack.back();
+    stack.pop_back();
+    if (Bvh4Node::isLeaf(ref)) {
+      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(ref); ++k) out.push_back(Bvh4Node::leafFirst(ref) + k);
+      continue;
+    }
+    const Bvh4Node& node = bvh.nodes[ref];
+    for (int lane = 0; lane < 4; ++lane)
+      if (node.child[lane] != Bvh4Node::kEmpty && childOverlaps(node, lane, q)) stack.push_back(node.child[lane]);
+  }
+}
+
+// Mesh-space box of a shape-space box: the 8 corners through S^-1.
+template <class T> Bounds3<T> toMeshSpace(const Bounds3<T>& b, const Mat3<T>& invScale) {
+  Bounds3<T> m;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3<T> corner((c & 1) ? b.max.x() : b.min.x(), (c & 2) ? b.max.y() : b.min.y(), (c & 4) ? b.max.z() : b.min.z());
+    m.include(invScale * corner);
+  }
+  return m;
+}
+
+}  // namespace
+
+template <class T>
+void sweepConvexTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
+                             const Transform<T>& p1, const SweepQuery<T>& q, SweepOutcome<T>& out) {
+  const auto& meshGeom = g1.template get<TriangleMeshGeometry<T>>();
+  const MeshInstance<T> inst(meshGeom, p1);
+  const ConvexShape<T> a = makeSweptShape(g0, p0, q.inflation);
+  const Bounds3<T> shapeBox = sweptBoundsInFrame(a, p1, q.dir, q.maxDist);
+  std::vector<std::uint32_t> candidates;
+  collectTriangles(inst.mesh.bvh, toFloatBox(toMeshSpace(shapeBox, inst.invScale)), candidates);
+
+  const bool doubleSided = meshGeom.doubleSided();
+  TriangleHitPicker<T> picker;
+  picker.tieTolerance = triangleTieTolerance(a, shapeBox);
+  SweepQuery<T> local = q;
+  for (const std::uint32_t cooked : candidates) {
+    local.maxDist = picker.earlyOut(q.maxDist);
+    ToiResult<T> toi;
+    T facing;
+    if (!sweepOneTriangle(a, inst.worldTriangle(cooked), local, doubleSided, toi, facing)) continue;
+    if (picker.offer(toi, facing, inst.mesh.inputIndex[cooked], q.anyHit)) break;
+  }
+  if (!picker.found) return;
+  outcomeFromToi(picker.best, out);
+  out.faceIndex = picker.bestIndex;
+  if (!(out.initialOverlap && q.mtd)) return;
+  TriangleMtdPicker<T> mtd;
+  for (const std::uint32_t cooked : candidates) {
+    const Triangle<T> tri = inst.worldTriangle(cooked);
+    T facing;
+    ToiResult<T> unused;
+    SweepQuery<T> overlapOnly = q;
+    overlapOnly.maxDist = T(0);
+    if (!sweepOneTriangle(a, tri, overlapOnly, doubleSided, unused, facing)) continue;  // culled along dir
+    if (unused.kind == ToiResult<T>::Kind::InitialOverlap) mtd.offer(a, tri, inst.mesh.inputIndex[cooked], doubleSided || !q.cullBackFaces);
+  }
+  mtd.writeTo(out, q.dir);
+}
+
+template void sweepConvexTriangleMesh<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
+                                             const Transform<float>&, const SweepQuery<float>&, SweepOutcome<float>&);
+template void sweepConvexTriangleMesh<double>(const Geometry<double>&, const Transform<double>&,
+                                              const Geometry<double>&, const Transform<double>&,
+                                              const SweepQuery<double>&, SweepOutcome<double>&);
+
+}  // namespace gq::detail
