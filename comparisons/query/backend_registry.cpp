@@ -1,7 +1,11 @@
 #include <utility>
 
 #include "backend.h"
+#include "bullet_forward.h"
+#include "embree_backend.h"
+#include "fcl_backend.h"
 #include "gq_backend.h"
+#include "libccd_backend.h"
 
 namespace gq::cases {
 namespace {
@@ -10,6 +14,12 @@ namespace {
 const std::vector<std::pair<std::string, BackendFactory>>& registry() {
   static const std::vector<std::pair<std::string, BackendFactory>> entries = {
       {"gq", [] { return std::unique_ptr<Backend>(new GqBackend()); }},
+      {"fcl", [] { return std::unique_ptr<Backend>(new FclBackend(FclSolver::Libccd)); }},
+      {"fcl-indep", [] { return std::unique_ptr<Backend>(new FclBackend(FclSolver::Indep)); }},
+      {"libccd", [] { return std::unique_ptr<Backend>(new LibccdBackend(CcdPenetration::Gjk)); }},
+      {"libccd-mpr", [] { return std::unique_ptr<Backend>(new LibccdBackend(CcdPenetration::Mpr)); }},
+      {"embree", [] { return std::unique_ptr<Backend>(new EmbreeBackend()); }},
+      {"bullet", [] { return std::unique_ptr<Backend>(new BulletForwardingBackend()); }},
   };
   return entries;
 }
