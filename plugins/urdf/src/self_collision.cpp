@@ -1,6 +1,7 @@
 // Self-collision and self-distance: forward kinematics places every shape; the broadphase sorts the links with
 // shapes by the x of their world AABB and sweeps (an AABB pair overlaps only if its x-intervals do), keeping pairs
-// that the allowed-collision matrix does not exclude; the narrow phase tests shape pairs whose own AABBs overlap.
+// that the allowed-collision matrix does not exclude; the narrow phase tests shape pairs whose world AABBs and
+// oriented boxes (the shape's local AABB carried by its pose) overlap.
 // Narrow phase: gq::overlap for primitive pairs (closed forms); for pairs with a convex hull the sign of the GJK
 // distance, warm-started per shape pair, because the core's hull overlap runs SAT over all edge pairs, O(E^2 V),
 // which costs ~100x more on the 200-300 face hulls of real robot links.
@@ -20,11 +21,27 @@ template <class T> T boundsDistance(const Bounds3<T>& a, const Bounds3<T>& b) {
   return gap.norm();
 }
 
-// World AABB of a box given in a shape's local frame: centre moved by the pose, extents through |R|
-// (conservative; exact for boxes; much cheaper than the exact hull bounds, which visit every vertex).
-template <class T> Bounds3<T> transformedBounds(const Bounds3<T>& local, const Transform<T>& pose) {
-  const Vec3<T> extents = pose.q.toRotationMatrix().cwiseAbs() * local.extents();
-  return Bounds3<T>::fromCenterExtents(pose.transform(local.center()), extents);
+// Oriented boxes (centre c, rotation columns r, half extents e, all world) are disjoint when one of the 15 axes of
+// the separating-axis theorem (3 + 3 face normals, 9 edge cross products) separates their projections. A cheap
+// midphase before GJK: the AABBs of rotated link boxes overlap far more often than the boxes themselves.
+template <class T> bool orientedBoxesDisjoint(const OrientedBox<T>& a, const OrientedBox<T>& b) {
+  const Mat3<T> r = a.axes.transpose() * b.axes;           // b's axes in a's frame
+  // Unitless guard on |R|: near-parallel edges give a near-zero cross product, whose axis must not cull.
+  const T parallelGuard = T(16) * std::numeric_limits<T>::epsilon();
+  const Mat3<T> absR = r.cwiseAbs().array() + parallelGuard;
+  const Vec3<T> t = a.axes.transpose() * (b.centre - a.centre);
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(t[i]) > a.halfExtents[i] + absR.row(i).dot(b.halfExtents)) return true;
+  for (int j = 0; j < 3; ++j)
+    if (std::abs(t.dot(r.col(j))) > absR.col(j).dot(a.halfExtents) + b.halfExtents[j]) return true;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      const T ra = a.halfExtents[i1] * absR(i2, j) + a.halfExtents[i2] * absR(i1, j);
+      const T rb = b.halfExtents[j1] * absR(i, j2) + b.halfExtents[j2] * absR(i, j1);
+      if (std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j)) > ra + rb) return true;
+    }
+  return false;
 }
 
 }  // namespace
@@ -37,6 +54,7 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
   linkBounds_.resize(model_->links.size());
   caches_.resize(model_->shapes.size() * model_->shapes.size());
   localBounds_.resize(model_->shapes.size());
+  shapeBoxes_.resize(model_->shapes.size());
   for (std::size_t i = 0; i < model_->shapes.size(); ++i)
     if (!computeGeomBounds(localBounds_[i], model_->shapes[i].geometry, Transform<T>(), T(0), T(1)).ok())
       localBounds_[i] = Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>::Constant(T(0)));  // the narrow phase reports the invalid geometry
@@ -51,7 +69,11 @@ template <class T> Status SelfCollisionChecker<T>::placeShapes(const std::vector
   for (std::size_t i = 0; i < model_->shapes.size(); ++i) {
     const Shape<T>& shape = model_->shapes[i];
     shapePoses_[i] = linkPoses_[shape.link] * shape.origin;
-    shapeBounds_[i] = transformedBounds(localBounds_[i], shapePoses_[i]);
+    shapeBoxes_[i].axes = shapePoses_[i].q.toRotationMatrix();
+    shapeBoxes_[i].centre = shapePoses_[i].transform(localBounds_[i].center());
+    shapeBoxes_[i].halfExtents = localBounds_[i].extents();
+    shapeBounds_[i] = Bounds3<T>::fromCenterExtents(shapeBoxes_[i].centre,
+                                                    shapeBoxes_[i].axes.cwiseAbs() * shapeBoxes_[i].halfExtents);
     linkBounds_[shape.link].include(shapeBounds_[i]);
   }
   return {};
@@ -89,7 +111,8 @@ template <class T> Status SelfCollisionChecker<T>::collide(const CollisionReques
     bool hit = false;
     for (std::uint32_t sa : model_->links[pair.a].shapes) {
       for (std::uint32_t sb : model_->links[pair.b].shapes) {
-        if (!shapeBounds_[sa].overlaps(shapeBounds_[sb])) continue;
+        if (!shapeBounds_[sa].overlaps(shapeBounds_[sb]) || orientedBoxesDisjoint(shapeBoxes_[sa], shapeBoxes_[sb]))
+          continue;
         ++lastNarrow_;
         Status s = narrowPhase(sa, sb, hit);
         if (!s.ok()) return s;

@@ -34,6 +34,13 @@ template <class T> struct SelfDistanceResult {
   Vec3<T> point0 = Vec3<T>::Zero(), point1 = Vec3<T>::Zero();  // witnesses on pair.a and pair.b (root frame)
 };
 
+// A shape's local bounding box carried to the world by its pose (midphase culling).
+template <class T> struct OrientedBox {
+  Vec3<T> centre = Vec3<T>::Zero();
+  Mat3<T> axes = Mat3<T>::Identity();  // columns: the box axes in the world
+  Vec3<T> halfExtents = Vec3<T>::Zero();
+};
+
 template <class T> class SelfCollisionChecker {
  public:
   explicit SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model);
@@ -60,7 +67,8 @@ template <class T> class SelfCollisionChecker {
   std::vector<Transform<T>> linkPoses_;
   std::vector<Transform<T>> shapePoses_;
   std::vector<Bounds3<T>> localBounds_;     // per shape, in the shape frame
-  std::vector<Bounds3<T>> shapeBounds_;
+  std::vector<Bounds3<T>> shapeBounds_;     // world AABB of each shape's oriented box
+  std::vector<OrientedBox<T>> shapeBoxes_;
   std::vector<Bounds3<T>> linkBounds_;
   std::vector<std::uint32_t> order_;        // links with shapes sorted by bounds min x
   std::vector<LinkPair> candidates_;        // link pairs whose bounds overlap and are not allowed
