@@ -140,6 +140,7 @@ int runCheck(const CommonOptions& o, const std::string& config, std::size_t rand
   std::size_t colliding = 0;
   double seconds = 0;
   std::map<LinkPair, std::size_t> counts;
+  std::size_t narrow = 0;
   for (std::size_t i = 0; i < random; ++i) {
     const std::vector<double> q = randomConfiguration(*m, rng);
     CollisionResult r;
@@ -147,11 +148,13 @@ int runCheck(const CommonOptions& o, const std::string& config, std::size_t rand
     if (gq::Status s = checker.checkSelfCollision(q, r); !s.ok()) return fail(s);
     seconds += std::chrono::duration<double>(Clock::now() - t0).count();
     colliding += r.colliding;
+    narrow += checker.lastNarrowPhasePairs();
     for (const auto& p : r.pairs) ++counts[p];
     progress(i + 1, random);
   }
-  std::printf("%zu of %zu random configurations collide (seed %llu); %.2f us per check\n", colliding, random,
-              (unsigned long long)seed, 1e6 * seconds / double(random));
+  std::printf("%zu of %zu random configurations collide (seed %llu); %.2f us per check, %.2f narrow-phase shape "
+              "pairs per check\n", colliding, random, (unsigned long long)seed, 1e6 * seconds / double(random),
+              double(narrow) / double(random));
   for (const auto& [p, n] : counts) std::printf("  %6zu  %s\n", n, pairName(*m, p).c_str());
   return 0;
 }
@@ -199,7 +202,7 @@ int runBench(const CommonOptions& o, std::size_t n, std::uint64_t seed, const st
   if (!csv.empty()) {
     const bool fresh = !std::ifstream(csv).good();
     out.open(csv, std::ios::app);
-    if (fresh) out << "date,machine,robot,mode,backend,checks_per_s,ratio\n";
+    if (fresh) out << "date,machine,mode,backend,checks_per_s,ratio\n";  // mode = <robot>:<representation>
   }
   char date[32];
   const std::time_t now = std::time(nullptr);
@@ -226,7 +229,7 @@ int runBench(const CommonOptions& o, std::size_t n, std::uint64_t seed, const st
                                 std::string(backend) == "gq" ? std::to_string(ratio).substr(0, 5).c_str() : "");
       else std::printf("%-15s %-8s %14s  (%s)\n", mode, backend, "n/a", st.message.c_str());
       if (out.is_open())
-        out << date << "," << machine << "," << m->name << "," << mode << "," << backend << ","
+        out << date << "," << machine << "," << m->name << ":" << mode << "," << backend << ","
             << (rate > 0 ? std::to_string(rate) : "unsupported") << ","
             << (std::string(backend) == "gq" ? std::to_string(ratio) : "1") << "\n";
     }
