@@ -18,6 +18,10 @@ inline constexpr double kDegenerateTriangleArea = 1e-12;
 // Heightfields larger than this many samples are rejected as absurd.
 inline constexpr std::uint64_t kMaxHeightFieldSamples = std::uint64_t(1) << 28;
 
+// generateTriangleContacts: contact points closer than kContactMergeFactor * toleranceLength are one point, and
+// points within it of the triangle's boundary count as inside (unitless factor).
+inline constexpr double kContactMergeFactor = 1e-3;
+
 // Relative tolerances scaled by shape size, per scalar type.
 template <class T> struct Rel;
 template <> struct Rel<float> {

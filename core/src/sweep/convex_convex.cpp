@@ -27,35 +27,63 @@ ToiResult<T> sweepConvexShapes(const ConvexShape<T>& a, const ConvexShape<T>& b,
   const T target = T(0.5) * touch;  // aim a little short of contact so that the normal stays defined
   GjkCache<T> cache;
   ToiResult<T> out;
-  T t = T(0);
-  GjkResult<T> r;
-  for (std::uint32_t it = 0; it < kSweepMaxIterations; ++it) {
+  auto distanceAt = [&](T t, GjkCache<T>* c) {
     moving.pose.p = a.pose.p + t * dir;
-    r = gjkDistance(moving, b, &cache);
+    return gjkDistance(moving, b, c);
+  };
+  auto isTouching = [&](const GjkResult<T>& r) { return r.coresOverlap || r.distance <= touch; };
+  auto hitAt = [&](T t, const GjkResult<T>& r) {
+    out.kind = ToiResult<T>::Kind::Hit;
+    out.distance = t;
+    out.normal = r.coresOverlap ? Vec3<T>(-dir) : Vec3<T>(-r.normal);
+    out.position = r.coresOverlap ? Vec3<T>(a.center() + t * dir) : r.point1;
+  };
+  // Contact inside [lo, hi] (separated at lo, touching at hi), by bisection on the touching verdict: the guard for
+  // a Newton step that landed past the contact, which only an over-estimated distance at lo can cause.
+  auto bisectContact = [&](T lo, GjkResult<T> rLo, T hi) {
+    const T resolution = touch;
+    while (hi - lo > resolution) {
+      const T mid = T(0.5) * (lo + hi);
+      const GjkResult<T> r = distanceAt(mid, nullptr);
+      if (isTouching(r)) hi = mid;
+      else { lo = mid; rLo = r; }
+    }
+    hitAt(lo, rLo);
+    return out;
+  };
+  T t = T(0), previousT = T(0);
+  GjkResult<T> r, previous;
+  for (std::uint32_t it = 0; it < kSweepMaxIterations; ++it) {
+    r = distanceAt(t, &cache);
     // By convexity d(t) >= target after a Newton step, so an overlap verdict there (or an unconverged GJK) is
     // suspect: ask GJK again from a cold start before trusting it.
-    if ((it > 0 && r.coresOverlap) || !r.status.ok()) r = gjkDistance(moving, b);
-    const bool touching = r.coresOverlap || r.distance <= touch;
-    if (touching) {
-      out.kind = (it == 0 && testInitialOverlap) ? ToiResult<T>::Kind::InitialOverlap : ToiResult<T>::Kind::Hit;
-      out.distance = t;
-      out.normal = r.coresOverlap ? Vec3<T>(-dir) : Vec3<T>(-r.normal);
-      out.position = r.coresOverlap ? moving.center() : r.point1;
+    if ((it > 0 && r.coresOverlap) || !r.status.ok()) r = distanceAt(t, nullptr);
+    if (isTouching(r)) {
+      if (it == 0) {
+        hitAt(t, r);
+        if (testInitialOverlap) out.kind = ToiResult<T>::Kind::InitialOverlap;
+        return out;
+      }
+      if (r.coresOverlap) return bisectContact(previousT, previous, t);
+      hitAt(t, r);
       return out;
     }
     const T closing = dir.dot(r.normal);
     if (!(closing > T(0))) return out;  // the distance does not decrease any more: it never reaches 0
     const T step = (r.distance - target) / closing;
-    if (!(t + step <= maxDist)) return out;  // Newton under-estimates the root, so the root is beyond maxDist too
+    if (!(t + step <= maxDist)) {
+      // Newton under-estimates the root, so the root is beyond maxDist too; one check at maxDist guards against
+      // an over-estimated distance.
+      const GjkResult<T> end = distanceAt(maxDist, nullptr);
+      if (isTouching(end)) return bisectContact(t, r, maxDist);
+      return out;
+    }
+    previous = r;
+    previousT = t;
     t += step;
   }
   // Out of iterations (a grazing contact, where d'(root) = 0, converges only linearly): accept a near touch.
-  if (r.distance <= T(1e3) * touch) {
-    out.kind = ToiResult<T>::Kind::Hit;
-    out.distance = t;
-    out.normal = -r.normal;
-    out.position = r.point1;
-  }
+  if (r.distance <= T(1e3) * touch) hitAt(t, r);
   return out;
 }
 

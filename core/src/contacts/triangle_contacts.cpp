@@ -1,0 +1,179 @@
+// Contacts between a capsule, box or convex mesh and one triangle (gq/contacts.h).
+//
+// 1. Closest features by GJK (separated) or EPA (overlapping): separation s and normal N from the triangle towards
+//    the shape. Nothing is reported when s > contactDistance.
+// 2. The face normal n (oriented towards the shape) explains the contact when the shape's separation from the
+//    triangle's plane, s_f = n.(support(-n) - v0) - margin, is within meshContactMargin of s (always s_f <= s). Then
+//    the manifold is built along n: core vertices of the shape whose projection falls inside the triangle (separation
+//    n.(p - v0) - margin), and triangle vertices under the shape (a ray from below the vertex along n enters the
+//    shape at its lower surface). Otherwise, or when no point lies under the face, the closest point alone, along N.
+// 3. At most 4 points: the deepest, the one farthest from it, the one farthest from the line of those two, and the
+//    one farthest from the three chosen (a spread-out, stable set).
+#include <algorithm>
+#include <vector>
+
+#include "common/validate.h"
+#include "gjk/gjk.h"
+#include "gq/contacts.h"
+#include "gq/query.h"
+#include "sweep/sweep.h"
+
+namespace gq {
+namespace {
+
+// Core vertices of the shape (world): box corners, capsule segment ends, hull vertices.
+template <class T> std::vector<Vec3<T>> coreVertices(const detail::ConvexShape<T>& a) {
+  using Kind = typename detail::ConvexShape<T>::Kind;
+  std::vector<Vec3<T>> out;
+  if (a.kind == Kind::Box) {
+    for (int c = 0; c < 8; ++c)
+      out.push_back(a.pose.transform(Vec3<T>((c & 1) ? a.halfExtents.x() : -a.halfExtents.x(),
+                                             (c & 2) ? a.halfExtents.y() : -a.halfExtents.y(),
+                                             (c & 4) ? a.halfExtents.z() : -a.halfExtents.z())));
+  } else if (a.kind == Kind::Segment) {
+    out.push_back(a.pose.transform(Vec3<T>(a.halfExtents.x(), T(0), T(0))));
+    out.push_back(a.pose.transform(Vec3<T>(-a.halfExtents.x(), T(0), T(0))));
+  } else if (a.kind == Kind::Hull) {
+    for (const Vec3<T>& v : a.hull->vertices) out.push_back(a.pose.transform(a.hullScaled ? Vec3<T>(a.hullScale * v) : v));
+  }
+  return out;
+}
+
+// Whether p projects (along the triangle's normal) inside the triangle grown by `slack`.
+template <class T> bool projectsInside(const Triangle<T>& tri, const Vec3<T>& n, const Vec3<T>& p, T slack) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec3<T>& a = tri.verts[k];
+    const Vec3<T>& b = tri.verts[(k + 1) % 3];
+    const Vec3<T> inward = n.cross(b - a).normalized();  // points into the triangle for counter-clockwise about n
+    if (inward.dot(p - a) < -slack) return false;
+  }
+  return true;
+}
+
+template <class T> struct Candidate {
+  Vec3<T> position;
+  T separation;
+};
+
+// Keeps at most kMaxTriangleContacts spread-out points, the deepest first.
+template <class T> std::vector<Candidate<T>> reduceContacts(std::vector<Candidate<T>> c, T mergeDistance) {
+  std::vector<Candidate<T>> kept;
+  if (c.empty()) return kept;
+  std::sort(c.begin(), c.end(), [](const Candidate<T>& x, const Candidate<T>& y) { return x.separation < y.separation; });
+  kept.push_back(c.front());
+  // Each next point maximises its distance to the set kept so far (distance to the nearest kept point).
+  while (kept.size() < kMaxTriangleContacts) {
+    T best = mergeDistance;
+    int pick = -1;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      T nearest = std::numeric_limits<T>::max();
+      for (const Candidate<T>& k : kept) nearest = std::min(nearest, (c[i].position - k.position).norm());
+      if (nearest > best) { best = nearest; pick = int(i); }
+    }
+    if (pick < 0) break;
+    kept.push_back(c[std::size_t(pick)]);
+  }
+  return kept;
+}
+
+template <class T>
+Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& tri, T contactDistance,
+                        T meshContactMargin, T toleranceLength) {
+  if (Status s = detail::checkGeometryAndPose(geom, pose, "pose"); !s.ok()) return s;
+  const GeometryType t = geom.type();
+  if (t != GeometryType::Capsule && t != GeometryType::Box && t != GeometryType::ConvexMesh)
+    return Status::unsupported(std::string("generateTriangleContacts with a ") + toString(t) +
+                               " (capsule, box or convex mesh only)");
+  for (const Vec3<T>& v : tri.verts)
+    if (!isFinite(v)) return Status::invalid("triangle vertex is not finite");
+  if (!(std::isfinite(contactDistance) && contactDistance >= T(0))) return Status::invalid("contactDistance must be finite and >= 0");
+  if (!(std::isfinite(meshContactMargin) && meshContactMargin >= T(0))) return Status::invalid("meshContactMargin must be finite and >= 0");
+  if (!(std::isfinite(toleranceLength) && toleranceLength > T(0))) return Status::invalid("toleranceLength must be finite and > 0");
+  const Vec3<T> n = (tri.verts[1] - tri.verts[0]).cross(tri.verts[2] - tri.verts[0]);
+  if (!(n.norm() > T(0))) return Status::invalid("the triangle is degenerate (zero area)");
+  return {};
+}
+
+}  // namespace
+
+template <class T>
+Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
+                                std::uint32_t triangleIndex, T contactDistance, T meshContactMargin, T toleranceLength,
+                                ContactBuffer<T>& contacts, bool& hasContacts) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = validateContacts(geom, pose, triangle, contactDistance, meshContactMargin, toleranceLength); !s.ok())
+      return s;
+    const detail::ConvexShape<T> a = detail::makeConvexShape(geom, pose);
+    const detail::TriangleSupport<T> support(triangle);
+    const detail::ConvexShape<T> b = support.shape();
+
+    // 1. Closest features: separation and normal from the triangle towards the shape.
+    T separation;
+    Vec3<T> normal, closest;
+    const detail::GjkResult<T> g = detail::gjkDistance(a, b);
+    if (!g.coresOverlap) {
+      separation = g.distance;
+      normal = -g.normal;
+      closest = g.point0;
+    } else {
+      const detail::EpaResult<T> e = detail::epaPenetration(a, b, &g.simplex);
+      if (!isFinite(e.normal) || !std::isfinite(e.depth)) return Status(StatusCode::NotConverged, "EPA did not converge");
+      separation = -e.depth;
+      normal = -e.normal;
+      closest = e.point0;
+    }
+    std::vector<Candidate<T>> candidates;
+    if (separation <= contactDistance) candidates.push_back({closest, separation});
+
+    // 2. Face normal, oriented towards the shape.
+    Vec3<T> n = triangle.normal();
+    if (n.dot(a.center() - triangle.verts[0]) < T(0)) n = -n;
+    const Vec3<T> lowest = a.support(-n) - a.margin * n;
+    const T faceSeparation = n.dot(lowest - triangle.verts[0]);
+    const T slack = T(tol::kContactMergeFactor) * toleranceLength;
+    if (separation - faceSeparation <= meshContactMargin) {
+      std::vector<Candidate<T>> face;
+      if (faceSeparation <= contactDistance && projectsInside(triangle, n, lowest, slack))
+        face.push_back({lowest, faceSeparation});
+      for (const Vec3<T>& p : coreVertices(a)) {
+        const T s = n.dot(p - triangle.verts[0]) - a.margin;
+        if (s <= contactDistance && projectsInside(triangle, n, p, slack)) face.push_back({Vec3<T>(p - a.margin * n), s});
+      }
+      // Triangle vertices under the shape: a ray from below the vertex along n enters the shape's lower surface.
+      const T below = T(2) * a.size + std::abs(faceSeparation) + contactDistance;
+      for (const Vec3<T>& v : triangle.verts) {
+        RaycastHit<T> hit;
+        std::uint32_t count = 0;
+        if (!raycast(Vec3<T>(v - below * n), n, geom, pose, T(2) * below, HitFlags(HitFlag::Position), 1u, &hit, count).ok() ||
+            count == 0)
+          continue;
+        const T s = hit.distance - below;
+        if (s <= contactDistance) face.push_back({hit.position, s});
+      }
+      // Nothing under the face (the shape is beside the triangle): keep the closest point and its normal.
+      if (!face.empty()) {
+        normal = n;
+        candidates = std::move(face);
+      }
+    }
+    const std::vector<Candidate<T>> kept = reduceContacts(candidates, slack);
+    contacts = ContactBuffer<T>();
+    for (const Candidate<T>& c : kept) {
+      ContactPoint<T>& out = contacts.contacts[contacts.count++];
+      out.position = c.position;
+      out.normal = normal;
+      out.separation = c.separation;
+      out.triangleIndex = triangleIndex;
+    }
+    hasContacts = contacts.count > 0;
+    return Status();
+  });
+}
+
+template Status generateTriangleContacts<float>(const Geometry<float>&, const Transform<float>&, const Triangle<float>&,
+                                                std::uint32_t, float, float, float, ContactBuffer<float>&, bool&);
+template Status generateTriangleContacts<double>(const Geometry<double>&, const Transform<double>&,
+                                                 const Triangle<double>&, std::uint32_t, double, double, double,
+                                                 ContactBuffer<double>&, bool&);
+
+}  // namespace gq
