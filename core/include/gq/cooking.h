@@ -61,6 +61,8 @@ template <class T> struct TriangleMesh {
   // Copies of the 3 vertices of every cooked triangle, in leaf order: a leaf's triangles are contiguous in memory
   // (one cache-friendly read instead of an index load plus three scattered vertex loads per triangle).
   std::vector<Vec3<T>> triangleVertices;
+  // Float SoA copies of each leaf's triangles for the SIMD ray pre-test (index: Bvh4Node::leafPacket).
+  std::vector<TrianglePacket4> trianglePackets;
   std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
 };
 

@@ -85,41 +85,50 @@ inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax
 #endif
 }
 
-// Visits leaves whose boxes the ray enters within [0, tMax], nearest child first. `leaf(first, count)` tests the
-// primitives and returns true to stop; it may lower tMax (a float reference owned by the caller) to prune.
-template <class LeafFn> inline void traverseRay(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
-  struct Entry { std::uint32_t ref; float tNear; };
+// Visits leaves whose boxes the ray enters within [0, tMax], nearest child first. `leaf(ref, packet)` gets the leaf
+// reference and its packet number (Bvh4Node::leafPacket) and returns true to stop; it may lower tMax (a float
+// reference owned by the caller) to prune.
+template <class LeafFn>
+inline void traverseRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
+  struct Entry { std::uint32_t ref, packet; float tNear; };
   Entry stack[kBvhStackSize];
   int top = 0;
   if (bvh.rootChild == Bvh4Node::kEmpty) return;
-  stack[top++] = {bvh.rootChild, 0.0f};
+  stack[top++] = {bvh.rootChild, bvh.rootPacket, 0.0f};
   while (top > 0) {
-    const Entry e = stack[--top];
+    Entry e = stack[--top];
     if (e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
-    std::uint32_t ref = e.ref;
     // Descend through inner nodes, pushing the farther children and continuing with the nearest.
-    while (!Bvh4Node::isLeaf(ref)) {
-      const Bvh4Node& node = bvh.nodes[ref];
+    bool missed = false;
+    while (!Bvh4Node::isLeaf(e.ref)) {
+      const Bvh4Node& node = bvh.nodes[e.ref];
       float tn[4];
       int mask = intersectChildren(node, ray, tMax, tn);
-      if (mask == 0) { ref = Bvh4Node::kEmpty; break; }
+      if (mask == 0) { missed = true; break; }
       // Collect hit children sorted by entry distance (insertion sort of at most 4).
       Entry hit[4];
       int n = 0;
       while (mask) {
         const int i = __builtin_ctz(unsigned(mask));
         mask &= mask - 1;
-        Entry c{node.child[i], tn[i]};
+        Entry c{node.child[i], node.leafPacket[i], tn[i]};
         int j = n++;
         while (j > 0 && hit[j - 1].tNear < c.tNear) { hit[j] = hit[j - 1]; --j; }
         hit[j] = c;  // descending: nearest last
       }
       for (int i = 0; i < n - 1; ++i) stack[top++] = hit[i];
-      ref = hit[n - 1].ref;
+      e = hit[n - 1];
     }
-    if (ref == Bvh4Node::kEmpty) continue;
-    if (leaf(Bvh4Node::leafFirst(ref), Bvh4Node::leafCount(ref))) return;
+    if (missed) continue;
+    if (leaf(e.ref, e.packet)) return;
   }
+}
+
+// As traverseRayLeaves, with `leaf(first, count)` getting the leaf's primitive range.
+template <class LeafFn> inline void traverseRay(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
+  traverseRayLeaves(bvh, ray, tMax, [&](std::uint32_t ref, std::uint32_t) {
+    return leaf(Bvh4Node::leafFirst(ref), Bvh4Node::leafCount(ref));
+  });
 }
 
 // Best-first traversal for nearest-primitive queries. `childLowerBound(node, lane)` returns a lower bound of the

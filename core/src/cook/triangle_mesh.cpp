@@ -123,6 +123,7 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
       for (std::uint32_t v : triangles[input]) mesh->triangleVertices.push_back(vertices[v]);
       for (std::uint32_t v : triangles[input]) usedFlag[v] = 1;
     }
+    mesh->trianglePackets = detail::buildTrianglePackets(mesh->bvh, mesh->triangleVertices);
     std::vector<std::uint32_t> used;
     for (std::uint32_t v = 0; v < vertices.size(); ++v)
       if (usedFlag[v]) {

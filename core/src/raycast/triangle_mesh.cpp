@@ -1,12 +1,14 @@
 // Raycast against a triangle mesh (spec "Raycasts against Triangle Meshes"). The ray is taken into mesh space,
 // x_mesh = S^-1 R^T (x_world - p), keeping its parameter: o' + t d' maps to o + t dir, so t is the world distance
-// even under non-uniform scale. Triangles are tested with the watertight test (mesh/triangle.h) in T; the BVH4
-// (bvh/traverse.h) is walked front to back with the closest distance found so far as early-out.
+// even under non-uniform scale. The BVH4 (bvh/traverse.h) is walked front to back with the closest distance found so
+// far as early-out; at a leaf a conservative float SIMD pre-test over its 4-triangle packet (bvh/triangle_packet.h)
+// selects the triangles that get the exact watertight test (mesh/triangle.h) in T, which alone decides hits.
 // Modes: closest hit (default), any hit (AnyHit, maxHits 1), or up to maxHits hits (MeshMultiple): we keep the
 // maxHits closest hits and return them sorted by distance.
 #include <algorithm>
 
 #include "bvh/traverse.h"
+#include "bvh/triangle_packet.h"
 #include "mesh/mesh_instance.h"
 #include "mesh/triangle.h"
 #include "raycast/raycast.h"
@@ -28,7 +30,14 @@ template <class T> float floatCeil(T t) {
 template <class T> class MeshRaycaster {
  public:
   MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir, bool cullBackFaces)
-      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), bvhRay_(makeBvhRay(org, dir)), cull_(cullBackFaces) {}
+      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), bvhRay_(makeBvhRay(org, dir)),
+        packetRay_(makePacketRay(org, dir)), cull_(cullBackFaces) {}
+
+  // Cooked indices of the leaf's triangles that pass the packet pre-test, as a bit mask over first + i.
+  int candidates(std::uint32_t leafRef, std::uint32_t packet, float tMax) const {
+    const int lanes = (1 << Bvh4Node::leafCount(leafRef)) - 1;
+    return packetCandidates(mesh_.trianglePackets[packet], packetRay_, tMax, cull_) & lanes;
+  }
 
   bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
     const Vec3<T>* v = &mesh_.triangleVertices[3 * std::size_t(cooked)];
@@ -40,8 +49,10 @@ template <class T> class MeshRaycaster {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
-    traverseRay(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t first, std::uint32_t count) {
-      for (std::uint32_t c = first; c < first + count; ++c) {
+    traverseRayLeaves(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+      const std::uint32_t first = Bvh4Node::leafFirst(ref);
+      for (int mask = candidates(ref, packet, tMax); mask; mask &= mask - 1) {
+        const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
         TriangleRayHit<T> h;
         if (!testTriangle(c, bestT, h)) continue;
         // Equal distances (shared edges) keep the lower input index, so the answer does not depend on the tree.
@@ -62,8 +73,10 @@ template <class T> class MeshRaycaster {
     auto farther = [](const RawHit<T>& a, const RawHit<T>& b) { return a.tri.t < b.tri.t; };  // max-heap on t
     T limit = maxDist;
     float tMax = floatCeil(maxDist);
-    traverseRay(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t first, std::uint32_t count) {
-      for (std::uint32_t c = first; c < first + count; ++c) {
+    traverseRayLeaves(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+      const std::uint32_t first = Bvh4Node::leafFirst(ref);
+      for (int mask = candidates(ref, packet, tMax); mask; mask &= mask - 1) {
+        const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
         TriangleRayHit<T> h;
         if (!testTriangle(c, limit, h)) continue;
         if (hits.size() == cap) {
@@ -88,26 +101,42 @@ template <class T> class MeshRaycaster {
   const TriangleMesh<T>& mesh_;
   WatertightRay<T> ray_;
   BvhRay bvhRay_;
+  PacketRay packetRay_;
   bool cull_;
+};
+
+// Mesh-space frame of the instance: S^-1 and the mirror flag; the identity scale (the common case) skips the
+// matrix products of MeshInstance.
+template <class T> struct MeshRayFrame {
+  bool scaled;
+  Mat3<T> invScale;
+  bool flips;
+  explicit MeshRayFrame(const TriangleMeshGeometry<T>& g) : scaled(!g.scale.isIdentity()), flips(false) {
+    if (!scaled) return;
+    const MeshInstance<T> inst(g, Transform<T>());
+    invScale = inst.invScale;
+    flips = inst.flips;
+  }
+  Vec3<T> toMesh(const Vec3<T>& v) const { return scaled ? Vec3<T>(invScale * v) : v; }
 };
 
 // Fills the requested fields of one hit. The world normal of the (reported-order) triangle is S^-1 n_mesh rotated by
 // the pose, with S^-1 = S^-T: under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way.
 template <class T>
-RaycastHit<T> makeHit(const MeshInstance<T>& inst, const RayQuery<T>& ray, bool doubleSided, const RawHit<T>& raw) {
+RaycastHit<T> makeHit(const TriangleMesh<T>& mesh, const Transform<T>& pose, const MeshRayFrame<T>& frame,
+                      const RayQuery<T>& ray, bool doubleSided, const RawHit<T>& raw) {
   RaycastHit<T> hit;
   hit.distance = raw.tri.t;
-  hit.faceIndex = inst.mesh.inputIndex[raw.cooked];
+  hit.faceIndex = mesh.inputIndex[raw.cooked];
   HitFlags flags = HitFlag::FaceIndex;
   if (ray.flags.has(HitFlag::Position)) {
     hit.position = ray.origin + ray.dir * raw.tri.t;
     flags |= HitFlag::Position;
   }
   if (ray.flags.has(HitFlag::Normal)) {
-    const TriangleIndices& idx = inst.mesh.triangles[raw.cooked];
-    const Vec3<T>& v0 = inst.mesh.vertices[idx[0]];
-    const Vec3<T> meshNormal = (inst.mesh.vertices[idx[1]] - v0).cross(inst.mesh.vertices[idx[2]] - v0);
-    Vec3<T> n = inst.pose.rotate(inst.invScale * meshNormal);
+    const Vec3<T>* v = &mesh.triangleVertices[3 * std::size_t(raw.cooked)];
+    const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
+    Vec3<T> n = pose.rotate(frame.toMesh(meshNormal));  // S^-1 = S^-T is also the normal transform
     const T len = n.norm();
     n = len > T(0) ? Vec3<T>(n / len) : Vec3<T>(-ray.dir);
     if (doubleSided && !raw.tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
@@ -115,8 +144,8 @@ RaycastHit<T> makeHit(const MeshInstance<T>& inst, const RayQuery<T>& ray, bool 
     flags |= HitFlag::Normal;
   }
   if (ray.flags.has(HitFlag::UV)) {
-    hit.u = inst.flips ? raw.tri.v : raw.tri.u;
-    hit.v = inst.flips ? raw.tri.u : raw.tri.v;
+    hit.u = frame.flips ? raw.tri.v : raw.tri.u;
+    hit.v = frame.flips ? raw.tri.u : raw.tri.v;
     flags |= HitFlag::UV;
   }
   hit.flags = flags;
@@ -129,21 +158,22 @@ template <class T>
 std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray,
                                   RaycastHit<T>* hits) {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
-  const MeshInstance<T> inst(g, pose);
-  const Vec3<T> org = inst.invScale * pose.transformInv(ray.origin);
-  const Vec3<T> dir = inst.invScale * pose.rotateInv(ray.dir);
+  const TriangleMesh<T>& mesh = *g.mesh;
+  const MeshRayFrame<T> frame(g);
+  const Vec3<T> org = frame.toMesh(pose.transformInv(ray.origin));
+  const Vec3<T> dir = frame.toMesh(pose.rotateInv(ray.dir));
   const bool cull = !(g.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
-  const MeshRaycaster<T> caster(inst.mesh, org, dir, cull);
+  const MeshRaycaster<T> caster(mesh, org, dir, cull);
   if (ray.maxHits > 1) {
     std::vector<RawHit<T>> raw;
     raw.reserve(std::min<std::uint32_t>(ray.maxHits, 64));
     const std::uint32_t n = caster.multiple(ray.maxDist, ray.maxHits, raw);
-    for (std::uint32_t i = 0; i < n; ++i) hits[i] = makeHit(inst, ray, g.doubleSided(), raw[i]);
+    for (std::uint32_t i = 0; i < n; ++i) hits[i] = makeHit(mesh, pose, frame, ray, g.doubleSided(), raw[i]);
     return n;
   }
   RawHit<T> best;
   if (!caster.single(ray.maxDist, ray.flags.has(HitFlag::AnyHit), best)) return 0;
-  hits[0] = makeHit(inst, ray, g.doubleSided(), best);
+  hits[0] = makeHit(mesh, pose, frame, ray, g.doubleSided(), best);
   return 1;
 }
 

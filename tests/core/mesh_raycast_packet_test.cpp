@@ -1,0 +1,162 @@
+// The float SIMD pre-test of a leaf's 4 triangles (bvh/triangle_packet.h) must never drop a triangle that the exact
+// watertight test in T hits (otherwise mesh raycasts would leak or lose the closest hit), and it must drop triangles
+// the ray clearly misses (otherwise it saves nothing). Checked on 4-triangle meshes (one leaf, one packet) of many
+// sizes and offsets, with rays aimed at vertices, edge points and interiors, grazing rays and tight maxT.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "bvh/triangle_packet.h"
+#include "mesh/triangle.h"
+#include "mesh_test_helpers.h"
+
+namespace gq {
+namespace {
+
+using meshtest::Scalars;
+
+template <class T> class MeshRaycastPacket : public ::testing::Test {};
+TYPED_TEST_SUITE(MeshRaycastPacket, Scalars);
+
+// Smallest float >= t (the traversal passes the closest distance so far rounded up to float).
+template <class T> float floatCeil(T t) {
+  const float f = static_cast<float>(t);
+  return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+// Four random triangles of edge length ~size around `center` (a fan sharing vertex 0 plus one apart).
+template <class T> MeshData<T> randomLeaf(std::mt19937_64& rng, const Vec3<T>& center, double size) {
+  std::normal_distribution<double> n;
+  auto jitter = [&]() -> Eigen::Vector3d { return Eigen::Vector3d(n(rng), n(rng), n(rng)) * size; };
+  MeshData<T> m;
+  const Eigen::Vector3d c = center.template cast<double>();
+  for (int i = 0; i < 6; ++i) m.vertices.push_back((c + jitter()).template cast<T>());
+  m.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {5, 4, 1}};
+  return m;
+}
+
+struct Counts {
+  int exactHits = 0, missed = 0, rejected = 0, tested = 0;
+};
+
+// Fires `rays` rays at the leaf from `origin` and checks the pre-test against the exact test for both culling modes.
+template <class T>
+void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins, const std::vector<Vec3<T>>& targets,
+               bool tightMaxT, Counts& counts) {
+  ASSERT_TRUE(Bvh4Node::isLeaf(mesh.bvh.rootChild));
+  const std::uint32_t count = Bvh4Node::leafCount(mesh.bvh.rootChild);
+  const TrianglePacket4& packet = mesh.trianglePackets.at(mesh.bvh.rootPacket);
+  for (std::size_t r = 0; r < origins.size(); ++r) {
+    const Vec3<T> dir = (targets[r] - origins[r]).normalized();
+    const detail::WatertightRay<T> exactRay = detail::makeWatertightRay(origins[r], dir);
+    const detail::PacketRay packetRay = detail::makePacketRay(origins[r], dir);
+    for (bool cull : {false, true}) {
+      T maxT = std::numeric_limits<T>::max() / T(4);
+      if (tightMaxT) {  // the exact distance of the first triangle hit, so t == maxT must still be kept
+        for (std::uint32_t i = 0; i < count; ++i) {
+          const Vec3<T>* v = &mesh.triangleVertices[3 * i];
+          detail::TriangleRayHit<T> h;
+          if (detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h)) { maxT = h.t; break; }
+        }
+      }
+      const int mask = detail::packetCandidates(packet, packetRay, floatCeil(maxT), cull);
+      for (std::uint32_t i = 0; i < count; ++i) {
+        const Vec3<T>* v = &mesh.triangleVertices[3 * i];
+        detail::TriangleRayHit<T> h;
+        const bool exact = detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h);
+        const bool kept = (mask >> i) & 1;
+        ++counts.tested;
+        counts.exactHits += exact;
+        counts.rejected += !kept;
+        if (exact && !kept) ++counts.missed;
+      }
+    }
+  }
+}
+
+TYPED_TEST(MeshRaycastPacket, PreTestKeepsEveryTriangleTheExactTestHits) {
+  using T = TypeParam;
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> n;
+  Counts counts;
+  for (int leaf = 0; leaf < 300; ++leaf) {
+    const double size = std::pow(10.0, -4.0 + 4.0 * u(rng));      // edge lengths 1e-4 .. 1
+    const double offset = size * std::pow(10.0, 3.0 * u(rng));     // mesh 1 .. 1000 sizes away from the frame origin
+    const Vec3<T> center = (Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized() * offset).template cast<T>();
+    const MeshData<T> m = randomLeaf<T>(rng, center, size);
+    const auto mesh = meshtest::cook(m.vertices, m.triangles);
+    ASSERT_NE(mesh, nullptr);
+    ASSERT_EQ(mesh->triangles.size(), 4u);
+    std::vector<Vec3<T>> origins, targets;
+    for (int r = 0; r < 40; ++r) {
+      const auto& tri = mesh->triangles[r % 4];
+      const Vec3<T>& a = mesh->vertices[tri[0]];
+      const Vec3<T>& b = mesh->vertices[tri[1]];
+      const Vec3<T>& c = mesh->vertices[tri[2]];
+      Vec3<T> target;
+      switch (r % 5) {
+        case 0: target = a; break;                                     // a shared vertex
+        case 1: target = a + (b - a) * T(u(rng)); break;               // an edge point (rounded in T)
+        case 2: target = b + (c - b) * T(0.5); break;                  // an edge midpoint
+        case 3: {                                                       // an interior point
+          double s = u(rng), t = u(rng);
+          if (s + t > 1) { s = 1 - s; t = 1 - t; }
+          target = a + (b - a) * T(s) + (c - a) * T(t);
+          break;
+        }
+        default: target = c + (c - a) * T(0.01); break;                // just outside a vertex
+      }
+      // Origins from very near (grazing, close range) to far (100x the offset) away.
+      const double dist = size * std::pow(10.0, -2.0 + 6.0 * u(rng));
+      Eigen::Vector3d away = Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+      if (r % 7 == 0) {  // nearly in the plane of the triangle
+        const Eigen::Vector3d nrm = (b - a).cross(c - a).template cast<double>().normalized();
+        away = (away - nrm * nrm.dot(away) * (1.0 - 1e-6)).normalized();
+      }
+      origins.push_back((target.template cast<double>() + away * dist).template cast<T>());
+      targets.push_back(target);
+    }
+    checkLeaf(*mesh, origins, targets, leaf % 2 == 0, counts);
+  }
+  EXPECT_EQ(counts.missed, 0);
+  EXPECT_GT(counts.exactHits, counts.tested / 10);  // the rays do hit: the check is not vacuous
+}
+
+TYPED_TEST(MeshRaycastPacket, PreTestRejectsTrianglesTheRayClearlyMisses) {
+  using T = TypeParam;
+  // Four unit triangles side by side in z = 0 (x in [0,1], [2,3], [4,5], [6,7]), seen from far above: a ray at the
+  // interior of one of them must keep only that one.
+  MeshData<T> m;
+  for (int i = 0; i < 4; ++i) {
+    const T x = T(2 * i);
+    const auto base = std::uint32_t(m.vertices.size());
+    m.vertices.push_back(Vec3<T>(x, T(0), T(0)));
+    m.vertices.push_back(Vec3<T>(x + T(1), T(0), T(0)));
+    m.vertices.push_back(Vec3<T>(x, T(1), T(0)));
+    m.triangles.push_back({base, base + 1, base + 2});
+  }
+  const auto mesh = meshtest::cook(m.vertices, m.triangles);
+  ASSERT_NE(mesh, nullptr);
+  ASSERT_TRUE(Bvh4Node::isLeaf(mesh->bvh.rootChild));
+  const TrianglePacket4& packet = mesh->trianglePackets.at(mesh->bvh.rootPacket);
+  for (int i = 0; i < 4; ++i) {
+    const Vec3<T> target(T(2 * i) + T(0.25), T(0.25), T(0));
+    const Vec3<T> origin = target + Vec3<T>(T(0.3), T(-0.2), T(100));
+    const Vec3<T> dir = (target - origin).normalized();
+    const int mask = detail::packetCandidates(packet, detail::makePacketRay(origin, dir), 1e6f, false);
+    // The cooked order may differ from the input order: map the kept lane back to the input triangle.
+    ASSERT_EQ(__builtin_popcount(unsigned(mask)), 1);
+    EXPECT_EQ(mesh->inputIndex[std::uint32_t(__builtin_ctz(unsigned(mask)))], std::uint32_t(i));
+    // The triangles face +z: a ray going up (-dir from below) sees back faces only, so culling drops them all.
+    const Vec3<T> below = target - Vec3<T>(T(0.3), T(-0.2), T(100));
+    EXPECT_EQ(detail::packetCandidates(packet, detail::makePacketRay(below, Vec3<T>(-dir)), 1e6f, true), 0);
+    // maxT short of the plane drops the triangle too.
+    EXPECT_EQ(detail::packetCandidates(packet, detail::makePacketRay(origin, dir), 50.0f, false), 0);
+  }
+}
+
+}  // namespace
+}  // namespace gq
