@@ -32,10 +32,10 @@ enum class Kind { Sphere, Capsule, Box, Hull };
 template <class T> struct ShapeFactory {
   std::vector<std::shared_ptr<const ConvexMesh<T>>> hulls;
 
-  explicit ShapeFactory(Rng& rng) {
+  explicit ShapeFactory(Rng& rng, int hullPoints = 14) {
     for (int i = 0; i < 6; ++i) {
       std::vector<Vec3<T>> pts;
-      for (int k = 0; k < 14; ++k) pts.push_back(rng.inBox<T>(0.8));
+      for (int k = 0; k < hullPoints; ++k) pts.push_back(rng.inBox<T>(0.8));
       std::shared_ptr<const ConvexMesh<T>> mesh;
       const Status s = cookConvexMesh(pts, mesh);
       EXPECT_TRUE(s.ok()) << s.toString();
@@ -59,9 +59,9 @@ template <class T> struct ShapeFactory {
   }
 };
 
-template <class T> void checkPair(Kind k0, Kind k1, std::uint64_t seed) {
+template <class T> void checkPair(Kind k0, Kind k1, std::uint64_t seed, int hullPoints = 14) {
   Rng rng(seed);
-  ShapeFactory<T> factory(rng);
+  ShapeFactory<T> factory(rng, hullPoints);
   ASSERT_FALSE(factory.hulls.empty());
   int penetrating = 0, separated = 0;
   for (int i = 0; i < 1000; ++i) {
@@ -106,6 +106,18 @@ TYPED_TEST(PenetrationProperty, CapsuleHullMovingByDepthSeparates) { checkPair<T
 TYPED_TEST(PenetrationProperty, BoxBoxMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Box, Kind::Box, 8); }
 TYPED_TEST(PenetrationProperty, BoxHullMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Box, Kind::Hull, 9); }
 TYPED_TEST(PenetrationProperty, HullHullMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Hull, Kind::Hull, 10); }
+// Larger hulls (more faces and edges: the Gauss-map pruned edge-pair path, more near-parallel edge pairs).
+// Capsule/hull in float once lost ~6e-4 of depth here (nearly parallel segment and hull edge: the closest points
+// came from the cancelling Gram determinant, see closest_points.cpp).
+TYPED_TEST(PenetrationProperty, CapsuleHull24PointsMovingByDepthSeparates) {
+  for (std::uint64_t seed : {7, 13, 21, 22}) checkPair<TypeParam>(Kind::Capsule, Kind::Hull, seed, 24);
+}
+TYPED_TEST(PenetrationProperty, CapsuleHull40PointsMovingByDepthSeparates) {
+  for (std::uint64_t seed : {7, 14, 23, 24}) checkPair<TypeParam>(Kind::Capsule, Kind::Hull, seed, 40);
+}
+TYPED_TEST(PenetrationProperty, BoxHull40PointsMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Box, Kind::Hull, 15, 40); }
+TYPED_TEST(PenetrationProperty, HullHull40PointsMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Hull, Kind::Hull, 16, 40); }
+TYPED_TEST(PenetrationProperty, SphereHull40PointsMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Sphere, Kind::Hull, 17, 40); }
 // Swapped orders go through the dispatch's generic wrapper (direction negated).
 TYPED_TEST(PenetrationProperty, SwappedPairsMovingByDepthSeparates) {
   checkPair<TypeParam>(Kind::Box, Kind::Sphere, 11);

@@ -1,4 +1,4 @@
-// Capsule/convex overlap: exact segment-hull test (SAT) then segment-hull distance <= r.
+// Capsule/convex overlap: GJK, with the exact segment-hull test (SAT, then distance <= r) within the band of touching.
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
@@ -6,7 +6,7 @@ namespace gq::detail {
 
 template <class T>
 bool overlapCapsuleConvex(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
-  return overlapRoundedPolytope(capsuleCore(g0, p0), makeConvexPolytope(g1, p1));
+  return overlapConvexShapes(Geometry<T>(g0), p0, Geometry<T>(g1), p1);
 }
 
 template bool overlapCapsuleConvex<float>(const CapsuleGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);

@@ -1,4 +1,4 @@
-// Convex/convex overlap: SAT over the face normals of both and all edge cross products.
+// Convex/convex overlap: GJK, with exact SAT (face normals and crossing edge pairs) within the band of touching.
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
@@ -6,7 +6,7 @@ namespace gq::detail {
 
 template <class T>
 bool overlapConvexConvex(const ConvexMeshGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
-  return overlapPolytopes(makeConvexPolytope(g0, p0), makeConvexPolytope(g1, p1));
+  return overlapConvexShapes(Geometry<T>(g0), p0, Geometry<T>(g1), p1);
 }
 
 template bool overlapConvexConvex<float>(const ConvexMeshGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);

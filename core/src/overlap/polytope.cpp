@@ -1,233 +1,382 @@
 // Polytope construction, exact SAT and exact point/segment-to-polytope distance (see polytope.h).
+//
+// SAT as a search over the facets of the Minkowski difference A - B (a translation t of A makes A + t and B
+// disjoint iff t leaves B - A; the push-out along a unit n is h_A(-n)... written below per axis family):
+//  - face f of A (normal n, plane offset o): h_A(n) = -o, so A must move by -n a distance -o - min_B(n.x);
+//  - face g of B (normal m, offset q): A must move by +m a distance -q - min_A(m.x);
+//  - edge pair (ea of A, eb of B) whose Gauss-map arcs cross at p (p in ea's normal cone, -p in eb's): the support
+//    points are the edges themselves, so A must move by -p a distance p.(vertex of ea - vertex of eb): O(1).
+// Near-degenerate arc configurations are decided conservatively by projecting all vertices on both signs of the
+// axis (an extra axis is never wrong, since any axis bounds the depth from above; a missing one would be).
 #include "overlap/polytope.h"
 
 #include <algorithm>
 #include <limits>
+#include <mutex>
+#include <shared_mutex>
+#include <unordered_map>
 
+#include "gjk/gjk.h"
 #include "gq/tolerances.h"
 
 namespace gq::detail {
 namespace {
 
-template <class T> void addFace(Polytope<T>& poly, const Vec3<T>& normal, std::initializer_list<std::uint32_t> loop) {
-  poly.faceNormals.push_back(normal);
-  poly.faceOffsets.push_back(-normal.dot(poly.vertices[*loop.begin()]));
-  poly.faceVertices.insert(poly.faceVertices.end(), loop.begin(), loop.end());
-  poly.faceBegin.push_back(static_cast<std::uint32_t>(poly.faceVertices.size()));
-}
+// ---- projections (structure-of-arrays loops with independent accumulators) ----------------------------------
 
-template <class T> struct Interval {
-  T lo, hi;
-};
-template <class T> Interval<T> project(const std::vector<Vec3<T>>& pts, const Vec3<T>& axis) {
-  Interval<T> r{std::numeric_limits<T>::max(), std::numeric_limits<T>::lowest()};
-  for (const Vec3<T>& p : pts) {
-    const T x = p.dot(axis);
-    r.lo = std::min(r.lo, x);
-    r.hi = std::max(r.hi, x);
+template <class T> T minDot(const Polytope<T>& p, const Vec3<T>& n) {
+  const std::size_t count = p.xs.size();
+  const T* x = p.xs.data();
+  const T* y = p.ys.data();
+  const T* z = p.zs.data();
+  T m[4] = {std::numeric_limits<T>::max(), std::numeric_limits<T>::max(), std::numeric_limits<T>::max(),
+            std::numeric_limits<T>::max()};
+  std::size_t i = 0;
+  for (; i + 4 <= count; i += 4)
+    for (std::size_t k = 0; k < 4; ++k) {
+      const T d = x[i + k] * n.x() + y[i + k] * n.y() + z[i + k] * n.z();
+      m[k] = d < m[k] ? d : m[k];
+    }
+  for (; i < count; ++i) {
+    const T d = x[i] * n.x() + y[i] * n.y() + z[i] * n.z();
+    m[0] = d < m[0] ? d : m[0];
   }
-  return r;
+  return std::min(std::min(m[0], m[1]), std::min(m[2], m[3]));
 }
 
-// Overlap of the projections on a unit axis, as the smaller of the two push-outs of shape a:
-// along +axis a must move hi_b - lo_a, along -axis hi_a - lo_b.
-template <class T> void testAxis(const Polytope<T>& a, const Polytope<T>& b, const Vec3<T>& axis, SatResult<T>& best) {
-  const Interval<T> ia = project(a.vertices, axis), ib = project(b.vertices, axis);
-  const T pushPositive = ib.hi - ia.lo, pushNegative = ia.hi - ib.lo;
-  const T overlap = std::min(pushPositive, pushNegative);
-  if (overlap < best.depth) {
-    best.depth = overlap;
-    best.direction = pushPositive <= pushNegative ? axis : Vec3<T>(-axis);
-  }
+template <class T> T maxDot(const Polytope<T>& p, const Vec3<T>& n) { return -minDot(p, Vec3<T>(-n)); }
+
+// Exact push-outs of a along both signs of a unit axis (from full projections); keeps the smaller in `best`.
+template <class T> void testAxisBothSigns(const Polytope<T>& a, const Polytope<T>& b, const Vec3<T>& axis, SatResult<T>& best) {
+  const T pushPositive = maxDot(b, axis) - minDot(a, axis), pushNegative = maxDot(a, axis) - minDot(b, axis);
+  if (pushPositive < best.depth) best = {pushPositive, axis};
+  if (pushNegative < best.depth) best = {pushNegative, Vec3<T>(-axis)};
 }
 
-template <class T> bool insidePolygon(const Polytope<T>& poly, std::size_t f, const Vec3<T>& q) {
-  const Vec3<T>& n = poly.faceNormals[f];
-  const std::uint32_t begin = poly.faceBegin[f], end = poly.faceBegin[f + 1];
-  for (std::uint32_t i = begin; i < end; ++i) {
-    const Vec3<T>& v0 = poly.vertices[poly.faceVertices[i]];
-    const Vec3<T>& v1 = poly.vertices[poly.faceVertices[i + 1 < end ? i + 1 : begin]];
-    if ((v1 - v0).cross(q - v0).dot(n) < T(0)) return false;
-  }
-  return true;
+template <class T> void consider(T push, const Vec3<T>& direction, SatResult<T>& best) {
+  if (push < best.depth) best = {push, direction};
 }
 
-// An edge's Gauss-map arc: the normals n1, n2 of its two faces (negated for the subtracted shape), the arc's
-// plane normal n1 x n2 and the unit edge direction.
+// ---- Gauss-map arcs of edges ------------------------------------------------------------------------------
+
+// An edge's normal cone as a Gauss-map arc from n1 to n2 (negated for B, so that arcs of A and -B cross exactly
+// at the facet normals of A - B); `plane` = n2 x n1 is the normal of the arc's great circle.
 template <class T> struct EdgeArc {
-  Vec3<T> n1, n2, plane, dir;
+  Vec3<T> n1, n2, plane;
+  std::uint32_t vertex;  // one endpoint of the edge
 };
 
-template <class T> std::vector<EdgeArc<T>> edgeArcs(const Polytope<T>& poly, T sign) {
-  std::vector<EdgeArc<T>> arcs;
-  arcs.reserve(poly.edges.size());
-  for (std::size_t i = 0; i < poly.edges.size(); ++i) {
-    const Vec3<T> n1 = poly.faceNormals[poly.edgeFaces[i][0]] * sign, n2 = poly.faceNormals[poly.edgeFaces[i][1]] * sign;
-    const Vec3<T> d = poly.vertices[poly.edges[i][1]] - poly.vertices[poly.edges[i][0]];
-    arcs.push_back({n1, n2, n1.cross(n2), d.normalized()});
+template <class T> void edgeArcs(const Polytope<T>& poly, T sign, std::vector<EdgeArc<T>>& arcs) {
+  const PolytopeTopology& topo = *poly.topology;
+  arcs.clear();
+  for (std::size_t i = 0; i < topo.edges.size(); ++i) {
+    const Vec3<T> n1 = poly.faceNormals[topo.edgeFaces[i][0]] * sign, n2 = poly.faceNormals[topo.edgeFaces[i][1]] * sign;
+    arcs.push_back({n1, n2, n2.cross(n1), topo.edges[i][0]});
   }
-  return arcs;
 }
 
-// Whether q (on the arc's great circle) lies between the arc's ends, with slack `slack`.
-template <class T> bool onArc(const EdgeArc<T>& arc, const Vec3<T>& q, T slack) {
-  return arc.n1.cross(q).dot(arc.plane) >= -slack && q.cross(arc.n2).dot(arc.plane) >= -slack;
+enum class Crossing { No, Yes, Maybe };
+
+// Arcs AB (of A) and CD (of -B) cross iff C and D lie on opposite sides of AB's great circle, A and B on
+// opposite sides of CD's, and both arcs lie in one hemisphere (Gregorius, GDC 2013). Any sign within `eps` of
+// zero is undecided.
+template <class T> Crossing arcsCross(const EdgeArc<T>& ab, const EdgeArc<T>& cd, T eps) {
+  const T cba = cd.n1.dot(ab.plane), dba = cd.n2.dot(ab.plane);
+  const T adc = ab.n1.dot(cd.plane), bdc = ab.n2.dot(cd.plane);
+  const bool undecided = std::abs(cba) <= eps || std::abs(dba) <= eps || std::abs(adc) <= eps || std::abs(bdc) <= eps;
+  if (undecided) return Crossing::Maybe;
+  return (cba * dba < T(0) && adc * bdc < T(0) && cba * bdc > T(0)) ? Crossing::Yes : Crossing::No;
 }
 
-// Whether two Gauss-map arcs (each shorter than a half circle) may cross. Conservative: near-degenerate
-// configurations answer true, since an extra axis never makes SAT wrong, a missing one would.
-template <class T> bool arcsMayCross(const EdgeArc<T>& a, const EdgeArc<T>& c) {
-  const T tol = T(tol::Rel<T>::kEpsilon);
-  const Vec3<T> p = a.plane.cross(c.plane);  // the great circles meet at +-p
-  const T len = p.norm();
-  if (len <= tol) return true;
-  const T slack = tol * len;
-  return (onArc(a, p, slack) && onArc(c, p, slack)) || (onArc(a, Vec3<T>(-p), slack) && onArc(c, Vec3<T>(-p), slack));
+template <class T> struct ArcScratch {
+  std::vector<EdgeArc<T>> a, b;
+};
+template <class T> ArcScratch<T>& arcScratch() {
+  thread_local ArcScratch<T> s;
+  return s;
 }
 
-// Edge-edge axes of a and b whose edges can form a face of the Minkowski difference a - b: the normal cone of
-// a's edge (arc between its face normals) must cross the negated normal cone of b's edge.
-template <class T> void testPrunedEdgeAxes(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated,
-                                           SatResult<T>& best) {
+// Edge-edge facets of A - B for two polytopes with known edge faces.
+template <class T>
+void testEdgePairsGaussMap(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated, SatResult<T>& best) {
   const T eps = T(tol::Rel<T>::kEpsilon);
-  const std::vector<EdgeArc<T>> arcsA = edgeArcs(a, T(1)), arcsB = edgeArcs(b, T(-1));
-  for (const EdgeArc<T>& ea : arcsA) {
-    for (const EdgeArc<T>& eb : arcsB) {
-      if (!arcsMayCross(ea, eb)) continue;
-      const Vec3<T> c = ea.dir.cross(eb.dir);
+  ArcScratch<T>& s = arcScratch<T>();
+  edgeArcs(a, T(1), s.a);
+  edgeArcs(b, T(-1), s.b);
+  for (const EdgeArc<T>& ea : s.a) {
+    const Vec3<T> coneMid = ea.n1 + ea.n2;
+    const Vec3<T>& va = a.vertices[ea.vertex];
+    for (const EdgeArc<T>& eb : s.b) {
+      const Crossing crossing = arcsCross(ea, eb, eps);
+      if (crossing == Crossing::No) continue;
+      // The facet normal is perpendicular to both edges, i.e. to both arc planes.
+      const Vec3<T> c = ea.plane.cross(eb.plane);
       const T len2 = c.squaredNorm();
-      if (len2 <= eps * eps) continue;
-      testAxis(a, b, Vec3<T>(c / std::sqrt(len2)), best);
+      if (len2 <= eps * eps) continue;  // parallel edges: no facet of their own
+      Vec3<T> p = c / std::sqrt(len2);
+      if (crossing == Crossing::Maybe) {
+        testAxisBothSigns(a, b, p, best);
+      } else {
+        if (p.dot(coneMid) < T(0)) p = -p;  // the crossing lies inside A's arc
+        consider(p.dot(va - b.vertices[eb.vertex]), Vec3<T>(-p), best);
+      }
       if (stopWhenSeparated && best.depth < T(0)) return;
     }
   }
 }
 
-}  // namespace
-
-template <class T> Polytope<T> makePointPolytope(const Vec3<T>& p) {
-  Polytope<T> poly;
-  poly.vertices = {p};
-  poly.faceBegin = {0};
-  return poly;
+// Edge-edge axes when one side has no Gauss map (a segment core, or non-manifold input): every pair of
+// non-parallel edges, projected in full. For a segment only hull edges whose arc meets the great circle
+// perpendicular to the segment can form a facet ((n1.s)(n2.s) <= 0); the rest are skipped.
+template <class T>
+void testEdgePairsDirect(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated, SatResult<T>& best) {
+  const T eps = T(tol::Rel<T>::kEpsilon);
+  const PolytopeTopology& ta = *a.topology;
+  const PolytopeTopology& tb = *b.topology;
+  for (const auto& ea : ta.edges) {
+    const Vec3<T> da = (a.vertices[ea[1]] - a.vertices[ea[0]]).normalized();
+    for (std::size_t j = 0; j < tb.edges.size(); ++j) {
+      const auto& eb = tb.edges[j];
+      if (tb.edgeFacesKnown && !ta.edgeFacesKnown) {
+        const T s1 = b.faceNormals[tb.edgeFaces[j][0]].dot(da), s2 = b.faceNormals[tb.edgeFaces[j][1]].dot(da);
+        if (s1 * s2 > eps * eps) continue;
+      }
+      const Vec3<T> db = (b.vertices[eb[1]] - b.vertices[eb[0]]).normalized();
+      const Vec3<T> c = da.cross(db);
+      const T len2 = c.squaredNorm();
+      if (len2 <= eps * eps) continue;
+      testAxisBothSigns(a, b, Vec3<T>(c / std::sqrt(len2)), best);
+      if (stopWhenSeparated && best.depth < T(0)) return;
+    }
+  }
 }
 
-template <class T> Polytope<T> makeSegmentPolytope(const Segment<T>& s) {
-  Polytope<T> poly;
-  poly.vertices = {s.a, s.b};
-  poly.faceBegin = {0};
-  const Vec3<T> d = s.b - s.a;
-  if (d.squaredNorm() > T(0)) {
-    poly.edges.push_back({0u, 1u});
-    poly.edgeFaces.push_back({0u, 0u});  // none: edgeFacesKnown stays false
-    poly.edgeDirections.push_back(d.normalized());
+// ---- closest points -----------------------------------------------------------------------------------------
+
+template <class T> bool insidePolygon(const Polytope<T>& poly, std::size_t f, const Vec3<T>& q) {
+  const Vec3<T>& n = poly.faceNormals[f];
+  const PolytopeTopology& topo = *poly.topology;
+  const std::uint32_t begin = topo.faceBegin[f], end = topo.faceBegin[f + 1];
+  for (std::uint32_t i = begin; i < end; ++i) {
+    const Vec3<T>& v0 = poly.vertices[topo.faceVertices[i]];
+    const Vec3<T>& v1 = poly.vertices[topo.faceVertices[i + 1 < end ? i + 1 : begin]];
+    if ((v1 - v0).cross(q - v0).dot(n) < T(0)) return false;
   }
-  return poly;
+  return true;
 }
 
-// Vertex i has coordinate k at +halfExtent when bit k of i is set.
-template <class T> Polytope<T> makeBoxPolytope(const BoxGeometry<T>& box, const Transform<T>& pose) {
-  Polytope<T> poly;
-  const Vec3<T>& h = box.halfExtents;
-  for (std::uint32_t i = 0; i < 8; ++i) {
-    const Vec3<T> local((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
-    poly.vertices.push_back(pose.transform(local));
-  }
-  const Mat3<T> r = pose.q.toRotationMatrix();
-  poly.faceBegin = {0};
-  addFace<T>(poly, r.col(0), {1, 3, 7, 5});
-  addFace<T>(poly, -r.col(0), {0, 4, 6, 2});
-  addFace<T>(poly, r.col(1), {2, 6, 7, 3});
-  addFace<T>(poly, -r.col(1), {0, 1, 5, 4});
-  addFace<T>(poly, r.col(2), {4, 5, 7, 6});
-  addFace<T>(poly, -r.col(2), {0, 2, 3, 1});
-  // Faces are ordered +X, -X, +Y, -Y, +Z, -Z: the face of axis j on vertex i's side is 2j + (bit j clear).
+// ---- topology -----------------------------------------------------------------------------------------------
+
+void addFaceLoop(PolytopeTopology& topo, std::initializer_list<std::uint32_t> loop) {
+  topo.faceVertices.insert(topo.faceVertices.end(), loop.begin(), loop.end());
+  topo.faceBegin.push_back(static_cast<std::uint32_t>(topo.faceVertices.size()));
+}
+
+// Box vertex i has coordinate k at +halfExtent when bit k of i is set; faces are ordered +X, -X, +Y, -Y, +Z, -Z.
+PolytopeTopology makeBoxTopology() {
+  PolytopeTopology topo;
+  addFaceLoop(topo, {1, 3, 7, 5});
+  addFaceLoop(topo, {0, 4, 6, 2});
+  addFaceLoop(topo, {2, 6, 7, 3});
+  addFaceLoop(topo, {0, 1, 5, 4});
+  addFaceLoop(topo, {4, 5, 7, 6});
+  addFaceLoop(topo, {0, 2, 3, 1});
+  // The face of axis j on vertex i's side is 2j + (bit j clear).
   const auto faceOf = [](std::uint32_t i, std::uint32_t j) { return 2 * j + ((i & (1u << j)) ? 0u : 1u); };
   for (std::uint32_t i = 0; i < 8; ++i)
     for (std::uint32_t k = 0; k < 3; ++k)
       if (!(i & (1u << k))) {
-        poly.edges.push_back({i, i | (1u << k)});
-        poly.edgeFaces.push_back({faceOf(i, (k + 1) % 3), faceOf(i, (k + 2) % 3)});
+        topo.edges.push_back({i, i | (1u << k)});
+        topo.edgeFaces.push_back({faceOf(i, (k + 1) % 3), faceOf(i, (k + 2) % 3)});
       }
-  poly.edgeFacesKnown = true;
-  poly.satNormals = {r.col(0), r.col(1), r.col(2)};
-  poly.edgeDirections = poly.satNormals;
-  return poly;
+  topo.edgeFacesKnown = true;
+  return topo;
 }
 
-// Scaled hull: x = pose(S v) with S symmetric; normals map by S^-T = S^-1 (then renormalised).
-template <class T> Polytope<T> makeConvexPolytope(const ConvexMeshGeometry<T>& convex, const Transform<T>& pose) {
-  const ConvexMesh<T>& mesh = *convex.mesh;
-  const Mat3<T> s = convex.scale.toMatrix();
-  const Mat3<T> r = pose.q.toRotationMatrix();
-  const Mat3<T> normalMap = r * s.inverse();
-  Polytope<T> poly;
-  std::vector<std::array<std::uint32_t, 3>> sides;  // (lower vertex, upper vertex, face) per polygon side
-  poly.vertices.reserve(mesh.vertices.size());
-  for (const Vec3<T>& v : mesh.vertices) poly.vertices.push_back(pose.transform(s * v));
-  poly.faceBegin = {0};
-  for (const HullPolygon<T>& f : mesh.polygons) {
+const PolytopeTopology& boxTopology() {
+  static const PolytopeTopology topo = makeBoxTopology();
+  return topo;
+}
+
+const PolytopeTopology& pointTopology() {
+  static const PolytopeTopology topo;
+  return topo;
+}
+
+const PolytopeTopology& segmentTopology() {
+  static const PolytopeTopology topo = [] {
+    PolytopeTopology t;
+    t.edges.push_back({0u, 1u});
+    return t;
+  }();
+  return topo;
+}
+
+// Each polygon side (lower vertex, upper vertex, face); a manifold hull has exactly two per edge.
+template <class T> PolytopeTopology makeHullTopology(const ConvexMesh<T>& mesh) {
+  PolytopeTopology topo;
+  std::vector<std::array<std::uint32_t, 3>> sides;
+  for (std::uint32_t p = 0; p < mesh.polygons.size(); ++p) {
+    const HullPolygon<T>& f = mesh.polygons[p];
     if (f.indexCount < 3) continue;
-    const Vec3<T> n = (normalMap * f.normal).normalized();
-    poly.faceNormals.push_back(n);
-    poly.faceOffsets.push_back(-n.dot(poly.vertices[mesh.polygonVertices[f.indexBase]]));
-    const std::uint32_t face = std::uint32_t(poly.faceNormals.size() - 1);
+    const std::uint32_t face = std::uint32_t(topo.facePolygon.size());
+    topo.facePolygon.push_back(p);
     for (std::uint32_t i = 0; i < f.indexCount; ++i) {
       const std::uint32_t v0 = mesh.polygonVertices[f.indexBase + i];
       const std::uint32_t v1 = mesh.polygonVertices[f.indexBase + (i + 1) % f.indexCount];
-      poly.faceVertices.push_back(v0);
+      topo.faceVertices.push_back(v0);
       sides.push_back({std::min(v0, v1), std::max(v0, v1), face});
     }
-    poly.faceBegin.push_back(static_cast<std::uint32_t>(poly.faceVertices.size()));
+    topo.faceBegin.push_back(static_cast<std::uint32_t>(topo.faceVertices.size()));
   }
-  // Parallel faces repeat an axis; skipping them would cost more (O(F^2)) than the extra projection.
-  poly.satNormals = poly.faceNormals;
-  // Each edge appears once per adjacent face; pair them up (a manifold hull has exactly two per edge).
   std::sort(sides.begin(), sides.end());
-  poly.edgeFacesKnown = true;
+  topo.edgeFacesKnown = true;
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i + 1;
     while (j < sides.size() && sides[j][0] == sides[i][0] && sides[j][1] == sides[i][1]) ++j;
-    poly.edges.push_back({sides[i][0], sides[i][1]});
-    poly.edgeFaces.push_back({sides[i][2], sides[j - 1][2]});
-    if (j - i != 2) poly.edgeFacesKnown = false;
+    if (sides[i][0] != sides[i][1]) {
+      topo.edges.push_back({sides[i][0], sides[i][1]});
+      topo.edgeFaces.push_back({sides[i][2], sides[j - 1][2]});
+      if (j - i != 2) topo.edgeFacesKnown = false;
+    }
     i = j;
   }
-  // Duplicated directions only matter on the direct edge-pair path, which runs for small products only.
-  for (const auto& e : poly.edges) {
-    const Vec3<T> d = poly.vertices[e[1]] - poly.vertices[e[0]];
-    if (d.squaredNorm() > T(0)) poly.edgeDirections.push_back(d.normalized());
+  return topo;
+}
+
+template <class T> struct TopologyCache {
+  struct Entry {
+    std::weak_ptr<const ConvexMesh<T>> mesh;
+    std::shared_ptr<const PolytopeTopology> topology;
+  };
+  std::shared_mutex mutex;
+  std::unordered_map<const ConvexMesh<T>*, Entry> entries;
+  std::size_t pruneAt = 64;  // drop entries of destroyed meshes when the map grows past this
+
+  static TopologyCache& instance() {
+    static TopologyCache cache;
+    return cache;
   }
-  return poly;
+};
+
+template <class T> void fillCoordinates(Polytope<T>& out) {
+  const std::size_t n = out.vertices.size();
+  out.xs.resize(n);
+  out.ys.resize(n);
+  out.zs.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out.xs[i] = out.vertices[i].x();
+    out.ys[i] = out.vertices[i].y();
+    out.zs[i] = out.vertices[i].z();
+  }
+}
+
+template <class T> void clearPolytope(Polytope<T>& out, const PolytopeTopology* topology) {
+  out.vertices.clear();
+  out.faceNormals.clear();
+  out.faceOffsets.clear();
+  out.ownedTopology.reset();
+  out.topology = topology;
+}
+
+}  // namespace
+
+template <class T> std::shared_ptr<const PolytopeTopology> hullTopology(const std::shared_ptr<const ConvexMesh<T>>& mesh) {
+  TopologyCache<T>& cache = TopologyCache<T>::instance();
+  {
+    std::shared_lock<std::shared_mutex> lock(cache.mutex);
+    const auto it = cache.entries.find(mesh.get());
+    // A live weak reference means the address still belongs to the same mesh (it cannot have been reused).
+    if (it != cache.entries.end() && !it->second.mesh.expired()) return it->second.topology;
+  }
+  auto topology = std::make_shared<const PolytopeTopology>(makeHullTopology(*mesh));
+  std::unique_lock<std::shared_mutex> lock(cache.mutex);
+  if (cache.entries.size() >= cache.pruneAt) {
+    for (auto it = cache.entries.begin(); it != cache.entries.end();)
+      it = it->second.mesh.expired() ? cache.entries.erase(it) : std::next(it);
+    cache.pruneAt = std::max<std::size_t>(64, 2 * cache.entries.size());
+  }
+  cache.entries[mesh.get()] = {mesh, topology};
+  return topology;
+}
+
+template <class T> Polytope<T>& scratchPolytope(int slot) {
+  thread_local Polytope<T> scratch[2];
+  return scratch[slot];
+}
+
+template <class T> void buildPointPolytope(const Vec3<T>& p, Polytope<T>& out) {
+  clearPolytope(out, &pointTopology());
+  out.vertices.push_back(p);
+  fillCoordinates(out);
+}
+
+template <class T> void buildSegmentPolytope(const Segment<T>& s, Polytope<T>& out) {
+  const bool degenerate = !((s.b - s.a).squaredNorm() > T(0));
+  clearPolytope(out, degenerate ? &pointTopology() : &segmentTopology());
+  out.vertices.push_back(s.a);
+  if (!degenerate) out.vertices.push_back(s.b);
+  fillCoordinates(out);
+}
+
+template <class T> void buildBoxPolytope(const BoxGeometry<T>& box, const Transform<T>& pose, Polytope<T>& out) {
+  clearPolytope(out, &boxTopology());
+  const Vec3<T>& h = box.halfExtents;
+  for (std::uint32_t i = 0; i < 8; ++i) {
+    const Vec3<T> local((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
+    out.vertices.push_back(pose.transform(local));
+  }
+  const Mat3<T> r = pose.q.toRotationMatrix();
+  for (int axis = 0; axis < 3; ++axis) {
+    const Vec3<T> n = r.col(axis);
+    const T c = n.dot(pose.p);
+    out.faceNormals.push_back(n);
+    out.faceOffsets.push_back(-(c + h[axis]));
+    out.faceNormals.push_back(-n);
+    out.faceOffsets.push_back(c - h[axis]);
+  }
+  fillCoordinates(out);
+}
+
+// Scaled hull: x = pose(S v) with S symmetric; normals map by S^-T = S^-1 (then renormalised).
+template <class T>
+void buildConvexPolytope(const ConvexMeshGeometry<T>& convex, const Transform<T>& pose, Polytope<T>& out) {
+  std::shared_ptr<const PolytopeTopology> topology = hullTopology(convex.mesh);
+  clearPolytope(out, topology.get());
+  out.ownedTopology = std::move(topology);
+  const ConvexMesh<T>& mesh = *convex.mesh;
+  const Mat3<T> s = convex.scale.toMatrix();
+  const Mat3<T> r = pose.q.toRotationMatrix();
+  const Mat3<T> vertexMap = r * s;
+  const Mat3<T> normalMap = r * s.inverse();
+  for (const Vec3<T>& v : mesh.vertices) out.vertices.push_back(vertexMap * v + pose.p);
+  const PolytopeTopology& topo = *out.topology;
+  for (std::size_t f = 0; f < topo.facePolygon.size(); ++f) {
+    const Vec3<T> n = (normalMap * mesh.polygons[topo.facePolygon[f]].normal).normalized();
+    out.faceNormals.push_back(n);
+    out.faceOffsets.push_back(-n.dot(out.vertices[topo.faceVertices[topo.faceBegin[f]]]));
+  }
+  fillCoordinates(out);
 }
 
 template <class T> SatResult<T> satMinimumOverlap(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated) {
   SatResult<T> best{std::numeric_limits<T>::max(), Vec3<T>::UnitX()};
-  for (const Vec3<T>& n : a.satNormals) {
-    testAxis(a, b, n, best);
+  // Face axes first: they are the most likely to separate, and cost one projection each.
+  for (std::size_t f = 0; f < a.faceCount(); ++f) {
+    const Vec3<T>& n = a.faceNormals[f];
+    consider(-a.faceOffsets[f] - minDot(b, n), Vec3<T>(-n), best);
     if (stopWhenSeparated && best.depth < T(0)) return best;
   }
-  for (const Vec3<T>& n : b.satNormals) {
-    testAxis(a, b, n, best);
+  for (std::size_t g = 0; g < b.faceCount(); ++g) {
+    const Vec3<T>& m = b.faceNormals[g];
+    consider(-b.faceOffsets[g] - minDot(a, m), m, best);
     if (stopWhenSeparated && best.depth < T(0)) return best;
   }
-  // Edge-edge axes; (nearly) parallel edges give no facet of the Minkowski difference and are skipped. Any unit
-  // axis bounds the depth from above, so a slightly noisy axis never makes the answer wrong, only a zero one would.
-  if (a.edgeFacesKnown && b.edgeFacesKnown &&
-      a.edgeDirections.size() * b.edgeDirections.size() > kDirectEdgePairLimit) {
-    testPrunedEdgeAxes(a, b, stopWhenSeparated, best);
-    return best;
-  }
-  const T eps = T(tol::Rel<T>::kEpsilon);
-  for (const Vec3<T>& ea : a.edgeDirections) {
-    for (const Vec3<T>& eb : b.edgeDirections) {
-      const Vec3<T> c = ea.cross(eb);
-      const T len2 = c.squaredNorm();
-      if (len2 <= eps * eps) continue;
-      testAxis(a, b, Vec3<T>(c / std::sqrt(len2)), best);
-      if (stopWhenSeparated && best.depth < T(0)) return best;
-    }
-  }
+  if (a.edgeCount() == 0 || b.edgeCount() == 0) return best;
+  if (a.edgeFacesKnown() && b.edgeFacesKnown())
+    testEdgePairsGaussMap(a, b, stopWhenSeparated, best);
+  else
+    testEdgePairsDirect(a, b, stopWhenSeparated, best);
   return best;
 }
 
@@ -241,12 +390,12 @@ template <class T> ClosestResult<T> closestPointToPolytope(const Vec3<T>& p, con
     const Vec3<T> q = p - poly.faceNormals[f] * s;
     if (insidePolygon(poly, f, q)) best = {s, p, q};
   }
-  for (const auto& e : poly.edges) {
+  for (const auto& e : poly.topology->edges) {
     const Vec3<T> q = closestPointOnSegment(Segment<T>{poly.vertices[e[0]], poly.vertices[e[1]]}, p);
     const T d = (p - q).norm();
     if (d < best.distance) best = {d, p, q};
   }
-  if (poly.edges.empty())
+  if (poly.topology->edges.empty())
     for (const Vec3<T>& v : poly.vertices) {
       const T d = (p - v).norm();
       if (d < best.distance) best = {d, p, v};
@@ -260,7 +409,7 @@ template <class T> ClosestResult<T> closestSegmentToPolytope(const Segment<T>& s
   ClosestResult<T> best = closestPointToPolytope(s.a, poly);
   const ClosestResult<T> atB = closestPointToPolytope(s.b, poly);
   if (atB.distance < best.distance) best = atB;
-  for (const auto& e : poly.edges) {
+  for (const auto& e : poly.topology->edges) {
     const SegmentPair<T> cp = closestPointsSegmentSegment(s, Segment<T>{poly.vertices[e[0]], poly.vertices[e[1]]});
     const T d = (cp.p0 - cp.p1).norm();
     if (d < best.distance) best = {d, cp.p0, cp.p1};
@@ -269,17 +418,25 @@ template <class T> ClosestResult<T> closestSegmentToPolytope(const Segment<T>& s
 }
 
 template <class T> RoundedCore<T> sphereCore(const SphereGeometry<T>& g, const Transform<T>& pose) {
-  return {makePointPolytope(pose.p), Segment<T>{pose.p, pose.p}, g.radius};
+  return {Segment<T>{pose.p, pose.p}, g.radius};
 }
 
 template <class T> RoundedCore<T> capsuleCore(const CapsuleGeometry<T>& g, const Transform<T>& pose) {
   const Vec3<T> axis = pose.rotate(Vec3<T>(g.halfHeight, T(0), T(0)));
-  const Segment<T> s{pose.p - axis, pose.p + axis};
-  return {makeSegmentPolytope(s), s, g.radius};
+  return {Segment<T>{pose.p - axis, pose.p + axis}, g.radius};
 }
 
+namespace {
+// The core as a polytope, in scratch slot 1 (slot 0 holds the other shape).
+template <class T> const Polytope<T>& corePolytope(const RoundedCore<T>& r) {
+  Polytope<T>& core = scratchPolytope<T>(1);
+  buildSegmentPolytope(r.segment, core);
+  return core;
+}
+}  // namespace
+
 template <class T> bool overlapRoundedPolytope(const RoundedCore<T>& r, const Polytope<T>& poly) {
-  const SatResult<T> sat = satMinimumOverlap(r.core, poly, true);
+  const SatResult<T> sat = satMinimumOverlap(corePolytope(r), poly, true);
   if (sat.depth >= T(0)) return true;
   if (-sat.depth > r.radius) return false;  // a separating gap bounds the distance from below
   return closestSegmentToPolytope(r.segment, poly).distance <= r.radius;
@@ -287,7 +444,7 @@ template <class T> bool overlapRoundedPolytope(const RoundedCore<T>& r, const Po
 
 template <class T>
 bool penetrationRoundedPolytope(const RoundedCore<T>& r, const Polytope<T>& poly, Vec3<T>& direction, T& depth) {
-  const SatResult<T> sat = satMinimumOverlap(r.core, poly, false);
+  const SatResult<T> sat = satMinimumOverlap(corePolytope(r), poly, false);
   if (sat.depth >= T(0)) {  // the core itself penetrates: PD(core) plus the radius
     direction = sat.direction;
     depth = sat.depth + r.radius;
@@ -296,8 +453,13 @@ bool penetrationRoundedPolytope(const RoundedCore<T>& r, const Polytope<T>& poly
   if (-sat.depth > r.radius) return false;
   const ClosestResult<T> c = closestSegmentToPolytope(r.segment, poly);
   if (c.distance > r.radius) return false;
-  const Vec3<T> gap = c.onCore - c.onPoly;
-  direction = c.distance > T(0) ? Vec3<T>(gap / c.distance) : sat.direction;
+  // When the closest points lie on one facet of the Minkowski difference the SAT axis realises the distance and is
+  // exact, whereas the difference of two nearly coincident closest points is not: its angle error is about
+  // eps * size / distance, and along a face contact the push-out error is first order in it (float lost ~3e-3 at
+  // distance 3e-5). Elsewhere (edge/vertex regions) the push-out is insensitive to that error.
+  const T scale = r.radius + (r.segment.b - r.segment.a).norm() + c.onPoly.cwiseAbs().maxCoeff();
+  const bool onSatFacet = std::abs(-sat.depth - c.distance) <= T(tol::Rel<T>::kEpsilon) * scale;
+  direction = (onSatFacet || !(c.distance > T(0))) ? sat.direction : Vec3<T>((c.onCore - c.onPoly) / c.distance);
   depth = r.radius - c.distance;
   return true;
 }
@@ -314,10 +476,90 @@ template <class T> bool penetrationPolytopes(const Polytope<T>& a, const Polytop
   return true;
 }
 
-template Polytope<float> makePointPolytope<float>(const Vec3<float>&);
-template Polytope<float> makeSegmentPolytope<float>(const Segment<float>&);
-template Polytope<float> makeBoxPolytope<float>(const BoxGeometry<float>&, const Transform<float>&);
-template Polytope<float> makeConvexPolytope<float>(const ConvexMeshGeometry<float>&, const Transform<float>&);
+namespace {
+
+// Largest distance from the origin to the boundary of the tetrahedron `s` when the origin is inside it (a lower
+// bound of the penetration depth of the cores, since the tetrahedron lies in their Minkowski difference); 0 when
+// the simplex is not a tetrahedron or the origin is not strictly inside.
+template <class T> T originClearance(const GjkSimplex<T>& s) {
+  if (s.size != 4) return T(0);
+  T clearance = std::numeric_limits<T>::max();
+  for (int skip = 0; skip < 4; ++skip) {
+    const Vec3<T>& p0 = s.points[(skip + 1) % 4].w;
+    const Vec3<T>& p1 = s.points[(skip + 2) % 4].w;
+    const Vec3<T>& p2 = s.points[(skip + 3) % 4].w;
+    const Vec3<T>& opposite = s.points[skip].w;
+    Vec3<T> n = (p1 - p0).cross(p2 - p0);
+    const T len = n.norm();
+    if (!(len > T(0))) return T(0);
+    n /= len;
+    const T originSide = -n.dot(p0), oppositeSide = n.dot(opposite - p0);
+    // The origin must be on the same side as the opposite vertex; its distance to this face plane is |originSide|.
+    if (!(originSide * oppositeSide > T(0))) return T(0);
+    clearance = std::min(clearance, std::abs(originSide));
+  }
+  return clearance;
+}
+
+template <class T> bool isRounded(GeometryType t) { return t == GeometryType::Sphere || t == GeometryType::Capsule; }
+
+template <class T> RoundedCore<T> roundedCore(const Geometry<T>& g, const Transform<T>& pose) {
+  if (g.type() == GeometryType::Sphere) return sphereCore(g.template get<SphereGeometry<T>>(), pose);
+  return capsuleCore(g.template get<CapsuleGeometry<T>>(), pose);
+}
+
+template <class T> void buildPolytope(const Geometry<T>& g, const Transform<T>& pose, Polytope<T>& out) {
+  if (g.type() == GeometryType::Box)
+    buildBoxPolytope(g.template get<BoxGeometry<T>>(), pose, out);
+  else
+    buildConvexPolytope(g.template get<ConvexMeshGeometry<T>>(), pose, out);
+}
+
+// The exact kernels, for answers within the band of touching.
+template <class T>
+bool overlapConvexShapesExact(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
+  Polytope<T>& poly = scratchPolytope<T>(0);
+  if (isRounded<T>(g0.type())) {
+    buildPolytope(g1, p1, poly);
+    return overlapRoundedPolytope(roundedCore(g0, p0), poly);
+  }
+  if (isRounded<T>(g1.type())) {
+    buildPolytope(g0, p0, poly);
+    return overlapRoundedPolytope(roundedCore(g1, p1), poly);
+  }
+  Polytope<T>& other = scratchPolytope<T>(1);
+  buildPolytope(g0, p0, poly);
+  buildPolytope(g1, p1, other);
+  return overlapPolytopes(poly, other);
+}
+
+}  // namespace
+
+template <class T>
+bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
+  const ConvexShape<T> a = makeConvexShape(g0, p0), b = makeConvexShape(g1, p1);
+  const T band = kGjkOverlapBand<T> * std::max(a.size, b.size);
+  // Separated by more than the band: GJK's separating axis is conclusive.
+  ConvexShape<T> grown = a;
+  grown.margin += band;
+  if (!gjkOverlap(grown, b)) return false;
+  // Overlapping by more than the band: the cores' distance (rounded shells) or the origin's clearance inside
+  // GJK's final tetrahedron (cores overlapping) proves it.
+  const GjkResult<T> g = gjkDistance(a, b);
+  if (g.status.ok()) {
+    if (!g.coresOverlap && g.distance + g.errorBound < -band) return true;
+    if (g.coresOverlap && originClearance(g.simplex) + a.margin + b.margin > band) return true;
+  }
+  return overlapConvexShapesExact(g0, p0, g1, p1);
+}
+
+
+template std::shared_ptr<const PolytopeTopology> hullTopology<float>(const std::shared_ptr<const ConvexMesh<float>>&);
+template Polytope<float>& scratchPolytope<float>(int);
+template void buildPointPolytope<float>(const Vec3<float>&, Polytope<float>&);
+template void buildSegmentPolytope<float>(const Segment<float>&, Polytope<float>&);
+template void buildBoxPolytope<float>(const BoxGeometry<float>&, const Transform<float>&, Polytope<float>&);
+template void buildConvexPolytope<float>(const ConvexMeshGeometry<float>&, const Transform<float>&, Polytope<float>&);
 template SatResult<float> satMinimumOverlap<float>(const Polytope<float>&, const Polytope<float>&, bool);
 template ClosestResult<float> closestPointToPolytope<float>(const Vec3<float>&, const Polytope<float>&);
 template ClosestResult<float> closestSegmentToPolytope<float>(const Segment<float>&, const Polytope<float>&);
@@ -327,10 +569,13 @@ template bool overlapRoundedPolytope<float>(const RoundedCore<float>&, const Pol
 template bool penetrationRoundedPolytope<float>(const RoundedCore<float>&, const Polytope<float>&, Vec3<float>&, float&);
 template bool overlapPolytopes<float>(const Polytope<float>&, const Polytope<float>&);
 template bool penetrationPolytopes<float>(const Polytope<float>&, const Polytope<float>&, Vec3<float>&, float&);
-template Polytope<double> makePointPolytope<double>(const Vec3<double>&);
-template Polytope<double> makeSegmentPolytope<double>(const Segment<double>&);
-template Polytope<double> makeBoxPolytope<double>(const BoxGeometry<double>&, const Transform<double>&);
-template Polytope<double> makeConvexPolytope<double>(const ConvexMeshGeometry<double>&, const Transform<double>&);
+template bool overlapConvexShapes<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&);
+template std::shared_ptr<const PolytopeTopology> hullTopology<double>(const std::shared_ptr<const ConvexMesh<double>>&);
+template Polytope<double>& scratchPolytope<double>(int);
+template void buildPointPolytope<double>(const Vec3<double>&, Polytope<double>&);
+template void buildSegmentPolytope<double>(const Segment<double>&, Polytope<double>&);
+template void buildBoxPolytope<double>(const BoxGeometry<double>&, const Transform<double>&, Polytope<double>&);
+template void buildConvexPolytope<double>(const ConvexMeshGeometry<double>&, const Transform<double>&, Polytope<double>&);
 template SatResult<double> satMinimumOverlap<double>(const Polytope<double>&, const Polytope<double>&, bool);
 template ClosestResult<double> closestPointToPolytope<double>(const Vec3<double>&, const Polytope<double>&);
 template ClosestResult<double> closestSegmentToPolytope<double>(const Segment<double>&, const Polytope<double>&);
@@ -340,5 +585,6 @@ template bool overlapRoundedPolytope<double>(const RoundedCore<double>&, const P
 template bool penetrationRoundedPolytope<double>(const RoundedCore<double>&, const Polytope<double>&, Vec3<double>&, double&);
 template bool overlapPolytopes<double>(const Polytope<double>&, const Polytope<double>&);
 template bool penetrationPolytopes<double>(const Polytope<double>&, const Polytope<double>&, Vec3<double>&, double&);
+template bool overlapConvexShapes<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&);
 
 }  // namespace gq::detail

@@ -1,4 +1,4 @@
-// Sphere/convex overlap: exact point-to-hull distance (point core + radius, see polytope.h).
+// Sphere/convex overlap: GJK, with the exact point-to-hull distance within the band of touching.
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
@@ -6,7 +6,7 @@ namespace gq::detail {
 
 template <class T>
 bool overlapSphereConvex(const SphereGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
-  return overlapRoundedPolytope(sphereCore(g0, p0), makeConvexPolytope(g1, p1));
+  return overlapConvexShapes(Geometry<T>(g0), p0, Geometry<T>(g1), p1);
 }
 
 template bool overlapSphereConvex<float>(const SphereGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);

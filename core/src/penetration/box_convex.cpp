@@ -1,4 +1,4 @@
-// Box/convex MTD: exact SAT over the face normals of both and all edge cross products.
+// Box/convex MTD: exact SAT over the face normals of both and the edge pairs whose Gauss-map arcs cross.
 #include "penetration/penetration.h"
 #include "overlap/polytope.h"
 
@@ -7,12 +7,16 @@ namespace gq::detail {
 template <class T>
 bool penetrationBoxConvex(const BoxGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1,
                           Vec3<T>& direction, T& depth) {
-  return penetrationPolytopes(makeBoxPolytope(g0, p0), makeConvexPolytope(g1, p1), direction, depth);
+  Polytope<T>& a = scratchPolytope<T>(0);
+  Polytope<T>& b = scratchPolytope<T>(1);
+  buildBoxPolytope(g0, p0, a);
+  buildConvexPolytope(g1, p1, b);
+  return penetrationPolytopes(a, b, direction, depth);
 }
 
 template bool penetrationBoxConvex<float>(const BoxGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&,
-                                         Vec3<float>&, float&);
+                                Vec3<float>&, float&);
 template bool penetrationBoxConvex<double>(const BoxGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&,
-                                          Vec3<double>&, double&);
+                                 Vec3<double>&, double&);
 
 }  // namespace gq::detail

@@ -7,12 +7,14 @@ namespace gq::detail {
 template <class T>
 bool penetrationSphereConvex(const SphereGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1,
                              Vec3<T>& direction, T& depth) {
-  return penetrationRoundedPolytope(sphereCore(g0, p0), makeConvexPolytope(g1, p1), direction, depth);
+  Polytope<T>& poly = scratchPolytope<T>(0);
+  buildConvexPolytope(g1, p1, poly);
+  return penetrationRoundedPolytope(sphereCore(g0, p0), poly, direction, depth);
 }
 
 template bool penetrationSphereConvex<float>(const SphereGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&,
-                                            Vec3<float>&, float&);
+                                   Vec3<float>&, float&);
 template bool penetrationSphereConvex<double>(const SphereGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&,
-                                             Vec3<double>&, double&);
+                                    Vec3<double>&, double&);
 
 }  // namespace gq::detail
