@@ -1,12 +1,13 @@
 // Distance façade: validation, then one dispatch table indexed [type0][type1]. Closed forms are written for
 // a <= b in GeometryType order; the mirrored cells go through `swapped`, which exchanges the inputs and flips the
 // result (point0 <-> point1, normal -> -normal). Convex pairs without a closed form use GJK/EPA in either order.
-// Unsupported: plane-plane and everything with a triangle mesh or heightfield (until the BVH-based kernels land),
-// and non-convex custom shapes.
+// Triangle meshes and heightfields are thin surfaces (distance >= 0, see distance/surface_distance.h). Unsupported:
+// plane-plane, plane-mesh/heightfield, mesh-heightfield, heightfield-heightfield, and non-convex custom shapes.
 #include <array>
 
 #include "common/validate.h"
 #include "distance/distance.h"
+#include "distance/surface_distance.h"
 #include "gq/custom.h"
 #include "gq/query.h"
 
@@ -92,20 +93,27 @@ template <class T> constexpr DistanceFn<T> kPlaneCapsule = closedForm<T, P<T>, C
 template <class T> constexpr DistanceFn<T> kPlaneBox = closedForm<T, P<T>, B<T>, detail::distancePlaneBox<T>>;
 template <class T> constexpr DistanceFn<T> kCapsuleCapsule = closedForm<T, C<T>, C<T>, detail::distanceCapsuleCapsule<T>>;
 
+// Convex shapes vs triangle meshes and heightfields (distance/convex_surface.cpp), mesh vs mesh (BVH vs BVH).
+template <class T> constexpr DistanceFn<T> kConvexSurface = detail::distanceConvexSurface<T>;
+template <class T> constexpr DistanceFn<T> kSurfaceConvex = swapped<T, detail::distanceConvexSurface<T>>;
+template <class T> constexpr DistanceFn<T> kMeshMesh = detail::distanceTriangleMeshTriangleMesh<T>;
+
 // Rows geom0, columns geom1, in GeometryType order: Sphere, Plane, Capsule, Box, Convex, Mesh, HeightField, Custom.
 template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTable = {{
-    {kSphereSphere<T>, kSpherePlane<T>, kSphereCapsule<T>, kSphereBox<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
+    {kSphereSphere<T>, kSpherePlane<T>, kSphereCapsule<T>, kSphereBox<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>,
+     gjk<T>},
     {swapped<T, kSpherePlane<T>>, unsupported<T>, kPlaneCapsule<T>, kPlaneBox<T>, planeConvex<T>, unsupported<T>,
      unsupported<T>, planeConvex<T>},
-    {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, gjk<T>, gjk<T>, unsupported<T>,
-     unsupported<T>, gjk<T>},
-    {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, gjk<T>, gjk<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
-    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
-    {unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>,
-     unsupported<T>},
-    {unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>,
-     unsupported<T>},
-    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, unsupported<T>, unsupported<T>, gjk<T>},
+    {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, gjk<T>, gjk<T>, kConvexSurface<T>,
+     kConvexSurface<T>, gjk<T>},
+    {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>,
+     gjk<T>},
+    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
+    {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kMeshMesh<T>,
+     unsupported<T>, kSurfaceConvex<T>},
+    {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, unsupported<T>,
+     unsupported<T>, kSurfaceConvex<T>},
+    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
 }};
 static_assert(kDistanceTable<double>.size() == kGeometryTypeCount && kDistanceTable<double>[0].size() == kGeometryTypeCount,
               "one row and one column per GeometryType");

@@ -10,6 +10,7 @@
 #include "gq/custom.h"
 #include "gq/query.h"
 #include "overlap/overlap.h"
+#include "overlap/surface_overlap.h"
 
 namespace gq {
 namespace {
@@ -75,7 +76,7 @@ template <class T> constexpr OverlapTable<T> makeOverlapTable() {
   using GT = GeometryType;
   OverlapTable<T> t{};
   for (auto& row : t)
-    for (auto& cell : row) cell = notYetImplemented<T>;  // triangle mesh / heightfield pairs: a later task
+    for (auto& cell : row) cell = notYetImplemented<T>;  // overwritten below: every pair is registered
   setPair<T, GT::Sphere, GT::Sphere, pairKernel<T, SphereGeometry<T>, SphereGeometry<T>, detail::overlapSphereSphere<T>>>(t);
   setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::overlapSpherePlane<T>>>(t);
   setPair<T, GT::Sphere, GT::Capsule, pairKernel<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::overlapSphereCapsule<T>>>(t);
@@ -99,6 +100,20 @@ template <class T> constexpr OverlapTable<T> makeOverlapTable() {
   setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::overlapConvexConvex<T>>>(t);
   setPair<T, GT::ConvexMesh, GT::Custom, customKernel<T>>(t);
   setPair<T, GT::Custom, GT::Custom, customKernel<T>>(t);
+  // Thin surfaces (triangle mesh, heightfield): overlap/<shape>_triangle_mesh.cpp etc., exact per-triangle tests.
+  setPair<T, GT::Sphere, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
+  setPair<T, GT::Capsule, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
+  setPair<T, GT::Box, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
+  setPair<T, GT::ConvexMesh, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
+  setPair<T, GT::TriangleMesh, GT::Custom, swapped<T, detail::overlapConvexTriangleMesh<T>>>(t);
+  setPair<T, GT::Sphere, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
+  setPair<T, GT::Capsule, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
+  setPair<T, GT::Box, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
+  setPair<T, GT::ConvexMesh, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
+  setPair<T, GT::HeightField, GT::Custom, swapped<T, detail::overlapConvexHeightField<T>>>(t);
+  setPair<T, GT::TriangleMesh, GT::TriangleMesh, detail::overlapTriangleMeshTriangleMesh<T>>(t);
+  setPair<T, GT::TriangleMesh, GT::HeightField, detail::overlapTriangleMeshHeightField<T>>(t);
+  setPair<T, GT::HeightField, GT::HeightField, detail::overlapHeightFieldHeightField<T>>(t);
   return t;
 }
 

@@ -1,0 +1,123 @@
+// Convex shape vs triangle mesh / heightfield distance (see surface_distance.h). Computed in the surface's frame
+// (the surface at the identity) and mapped back, so far-away poses keep their precision.
+#include <cmath>
+#include <vector>
+
+#include "distance/surface_distance.h"
+#include "mesh_pairs/shape_triangle.h"
+#include "mesh_pairs/surface.h"
+#include "mesh_pairs/triangle_tests.h"
+
+namespace gq::detail {
+namespace {
+
+template <class T> struct Best {
+  bool found = false;
+  DistanceResult<T> result;
+  void offer(const DistanceResult<T>& r) {
+    if (!found || r.distance < result.distance) result = r;
+    found = true;
+  }
+  // Squared bound for culling boxes (+inf until a triangle is found).
+  T boundSq() const { return found ? result.distance * result.distance : std::numeric_limits<T>::infinity(); }
+};
+
+// Best-first over the BVH: children nearest to the shape's box first, pruned by the best distance found.
+template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const MeshSurface<T>& mesh, Best<T>& best) {
+  const Bvh4& bvh = mesh.mesh().bvh;
+  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  const Bounds3<T> box = shape.worldBounds();
+  struct Entry {
+    std::uint32_t ref;
+    T lower;
+  };
+  std::vector<Entry> stack;
+  stack.reserve(64);
+  stack.push_back({bvh.rootChild, T(0)});
+  while (!stack.empty()) {
+    const Entry e = stack.back();
+    stack.pop_back();
+    if (e.lower > best.boundSq()) continue;
+    if (Bvh4Node::isLeaf(e.ref)) {
+      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(e.ref); ++k) {
+        const Triangle<T> tri = mesh.triangle(Bvh4Node::leafFirst(e.ref) + k);
+        if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) continue;
+        DistanceResult<T> r;
+        shape.distanceTo(tri, r);
+        best.offer(r);
+        if (best.result.distance <= T(0)) return;
+      }
+      continue;
+    }
+    const Bvh4Node& node = mesh.mesh().bvh.nodes[e.ref];
+    Entry children[4];
+    int n = 0;
+    for (int lane = 0; lane < 4; ++lane) {
+      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+      const Entry c{node.child[lane], boxDistanceSq(box, mesh.childWorldBounds(node, lane))};
+      if (c.lower > best.boundSq()) continue;
+      int j = n++;
+      while (j > 0 && children[j - 1].lower < c.lower) {
+        children[j] = children[j - 1];
+        --j;
+      }
+      children[j] = c;
+    }
+    for (int i = 0; i < n; ++i) stack.push_back(children[i]);
+  }
+}
+
+// Heightfield: cells under the shape's box grown by a radius that doubles until a triangle is found, then one pass
+// with the radius grown to the best distance (every closer triangle lies in that box).
+template <class T>
+void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldSurface<T>& field, Best<T>& best) {
+  const Bounds3<T> box = shape.worldBounds();
+  const Bounds3<T> fieldBox = field.worldBounds();
+  const T span = (fieldBox.max - fieldBox.min).norm();
+  T radius = std::max(std::sqrt(boxDistanceSq(box, fieldBox)), std::max(shape.size(), span * T(1e-3)));
+  const auto visit = [&](std::uint32_t, const Triangle<T>& tri) {
+    if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) return false;
+    DistanceResult<T> r;
+    shape.distanceTo(tri, r);
+    best.offer(r);
+    return best.result.distance <= T(0);
+  };
+  // Beyond this radius the grown box holds the whole heightfield: nothing found means every cell is a hole.
+  const T limit = std::sqrt(boxDistanceSq(box, fieldBox)) + span;
+  for (;;) {
+    field.forEachTriangle(grown(box, radius), visit);
+    if (best.found || radius > limit) break;
+    radius *= T(2);
+  }
+  if (best.found && best.result.distance > radius) field.forEachTriangle(grown(box, best.result.distance), visit);
+}
+
+}  // namespace
+
+template <class T>
+Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
+                             const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out) {
+  const TriangleQueryShape<T> shape(g0, p0.relativeTo(p1));
+  Best<T> best;
+  if (const auto* m = g1.template getIf<TriangleMeshGeometry<T>>()) {
+    nearestOnMesh(shape, MeshSurface<T>(*m, Transform<T>()), best);
+  } else {
+    nearestOnHeightField(shape, HeightFieldSurface<T>(g1.template get<HeightFieldGeometry<T>>(), Transform<T>()),
+                         best);
+  }
+  if (!best.found) return Status::degenerate("the surface has no triangles (every heightfield cell is a hole)");
+  out.distance = best.result.distance;
+  out.point0 = p1.transform(best.result.point0);
+  out.point1 = p1.transform(best.result.point1);
+  out.normal = p1.rotate(best.result.normal);
+  if (cache) cache->iterations = 0;
+  return Status();
+}
+
+template Status distanceConvexSurface<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
+                                             const Transform<float>&, GjkCache<float>*, DistanceResult<float>&);
+template Status distanceConvexSurface<double>(const Geometry<double>&, const Transform<double>&,
+                                              const Geometry<double>&, const Transform<double>&, GjkCache<double>*,
+                                              DistanceResult<double>&);
+
+}  // namespace gq::detail

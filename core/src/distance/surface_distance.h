@@ -1,0 +1,26 @@
+#pragma once
+// Distance kernels with a triangle mesh or heightfield (dispatch table signature of dispatch/distance.cpp).
+// A mesh or heightfield is a thin surface: the distance is the minimum over its triangles, >= 0. In contact the
+// distance is 0 (no depth: a surface has no inside), point0 = point1 is a contact point on the surface and the
+// normal is the deepest triangle's MTD direction from the shape towards the surface (mesh-mesh: the first mesh's
+// triangle normal). Mesh-heightfield and heightfield-heightfield distance are Unsupported.
+#include "gq/geometry.h"
+#include "gq/query.h"
+#include "gq/status.h"
+#include "gq/transform.h"
+
+namespace gq::detail {
+
+// Sphere, capsule, box, convex mesh or convex custom (g0) vs triangle mesh or heightfield (g1): best-first BVH
+// traversal (cell rings for heightfields) bounded by the best distance so far; exact closed forms for sphere and
+// capsule triangles, GJK for the rest.
+template <class T>
+Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
+                             const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out);
+
+// Triangle mesh vs triangle mesh: best-first dual BVH traversal, exact triangle-triangle distance.
+template <class T>
+Status distanceTriangleMeshTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
+                                        const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out);
+
+}  // namespace gq::detail

@@ -1,0 +1,32 @@
+// Triangle mesh vs triangle mesh distance: best-first dual BVH traversal (mesh_pairs/mesh_mesh.h) with the exact
+// triangle-triangle distance; the second mesh is expressed in the first's frame.
+#include "distance/surface_distance.h"
+#include "mesh_pairs/mesh_mesh.h"
+
+namespace gq::detail {
+
+template <class T>
+Status distanceTriangleMeshTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
+                                        const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out) {
+  const MeshSurface<T> a(g0.template get<TriangleMeshGeometry<T>>(), Transform<T>());
+  const MeshSurface<T> b(g1.template get<TriangleMeshGeometry<T>>(), p1.relativeTo(p0));
+  const MeshPairClosest<T> c = closestMeshPair(a, b);
+  const T dist = std::sqrt(c.distSq);
+  out.distance = dist;
+  out.point0 = p0.transform(c.onA);
+  out.point1 = p0.transform(c.onB);
+  // Separated: along the witness difference; touching: the first mesh's triangle normal.
+  const Vec3<T> local = dist > T(0) ? Vec3<T>((c.onB - c.onA) / dist) : a.triangle(c.cookedA).normal();
+  out.normal = p0.rotate(local);
+  if (cache) cache->iterations = 0;
+  return Status();
+}
+
+template Status distanceTriangleMeshTriangleMesh<float>(const Geometry<float>&, const Transform<float>&,
+                                                        const Geometry<float>&, const Transform<float>&,
+                                                        GjkCache<float>*, DistanceResult<float>&);
+template Status distanceTriangleMeshTriangleMesh<double>(const Geometry<double>&, const Transform<double>&,
+                                                         const Geometry<double>&, const Transform<double>&,
+                                                         GjkCache<double>*, DistanceResult<double>&);
+
+}  // namespace gq::detail

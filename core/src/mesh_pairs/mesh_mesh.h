@@ -1,0 +1,147 @@
+#pragma once
+// Dual BVH traversal of two triangle-mesh instances: visits the pairs of triangles whose world boxes, grown by
+// `margin`, overlap. At each step the node with the larger box is split (so both trees descend at the same pace),
+// and a child is pushed only when its box still meets the other side's box. Inline template: the pair callable is
+// inlined into the leaf loop.
+#include <vector>
+
+#include "mesh_pairs/surface.h"
+#include "mesh_pairs/triangle_tests.h"
+
+namespace gq::detail {
+
+template <class T> T boxVolume(const Bounds3<T>& b) {
+  const Vec3<T> e = b.max - b.min;
+  return e.x() * e.y() * e.z();
+}
+
+// The world box of a BVH reference: the mesh's bounds for the root, else the box stored in its parent's lane.
+template <class T> struct BvhPairEntry {
+  std::uint32_t refA, refB;
+  Bounds3<T> boxA, boxB;
+};
+
+// fn(cookedA, triA, cookedB, triB) returns true to stop; returns whether it stopped.
+template <class T, class PairFn>
+bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T margin, PairFn&& fn) {
+  const Bvh4& bvhA = a.mesh().bvh;
+  const Bvh4& bvhB = b.mesh().bvh;
+  if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return false;
+  const auto meets = [margin](const Bounds3<T>& x, const Bounds3<T>& y) { return grown(x, margin).overlaps(y); };
+  std::vector<BvhPairEntry<T>> stack;
+  stack.reserve(128);
+  const Bounds3<T> rootA = a.worldBounds(), rootB = b.worldBounds();
+  if (!meets(rootA, rootB)) return false;
+  stack.push_back({bvhA.rootChild, bvhB.rootChild, rootA, rootB});
+  Triangle<T> trisA[Bvh4Node::kMaxLeafSize], trisB[Bvh4Node::kMaxLeafSize];
+  Bounds3<T> boxesA[Bvh4Node::kMaxLeafSize], boxesB[Bvh4Node::kMaxLeafSize];
+  while (!stack.empty()) {
+    const BvhPairEntry<T> e = stack.back();
+    stack.pop_back();
+    const bool leafA = Bvh4Node::isLeaf(e.refA), leafB = Bvh4Node::isLeaf(e.refB);
+    if (leafA && leafB) {
+      const std::uint32_t firstA = Bvh4Node::leafFirst(e.refA), countA = Bvh4Node::leafCount(e.refA);
+      const std::uint32_t firstB = Bvh4Node::leafFirst(e.refB), countB = Bvh4Node::leafCount(e.refB);
+      for (std::uint32_t i = 0; i < countA; ++i) {
+        trisA[i] = a.triangle(firstA + i);
+        boxesA[i] = triangleBounds(trisA[i]);
+      }
+      for (std::uint32_t j = 0; j < countB; ++j) {
+        trisB[j] = b.triangle(firstB + j);
+        boxesB[j] = triangleBounds(trisB[j]);
+      }
+      for (std::uint32_t i = 0; i < countA; ++i)
+        for (std::uint32_t j = 0; j < countB; ++j)
+          if (meets(boxesA[i], boxesB[j]) && fn(firstA + i, trisA[i], firstB + j, trisB[j])) return true;
+      continue;
+    }
+    const bool splitA = !leafA && (leafB || boxVolume(e.boxA) >= boxVolume(e.boxB));
+    if (splitA) {
+      const Bvh4Node& node = bvhA.nodes[e.refA];
+      for (int lane = 0; lane < 4; ++lane) {
+        if (node.child[lane] == Bvh4Node::kEmpty) continue;
+        const Bounds3<T> box = a.childWorldBounds(node, lane);
+        if (meets(box, e.boxB)) stack.push_back({node.child[lane], e.refB, box, e.boxB});
+      }
+    } else {
+      const Bvh4Node& node = bvhB.nodes[e.refB];
+      for (int lane = 0; lane < 4; ++lane) {
+        if (node.child[lane] == Bvh4Node::kEmpty) continue;
+        const Bounds3<T> box = b.childWorldBounds(node, lane);
+        if (meets(e.boxA, box)) stack.push_back({e.refA, node.child[lane], e.boxA, box});
+      }
+    }
+  }
+  return false;
+}
+
+// Closest pair of triangles of two meshes: best-first on box distances, pruned by the best distance found so far.
+// Returns the cooked indices and closest points; distSq = 0 when the meshes touch.
+template <class T> struct MeshPairClosest {
+  T distSq = std::numeric_limits<T>::infinity();
+  std::uint32_t cookedA = 0, cookedB = 0;
+  Vec3<T> onA = Vec3<T>::Zero(), onB = Vec3<T>::Zero();
+};
+
+template <class T> MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>& b) {
+  MeshPairClosest<T> best;
+  const Bvh4& bvhA = a.mesh().bvh;
+  const Bvh4& bvhB = b.mesh().bvh;
+  if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return best;
+  struct Entry {
+    BvhPairEntry<T> pair;
+    T lower;
+  };
+  std::vector<Entry> stack;
+  stack.reserve(128);
+  const Bounds3<T> rootA = a.worldBounds(), rootB = b.worldBounds();
+  stack.push_back({{bvhA.rootChild, bvhB.rootChild, rootA, rootB}, boxDistanceSq(rootA, rootB)});
+  while (!stack.empty() && best.distSq > T(0)) {
+    const Entry e = stack.back();
+    stack.pop_back();
+    if (e.lower > best.distSq) continue;
+    const BvhPairEntry<T>& p = e.pair;
+    const bool leafA = Bvh4Node::isLeaf(p.refA), leafB = Bvh4Node::isLeaf(p.refB);
+    if (leafA && leafB) {
+      for (std::uint32_t i = 0; i < Bvh4Node::leafCount(p.refA); ++i) {
+        const std::uint32_t ia = Bvh4Node::leafFirst(p.refA) + i;
+        const Triangle<T> ta = a.triangle(ia);
+        for (std::uint32_t j = 0; j < Bvh4Node::leafCount(p.refB); ++j) {
+          const std::uint32_t ib = Bvh4Node::leafFirst(p.refB) + j;
+          const Triangle<T> tb = b.triangle(ib);
+          if (boxDistanceSq(triangleBounds(ta), triangleBounds(tb)) > best.distSq) continue;
+          const TrianglePairClosest<T> c = closestTriangleTriangle(ta, tb);
+          if (c.distSq < best.distSq) best = {c.distSq, ia, ib, c.onA, c.onB};
+        }
+      }
+      continue;
+    }
+    // Split the larger box; push children farthest first so the nearest is popped next.
+    const bool splitA = !leafA && (leafB || boxVolume(p.boxA) >= boxVolume(p.boxB));
+    Entry children[4];
+    int n = 0;
+    const Bvh4Node& node = splitA ? bvhA.nodes[p.refA] : bvhB.nodes[p.refB];
+    for (int lane = 0; lane < 4; ++lane) {
+      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+      Entry c;
+      if (splitA) {
+        const Bounds3<T> box = a.childWorldBounds(node, lane);
+        c = {{node.child[lane], p.refB, box, p.boxB}, boxDistanceSq(box, p.boxB)};
+      } else {
+        const Bounds3<T> box = b.childWorldBounds(node, lane);
+        c = {{p.refA, node.child[lane], p.boxA, box}, boxDistanceSq(p.boxA, box)};
+      }
+      if (c.lower > best.distSq) continue;
+      int j = n++;
+      while (j > 0 && children[j - 1].lower < c.lower) {
+        children[j] = children[j - 1];
+        --j;
+      }
+      children[j] = c;
+    }
+    for (int i = 0; i < n; ++i) stack.push_back(children[i]);
+  }
+  return best;
+}
+
+}  // namespace gq::detail

@@ -1,0 +1,167 @@
+// Convex query shape vs one triangle (see shape_triangle.h).
+#include "mesh_pairs/shape_triangle.h"
+
+#include <cmath>
+
+#include "bounds/bounds.h"
+#include "mesh_pairs/triangle_tests.h"
+#include "mesh/triangle.h"
+
+namespace gq::detail {
+
+template <class T> TriangleSupport<T>::TriangleSupport(const Triangle<T>& t) {
+  centroid_ = (t.verts[0] + t.verts[1] + t.verts[2]) / T(3);
+  for (int k = 0; k < 3; ++k) local_[k] = t.verts[k] - centroid_;
+}
+
+template <class T> Bounds3<T> TriangleSupport<T>::localBounds() const {
+  Bounds3<T> b;
+  for (const auto& v : local_) b.include(v);
+  return b;
+}
+
+template <class T> Vec3<T> TriangleSupport<T>::support(const Vec3<T>& dir) const {
+  int best = 0;
+  for (int k = 1; k < 3; ++k)
+    if (local_[k].dot(dir) > local_[best].dot(dir)) best = k;
+  return local_[best];
+}
+
+template <class T> ConvexShape<T> TriangleSupport<T>::shape() const {
+  ConvexShape<T> s;
+  s.kind = ConvexShape<T>::Kind::Custom;
+  s.custom = this;
+  s.pose = Transform<T>(centroid_);
+  s.size = std::max({local_[0].norm(), local_[1].norm(), local_[2].norm()});
+  return s;
+}
+
+namespace {
+
+template <class T> Bounds3<T> shapeBounds(const Geometry<T>& g, const Transform<T>& pose) {
+  switch (g.type()) {
+    case GeometryType::Sphere: return boundsSphere(g.template get<SphereGeometry<T>>(), pose);
+    case GeometryType::Capsule: return boundsCapsule(g.template get<CapsuleGeometry<T>>(), pose);
+    case GeometryType::Box: return boundsBox(g.template get<BoxGeometry<T>>(), pose);
+    case GeometryType::ConvexMesh: return boundsConvex(g.template get<ConvexMeshGeometry<T>>(), pose);
+    default: return boundsCustom(g.template get<CustomGeometry<T>>(), pose);
+  }
+}
+
+// Unit normal of the triangle (its winding's side).
+template <class T> Vec3<T> unitNormal(const Triangle<T>& tri) {
+  return (tri.verts[1] - tri.verts[0]).cross(tri.verts[2] - tri.verts[0]).normalized();
+}
+
+}  // namespace
+
+template <class T>
+TriangleQueryShape<T>::TriangleQueryShape(const Geometry<T>& geom, const Transform<T>& pose)
+    : type_(geom.type()), pose_(pose), convex_(makeConvexShape(geom, pose)), bounds_(shapeBounds(geom, pose)) {
+  segA_ = segB_ = pose.p;
+  if (const auto* s = geom.template getIf<SphereGeometry<T>>()) radius_ = s->radius;
+  if (const auto* c = geom.template getIf<CapsuleGeometry<T>>()) {
+    radius_ = c->radius;
+    const Vec3<T> axis = pose.rotate(Vec3<T>(c->halfHeight, T(0), T(0)));
+    segA_ = pose.p - axis;
+    segB_ = pose.p + axis;
+  }
+  if (const auto* b = geom.template getIf<BoxGeometry<T>>()) halfExtents_ = b->halfExtents;
+}
+
+template <class T> Bounds3<T> TriangleQueryShape<T>::cullBounds() const {
+  const T scale = std::max({size(), bounds_.min.cwiseAbs().maxCoeff(), bounds_.max.cwiseAbs().maxCoeff()});
+  return Bounds3<T>::fromMinMax(bounds_.min.array() - T(tol::Rel<T>::kEpsilon) * scale,
+                                bounds_.max.array() + T(tol::Rel<T>::kEpsilon) * scale);
+}
+
+template <class T> bool TriangleQueryShape<T>::overlaps(const Triangle<T>& tri) const {
+  switch (type_) {
+    case GeometryType::Sphere: return overlapSphereTriangle(segA_, radius_, tri);
+    case GeometryType::Capsule: return overlapCapsuleTriangle(segA_, segB_, radius_, tri);
+    case GeometryType::Box: {
+      Triangle<T> local;
+      for (int k = 0; k < 3; ++k) local.verts[k] = pose_.transformInv(tri.verts[k]);
+      return overlapBoxTriangle(halfExtents_, local);
+    }
+    default: {
+      const TriangleSupport<T> support(tri);
+      return gjkOverlap(convex_, support.shape());
+    }
+  }
+}
+
+template <class T> void TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri, DistanceResult<T>& out) const {
+  if (type_ == GeometryType::Sphere || type_ == GeometryType::Capsule) {
+    const SegmentTriangleClosest<T> c = closestSegmentTriangle(segA_, segB_, tri);
+    const T len = std::sqrt(c.distSq);
+    if (len > radius_) {
+      out.normal = (c.onTriangle - c.onSegment) / len;
+      out.distance = len - radius_;
+      out.point0 = c.onSegment + radius_ * out.normal;
+    } else {
+      // Contact: the normal is the segment-to-triangle direction, or the face normal facing away from the centre.
+      if (len > T(0)) {
+        out.normal = (c.onTriangle - c.onSegment) / len;
+      } else {
+        const Vec3<T> n = unitNormal(tri);
+        out.normal = n.dot(pose_.p - tri.verts[0]) >= T(0) ? Vec3<T>(-n) : n;
+      }
+      out.distance = T(0);
+      out.point0 = c.onTriangle;
+    }
+    out.point1 = c.onTriangle;
+    return;
+  }
+  const TriangleSupport<T> support(tri);
+  const ConvexShape<T> triShape = support.shape();
+  const GjkResult<T> g = gjkDistance(convex_, triShape);
+  if (!g.coresOverlap && g.distance > T(0)) {
+    out.distance = g.distance;
+    out.point0 = g.point0;
+    out.point1 = g.point1;
+    out.normal = g.normal;
+    return;
+  }
+  const EpaResult<T> epa = epaPenetration(convex_, triShape, &g.simplex);
+  out.distance = T(0);
+  out.point0 = out.point1 = epa.point1;
+  out.normal = epa.normal;
+}
+
+template <class T> TrianglePush<T> TriangleQueryShape<T>::pushOut(const Triangle<T>& tri, bool oneSided) const {
+  TrianglePush<T> push;
+  bool solved = false;
+  if (type_ == GeometryType::Sphere || type_ == GeometryType::Capsule) {
+    const SegmentTriangleClosest<T> c = closestSegmentTriangle(segA_, segB_, tri);
+    const T len = std::sqrt(c.distSq);
+    if (len > T(0)) {  // closed form: away from the closest triangle point
+      push.direction = (c.onSegment - c.onTriangle) / len;
+      push.depth = std::max(T(0), radius_ - len);
+      solved = true;
+    }
+  }
+  if (!solved) {
+    const TriangleSupport<T> support(tri);
+    const EpaResult<T> epa = epaPenetration(convex_, support.shape());
+    push.direction = -epa.normal;  // EPA's normal points from the shape to the triangle
+    push.depth = epa.depth;
+  }
+  if (oneSided) {
+    const Vec3<T> n = unitNormal(tri);
+    if (push.direction.dot(n) < T(0)) {
+      // Lowest point of the shape along n: core support along -n, minus the margin.
+      const T lowest = n.dot(convex_.support(-n)) - convex_.margin;
+      push.direction = n;
+      push.depth = std::max(T(0), n.dot(tri.verts[0]) - lowest);
+    }
+  }
+  return push;
+}
+
+template class TriangleSupport<float>;
+template class TriangleSupport<double>;
+template class TriangleQueryShape<float>;
+template class TriangleQueryShape<double>;
+
+}  // namespace gq::detail

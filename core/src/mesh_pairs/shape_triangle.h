@@ -1,0 +1,65 @@
+#pragma once
+// A convex query shape (sphere, capsule, box, convex mesh, convex custom) prepared once and tested against many
+// world triangles: exact overlap (closed forms for sphere/capsule, 13-axis SAT for the box, GJK for hulls and custom
+// shapes), distance (closed forms for sphere/capsule, GJK otherwise) and the per-triangle depenetration used by the
+// iterative mesh penetration.
+#include "gjk/gjk.h"
+#include "gq/custom.h"
+#include "gq/mesh_query.h"
+#include "gq/query.h"
+
+namespace gq::detail {
+
+// A triangle as a convex custom shape for GJK/EPA, in a frame centred on its centroid (keeps GJK's relative
+// precision when the triangle is far from the origin).
+template <class T> class TriangleSupport final : public CustomGeometryCallbacks<T> {
+ public:
+  explicit TriangleSupport(const Triangle<T>& worldTri);
+  const char* name() const override { return "triangle"; }
+  Bounds3<T> localBounds() const override;
+  Vec3<T> support(const Vec3<T>& dir) const override;
+  bool raycast(const Vec3<T>&, const Vec3<T>&, T, HitFlags, RaycastHit<T>&) const override { return false; }
+  // The GJK shape of this triangle (holds a pointer to *this).
+  ConvexShape<T> shape() const;
+
+ private:
+  Vec3<T> centroid_;
+  Vec3<T> local_[3];
+};
+
+// Depenetration of a shape from one triangle: translating the shape by direction * depth separates them.
+template <class T> struct TrianglePush {
+  Vec3<T> direction = Vec3<T>::UnitX();
+  T depth = T(0);
+};
+
+template <class T> class TriangleQueryShape {
+ public:
+  // geom must be a sphere, capsule, box, convex mesh or convex custom shape (checked by the façades).
+  TriangleQueryShape(const Geometry<T>& geom, const Transform<T>& pose);
+
+  const Bounds3<T>& worldBounds() const { return bounds_; }
+  // Culling box: the world bounds grown by a relative epsilon, so touching triangles are never culled by rounding.
+  Bounds3<T> cullBounds() const;
+  T size() const { return convex_.size; }
+  Vec3<T> center() const { return convex_.center(); }
+
+  bool overlaps(const Triangle<T>& tri) const;
+  // Distance to the triangle, >= 0 (0 in contact); point0 on the shape, point1 on the triangle, normal shape->triangle.
+  // In contact the witnesses are the triangle point of deepest contact (point0 = point1).
+  void distanceTo(const Triangle<T>& tri, DistanceResult<T>& out) const;
+  // MTD of the shape against the triangle (call only when overlaps(tri)); with `oneSided`, a push towards the
+  // triangle's back is replaced by the push along its normal that puts the whole shape in front of its plane.
+  TrianglePush<T> pushOut(const Triangle<T>& tri, bool oneSided) const;
+
+ private:
+  GeometryType type_;
+  Transform<T> pose_;
+  ConvexShape<T> convex_;
+  T radius_ = T(0);                  // sphere, capsule
+  Vec3<T> segA_, segB_;              // capsule segment (world); sphere: both are the centre
+  Vec3<T> halfExtents_;              // box
+  Bounds3<T> bounds_;
+};
+
+}  // namespace gq::detail

@@ -1,0 +1,192 @@
+#pragma once
+// Thin triangle surfaces (triangle-mesh and heightfield instances) seen through one interface by the pair queries:
+//  - worldBounds(): the instance's world AABB;
+//  - forEachTriangle(box, fn): calls fn(index, worldTriangle) for every triangle that may touch the world box `box`
+//    (BVH culling for meshes, cell-range culling for heightfields; a superset, the caller runs the exact test) until
+//    fn returns true; returns whether it stopped. `index` is what queries report: the input triangle index of a mesh,
+//    the triangle index 2*cell+k of a heightfield.
+// Inline templates on purpose: the per-triangle callable is inlined into the traversal loop.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "bounds/bounds.h"
+#include "cook/height_field_layout.h"
+#include "gq/cooking.h"
+#include "gq/mesh_query.h"
+#include "mesh/mesh_instance.h"
+
+namespace gq::detail {
+
+// A float box containing the T box (rounded outward), for tests against the BVH's float node boxes.
+struct FloatBounds {
+  float lo[3], hi[3];
+};
+template <class T> FloatBounds toFloatBounds(const Bounds3<T>& b) {
+  FloatBounds f;
+  for (int i = 0; i < 3; ++i) {
+    f.lo[i] = std::nextafter(static_cast<float>(b.min[i]), -std::numeric_limits<float>::infinity());
+    f.hi[i] = std::nextafter(static_cast<float>(b.max[i]), std::numeric_limits<float>::infinity());
+  }
+  return f;
+}
+
+inline bool childOverlapsBox(const Bvh4Node& n, int lane, const FloatBounds& q) {
+  return n.minX[lane] <= q.hi[0] && n.maxX[lane] >= q.lo[0] && n.minY[lane] <= q.hi[1] && n.maxY[lane] >= q.lo[1] &&
+         n.minZ[lane] <= q.hi[2] && n.maxZ[lane] >= q.lo[2];
+}
+
+// AABB of the image of box `b` under x -> linear * x + offset: centre maps, extents grow by |linear|.
+template <class T> Bounds3<T> mapBox(const Bounds3<T>& b, const Mat3<T>& linear, const Vec3<T>& offset) {
+  const Vec3<T> c = linear * b.center() + offset;
+  const Vec3<T> e = linear.cwiseAbs() * b.extents();
+  return Bounds3<T>::fromCenterExtents(c, e);
+}
+
+// The box grown by `margin` on every side.
+template <class T> Bounds3<T> grown(const Bounds3<T>& b, T margin) {
+  return Bounds3<T>::fromMinMax(b.min.array() - margin, b.max.array() + margin);
+}
+
+// Squared distance between two boxes (0 when they overlap).
+template <class T> T boxDistanceSq(const Bounds3<T>& a, const Bounds3<T>& b) {
+  const Vec3<T> gap = (a.min - b.max).cwiseMax(b.min - a.max).cwiseMax(Vec3<T>::Zero());
+  return gap.squaredNorm();
+}
+
+template <class T> class MeshSurface {
+ public:
+  MeshSurface(const TriangleMeshGeometry<T>& g, const Transform<T>& pose)
+      : geom_(g), inst_(g, pose), linear_(pose.q.toRotationMatrix() * inst_.scale) {}
+
+  const TriangleMesh<T>& mesh() const { return inst_.mesh; }
+  Bounds3<T> worldBounds() const { return boundsTriangleMesh(geom_, inst_.pose); }
+  std::uint32_t inputIndex(std::uint32_t cooked) const { return inst_.mesh.inputIndex[cooked]; }
+
+  // World triangle of a cooked triangle (vertices 1 and 2 swapped under a mirrored scale, as getTriangle).
+  Triangle<T> triangle(std::uint32_t cooked) const {
+    const Vec3<T>* v = &inst_.mesh.triangleVertices[3 * std::size_t(cooked)];
+    Triangle<T> t;
+    t.verts[0] = linear_ * v[0] + inst_.pose.p;
+    t.verts[1] = linear_ * v[inst_.flips ? 2 : 1] + inst_.pose.p;
+    t.verts[2] = linear_ * v[inst_.flips ? 1 : 2] + inst_.pose.p;
+    return t;
+  }
+
+  // World AABB of child `lane` of a BVH node (the node's mesh-space box through scale and pose).
+  Bounds3<T> childWorldBounds(const Bvh4Node& n, int lane) const {
+    const Bounds3<T> local = Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
+                                                    Vec3<T>(T(n.maxX[lane]), T(n.maxY[lane]), T(n.maxZ[lane])));
+    return mapBox(local, linear_, inst_.pose.p);
+  }
+
+  // Mesh-space box containing the world box: its 8 corners through pose^-1 and S^-1.
+  Bounds3<T> toMeshSpace(const Bounds3<T>& world) const {
+    Bounds3<T> m;
+    for (int c = 0; c < 8; ++c) {
+      const Vec3<T> corner((c & 1) ? world.max.x() : world.min.x(), (c & 2) ? world.max.y() : world.min.y(),
+                           (c & 4) ? world.max.z() : world.min.z());
+      m.include(Vec3<T>(inst_.invScale * inst_.pose.transformInv(corner)));
+    }
+    return m;
+  }
+
+  template <class Fn> bool forEachTriangle(const Bounds3<T>& worldBox, Fn&& fn) const {
+    const Bvh4& bvh = inst_.mesh.bvh;
+    if (bvh.rootChild == Bvh4Node::kEmpty) return false;
+    const FloatBounds q = toFloatBounds(toMeshSpace(worldBox));
+    std::uint32_t stack[kStackSize];
+    int top = 0;
+    stack[top++] = bvh.rootChild;
+    while (top > 0) {
+      const std::uint32_t ref = stack[--top];
+      if (Bvh4Node::isLeaf(ref)) {
+        const std::uint32_t first = Bvh4Node::leafFirst(ref), count = Bvh4Node::leafCount(ref);
+        for (std::uint32_t k = first; k < first + count; ++k)
+          if (fn(inputIndex(k), triangle(k))) return true;
+        continue;
+      }
+      const Bvh4Node& node = bvh.nodes[ref];
+      for (int lane = 0; lane < 4; ++lane)
+        if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q)) stack[top++] = node.child[lane];
+    }
+    return false;
+  }
+
+  // Depth-first stack bound: the build's depth limit (60 levels) times 3 siblings left behind per level, plus slack.
+  static constexpr int kStackSize = 256;
+
+ private:
+  const TriangleMeshGeometry<T>& geom_;
+  MeshInstance<T> inst_;
+  Mat3<T> linear_;  // rotation * S: mesh space -> world, before translation
+};
+
+template <class T> class HeightFieldSurface {
+ public:
+  HeightFieldSurface(const HeightFieldGeometry<T>& g, const Transform<T>& pose) : geom_(g), hf_(*g.heightField), pose_(pose) {}
+
+  Bounds3<T> worldBounds() const { return boundsHeightField(geom_, pose_); }
+
+  Triangle<T> triangle(std::uint32_t index) const {
+    const std::array<std::uint32_t, 3> s = heightFieldTriangleSamples(hf_, index);
+    Triangle<T> t;
+    for (int k = 0; k < 3; ++k) t.verts[k] = pose_.transform(heightFieldVertex(geom_, s[k]));
+    return t;
+  }
+
+  template <class Fn> bool forEachTriangle(const Bounds3<T>& worldBox, Fn&& fn) const {
+    // The box in the heightfield's frame, then the cells whose row/column spans meet it (one cell of slack each side:
+    // the exact test decides).
+    Bounds3<T> local;
+    for (int c = 0; c < 8; ++c)
+      local.include(pose_.transformInv(Vec3<T>((c & 1) ? worldBox.max.x() : worldBox.min.x(),
+                                               (c & 2) ? worldBox.max.y() : worldBox.min.y(),
+                                               (c & 4) ? worldBox.max.z() : worldBox.min.z())));
+    std::uint32_t r0, r1, c0, c1;
+    if (!cellRange(local.min.x(), local.max.x(), geom_.rowScale, hf_.rows - 1, r0, r1)) return false;
+    if (!cellRange(local.min.z(), local.max.z(), geom_.columnScale, hf_.columns - 1, c0, c1)) return false;
+    const T yLo = local.min.y(), yHi = local.max.y();
+    for (std::uint32_t r = r0; r <= r1; ++r) {
+      for (std::uint32_t c = c0; c <= c1; ++c) {
+        if (hf_.isHole(r, c)) continue;
+        if (!cellHeightsMeet(r, c, yLo, yHi)) continue;
+        const std::uint32_t cell = heightFieldCellIndex(hf_, r, c);
+        if (fn(2 * cell, triangle(2 * cell)) || fn(2 * cell + 1, triangle(2 * cell + 1))) return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  // Cells [first, last] of `cells` whose span [i*scale, (i+1)*scale] (either sign of scale) may meet [lo, hi].
+  static bool cellRange(T lo, T hi, T scale, std::uint32_t cells, std::uint32_t& first, std::uint32_t& last) {
+    double a = double(lo) / double(scale), b = double(hi) / double(scale);
+    if (a > b) std::swap(a, b);
+    a = std::floor(a) - 1.0;
+    b = std::floor(b) + 1.0;
+    if (b < 0.0 || a > double(cells) - 1.0) return false;
+    first = std::uint32_t(std::max(a, 0.0));
+    last = std::uint32_t(std::min(b, double(cells) - 1.0));
+    return true;
+  }
+
+  // Whether the cell's height range (its 4 samples, scaled) meets [yLo, yHi] of the local box.
+  bool cellHeightsMeet(std::uint32_t r, std::uint32_t c, T yLo, T yHi) const {
+    const T h[4] = {hf_.height(r, c), hf_.height(r, c + 1), hf_.height(r + 1, c), hf_.height(r + 1, c + 1)};
+    T lo = std::numeric_limits<T>::max(), hi = -std::numeric_limits<T>::max();
+    for (T x : h) {
+      lo = std::min(lo, x * geom_.heightScale);
+      hi = std::max(hi, x * geom_.heightScale);
+    }
+    return lo <= yHi && hi >= yLo;
+  }
+
+  const HeightFieldGeometry<T>& geom_;
+  const HeightField<T>& hf_;
+  Transform<T> pose_;
+};
+
+}  // namespace gq::detail

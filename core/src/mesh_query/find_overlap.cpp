@@ -1,0 +1,98 @@
+// findOverlapTriangleMesh / findOverlapHeightField: the triangles a sphere, capsule or box touches, with paging.
+// The shape is expressed in the surface's frame (the surface sits at the identity), so far-away poses keep their
+// relative precision; culling (BVH or cell range) then the exact per-triangle test of mesh_pairs/.
+#include <string>
+
+#include "common/validate.h"
+#include "cook/height_field_layout.h"
+#include "gq/mesh_query.h"
+#include "mesh_pairs/shape_triangle.h"
+#include "mesh_pairs/surface.h"
+
+namespace gq {
+namespace {
+
+// The spec's PxMeshQuery accepts only spheres, capsules and boxes.
+template <class T> Status checkQueryShape(const Geometry<T>& g, const Transform<T>& pose) {
+  if (Status s = detail::checkGeometryAndPose(g, pose, "pose"); !s.ok()) return s;
+  const GeometryType t = g.type();
+  if (t != GeometryType::Sphere && t != GeometryType::Capsule && t != GeometryType::Box)
+    return Status::unsupported(std::string("mesh overlap queries take a sphere, capsule or box, not ") + toString(t));
+  return Status();
+}
+
+template <class T> Status checkBuffer(const std::uint32_t* results, std::uint32_t bufferSize) {
+  if (results == nullptr && bufferSize > 0) return Status::invalid("results is null but bufferSize is not 0");
+  return Status();
+}
+
+// Walks the overlapping triangles in the surface's fixed order, skipping the first startIndex.
+template <class T, class Surface>
+void collectOverlaps(const detail::TriangleQueryShape<T>& shape, const Surface& surface, std::uint32_t* results,
+                     std::uint32_t bufferSize, std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+  std::uint32_t seen = 0, written = 0;
+  bool more = false;
+  surface.forEachTriangle(shape.cullBounds(), [&](std::uint32_t index, const Triangle<T>& tri) {
+    if (!shape.overlaps(tri)) return false;
+    if (seen++ < startIndex) return false;
+    if (written == bufferSize) {
+      more = true;
+      return true;
+    }
+    results[written++] = index;
+    return false;
+  });
+  overflow = more;
+  count = written;
+}
+
+}  // namespace
+
+template <class T>
+Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
+                               const Transform<T>& meshPose, std::uint32_t* results, std::uint32_t bufferSize,
+                               std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = checkQueryShape(geom, pose); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), meshPose, "meshPose"); !s.ok()) return s;
+    if (Status s = checkBuffer<T>(results, bufferSize); !s.ok()) return s;
+    const detail::TriangleQueryShape<T> shape(geom, pose.relativeTo(meshPose));
+    const detail::MeshSurface<T> surface(mesh, Transform<T>());
+    collectOverlaps(shape, surface, results, bufferSize, startIndex, overflow, count);
+    return Status();
+  });
+}
+
+template <class T>
+Status findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose,
+                              const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
+                              std::uint32_t* results, std::uint32_t bufferSize, std::uint32_t startIndex,
+                              bool& overflow, std::uint32_t& count) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = checkQueryShape(geom, pose); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), heightFieldPose, "heightFieldPose"); !s.ok())
+      return s;
+    if (!detail::heightFieldIsWellFormed(*heightField.heightField))
+      return Status::invalid("heightfield data is empty or inconsistent (use cookHeightField)");
+    if (Status s = checkBuffer<T>(results, bufferSize); !s.ok()) return s;
+    const detail::TriangleQueryShape<T> shape(geom, pose.relativeTo(heightFieldPose));
+    const detail::HeightFieldSurface<T> surface(heightField, Transform<T>());
+    collectOverlaps(shape, surface, results, bufferSize, startIndex, overflow, count);
+    return Status();
+  });
+}
+
+template Status findOverlapTriangleMesh<float>(const Geometry<float>&, const Transform<float>&,
+                                               const TriangleMeshGeometry<float>&, const Transform<float>&,
+                                               std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+template Status findOverlapTriangleMesh<double>(const Geometry<double>&, const Transform<double>&,
+                                                const TriangleMeshGeometry<double>&, const Transform<double>&,
+                                                std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+template Status findOverlapHeightField<float>(const Geometry<float>&, const Transform<float>&,
+                                              const HeightFieldGeometry<float>&, const Transform<float>&,
+                                              std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+template Status findOverlapHeightField<double>(const Geometry<double>&, const Transform<double>&,
+                                               const HeightFieldGeometry<double>&, const Transform<double>&,
+                                               std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+
+}  // namespace gq
