@@ -28,6 +28,7 @@ void addLine(const std::string& family, const std::string& text, std::size_t lin
   lc.expect = j["expect"];
   lc.id = id.is_string() ? id.get<std::string>() : id.dump();
   lc.group = lc.expect.value("group", "");
+  lc.text = text;
   out.cases.push_back(std::move(lc));
 }
 

@@ -15,6 +15,7 @@ struct LoadedCase {
   std::string group;   // hard-case family, from expect.group
   cases::Case input;
   nlohmann::json expect;
+  std::string text;  // the case line, for backends that run in a separate program
 };
 
 struct LoadedSuites {

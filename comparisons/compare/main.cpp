@@ -2,6 +2,7 @@
 // backend x precision, cases answered, wrong booleans, median and max relative error, median ns per query.
 //   gq-compare [--suites DIR | --embedded] [--backends gq,fcl] [--repeat N] [--results DIR] [--no-plot] [--check]
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "backend.h"
+#include "external_run.h"
 #include "isolated_run.h"
 #include "judge.h"
 #include "loaded_case.h"
@@ -46,6 +48,13 @@ std::vector<const gq::compare::CaseRecord*> gqFailures(const std::vector<gq::com
   return out;
 }
 
+// gq-query sits beside gq-compare in the build tree.
+std::string gqQueryPath() {
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return (ec ? std::filesystem::path(".") : self.parent_path()).string() + "/gq-query";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,7 +86,11 @@ int main(int argc, char** argv) {
   Progress progress(suites.cases.size() * backendNames.size());
   for (const std::string& name : backendNames) {
     std::string label = name;
-    auto part = gq::compare::runBackendIsolated(name, suites.cases, repeat, [&] { progress.step(label); });
+    auto part = gq::compare::isExternalBackend(name)
+                    ? gq::compare::runBackendExternal(gqQueryPath(), name, suites.cases, repeat)
+                    : gq::compare::runBackendIsolated(name, suites.cases, repeat, [&] { progress.step(label); });
+    if (gq::compare::isExternalBackend(name))
+      for (std::size_t i = 0; i < part.size(); ++i) progress.step(label);
     records.insert(records.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
   }
 
@@ -94,7 +107,7 @@ int main(int argc, char** argv) {
   std::cout << "results: " << resultsDir << "/compare_<family>.csv; " << disagreements
             << " disagreements classified in " << reportPath << '\n';
   if (!noPlot) {
-    const std::string command = "python3 '" + plotScript + "' '" + resultsDir + "'";
+    const std::string command = "/usr/bin/python3 '" + plotScript + "' '" + resultsDir + "'";
     if (std::system(command.c_str()) != 0) std::cerr << "gq-compare: plots skipped (python3-matplotlib missing?)\n";
   }
 

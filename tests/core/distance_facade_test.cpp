@@ -36,7 +36,7 @@ TYPED_TEST(DistanceFacade, InvalidInputIsRejectedAndWritesNothing) {
   expectUntouched(r);
 }
 
-TYPED_TEST(DistanceFacade, PlanePlaneAndMeshPairsAreUnsupported) {
+TYPED_TEST(DistanceFacade, PlanePlaneAndSurfaceSurfacePairsWithAHeightFieldAreUnsupported) {
   using T = TypeParam;
   auto r = sentinel<T>();
   const gq::Geometry<T> plane = gq::PlaneGeometry<T>();
@@ -44,17 +44,18 @@ TYPED_TEST(DistanceFacade, PlanePlaneAndMeshPairsAreUnsupported) {
   std::shared_ptr<const gq::TriangleMesh<T>> cooked;
   ASSERT_TRUE(gq::cookTriangleMesh<T>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}, cooked).ok());
   const gq::Geometry<T> mesh = gq::TriangleMeshGeometry<T>(cooked);
-  EXPECT_EQ(gq::distance(r, sphere<T>(1), gq::Transform<T>(), mesh, gq::Transform<T>()).code, gq::StatusCode::Unsupported);
-  EXPECT_EQ(gq::distance(r, mesh, gq::Transform<T>(), box<T>(Eigen::Vector3d(1, 1, 1)), gq::Transform<T>()).code,
-            gq::StatusCode::Unsupported);
   gq::HeightFieldDesc<T> desc;
   desc.rows = desc.columns = 2;
   desc.heights = {T(0), T(0), T(0), T(0)};
   std::shared_ptr<const gq::HeightField<T>> field;
   ASSERT_TRUE(gq::cookHeightField(desc, field).ok());
   const gq::Geometry<T> hf = gq::HeightFieldGeometry<T>(field, T(1), T(1), T(1));
-  EXPECT_EQ(gq::distance(r, hf, gq::Transform<T>(), sphere<T>(1), gq::Transform<T>()).code, gq::StatusCode::Unsupported);
+  EXPECT_EQ(gq::distance(r, mesh, gq::Transform<T>(), hf, gq::Transform<T>()).code, gq::StatusCode::Unsupported);
+  EXPECT_EQ(gq::distance(r, hf, gq::Transform<T>(), hf, gq::Transform<T>()).code, gq::StatusCode::Unsupported);
   expectUntouched(r);
+  // Convex shapes against surfaces are answered (mesh-pair task).
+  EXPECT_TRUE(gq::distance(r, sphere<T>(1), gq::Transform<T>(), mesh, gq::Transform<T>()).ok());
+  EXPECT_TRUE(gq::distance(r, hf, gq::Transform<T>(), sphere<T>(1), gq::Transform<T>()).ok());
 }
 
 template <class T> class Bumpy : public gq::CustomGeometryCallbacks<T> {
