@@ -1,16 +1,19 @@
 // gq::distance (GJK/EPA, hill-climbing support) vs libccd's ccdGJKIntersect / ccdGJKPenetration on the same convex
 // hulls (30, 100, 300 random points on an ellipsoid, all hull vertices) and the same 64 seeded pose pairs (about
-// half of them overlapping). libccd gets an exhaustive support function over the hull vertices, as its users
-// usually write it. Counters: `overlapping` = pairs the backend reported as intersecting.
+// half of them overlapping), plus box-box and capsule-box on the 30-point scene's poses. Also the boolean overlaps:
+// gq's GJK early-out kernel and the public gq::overlap vs ccdGJKIntersect. Counters: `overlapping` = pairs the
+// backend reported as intersecting.
 #include <benchmark/benchmark.h>
 #include <ccd/ccd.h>
 
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "gq/cooking.h"
 #include "gq/query.h"
+#include "gjk/gjk.h"
 
 namespace {
 
@@ -49,65 +52,77 @@ const Scene& scene(int n) {
   return *cache[n];
 }
 
-// ---- gq -----------------------------------------------------------------------------------------------------
-void BM_GqDistance(benchmark::State& state) {
-  const Scene& s = scene(int(state.range(0)));
-  if (!s.hull) return state.SkipWithError("convex cooking failed");
-  const gq::Geometry<double> g = gq::ConvexMeshGeometry<double>(s.hull);
-  int overlapping = 0;
-  for (auto _ : state) {
-    overlapping = 0;
-    for (int i = 0; i < kPairs; ++i) {
-      gq::DistanceResult<double> r;
-      gq::distance(r, g, s.pose0[i], g, s.pose1[i]);
-      overlapping += r.distance <= 0;
-      benchmark::DoNotOptimize(r);
-    }
-  }
-  state.counters["overlapping"] = overlapping;
-  state.SetItemsProcessed(state.iterations() * kPairs);
-}
+// ---- runners: one pass over the 64 pairs, noinline so that callgrind reports each one's instruction count ------
+// (`bench_convex_distance --once` runs every runner once per size and exits: for callgrind, see the results CSV).
+using Caches = std::vector<gq::GjkCache<double>>;
 
-// Same poses, second call per pair with the GJK cache of the first (frame-to-frame coherence at zero motion).
-void BM_GqDistanceWarm(benchmark::State& state) {
-  const Scene& s = scene(int(state.range(0)));
-  if (!s.hull) return state.SkipWithError("convex cooking failed");
-  const gq::Geometry<double> g = gq::ConvexMeshGeometry<double>(s.hull);
-  std::vector<gq::GjkCache<double>> caches(kPairs);
+[[gnu::noinline]] int runGqDistance(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1,
+                                    Caches* caches) {
+  int overlapping = 0;
   for (int i = 0; i < kPairs; ++i) {
     gq::DistanceResult<double> r;
-    gq::distance(r, g, s.pose0[i], g, s.pose1[i], &caches[i]);
+    gq::distance(r, g0, s.pose0[i], g1, s.pose1[i], caches ? &(*caches)[i] : nullptr);
+    overlapping += r.distance <= 0;
+    benchmark::DoNotOptimize(r);
   }
-  for (auto _ : state) {
-    for (int i = 0; i < kPairs; ++i) {
-      gq::DistanceResult<double> r;
-      gq::distance(r, g, s.pose0[i], g, s.pose1[i], &caches[i]);
-      benchmark::DoNotOptimize(r);
-    }
+  return overlapping;
+}
+
+// Boolean GJK (stops at the first separating axis), the kernel behind gq's custom-shape and mesh overlaps.
+[[gnu::noinline]] int runGqGjkOverlap(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i)
+    overlapping += gq::detail::gjkOverlap(gq::detail::makeConvexShape(g0, s.pose0[i]), gq::detail::makeConvexShape(g1, s.pose1[i]));
+  return overlapping;
+}
+
+// Public gq::overlap (convex-convex is SAT there; primitives use closed forms).
+[[gnu::noinline]] int runGqOverlap(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    bool hit = false;
+    gq::overlap(g0, s.pose0[i], g1, s.pose1[i], hit);
+    overlapping += hit;
   }
-  state.SetItemsProcessed(state.iterations() * kPairs);
+  return overlapping;
 }
 
 // ---- libccd -------------------------------------------------------------------------------------------------
-struct CcdHull {
-  const gq::ConvexMesh<double>* hull;
+// libccd gets an exhaustive support function over the hull vertices (as its users usually write it) and closed
+// forms for boxes and capsules.
+struct CcdShape {
+  const gq::Geometry<double>* geom;
   gq::Transform<double> pose;
 };
 
+gq::Vec3<double> ccdLocalSupport(const gq::Geometry<double>& g, const gq::Vec3<double>& d) {
+  if (const auto* h = g.getIf<gq::ConvexMeshGeometry<double>>()) {
+    const gq::Vec3<double>* best = &h->mesh->vertices[0];
+    double bestDot = best->dot(d);
+    for (const auto& v : h->mesh->vertices)
+      if (v.dot(d) > bestDot) { bestDot = v.dot(d); best = &v; }
+    return *best;
+  }
+  if (const auto* b = g.getIf<gq::BoxGeometry<double>>())
+    return gq::Vec3<double>(d.x() < 0 ? -b->halfExtents.x() : b->halfExtents.x(), d.y() < 0 ? -b->halfExtents.y() : b->halfExtents.y(),
+                            d.z() < 0 ? -b->halfExtents.z() : b->halfExtents.z());
+  const auto& c = g.get<gq::CapsuleGeometry<double>>();
+  const double n = d.norm();
+  const gq::Vec3<double> tip(d.x() < 0 ? -c.halfHeight : c.halfHeight, 0, 0);
+  return n > 0 ? gq::Vec3<double>(tip + c.radius * d / n) : tip;
+}
+
 void ccdSupport(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
-  const auto* h = static_cast<const CcdHull*>(obj);
+  const auto* h = static_cast<const CcdShape*>(obj);
   const gq::Vec3<double> d = h->pose.rotateInv(gq::Vec3<double>(dir->v[0], dir->v[1], dir->v[2]));
-  const gq::Vec3<double>* best = &h->hull->vertices[0];
-  double bestDot = best->dot(d);
-  for (const auto& v : h->hull->vertices)
-    if (v.dot(d) > bestDot) { bestDot = v.dot(d); best = &v; }
-  const gq::Vec3<double> p = h->pose.transform(*best);
+  const gq::Vec3<double> p = h->pose.transform(ccdLocalSupport(*h->geom, d));
   ccdVec3Set(out, p.x(), p.y(), p.z());
 }
 
 void ccdCenter(const void* obj, ccd_vec3_t* out) {
-  const auto* h = static_cast<const CcdHull*>(obj);
-  const gq::Vec3<double> c = h->pose.transform(h->hull->center);
+  const auto* h = static_cast<const CcdShape*>(obj);
+  const auto* hull = h->geom->getIf<gq::ConvexMeshGeometry<double>>();
+  const gq::Vec3<double> c = h->pose.transform(hull ? hull->mesh->center : gq::Vec3<double>::Zero());
   ccdVec3Set(out, c.x(), c.y(), c.z());
 }
 
@@ -124,46 +139,116 @@ ccd_t makeCcd() {
   return ccd;
 }
 
-void BM_CcdGJKIntersect(benchmark::State& state) {
-  const Scene& s = scene(int(state.range(0)));
-  if (!s.hull) return state.SkipWithError("convex cooking failed");
+[[gnu::noinline]] int runCcdIntersect(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
   const ccd_t ccd = makeCcd();
   int overlapping = 0;
-  for (auto _ : state) {
-    overlapping = 0;
-    for (int i = 0; i < kPairs; ++i) {
-      const CcdHull a{s.hull.get(), s.pose0[i]}, b{s.hull.get(), s.pose1[i]};
-      overlapping += ccdGJKIntersect(&a, &b, &ccd);
-    }
+  for (int i = 0; i < kPairs; ++i) {
+    const CcdShape a{&g0, s.pose0[i]}, b{&g1, s.pose1[i]};
+    overlapping += ccdGJKIntersect(&a, &b, &ccd);
   }
+  return overlapping;
+}
+
+[[gnu::noinline]] int runCcdPenetration(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  const ccd_t ccd = makeCcd();
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    const CcdShape a{&g0, s.pose0[i]}, b{&g1, s.pose1[i]};
+    ccd_real_t depth;
+    ccd_vec3_t dir, pos;
+    overlapping += ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos) == 0;
+    benchmark::DoNotOptimize(depth);
+  }
+  return overlapping;
+}
+
+// ---- shape pairs --------------------------------------------------------------------------------------------
+// Arg: 30/100/300 = hull vs hull with that many points; 1 = box vs box; 2 = capsule vs box.
+struct Pair {
+  gq::Geometry<double> g0, g1;
+};
+
+Pair pairFor(int arg, const Scene& s) {
+  const gq::Geometry<double> box = gq::BoxGeometry<double>(gq::Vec3<double>(0.9, 0.6, 0.4));
+  if (arg == 1) return {box, box};
+  if (arg == 2) return {gq::CapsuleGeometry<double>(0.3, 0.7), box};
+  const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
+  return {hull, hull};
+}
+
+const Scene& sceneFor(int arg) { return scene(arg < 4 ? 30 : arg); }
+
+template <class Run> void benchPairs(benchmark::State& state, Run run) {
+  const Scene& s = sceneFor(int(state.range(0)));
+  if (!s.hull) return state.SkipWithError("convex cooking failed");
+  const Pair p = pairFor(int(state.range(0)), s);
+  int overlapping = 0;
+  for (auto _ : state) overlapping = run(s, p);
   state.counters["overlapping"] = overlapping;
   state.SetItemsProcessed(state.iterations() * kPairs);
 }
 
+void BM_GqDistance(benchmark::State& state) {
+  benchPairs(state, [](const Scene& s, const Pair& p) { return runGqDistance(s, p.g0, p.g1, nullptr); });
+}
+
+// Same poses, second call per pair with the GJK cache of the first (frame-to-frame coherence at zero motion).
+void BM_GqDistanceWarm(benchmark::State& state) {
+  Caches caches(kPairs);
+  bool primed = false;
+  benchPairs(state, [&](const Scene& s, const Pair& p) {
+    if (!primed) runGqDistance(s, p.g0, p.g1, &caches);
+    primed = true;
+    return runGqDistance(s, p.g0, p.g1, &caches);
+  });
+}
+
+void BM_GqGjkOverlap(benchmark::State& state) {
+  benchPairs(state, [](const Scene& s, const Pair& p) { return runGqGjkOverlap(s, p.g0, p.g1); });
+}
+void BM_GqOverlap(benchmark::State& state) {
+  benchPairs(state, [](const Scene& s, const Pair& p) { return runGqOverlap(s, p.g0, p.g1); });
+}
+void BM_CcdGJKIntersect(benchmark::State& state) {
+  benchPairs(state, [](const Scene& s, const Pair& p) { return runCcdIntersect(s, p.g0, p.g1); });
+}
 void BM_CcdGJKPenetration(benchmark::State& state) {
-  const Scene& s = scene(int(state.range(0)));
-  if (!s.hull) return state.SkipWithError("convex cooking failed");
-  const ccd_t ccd = makeCcd();
-  int overlapping = 0;
-  for (auto _ : state) {
-    overlapping = 0;
-    for (int i = 0; i < kPairs; ++i) {
-      const CcdHull a{s.hull.get(), s.pose0[i]}, b{s.hull.get(), s.pose1[i]};
-      ccd_real_t depth;
-      ccd_vec3_t dir, pos;
-      overlapping += ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos) == 0;
-      benchmark::DoNotOptimize(depth);
-    }
+  benchPairs(state, [](const Scene& s, const Pair& p) { return runCcdPenetration(s, p.g0, p.g1); });
+}
+
+// One pass of every runner per shape pair, for `valgrind --tool=callgrind` instruction counts.
+void runOnce() {
+  for (int arg : {30, 100, 300, 1, 2}) {
+    const Scene& s = sceneFor(arg);
+    const Pair p = pairFor(arg, s);
+    Caches caches(kPairs);
+    runGqDistance(s, p.g0, p.g1, &caches);  // primes the caches (counted under runGqDistance)
+    runGqDistance(s, p.g0, p.g1, &caches);
+    runGqDistance(s, p.g0, p.g1, nullptr);
+    runGqGjkOverlap(s, p.g0, p.g1);
+    runGqOverlap(s, p.g0, p.g1);
+    runCcdIntersect(s, p.g0, p.g1);
+    runCcdPenetration(s, p.g0, p.g1);
   }
-  state.counters["overlapping"] = overlapping;
-  state.SetItemsProcessed(state.iterations() * kPairs);
 }
 
 }  // namespace
 
-BENCHMARK(BM_GqDistance)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_GqDistance)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
 BENCHMARK(BM_GqDistanceWarm)->Arg(30)->Arg(100)->Arg(300);
-BENCHMARK(BM_CcdGJKIntersect)->Arg(30)->Arg(100)->Arg(300);
-BENCHMARK(BM_CcdGJKPenetration)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_GqGjkOverlap)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
+BENCHMARK(BM_GqOverlap)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
+BENCHMARK(BM_CcdGJKIntersect)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
+BENCHMARK(BM_CcdGJKPenetration)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--once") {
+    runOnce();
+    return 0;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

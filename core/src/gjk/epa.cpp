@@ -2,12 +2,16 @@
 // With the origin inside D, translating b by t*n separates the cores iff t > h_D(n) = max_{w in D} n.w, so the
 // penetration depth is min over unit n of h_D(n): the distance from the origin to the closest face of D. EPA grows
 // a polytope inside D towards that face; the margins are then added in closed form.
+//
+// The polytope lives in fixed-capacity arrays on the stack (no allocation per query): at most kEpaMaxIterations + 4
+// vertices, and a closed triangulated polytope with V vertices has 2V - 4 faces; dead faces' slots are reused.
+#include <algorithm>
 #include <cmath>
 #include <utility>
-#include <vector>
 
 #include "gjk/gjk.h"
 #include "gjk/simplex.h"
+#include "gjk/support_map.h"
 
 namespace gq::detail {
 namespace {
@@ -19,18 +23,23 @@ template <class T> struct EpaFace {
   bool alive = true;
 };
 
+inline constexpr std::uint32_t kEpaMaxPoints = kEpaMaxIterations + 4;
+inline constexpr std::uint32_t kEpaMaxFaces = 2 * kEpaMaxPoints;
+inline constexpr std::uint32_t kEpaMaxHorizon = kEpaMaxFaces;
+
 template <class T> struct Polytope {
-  std::vector<SupportPoint<T>> points;
-  std::vector<EpaFace<T>> faces;
+  std::array<SupportPoint<T>, kEpaMaxPoints> points;
+  std::uint32_t pointCount = 0;
+  std::array<EpaFace<T>, kEpaMaxFaces> faces;
+  std::uint32_t faceCount = 0;
 };
 
-template <class T> SupportPoint<T> supportOfDifference(const ConvexShape<T>& a, const ConvexShape<T>& b, const Vec3<T>& d) {
-  SupportPoint<T> p;
-  p.a = a.support(d);
-  p.b = b.support(-d);
-  p.w = p.a - p.b;
-  return p;
-}
+// Up to 6 candidate directions.
+template <class T> struct Directions {
+  std::array<Vec3<T>, 6> d;
+  std::uint32_t count = 0;
+  void add(const Vec3<T>& x) { d[count++] = x; }
+};
 
 // Face i-j-k with its outward normal; false when degenerate.
 template <class T> bool makeFace(const Polytope<T>& poly, std::uint32_t i, std::uint32_t j, std::uint32_t k, EpaFace<T>& f) {
@@ -54,18 +63,27 @@ template <class T> std::array<Vec3<T>, 2> orthonormalPair(const Vec3<T>& d) {
 }
 
 // Candidate directions that lift the simplex by one dimension (the simplex spans a point, a segment or a plane).
-template <class T> std::vector<Vec3<T>> liftDirections(const GjkSimplex<T>& s) {
-  if (s.size == 1) return {Vec3<T>::UnitX(), -Vec3<T>::UnitX(), Vec3<T>::UnitY(), -Vec3<T>::UnitY(), Vec3<T>::UnitZ(), -Vec3<T>::UnitZ()};
-  if (s.size == 2) {
-    const Vec3<T> e = s.points[1].w - s.points[0].w;
-    if (!(e.squaredNorm() > T(0))) return liftDirections(GjkSimplex<T>{s.points, 1});
+template <class T> Directions<T> liftDirections(const GjkSimplex<T>& s) {
+  Directions<T> out;
+  const Vec3<T> e = s.size >= 2 ? Vec3<T>(s.points[1].w - s.points[0].w) : Vec3<T>::Zero();
+  const Vec3<T> n = s.size >= 3 ? Vec3<T>(e.cross(s.points[2].w - s.points[0].w)) : Vec3<T>::Zero();
+  if (n.squaredNorm() > T(0)) {
+    const Vec3<T> u = n.normalized();
+    out.add(u);
+    out.add(-u);
+  } else if (e.squaredNorm() > T(0)) {
     const auto [e1, e2] = orthonormalPair(e);
-    return {e1, -e1, e2, -e2};
+    out.add(e1);
+    out.add(-e1);
+    out.add(e2);
+    out.add(-e2);
+  } else {
+    for (int k = 0; k < 3; ++k) {
+      out.add(Vec3<T>::Unit(k));
+      out.add(-Vec3<T>::Unit(k));
+    }
   }
-  const Vec3<T> n = (s.points[1].w - s.points[0].w).cross(s.points[2].w - s.points[0].w);
-  if (!(n.squaredNorm() > T(0))) return liftDirections(GjkSimplex<T>{s.points, 2});
-  const Vec3<T> u = n.normalized();
-  return {u, -u};
+  return out;
 }
 
 // Distance of q from the affine hull of the simplex.
@@ -81,11 +99,13 @@ template <class T> T distanceFromHull(const GjkSimplex<T>& s, const Vec3<T>& q) 
 // Grows the GJK simplex to a tetrahedron. When D is flat along some direction (its extent there is within
 // tolerance), returns false with `flatNormal` set: the core depth along it is ~0, the minimum.
 template <class T>
-bool liftToTetrahedron(const ConvexShape<T>& a, const ConvexShape<T>& b, T tolerance, GjkSimplex<T>& s, Vec3<T>& flatNormal) {
+bool liftToTetrahedron(SupportMap<T>& a, SupportMap<T>& b, T tolerance, GjkSimplex<T>& s, Vec3<T>& flatNormal) {
   while (s.size < 4) {
     T bestLift = T(-1), flattest = std::numeric_limits<T>::infinity();
     SupportPoint<T> best{};
-    for (const Vec3<T>& d : liftDirections(s)) {
+    const Directions<T> dirs = liftDirections(s);
+    for (std::uint32_t k = 0; k < dirs.count; ++k) {
+      const Vec3<T>& d = dirs.d[k];
       const SupportPoint<T> p = supportOfDifference(a, b, d);
       const T lift = distanceFromHull(s, p.w);
       if (lift > bestLift) { bestLift = lift; best = p; }
@@ -99,14 +119,15 @@ bool liftToTetrahedron(const ConvexShape<T>& a, const ConvexShape<T>& b, T toler
 }
 
 template <class T> bool buildTetrahedron(const GjkSimplex<T>& s, Polytope<T>& poly) {
-  poly.points.assign(s.points.begin(), s.points.end());
+  std::copy(s.points.begin(), s.points.end(), poly.points.begin());
+  poly.pointCount = 4;
   const Vec3<T> centroid = (s.points[0].w + s.points[1].w + s.points[2].w + s.points[3].w) / T(4);
   const std::array<std::array<std::uint32_t, 3>, 4> tris = {{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
   for (const auto& t : tris) {
     EpaFace<T> f;
     if (!makeFace(poly, t[0], t[1], t[2], f)) return false;
     if (f.n.dot(poly.points[t[0]].w - centroid) < T(0) && !makeFace(poly, t[0], t[2], t[1], f)) return false;
-    poly.faces.push_back(f);
+    poly.faces[poly.faceCount++] = f;
   }
   return true;
 }
@@ -114,31 +135,52 @@ template <class T> bool buildTetrahedron(const GjkSimplex<T>& s, Polytope<T>& po
 template <class T> std::uint32_t closestFace(const Polytope<T>& poly) {
   std::uint32_t best = 0;
   T bestDist = std::numeric_limits<T>::infinity();
-  for (std::uint32_t i = 0; i < poly.faces.size(); ++i)
+  for (std::uint32_t i = 0; i < poly.faceCount; ++i)
     if (poly.faces[i].alive && poly.faces[i].dist < bestDist) { bestDist = poly.faces[i].dist; best = i; }
   return best;
 }
 
-// Removes the faces that see `w` and closes the hole with faces fanning from w to the horizon edges.
+using Edge = std::pair<std::uint32_t, std::uint32_t>;
+
+// Boundary of the removed faces: an edge seen twice (once per orientation) is interior and cancels.
+struct Horizon {
+  std::array<Edge, kEpaMaxHorizon> edges;
+  std::uint32_t count = 0;
+  bool overflow = false;
+
+  void toggle(const Edge& e) {
+    const Edge twin(e.second, e.first);
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (edges[k] == twin) {
+        edges[k] = edges[--count];
+        return;
+      }
+    if (count == kEpaMaxHorizon) overflow = true;
+    else edges[count++] = e;
+  }
+};
+
+// Removes the faces that see `w` and closes the hole with faces fanning from w to the horizon edges, reusing the
+// removed faces' slots. False (polytope left as is or partly updated) when a buffer is full or a face degenerates.
 template <class T> bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p) {
-  const std::uint32_t newIndex = static_cast<std::uint32_t>(poly.points.size());
-  poly.points.push_back(p);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> horizon;
-  for (std::uint32_t i = 0; i < poly.faces.size(); ++i) {
+  if (poly.pointCount == kEpaMaxPoints) return false;
+  const std::uint32_t newIndex = poly.pointCount;
+  poly.points[poly.pointCount++] = p;
+  Horizon horizon;
+  std::array<std::uint32_t, kEpaMaxFaces> freeSlots;
+  std::uint32_t freeCount = 0;
+  for (std::uint32_t i = 0; i < poly.faceCount; ++i) {
     EpaFace<T>& f = poly.faces[i];
     if (!f.alive || (i != best && !(f.n.dot(p.w - poly.points[f.v[0]].w) > T(0)))) continue;
     f.alive = false;
-    for (int e = 0; e < 3; ++e) {
-      const std::pair<std::uint32_t, std::uint32_t> edge(f.v[e], f.v[(e + 1) % 3]);
-      auto twin = std::find(horizon.begin(), horizon.end(), std::make_pair(edge.second, edge.first));
-      if (twin != horizon.end()) horizon.erase(twin);
-      else horizon.push_back(edge);
-    }
+    freeSlots[freeCount++] = i;
+    for (int e = 0; e < 3; ++e) horizon.toggle(Edge(f.v[e], f.v[(e + 1) % 3]));
   }
-  for (const auto& [i, j] : horizon) {
+  if (horizon.overflow || poly.faceCount + horizon.count > kEpaMaxFaces + freeCount) return false;
+  for (std::uint32_t k = 0; k < horizon.count; ++k) {
     EpaFace<T> f;
-    if (!makeFace(poly, i, j, newIndex, f)) return false;
-    poly.faces.push_back(f);
+    if (!makeFace(poly, horizon.edges[k].first, horizon.edges[k].second, newIndex, f)) return false;
+    poly.faces[k < freeCount ? freeSlots[k] : poly.faceCount++] = f;
   }
   return true;
 }
@@ -188,9 +230,10 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
     s = g.simplex;
   }
   const T tolerance = gjkTolerance(a, b);
+  SupportMap<T> sa(a), sb(b);
   Vec3<T> flatNormal = Vec3<T>::UnitX();
   Polytope<T> poly;
-  if (!liftToTetrahedron(a, b, tolerance, s, flatNormal) || !buildTetrahedron(s, poly)) {
+  if (!liftToTetrahedron(sa, sb, tolerance, s, flatNormal) || !buildTetrahedron(s, poly)) {
     // D is flat (e.g. two segments): the origin lies on its boundary, the core depth is 0 along flatNormal.
     const SimplexClosest<T> c = closestOnSimplex(s);
     Vec3<T> coreA, coreB;
@@ -198,18 +241,17 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
     finishPenetration(a, b, coreA, coreB, flatNormal, T(0), r);
     return r;
   }
-  std::uint32_t best = 0;
+  EpaFace<T> f;  // closest face (a copy: expand may reuse its slot)
   T gap = std::numeric_limits<T>::infinity();
   std::uint32_t it = 0;
   while (it < kEpaMaxIterations) {
     ++it;
-    best = closestFace(poly);
-    const EpaFace<T> f = poly.faces[best];
-    const SupportPoint<T> p = supportOfDifference(a, b, f.n);
+    const std::uint32_t best = closestFace(poly);
+    f = poly.faces[best];
+    const SupportPoint<T> p = supportOfDifference(sa, sb, f.n);
     gap = f.n.dot(p.w) - f.dist;  // h_D(n) - face distance >= 0: the error bound of this face
     if (gap <= tolerance || !expand(poly, best, p)) break;
   }
-  const EpaFace<T>& f = poly.faces[best];
   if (!(gap <= tolerance))
     r.status = Status::notConverged("EPA stopped after " + std::to_string(it) + " iterations with error bound " +
                                     std::to_string(double(gap)));

@@ -2,31 +2,31 @@
 // signed-volume simplex solver), plus the boolean early-out variant.
 //
 // v is the current closest point of the Minkowski difference D = A - B to the origin, w = s_D(-v) the support
-// point. |v| is an upper bound of the core distance and v.w/|v| a lower bound, so the duality gap
-// g = v.(v - w) >= 0 bounds the error: |v| - dist <= g/|v|. GJK stops once that bound is below tolerance.
+// point. |v| is an upper bound of the core distance. Any direction d with support w = s_D(-d) gives the lower bound
+// d.w/|d| (every point z of D has d.z >= d.w), so |v| - max_k d_k.w_k/|d_k| bounds the error; GJK stops once it is
+// below tolerance. With d = v this is the usual duality gap v.(v - w)/|v|.
+//
+// Nesterov acceleration (Montaut, Le Lidec, Petrik, Sivic, Carpentier, RSS 2022): the search direction is
+// d_k = delta_k v_k + (1 - delta_k) w_{k-1} with delta_k = (k+1)/(k+3), a momentum on the support points. Momentum is
+// switched off for the rest of the query (plain GJK, whose termination proof then applies) as soon as it stops
+// paying: when the momentum support would pass the duality-gap test at v (it proves nothing about v), when it
+// repeats a simplex point, or when |v| fails to decrease.
 #include <cmath>
 
 #include "gjk/gjk.h"
 #include "gjk/simplex.h"
+#include "gjk/support_map.h"
 
 namespace gq::detail {
 namespace {
 
-template <class T> SupportPoint<T> supportOfDifference(const ConvexShape<T>& a, const ConvexShape<T>& b, const Vec3<T>& d) {
-  SupportPoint<T> p;
-  p.a = a.support(d);
-  p.b = b.support(-d);
-  p.w = p.a - p.b;
-  p.d = d;
-  return p;
-}
-
 // Rebuilds the cached simplex from its search directions (valid support points whatever the poses now are).
-template <class T> void seedSimplex(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkCache<T>& cache, GjkSimplex<T>& s) {
+template <class T>
+void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Transform<T>& poseA, const GjkCache<T>& cache, GjkSimplex<T>& s) {
   for (std::uint32_t k = 0; k < std::min<std::uint32_t>(cache.simplexSize, 4); ++k) {
     const Vec3<T>& local = cache.simplexDirections[k];
     if (!isFinite(local) || !(local.squaredNorm() > T(0))) continue;
-    const SupportPoint<T> p = supportOfDifference(a, b, a.pose.rotate(local));
+    const SupportPoint<T> p = supportOfDifference(a, b, Vec3<T>(poseA.rotate(local)));
     bool repeated = false;
     for (std::uint32_t j = 0; j < s.size; ++j) repeated = repeated || s.points[j].w == p.w;
     if (!repeated) s.points[s.size++] = p;
@@ -57,14 +57,31 @@ void finishSeparated(const ConvexShape<T>& a, const ConvexShape<T>& b, const Vec
   r.point1 = coreB - b.margin * r.normal;
 }
 
+// Nesterov momentum state: the last support point and whether momentum is still on.
+template <class T> struct Momentum {
+  bool on = kGjkNesterov;
+  Vec3<T> lastW = Vec3<T>::Zero();
+  std::uint32_t step = 0;  // k in delta_k = (k+1)/(k+3)
+
+  // Search direction: v itself without momentum (or before the first support point), else the Nesterov mix.
+  Vec3<T> direction(const Vec3<T>& v) const {
+    if (!on || step == 0) return v;
+    const T delta = T(step + 1) / T(step + 3);
+    const Vec3<T> d = delta * v + (T(1) - delta) * lastW;
+    return d.squaredNorm() > T(0) ? d : v;
+  }
+};
+
 }  // namespace
 
 template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache) {
   const T tolerance = gjkTolerance(a, b);
+  SupportMap<T> sa(a), sb(b);
   GjkResult<T> r;
   GjkSimplex<T>& s = r.simplex;
   Vec3<T> v = initialDirection(a, b, cache);
   std::array<T, 4> lambda = {T(1), T(0), T(0), T(0)};
+  T lowerBound = T(0);  // best lower bound of the core distance seen so far
   T gapBound = std::numeric_limits<T>::infinity();
   bool converged = false;
   struct Best {
@@ -72,9 +89,10 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
     std::array<T, 4> lambda;
     Vec3<T> v;
   } best{s, lambda, Vec3<T>::Constant(std::numeric_limits<T>::infinity())};
+  Momentum<T> momentum;
   std::uint32_t stalls = 0;
   std::uint32_t it = 0;
-  if (cache) seedSimplex(a, b, *cache, s);
+  if (cache) seedSimplex(sa, sb, a.pose, *cache, s);
   if (s.size > 0) {
     const SimplexClosest<T> c = closestOnSimplex(s);
     r.coresOverlap = converged = c.containsOrigin || c.v.norm() <= tolerance;
@@ -84,14 +102,26 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
   }
   while (!r.coresOverlap && it < kGjkMaxIterations) {
     ++it;
-    const SupportPoint<T> p = supportOfDifference(a, b, Vec3<T>(-v));
+    const Vec3<T> d = s.size > 0 ? momentum.direction(v) : v;
+    const bool accelerated = d != v;
+    const SupportPoint<T> p = supportOfDifference(sa, sb, Vec3<T>(-d));
     if (s.size > 0) {
       const T vNorm = v.norm();
-      gapBound = std::max(T(0), v.dot(v - p.w)) / vNorm;
-      // A repeated support point means D has no point closer along -v: v is optimal up to rounding.
-      converged = gapBound <= tolerance || alreadyInSimplex(s, p.w);
-      if (converged) break;
+      // Duality gap at v only (a momentum direction's lower bound, though valid, broke sweep accuracy tests).
+      if (!accelerated) lowerBound = std::max(lowerBound, d.dot(p.w) / d.norm());
+      gapBound = std::max(T(0), vNorm - lowerBound);
+      if (gapBound <= tolerance) { converged = true; break; }
+      const bool repeated = alreadyInSimplex(s, p.w);
+      // Momentum support that passes v's gap test, or repeats a point: no information, retry without momentum.
+      if (accelerated && (repeated || v.dot(v - p.w) <= tolerance * vNorm)) {
+        momentum.on = false;
+        continue;
+      }
+      // A repeated support point along -v means D has no point closer along -v: v is optimal up to rounding.
+      if (repeated) { converged = true; break; }
     }
+    momentum.lastW = p.w;
+    ++momentum.step;
     s.points[s.size++] = p;
     const SimplexClosest<T> c = closestOnSimplex(s);
     if (c.containsOrigin || c.v.norm() <= tolerance) {
@@ -101,10 +131,13 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
       converged = true;
       break;
     }
-    // |v| must decrease strictly. Near the origin rounding can stall it (the simplex is then nearly flat
-    // around the origin): keep going from the new simplex, which usually closes around the origin next, and
-    // give up after kGjkMaxStalls, answering with the best simplex seen.
-    if (!(c.v.squaredNorm() < best.v.squaredNorm()) && ++stalls > kGjkMaxStalls) break;
+    // |v| must decrease strictly. Momentum steps may not: they fall back to plain GJK. Near the origin rounding can
+    // stall plain GJK too (the simplex is then nearly flat around the origin): keep going from the new simplex,
+    // which usually closes around the origin next, and give up after kGjkMaxStalls with the best simplex seen.
+    if (!(c.v.squaredNorm() < best.v.squaredNorm())) {
+      if (accelerated) momentum.on = false;
+      else if (++stalls > kGjkMaxStalls) break;
+    }
     v = c.v;
     lambda = c.lambda;
     if (v.squaredNorm() < best.v.squaredNorm()) best = {s, lambda, v};
@@ -115,10 +148,10 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
     v = best.v;
   }
   r.iterations = it;
-  r.errorBound = r.coresOverlap ? T(0) : gapBound;
-  if (!converged && !(gapBound <= tolerance))
+  r.errorBound = r.coresOverlap ? T(0) : std::max(T(0), v.norm() - lowerBound);
+  if (!converged && !(r.errorBound <= tolerance))
     r.status = Status::notConverged("GJK stopped after " + std::to_string(it) + " iterations with error bound " +
-                                    std::to_string(double(gapBound)));
+                                    std::to_string(double(r.errorBound)));
   if (!r.coresOverlap) {
     Vec3<T> coreA, coreB;
     simplexWitnesses(s, lambda, coreA, coreB);
@@ -126,6 +159,8 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
   } else {
     r.distance = -(a.margin + b.margin);  // lower bound; EPA gives the true depth
   }
+  a.climbStart = sa.hint();
+  b.climbStart = sb.hint();
   if (cache) {
     cache->iterations = it;
     if (!r.coresOverlap) cache->direction = a.pose.rotateInv(v);
@@ -138,24 +173,39 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
 template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b) {
   const T tolerance = gjkTolerance(a, b);
   const T margins = a.margin + b.margin;
+  SupportMap<T> sa(a), sb(b);
   GjkSimplex<T> s;
   Vec3<T> v = initialDirection<T>(a, b, nullptr);
   T bestSquared = std::numeric_limits<T>::infinity();
+  Momentum<T> momentum;
   std::uint32_t stalls = 0;
   for (std::uint32_t it = 0; it < kGjkMaxIterations; ++it) {
-    const SupportPoint<T> p = supportOfDifference(a, b, Vec3<T>(-v));
+    const Vec3<T> d = s.size > 0 ? momentum.direction(v) : v;
+    const bool accelerated = d != v;
+    const SupportPoint<T> p = supportOfDifference(sa, sb, Vec3<T>(-d));
+    // Separating axis: the lower bound d.w/|d| of the core distance already exceeds the margins.
+    if (d.dot(p.w) > (margins + tolerance) * d.norm()) return false;
     if (s.size > 0) {
       const T vNorm = v.norm();
-      // Separating axis: the lower bound v.w/|v| already exceeds the margins.
-      if (v.dot(p.w) > (margins + tolerance) * vNorm) return false;
+      const bool repeated = alreadyInSimplex(s, p.w);
+      const bool gapClosed = v.dot(v - p.w) <= tolerance * vNorm;
+      if (accelerated && (repeated || gapClosed)) {
+        momentum.on = false;
+        continue;
+      }
       // Converged: |v| is the core distance within tolerance.
-      if (v.dot(v - p.w) <= tolerance * vNorm || alreadyInSimplex(s, p.w)) return vNorm <= margins + tolerance;
+      if (gapClosed || repeated) return vNorm <= margins + tolerance;
     }
+    momentum.lastW = p.w;
+    ++momentum.step;
     s.points[s.size++] = p;
     const SimplexClosest<T> c = closestOnSimplex(s);
     if (c.containsOrigin || c.v.norm() <= margins + tolerance) return true;
-    // Rounding stall (see gjkDistance): keep going, at most kGjkMaxStalls times.
-    if (!(c.v.squaredNorm() < bestSquared) && ++stalls > kGjkMaxStalls) return std::sqrt(bestSquared) <= margins + tolerance;
+    // No progress: drop momentum; plain GJK stalls only by rounding (see gjkDistance), at most kGjkMaxStalls times.
+    if (!(c.v.squaredNorm() < bestSquared)) {
+      if (accelerated) momentum.on = false;
+      else if (++stalls > kGjkMaxStalls) return std::sqrt(bestSquared) <= margins + tolerance;
+    }
     v = c.v;
     bestSquared = std::min(bestSquared, v.squaredNorm());
   }

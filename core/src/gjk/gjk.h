@@ -33,6 +33,8 @@ inline constexpr std::uint32_t kGjkMaxIterations = 128;
 inline constexpr std::uint32_t kEpaMaxIterations = 128;
 // GJK steps without a strict decrease of |v| tolerated before stopping (rounding stalls near the origin).
 inline constexpr std::uint32_t kGjkMaxStalls = 4;
+// Nesterov momentum on the GJK search direction (gjk.cpp); false gives plain GJK.
+inline constexpr bool kGjkNesterov = true;
 
 // A support mapping for one convex Geometry<T> at a pose. Holds raw pointers into the geometry's cooked data or
 // callbacks: it must not outlive the Geometry it was made from.

@@ -2,62 +2,17 @@
 #include <cmath>
 
 #include "gjk/gjk.h"
+#include "gjk/support_map.h"
 
 namespace gq::detail {
 namespace {
-
-// Box: the corner whose signs match the direction (ties resolve to +).
-template <class T> Vec3<T> supportBox(const Vec3<T>& halfExtents, const Vec3<T>& d) {
-  return Vec3<T>(d.x() < T(0) ? -halfExtents.x() : halfExtents.x(), d.y() < T(0) ? -halfExtents.y() : halfExtents.y(),
-                 d.z() < T(0) ? -halfExtents.z() : halfExtents.z());
-}
-
-// Segment along X from -h to +h.
-template <class T> Vec3<T> supportSegment(T halfHeight, const Vec3<T>& d) {
-  return Vec3<T>(d.x() < T(0) ? -halfHeight : halfHeight, T(0), T(0));
-}
-
-template <class T> std::uint32_t bruteForceVertex(const ConvexMesh<T>& hull, const Vec3<T>& d) {
-  std::uint32_t best = 0;
-  T bestDot = -std::numeric_limits<T>::infinity();
-  for (std::uint32_t i = 0; i < hull.vertices.size(); ++i) {
-    const T s = hull.vertices[i].dot(d);
-    if (s > bestDot) { bestDot = s; best = i; }
-  }
-  return best;
-}
-
-// Hill-climbing: move to any strictly better neighbour until none is. On a convex polytope a vertex with no
-// improving edge is a global maximum of the linear function, so the climb is exact.
-template <class T> std::uint32_t climbVertex(const ConvexMesh<T>& hull, const Vec3<T>& d, std::uint32_t start) {
-  std::uint32_t current = start < hull.vertices.size() ? start : 0;
-  T currentDot = hull.vertices[current].dot(d);
-  for (bool moved = true; moved;) {
-    moved = false;
-    for (std::uint32_t k = hull.adjacencyOffsets[current]; k < hull.adjacencyOffsets[current + 1]; ++k) {
-      const std::uint32_t n = hull.adjacency[k];
-      const T s = hull.vertices[n].dot(d);
-      if (s > currentDot) { current = n; currentDot = s; moved = true; }
-    }
-  }
-  return current;
-}
-
-template <class T> bool hasAdjacency(const ConvexMesh<T>& hull) {
-  return hull.adjacencyOffsets.size() == hull.vertices.size() + 1 && !hull.adjacency.empty();
-}
 
 // Scaled hull: points are S v with S symmetric, so argmax_v d.(S v) = argmax_v (S d).v.
 template <class T> Vec3<T> supportHull(const ConvexShape<T>& s, const Vec3<T>& d) {
   const ConvexMesh<T>& hull = *s.hull;
   const Vec3<T> dm = s.hullScaled ? Vec3<T>(s.hullScale * d) : d;
-  std::uint32_t v;
-  if (hull.vertices.size() > kHillClimbMinVertices && hasAdjacency(hull)) {
-    v = climbVertex(hull, dm, s.climbStart);
-    s.climbStart = v;
-  } else {
-    v = bruteForceVertex(hull, dm);
-  }
+  const bool climb = hull.vertices.size() > kHillClimbMinVertices && hasAdjacency(hull);
+  const std::uint32_t v = hullVertex(hull, climb, dm, s.climbStart);
   return s.hullScaled ? Vec3<T>(s.hullScale * hull.vertices[v]) : hull.vertices[v];
 }
 

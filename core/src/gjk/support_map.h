@@ -1,0 +1,135 @@
+#pragma once
+// Support mappings prepared for the GJK/EPA inner loops. A ConvexShape stores a pose (quaternion) and, for hulls, a
+// MeshScale matrix; rotating every search direction through the quaternion and the scale costs more than the support
+// itself on small shapes. SupportMap folds them once per query into two 3x3 matrices:
+//   hull:   s(d) = R S v* + t  with  v* = argmax_v (S R^T d) . v   (S symmetric, so d.(R S v) = (S R^T d).v)
+//   others: s(d) = R s_local(R^T d) + t
+// and dispatches on the shape kind with a switch (custom shapes call their callbacks). Hull supports hill-climb from
+// the previous answer, so consecutive GJK/EPA directions (which are close) cost a step or two each.
+//
+// Header-inline on purpose: the kernels are a few instructions and must inline into gjk.cpp and epa.cpp.
+#include <cstdint>
+#include <limits>
+
+#include "gjk/gjk.h"
+
+namespace gq::detail {
+
+// Box: the corner whose signs match the direction (ties resolve to +).
+template <class T> inline Vec3<T> supportBox(const Vec3<T>& halfExtents, const Vec3<T>& d) {
+  return Vec3<T>(d.x() < T(0) ? -halfExtents.x() : halfExtents.x(), d.y() < T(0) ? -halfExtents.y() : halfExtents.y(),
+                 d.z() < T(0) ? -halfExtents.z() : halfExtents.z());
+}
+
+// Segment along X from -h to +h.
+template <class T> inline Vec3<T> supportSegment(T halfHeight, const Vec3<T>& d) {
+  return Vec3<T>(d.x() < T(0) ? -halfHeight : halfHeight, T(0), T(0));
+}
+
+template <class T> inline T dot3(const Vec3<T>& v, const Vec3<T>& d) { return v.x() * d.x() + v.y() * d.y() + v.z() * d.z(); }
+
+// Vertex with the largest d.v (first one on ties).
+template <class T> inline std::uint32_t bruteForceVertex(const ConvexMesh<T>& hull, const Vec3<T>& d) {
+  const Vec3<T>* v = hull.vertices.data();
+  const std::uint32_t n = static_cast<std::uint32_t>(hull.vertices.size());
+  std::uint32_t best = 0;
+  T bestDot = dot3(v[0], d);
+  for (std::uint32_t i = 1; i < n; ++i) {
+    const T s = dot3(v[i], d);
+    if (s > bestDot) { bestDot = s; best = i; }
+  }
+  return best;
+}
+
+// Steepest-ascent hill climbing over the hull's edge graph. On a convex polytope a vertex with no strictly better
+// neighbour maximises the linear function d.v globally, so the climb is exact; it strictly increases d.v, so it ends.
+template <class T> inline std::uint32_t climbVertex(const ConvexMesh<T>& hull, const Vec3<T>& d, std::uint32_t start) {
+  const Vec3<T>* v = hull.vertices.data();
+  const std::uint32_t* offsets = hull.adjacencyOffsets.data();
+  const std::uint32_t* adjacency = hull.adjacency.data();
+  std::uint32_t current = start < hull.vertices.size() ? start : 0;
+  T currentDot = dot3(v[current], d);
+  for (;;) {
+    std::uint32_t next = current;
+    for (std::uint32_t k = offsets[current], end = offsets[current + 1]; k < end; ++k) {
+      const std::uint32_t n = adjacency[k];
+      const T s = dot3(v[n], d);
+      if (s > currentDot) { currentDot = s; next = n; }
+    }
+    if (next == current) return current;
+    current = next;
+  }
+}
+
+template <class T> inline bool hasAdjacency(const ConvexMesh<T>& hull) {
+  return hull.adjacencyOffsets.size() == hull.vertices.size() + 1 && !hull.adjacency.empty();
+}
+
+// Hull vertex extreme along the (scaled, local) direction: climb on large hulls with adjacency, else scan.
+template <class T> inline std::uint32_t hullVertex(const ConvexMesh<T>& hull, bool climb, const Vec3<T>& d, std::uint32_t& hint) {
+  if (!climb) return bruteForceVertex(hull, d);
+  hint = climbVertex(hull, d, hint);
+  return hint;
+}
+
+template <class T> class SupportMap {
+ public:
+  using Kind = typename ConvexShape<T>::Kind;
+
+  explicit SupportMap(const ConvexShape<T>& s)
+      : kind_(s.kind), origin_(s.pose.p), halfExtents_(s.halfExtents), hull_(s.hull), custom_(s.custom), hint_(s.climbStart) {
+    const Mat3<T> r = s.pose.q.toRotationMatrix();
+    if (kind_ == Kind::Hull && s.hullScaled) {
+      toWorld_ = r * s.hullScale;
+      toLocal_ = s.hullScale * r.transpose();
+    } else {
+      toWorld_ = r;
+      toLocal_ = r.transpose();
+    }
+    climb_ = hull_ && hull_->vertices.size() > kHillClimbMinVertices && hasAdjacency(*hull_);
+  }
+
+  // Point of the core farthest along the world direction d (need not be unit), in world space.
+  Vec3<T> operator()(const Vec3<T>& d) {
+    switch (kind_) {
+      case Kind::Point: return origin_;
+      case Kind::Segment: {
+        const T h = dot3(Vec3<T>(toWorld_.col(0)), d) < T(0) ? -halfExtents_.x() : halfExtents_.x();
+        return origin_ + h * toWorld_.col(0);
+      }
+      case Kind::Box: return origin_ + toWorld_ * supportBox(halfExtents_, Vec3<T>(toLocal_ * d));
+      case Kind::Hull: {
+        const std::uint32_t v = hullVertex(*hull_, climb_, Vec3<T>(toLocal_ * d), hint_);
+        return origin_ + toWorld_ * hull_->vertices[v];
+      }
+      case Kind::Custom: return origin_ + toWorld_ * custom_->support(Vec3<T>(toLocal_ * d));
+    }
+    return origin_;
+  }
+
+  // Last hill-climbing vertex (to warm-start the next query on the same shape).
+  std::uint32_t hint() const { return hint_; }
+
+ private:
+  Kind kind_;
+  bool climb_ = false;
+  Vec3<T> origin_;
+  Vec3<T> halfExtents_;
+  Mat3<T> toWorld_;
+  Mat3<T> toLocal_;
+  const ConvexMesh<T>* hull_;
+  const CustomGeometryCallbacks<T>* custom_;
+  std::uint32_t hint_;
+};
+
+// Support point of the Minkowski difference a - b along d: a = s_A(d), b = s_B(-d).
+template <class T> inline SupportPoint<T> supportOfDifference(SupportMap<T>& a, SupportMap<T>& b, const Vec3<T>& d) {
+  SupportPoint<T> p;
+  p.a = a(d);
+  p.b = b(-d);
+  p.w = p.a - p.b;
+  p.d = d;
+  return p;
+}
+
+}  // namespace gq::detail
