@@ -190,16 +190,23 @@ TYPED_TEST(Overlap, ConvexCustomGeometryUsesItsSupportMapping) {
   EXPECT_NEAR(double(pc.direction.x()), -1.0, tol);
 }
 
-TYPED_TEST(Overlap, MeshPairsNotYetImplementedSaySo) {
+TYPED_TEST(Overlap, ConvexVsMeshPenetrationUsesTheSpecsIterativeAlgorithmAndSpecExclusionsSaySo) {
   using T = TypeParam;
   std::shared_ptr<const TriangleMesh<T>> mesh;
   ASSERT_TRUE(cookTriangleMesh<T>({Vec3<T>(0, 0, 0), Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0)}, {{0, 1, 2}}, mesh).ok());
   const Geometry<T> tri = TriangleMeshGeometry<T>(mesh);
   bool out = false;
+  // A unit sphere whose centre is 0.5 above the triangle (normal +Z): pushed out along +Z by 0.5.
+  const Transform<T> above(Vec3<T>(T(0.2), T(0.2), T(0.5)));
   PenetrationResult<T> pen;
-  const Status s = computePenetration<T>(pen, SphereGeometry<T>(1), Transform<T>(), tri, Transform<T>());
-  EXPECT_EQ(s.code, StatusCode::Unsupported);
-  EXPECT_NE(s.message.find("not implemented yet"), std::string::npos) << s.message;
+  ASSERT_TRUE(computePenetration<T>(pen, SphereGeometry<T>(1), above, tri, Transform<T>()).ok());
+  ASSERT_TRUE(pen.penetrating);
+  EXPECT_NEAR(double(pen.depth), 0.5, 1e-4);
+  EXPECT_NEAR(double(pen.direction.z()), 1.0, 1e-4);
+  PenetrationResult<T> swappedPen;
+  ASSERT_TRUE(computePenetration<T>(swappedPen, tri, Transform<T>(), SphereGeometry<T>(1), above).ok());
+  EXPECT_NEAR(double(swappedPen.depth), double(pen.depth), 1e-6);
+  EXPECT_NEAR(double(swappedPen.direction.z()), -1.0, 1e-4);
   const Status p = overlap<T>(tri, Transform<T>(), PlaneGeometry<T>(), Transform<T>(), out);
   EXPECT_EQ(p.code, StatusCode::Unsupported);
   EXPECT_NE(p.message.find("not defined by the spec"), std::string::npos) << p.message;

@@ -10,6 +10,7 @@
 
 #include "common/validate.h"
 #include "gq/custom.h"
+#include "gq/mesh_query.h"
 #include "gq/query.h"
 #include "penetration/penetration.h"
 
@@ -56,16 +57,21 @@ template <class T> Status checkConvexCustom(const Geometry<T>& g) {
                              "' (only raycast and bounds are available for it)");
 }
 
+// A convex shape against a triangle mesh or heightfield: the spec's iterative algorithm with its usual 4 iterations.
+inline constexpr std::uint32_t kSurfacePenetrationIterations = 4;
+template <class T>
+Status surfaceKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                     PenetrationResult<T>& result) {
+  if (const auto* mesh = g1.template getIf<TriangleMeshGeometry<T>>())
+    return computeTriangleMeshPenetration(result, g0, p0, *mesh, p1, kSurfacePenetrationIterations);
+  return computeHeightFieldPenetration(result, g0, p0, g1.template get<HeightFieldGeometry<T>>(), p1,
+                                       kSurfacePenetrationIterations);
+}
+
 template <class T>
 Status notDefinedBySpec(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&, PenetrationResult<T>&) {
   return Status::unsupported(std::string("penetration of ") + toString(g0.type()) + " and " + toString(g1.type()) +
                              " is not defined by the spec (PhysX does not support this pair)");
-}
-
-template <class T>
-Status notYetImplemented(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&, PenetrationResult<T>&) {
-  return Status::unsupported(std::string("penetration of ") + toString(g0.type()) + " and " + toString(g1.type()) +
-                             " is not implemented yet");
 }
 
 template <class T, GeometryType A, GeometryType B, PenetrationFn<T> Fn> constexpr void setPair(PenetrationTable<T>& table) {
@@ -77,8 +83,6 @@ template <class T, GeometryType A, GeometryType B, PenetrationFn<T> Fn> constexp
 template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   using GT = GeometryType;
   PenetrationTable<T> t{};
-  for (auto& row : t)
-    for (auto& cell : row) cell = notYetImplemented<T>;  // other triangle mesh / heightfield pairs: a later task
   setPair<T, GT::Sphere, GT::Sphere, pairKernel<T, SphereGeometry<T>, SphereGeometry<T>, detail::penetrationSphereSphere<T>>>(t);
   setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::penetrationSpherePlane<T>>>(t);
   setPair<T, GT::Sphere, GT::Capsule, pairKernel<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::penetrationSphereCapsule<T>>>(t);
@@ -102,6 +106,16 @@ template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationConvexConvex<T>>>(t);
   setPair<T, GT::ConvexMesh, GT::Custom, customKernel<T>>(t);
   setPair<T, GT::Custom, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Sphere, GT::TriangleMesh, surfaceKernel<T>>(t);
+  setPair<T, GT::Capsule, GT::TriangleMesh, surfaceKernel<T>>(t);
+  setPair<T, GT::Box, GT::TriangleMesh, surfaceKernel<T>>(t);
+  setPair<T, GT::ConvexMesh, GT::TriangleMesh, surfaceKernel<T>>(t);
+  setPair<T, GT::TriangleMesh, GT::Custom, swapped<T, surfaceKernel<T>>>(t);
+  setPair<T, GT::Sphere, GT::HeightField, surfaceKernel<T>>(t);
+  setPair<T, GT::Capsule, GT::HeightField, surfaceKernel<T>>(t);
+  setPair<T, GT::Box, GT::HeightField, surfaceKernel<T>>(t);
+  setPair<T, GT::ConvexMesh, GT::HeightField, surfaceKernel<T>>(t);
+  setPair<T, GT::HeightField, GT::Custom, swapped<T, surfaceKernel<T>>>(t);
   setPair<T, GT::TriangleMesh, GT::TriangleMesh, notDefinedBySpec<T>>(t);
   setPair<T, GT::TriangleMesh, GT::HeightField, notDefinedBySpec<T>>(t);
   setPair<T, GT::HeightField, GT::HeightField, notDefinedBySpec<T>>(t);
@@ -112,6 +126,14 @@ template <class T> constexpr PenetrationTable<T> kPenetrationTable = makePenetra
 static_assert(std::tuple_size_v<PenetrationTable<float>> == kGeometryTypeCount &&
                   std::tuple_size_v<PenetrationTable<float>::value_type> == kGeometryTypeCount,
               "one row and one column per GeometryType");
+template <class T> constexpr bool everyCellFilled(const PenetrationTable<T>& t) {
+  for (const auto& row : t)
+    for (const auto cell : row)
+      if (cell == nullptr) return false;
+  return true;
+}
+static_assert(everyCellFilled(kPenetrationTable<float>) && everyCellFilled(kPenetrationTable<double>),
+              "every pair is registered (answered, or unsupported with a reason)");
 
 }  // namespace
 
