@@ -9,25 +9,25 @@
 
 namespace gq::detail {
 
-template <class T> TriangleSupport<T>::TriangleSupport(const Triangle<T>& t) {
+template <class T> SurfaceTriangleSupport<T>::SurfaceTriangleSupport(const Triangle<T>& t) {
   centroid_ = (t.verts[0] + t.verts[1] + t.verts[2]) / T(3);
   for (int k = 0; k < 3; ++k) local_[k] = t.verts[k] - centroid_;
 }
 
-template <class T> Bounds3<T> TriangleSupport<T>::localBounds() const {
+template <class T> Bounds3<T> SurfaceTriangleSupport<T>::localBounds() const {
   Bounds3<T> b;
   for (const auto& v : local_) b.include(v);
   return b;
 }
 
-template <class T> Vec3<T> TriangleSupport<T>::support(const Vec3<T>& dir) const {
+template <class T> Vec3<T> SurfaceTriangleSupport<T>::support(const Vec3<T>& dir) const {
   int best = 0;
   for (int k = 1; k < 3; ++k)
     if (local_[k].dot(dir) > local_[best].dot(dir)) best = k;
   return local_[best];
 }
 
-template <class T> ConvexShape<T> TriangleSupport<T>::shape() const {
+template <class T> ConvexShape<T> SurfaceTriangleSupport<T>::shape() const {
   ConvexShape<T> s;
   s.kind = ConvexShape<T>::Kind::Custom;
   s.custom = this;
@@ -85,7 +85,7 @@ template <class T> bool TriangleQueryShape<T>::overlaps(const Triangle<T>& tri) 
       return overlapBoxTriangle(halfExtents_, local);
     }
     default: {
-      const TriangleSupport<T> support(tri);
+      const SurfaceTriangleSupport<T> support(tri);
       return gjkOverlap(convex_, support.shape());
     }
   }
@@ -113,7 +113,7 @@ template <class T> void TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri
     out.point1 = c.onTriangle;
     return;
   }
-  const TriangleSupport<T> support(tri);
+  const SurfaceTriangleSupport<T> support(tri);
   const ConvexShape<T> triShape = support.shape();
   const GjkResult<T> g = gjkDistance(convex_, triShape);
   if (!g.coresOverlap && g.distance > T(0)) {
@@ -142,7 +142,7 @@ template <class T> TrianglePush<T> TriangleQueryShape<T>::pushOut(const Triangle
     }
   }
   if (!solved) {
-    const TriangleSupport<T> support(tri);
+    const SurfaceTriangleSupport<T> support(tri);
     const EpaResult<T> epa = epaPenetration(convex_, support.shape());
     push.direction = -epa.normal;  // EPA's normal points from the shape to the triangle
     push.depth = epa.depth;
@@ -159,8 +159,8 @@ template <class T> TrianglePush<T> TriangleQueryShape<T>::pushOut(const Triangle
   return push;
 }
 
-template class TriangleSupport<float>;
-template class TriangleSupport<double>;
+template class SurfaceTriangleSupport<float>;
+template class SurfaceTriangleSupport<double>;
 template class TriangleQueryShape<float>;
 template class TriangleQueryShape<double>;
 

@@ -12,9 +12,9 @@ namespace gq::detail {
 
 // A triangle as a convex custom shape for GJK/EPA, in a frame centred on its centroid (keeps GJK's relative
 // precision when the triangle is far from the origin).
-template <class T> class TriangleSupport final : public CustomGeometryCallbacks<T> {
+template <class T> class SurfaceTriangleSupport final : public CustomGeometryCallbacks<T> {
  public:
-  explicit TriangleSupport(const Triangle<T>& worldTri);
+  explicit SurfaceTriangleSupport(const Triangle<T>& worldTri);
   const char* name() const override { return "triangle"; }
   Bounds3<T> localBounds() const override;
   Vec3<T> support(const Vec3<T>& dir) const override;
