@@ -74,12 +74,12 @@ std::vector<Row> summarize(const std::vector<CaseRecord>& records) {
 }
 
 void printTable(std::ostream& out, const std::vector<Row>& rows) {
-  out << std::left << std::setw(14) << "family" << std::setw(9) << "backend" << std::setw(7) << "prec" << std::right
+  out << std::left << std::setw(14) << "family" << std::setw(12) << "backend" << std::setw(7) << "prec" << std::right
       << std::setw(7) << "cases" << std::setw(9) << "answered" << std::setw(7) << "wrong" << std::setw(7) << "ambig"
       << std::setw(8) << ">tol" << std::setw(11) << "med err" << std::setw(11) << "max err" << std::setw(10)
       << "med ns" << '\n';
   for (const Row& r : rows) {
-    out << std::left << std::setw(14) << r.family << std::setw(9) << r.backend << std::setw(7) << r.precision
+    out << std::left << std::setw(14) << r.family << std::setw(12) << r.backend << std::setw(7) << r.precision
         << std::right << std::setw(7) << r.cases << std::setw(9) << r.answered << std::setw(7) << r.wrongBooleans
         << std::setw(7) << r.ambiguous << std::setw(8) << r.beyondTolerance << std::setw(11)
         << (r.withError ? sci(r.medianError) : "-") << std::setw(11) << (r.withError ? sci(r.maxError) : "-")
