@@ -33,21 +33,11 @@ class PointSuiteBuilder {
     emitBothPrecisions(j, group + "/" + name + "#" + std::to_string(count_++), out_);
   }
 
-  Placed target(Kind k) {
-    Placed t;
-    if (k == Kind::Mesh) t.shape = ellipsoidMesh(V3d(1.0, 0.8, 0.6), 1);
-    else t.shape = rng_.shape(k);
-    t.shape.kind = k;
-    t.pose.p = rng_.inBox(1.0);
-    t.pose.q = rng_.rotation();
-    return t;
-  }
-
   // Points in a box of twice the size around the shape: inside and outside.
   void random(const std::string& group, double shift) {
     for (Kind k : {Kind::Sphere, Kind::Capsule, Kind::Box, Kind::Convex, Kind::Mesh})
       for (int i = 0; i < options_.randomPoints; ++i) {
-        Placed t = target(k);
+        Placed t = rng_.placed(k);
         t.pose.p += rng_.unitVector() * shift;
         add(group, std::string(toJson(t.shape)["type"]), t, t.pose.p + rng_.inBox(2 * sizeOf(t.shape)));
       }
@@ -59,21 +49,21 @@ class PointSuiteBuilder {
       for (double sign : {-1.0, 1.0}) {
         const double delta = sign * rel;
         const std::string tag = (sign < 0 ? "-" : "+") + std::to_string(int(std::round(-std::log10(rel))));
-        Placed box = target(Kind::Box);
+        Placed box = rng_.placed(Kind::Box);
         const V3d h = box.shape.halfExtents;
         near(box, "box_face" + tag, V3d(h.x(), 0.2 * h.y(), -0.4 * h.z()), V3d::UnitX(), delta * sizeOf(box.shape));
-        Placed ball = target(Kind::Sphere);
+        Placed ball = rng_.placed(Kind::Sphere);
         const V3d n = rng_.unitVector();
         near(ball, "sphere" + tag, n * ball.shape.radius, n, delta * ball.shape.radius);
-        Placed cap = target(Kind::Capsule);
+        Placed cap = rng_.placed(Kind::Capsule);
         near(cap, "capsule_side" + tag, V3d(0.3 * cap.shape.halfHeight, 0, cap.shape.radius), V3d::UnitZ(),
              delta * sizeOf(cap.shape));
-        Placed hull = target(Kind::Convex);
+        Placed hull = rng_.placed(Kind::Convex);
         const V3d w = rng_.unitVector();
         V3d support = hull.shape.points[0];
         for (const V3d& p : hull.shape.points) if (p.dot(w) > support.dot(w)) support = p;
         near(hull, "convex_vertex" + tag, support, w, delta * sizeOf(hull.shape));
-        Placed mesh = target(Kind::Mesh);
+        Placed mesh = rng_.placed(Kind::Mesh);
         const auto& tri = mesh.shape.triangles[7];
         const V3d a = mesh.shape.points[tri[0]], b = mesh.shape.points[tri[1]], c = mesh.shape.points[tri[2]];
         near(mesh, "mesh_face" + tag, (a + b + c) / 3, (b - a).cross(c - a), std::abs(delta) * sizeOf(mesh.shape));

@@ -86,21 +86,11 @@ class RaySuiteBuilder {
     emitBothPrecisions(j, group + "/" + name + "#" + std::to_string(count_++), out_);
   }
 
-  Placed target(Kind k) {
-    Placed t;
-    if (k == Kind::Mesh) t.shape = ellipsoidMesh(V3d(1.0, 0.8, 0.6), 1);
-    else t.shape = rng_.shape(k);
-    t.shape.kind = k;
-    t.pose.p = rng_.inBox(1.0);
-    t.pose.q = rng_.rotation();
-    return t;
-  }
-
   // Random rays from 3 sizes away aimed at points of the bounding region: a mix of hits and misses.
   void random(const std::string& group, double shift) {
     for (Kind k : {Kind::Sphere, Kind::Capsule, Kind::Box, Kind::Convex, Kind::Plane, Kind::Mesh})
       for (int i = 0; i < options_.randomRays; ++i) {
-        Placed t = target(k);
+        Placed t = rng_.placed(k);
         const V3d s = rng_.unitVector() * shift;
         t.pose.p += s;
         const double size = k == Kind::Plane ? 1.0 : sizeOf(t.shape);
@@ -117,25 +107,25 @@ class RaySuiteBuilder {
       for (double sign : {-1.0, 1.0}) {
         const double delta = sign * rel;
         const std::string tag = (sign < 0 ? "-" : "+") + std::to_string(int(std::round(-std::log10(rel))));
-        Placed box = target(Kind::Box);
+        Placed box = rng_.placed(Kind::Box);
         const V3d h = box.shape.halfExtents;
         const double size = sizeOf(box.shape);
         graze(box, "box_edge" + tag, V3d(h.x(), h.y(), 0.3 * h.z()), V3d(1, 1, 0), V3d(-1, 1, 0), delta * size);
         graze(box, "box_vertex" + tag, h, V3d(1, 1, 1), V3d(1, -1, 0), delta * size);
-        Placed hull = target(Kind::Convex);
+        Placed hull = rng_.placed(Kind::Convex);
         const V3d w = rng_.unitVector();
         V3d support = hull.shape.points[0];
         for (const V3d& p : hull.shape.points) if (p.dot(w) > support.dot(w)) support = p;
         graze(hull, "convex_vertex" + tag, support, w, w.unitOrthogonal(), delta * sizeOf(hull.shape));
-        Placed ball = target(Kind::Sphere);
+        Placed ball = rng_.placed(Kind::Sphere);
         const V3d n = rng_.unitVector();
         graze(ball, "sphere_silhouette" + tag, n * ball.shape.radius, n, n.unitOrthogonal(), delta * ball.shape.radius);
-        Placed cap = target(Kind::Capsule);
+        Placed cap = rng_.placed(Kind::Capsule);
         graze(cap, "capsule_side" + tag, V3d(0.2 * cap.shape.halfHeight, cap.shape.radius, 0), V3d::UnitY(),
               V3d::UnitZ(), delta * sizeOf(cap.shape));
       }
     // Through the shared edges and vertices of a closed mesh, towards its centre: watertight meshes hit.
-    Placed mesh = target(Kind::Mesh);
+    Placed mesh = rng_.placed(Kind::Mesh);
     for (int i = 0; i < 4 * options_.orientations; ++i) {
       const auto& tri = mesh.shape.triangles[std::size_t(rng_.index(int(mesh.shape.triangles.size())))];
       const V3d a = mesh.shape.points[tri[0]], b = mesh.shape.points[tri[1]];
@@ -149,12 +139,12 @@ class RaySuiteBuilder {
 
   // Rays starting on the surface of a box, a sphere and a mesh: inward, outward, tangential and oblique.
   void onSurface() {
-    Placed box = target(Kind::Box);
+    Placed box = rng_.placed(Kind::Box);
     const V3d h = box.shape.halfExtents;
     const V3d local(h.x(), 0.3 * h.y(), -0.2 * h.z());
-    Placed ball = target(Kind::Sphere);
+    Placed ball = rng_.placed(Kind::Sphere);
     const V3d n = rng_.unitVector();
-    Placed mesh = target(Kind::Mesh);
+    Placed mesh = rng_.placed(Kind::Mesh);
     const auto& tri = mesh.shape.triangles[5];
     const V3d c = (mesh.shape.points[tri[0]] + mesh.shape.points[tri[1]] + mesh.shape.points[tri[2]]) / 3;
     const V3d mn = (mesh.shape.points[tri[1]] - mesh.shape.points[tri[0]])

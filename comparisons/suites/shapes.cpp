@@ -131,6 +131,15 @@ Eigen::Vector4d Random::rotation() {
   return q.normalized();
 }
 
+Placed Random::placed(Kind k) {
+  Placed t;
+  t.shape = k == Kind::Mesh ? ellipsoidMesh(V3d(1.0, 0.8, 0.6), 1) : shape(k);
+  t.shape.kind = k;
+  t.pose.p = inBox(1.0);
+  t.pose.q = rotation();
+  return t;
+}
+
 Shape Random::shape(Kind k) {
   Shape s;
   s.kind = k;

@@ -70,6 +70,8 @@ class Random {
   V3d unitVector();
   Eigen::Vector4d rotation();  // unit quaternion, uniform
   Shape shape(Kind k);         // well-proportioned, size about 0.3 .. 1.2
+  // A target for ray and point suites: shape(k) (meshes: a fixed ellipsoid mesh) at a random pose near the origin.
+  Placed placed(Kind k);
  private:
   std::mt19937_64 engine_;
 };
