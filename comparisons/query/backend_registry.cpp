@@ -7,6 +7,16 @@
 #include "gq_backend.h"
 #include "libccd_backend.h"
 
+// The adapters' rows (gq through ::fcl types, gq through Bullet's world) join when their backends are built.
+#if __has_include("gq_fcl_backend.h")
+#include "gq_fcl_backend.h"
+#define GQ_HAVE_FCL_ADAPTER_BACKEND 1
+#endif
+#if __has_include("gq_bullet_forward.h")
+#include "gq_bullet_forward.h"
+#define GQ_HAVE_BULLET_ADAPTER_BACKEND 1
+#endif
+
 namespace gq::cases {
 namespace {
 
@@ -20,6 +30,12 @@ const std::vector<std::pair<std::string, BackendFactory>>& registry() {
       {"libccd-mpr", [] { return std::unique_ptr<Backend>(new LibccdBackend(CcdPenetration::Mpr)); }},
       {"embree", [] { return std::unique_ptr<Backend>(new EmbreeBackend()); }},
       {"bullet", [] { return std::unique_ptr<Backend>(new BulletForwardingBackend()); }},
+#ifdef GQ_HAVE_FCL_ADAPTER_BACKEND
+      {"gq-fcl", [] { return std::unique_ptr<Backend>(new GqFclBackend()); }},
+#endif
+#ifdef GQ_HAVE_BULLET_ADAPTER_BACKEND
+      {"gq-bullet", [] { return std::unique_ptr<Backend>(new GqBulletForwardingBackend()); }},
+#endif
   };
   return entries;
 }
