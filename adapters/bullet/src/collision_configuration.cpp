@@ -1,0 +1,55 @@
+#include "gq/bullet/collision_configuration.h"
+
+#include <algorithm>
+
+#include "contact_algorithm.h"
+#include "shape_view.h"
+
+namespace gq::bullet {
+namespace {
+
+// Bullet sizes its algorithm pool from its own algorithms; make room for gq's (Bullet checks it only by assert).
+btDefaultCollisionConstructionInfo withGqElementSize(btDefaultCollisionConstructionInfo info) {
+  info.m_customCollisionAlgorithmMaxElementSize =
+      std::max(info.m_customCollisionAlgorithmMaxElementSize, int(sizeof(ContactAlgorithm)));
+  return info;
+}
+
+}  // namespace
+
+CollisionConfiguration::CollisionConfiguration(const btDefaultCollisionConstructionInfo& info)
+    : btDefaultCollisionConfiguration(withGqElementSize(info)),
+      contactCreateFunc_(new ContactCreateFunc(*this, false)),
+      closestPointsCreateFunc_(new ContactCreateFunc(*this, true)) {}
+
+CollisionConfiguration::~CollisionConfiguration() {
+  delete contactCreateFunc_;
+  delete closestPointsCreateFunc_;
+}
+
+bool CollisionConfiguration::routesToGq(int proxyType0, int proxyType1) {
+  return isGqShapeType(proxyType0) && isGqShapeType(proxyType1) &&
+         (isGqConvexType(proxyType0) || isGqConvexType(proxyType1));
+}
+
+btCollisionAlgorithmCreateFunc* CollisionConfiguration::getCollisionAlgorithmCreateFunc(int proxyType0,
+                                                                                        int proxyType1) {
+  return routesToGq(proxyType0, proxyType1) ? contactCreateFunc_
+                                            : bulletCreateFunc(proxyType0, proxyType1, false);
+}
+
+btCollisionAlgorithmCreateFunc* CollisionConfiguration::getClosestPointsAlgorithmCreateFunc(int proxyType0,
+                                                                                            int proxyType1) {
+  return routesToGq(proxyType0, proxyType1) ? closestPointsCreateFunc_
+                                            : bulletCreateFunc(proxyType0, proxyType1, true);
+}
+
+btCollisionAlgorithmCreateFunc* CollisionConfiguration::bulletCreateFunc(int proxyType0, int proxyType1,
+                                                                         bool closestPoints) {
+  return closestPoints ? btDefaultCollisionConfiguration::getClosestPointsAlgorithmCreateFunc(proxyType0, proxyType1)
+                       : btDefaultCollisionConfiguration::getCollisionAlgorithmCreateFunc(proxyType0, proxyType1);
+}
+
+std::size_t contactAlgorithmSize() { return sizeof(ContactAlgorithm); }
+
+}  // namespace gq::bullet

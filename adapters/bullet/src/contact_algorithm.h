@@ -1,0 +1,45 @@
+#pragma once
+// The gq contact algorithm as a Bullet collision algorithm, and the create function the configuration installs.
+#include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
+#include <BulletCollision/CollisionDispatch/btCollisionCreateFunc.h>
+
+namespace gq::bullet {
+
+class CollisionConfiguration;
+
+// Owns (or shares) a Bullet persistent manifold and refills it from gq's contacts every frame. It holds no other
+// state, so pairs can run on any thread (btCollisionDispatcherMt).
+class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
+ public:
+  ContactAlgorithm(btPersistentManifold* sharedManifold, const btCollisionAlgorithmConstructionInfo& ci,
+                   const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1);
+  ~ContactAlgorithm() override;
+
+  void processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                        const btDispatcherInfo& info, btManifoldResult* result) override;
+  // Discrete contacts only (continuous collision is left off, like Bullet's primitive algorithms).
+  btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
+                                 btManifoldResult*) override {
+    return btScalar(1);
+  }
+  void getAllContactManifolds(btManifoldArray& manifolds) override;
+
+ private:
+  btPersistentManifold* manifold_;
+  bool ownManifold_;
+};
+
+// Creates a ContactAlgorithm when both shapes convert to gq, otherwise Bullet's own algorithm for the pair.
+class ContactCreateFunc final : public btCollisionAlgorithmCreateFunc {
+ public:
+  ContactCreateFunc(CollisionConfiguration& config, bool closestPoints) : config_(config), closest_(closestPoints) {}
+  btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
+                                                 const btCollisionObjectWrapper* body0,
+                                                 const btCollisionObjectWrapper* body1) override;
+
+ private:
+  CollisionConfiguration& config_;
+  bool closest_;
+};
+
+}  // namespace gq::bullet

@@ -1,0 +1,43 @@
+#pragma once
+// Contact generation between two Bullet shapes seen through gq, in Bullet's conventions: normalOnB points from
+// shape B to shape A, the point lies on B, and depth < 0 is penetration (pointOnA = pointOnB + normalOnB * depth).
+#include "shape_view.h"
+
+namespace gq::bullet {
+
+// A shape placed in the world: pose is the world pose of the gq geometry (Bullet object pose * view.localPose).
+struct PlacedShape {
+  const ShapeView* view = nullptr;
+  Pose pose;
+};
+
+class ContactSink {
+ public:
+  virtual ~ContactSink() = default;
+  // `surfaceIds` names the triangle of a mesh or heightfield involved (part -1 otherwise); `surfaceIsB` says
+  // which of the two shapes it belongs to.
+  virtual void add(const V3& normalOnB, const V3& pointOnB, Real depth, TriangleIds surfaceIds, bool surfaceIsB) = 0;
+};
+
+// Presents the contacts of (B, A) as contacts of (A, B).
+class SwappedSink final : public ContactSink {
+ public:
+  explicit SwappedSink(ContactSink& inner) : inner_(inner) {}
+  void add(const V3& normalOnB, const V3& pointOnB, Real depth, TriangleIds ids, bool surfaceIsB) override {
+    inner_.add(-normalOnB, pointOnB + normalOnB * depth, depth, ids, !surfaceIsB);
+  }
+
+ private:
+  ContactSink& inner_;
+};
+
+// Contacts closer than `threshold` (depth <= threshold), for:
+//  - a convex shape A against a convex shape or plane B (signed distance, then face clipping for flat contacts);
+//  - a convex shape A against a triangle mesh or heightfield B (per-triangle contacts).
+void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
+void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
+
+// Any supported pair in either order (the surface or plane may be A or B); false if the pair has no gq path.
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
+
+}  // namespace gq::bullet

@@ -1,0 +1,26 @@
+// Routes a pair of placed shapes to the convex or surface contact generator, swapping the roles when the plane or
+// surface comes first.
+#include "contacts.h"
+
+namespace gq::bullet {
+
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
+  const ShapeKind ka = a.view->kind, kb = b.view->kind;
+  if (ka == ShapeKind::Convex && (kb == ShapeKind::Convex || kb == ShapeKind::Plane)) {
+    convexContacts(a, b, threshold, sink);
+    return true;
+  }
+  if (ka == ShapeKind::Convex) {
+    surfaceContacts(a, b, threshold, sink);
+    return true;
+  }
+  if (kb != ShapeKind::Convex) return false;
+  SwappedSink swapped(sink);
+  if (ka == ShapeKind::Plane)
+    convexContacts(b, a, threshold, swapped);
+  else
+    surfaceContacts(b, a, threshold, swapped);
+  return true;
+}
+
+}  // namespace gq::bullet

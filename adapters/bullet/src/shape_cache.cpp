@@ -1,0 +1,197 @@
+#include "shape_cache.h"
+
+#include <mutex>
+#include <unordered_map>
+
+#include "gq/bullet/collision_configuration.h"
+
+namespace gq::bullet {
+namespace {
+
+// One cache entry: what the data was cooked from (compared on every lookup) and the cooked data (null when
+// cooking failed, so a refused shape is not re-cooked every frame).
+struct Entry {
+  std::vector<double> fingerprint;
+  std::shared_ptr<const void> data;
+};
+
+class ShapeCache {
+ public:
+  template <class Cook>
+  std::shared_ptr<const void> get(const void* key, std::vector<double>&& fingerprint, Cook&& cook) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      auto it = entries_.find(key);
+      if (it != entries_.end() && it->second.fingerprint == fingerprint) return it->second.data;
+    }
+    std::shared_ptr<const void> data = cook();  // outside the lock: cooking may take milliseconds
+    std::lock_guard<std::mutex> lock(mutex_);
+    entries_[key] = Entry{std::move(fingerprint), data};
+    return data;
+  }
+  void clear() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    entries_.clear();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::unordered_map<const void*, Entry> entries_;
+};
+
+ShapeCache& cache() {
+  static ShapeCache instance;
+  return instance;
+}
+
+// Reads the protected layout fields of btHeightfieldTerrainShape through member pointers (no copy of its code).
+struct HeightFieldFields : btHeightfieldTerrainShape {
+  static int width(const btHeightfieldTerrainShape& s) { return s.*(&HeightFieldFields::m_heightStickWidth); }
+  static int length(const btHeightfieldTerrainShape& s) { return s.*(&HeightFieldFields::m_heightStickLength); }
+  static bool plainQuads(const btHeightfieldTerrainShape& s) {
+    return !(s.*(&HeightFieldFields::m_flipQuadEdges)) && !(s.*(&HeightFieldFields::m_useDiamondSubdivision)) &&
+           !(s.*(&HeightFieldFields::m_useZigzagSubdivision));
+  }
+  static const void* data(const btHeightfieldTerrainShape& s) {
+    return s.*(&HeightFieldFields::m_heightfieldDataUnknown);
+  }
+};
+
+struct MeshPart {
+  const unsigned char* vertexBase = nullptr;
+  int vertexCount = 0, vertexStride = 0, indexStride = 0, triangleCount = 0;
+  const unsigned char* indexBase = nullptr;
+  PHY_ScalarType vertexType = PHY_FLOAT, indexType = PHY_INTEGER;
+};
+
+MeshPart lockPart(const btStridingMeshInterface& mi, int part) {
+  MeshPart p;
+  mi.getLockedReadOnlyVertexIndexBase(&p.vertexBase, p.vertexCount, p.vertexType, p.vertexStride, &p.indexBase,
+                                      p.indexStride, p.triangleCount, p.indexType, part);
+  return p;
+}
+
+V3 partVertex(const MeshPart& p, std::uint32_t i) {
+  const unsigned char* v = p.vertexBase + std::size_t(i) * p.vertexStride;
+  if (p.vertexType == PHY_DOUBLE) {
+    const double* d = reinterpret_cast<const double*>(v);
+    return V3(Real(d[0]), Real(d[1]), Real(d[2]));
+  }
+  const float* f = reinterpret_cast<const float*>(v);
+  return V3(Real(f[0]), Real(f[1]), Real(f[2]));
+}
+
+std::uint32_t partIndex(const MeshPart& p, int triangle, int corner) {
+  const unsigned char* t = p.indexBase + std::size_t(triangle) * p.indexStride;
+  switch (p.indexType) {
+    case PHY_SHORT: return reinterpret_cast<const unsigned short*>(t)[corner];
+    case PHY_UCHAR: return t[corner];
+    default: return reinterpret_cast<const unsigned int*>(t)[corner];
+  }
+}
+
+std::shared_ptr<const void> cookMesh(const btStridingMeshInterface& mi) {
+  std::vector<V3> vertices;
+  std::vector<TriangleIndices> triangles;
+  auto starts = std::make_shared<std::vector<std::uint32_t>>();
+  for (int part = 0; part < mi.getNumSubParts(); ++part) {
+    const MeshPart p = lockPart(mi, part);
+    const auto base = static_cast<std::uint32_t>(vertices.size());
+    starts->push_back(static_cast<std::uint32_t>(triangles.size()));
+    for (int i = 0; i < p.vertexCount; ++i) vertices.push_back(partVertex(p, std::uint32_t(i)));
+    for (int t = 0; t < p.triangleCount; ++t)
+      triangles.push_back({base + partIndex(p, t, 0), base + partIndex(p, t, 1), base + partIndex(p, t, 2)});
+    mi.unLockReadOnlyVertexBase(part);
+  }
+  auto cooked = std::make_shared<CookedMesh>();
+  if (!cookTriangleMesh(vertices, triangles, cooked->mesh)) return nullptr;
+  cooked->partStarts = std::move(starts);
+  return cooked;
+}
+
+// gq's heightfield grid has rows along local X, columns along Z and heights along Y. Bullet's up axis u takes Y;
+// the remaining axes follow cyclically (X -> axis (u+2)%3, Z -> axis (u+1)%3) so the frame stays right-handed.
+// Bullet splits each quad along the diagonal (x, j+1)-(x+1, j), as gq does along (r, c+1)-(r+1, c), and that
+// diagonal is the same whichever grid index becomes the row.
+std::shared_ptr<const void> cookHeightFieldShape(const btHeightfieldTerrainShape& shape) {
+  const int u = shape.getUpAxis();
+  const int rowAxis = (u + 2) % 3, columnAxis = (u + 1) % 3;
+  const bool rowsAreX = (u == 1);
+  const int width = HeightFieldFields::width(shape), length = HeightFieldFields::length(shape);
+  auto out = std::make_shared<CookedHeightField>();
+  HeightFieldDesc<Real> desc;
+  desc.rows = std::uint32_t(rowsAreX ? width : length);
+  desc.columns = std::uint32_t(rowsAreX ? length : width);
+  desc.heights.resize(std::size_t(desc.rows) * desc.columns);
+  for (std::uint32_t r = 0; r < desc.rows; ++r) {
+    for (std::uint32_t c = 0; c < desc.columns; ++c) {
+      btVector3 v;
+      shape.getVertex(int(rowsAreX ? r : c), int(rowsAreX ? c : r), v);
+      desc.heights[std::size_t(r) * desc.columns + c] = v[u];
+    }
+  }
+  if (!cookHeightField(desc, out->heightField)) return nullptr;
+  btVector3 origin;
+  shape.getVertex(0, 0, origin);
+  Mat3<Real> axes = Mat3<Real>::Zero();
+  axes(rowAxis, 0) = axes(u, 1) = axes(columnAxis, 2) = Real(1);
+  V3 offset = V3::Zero();
+  offset[rowAxis] = origin[rowAxis];
+  offset[columnAxis] = origin[columnAxis];
+  out->localPose = Pose(offset, Quat<Real>(axes));
+  out->rowScale = shape.getLocalScaling()[rowAxis];
+  out->columnScale = shape.getLocalScaling()[columnAxis];
+  out->rowsAreX = rowsAreX;
+  return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const ConvexMesh<Real>> cachedHull(const btConvexHullShape& shape) {
+  const int n = shape.getNumPoints();
+  std::vector<double> fingerprint;
+  fingerprint.reserve(std::size_t(n) * 3 + 1);
+  fingerprint.push_back(n);
+  const btVector3* points = shape.getUnscaledPoints();
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) fingerprint.push_back(points[i][k]);
+  auto data = cache().get(&shape, std::move(fingerprint), [&]() -> std::shared_ptr<const void> {
+    std::vector<V3> pts;
+    for (int i = 0; i < n; ++i) pts.push_back(toGq(points[i]));
+    std::shared_ptr<const ConvexMesh<Real>> hull;
+    if (!cookConvexMesh(pts, hull)) return nullptr;
+    return hull;
+  });
+  return std::static_pointer_cast<const ConvexMesh<Real>>(data);
+}
+
+bool cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
+  std::vector<double> fingerprint{double(mi.getNumSubParts())};
+  for (int part = 0; part < mi.getNumSubParts(); ++part) {
+    const MeshPart p = lockPart(mi, part);
+    fingerprint.insert(fingerprint.end(), {double(reinterpret_cast<std::uintptr_t>(p.vertexBase)),
+                                           double(reinterpret_cast<std::uintptr_t>(p.indexBase)),
+                                           double(p.vertexCount), double(p.triangleCount)});
+    mi.unLockReadOnlyVertexBase(part);
+  }
+  auto data = cache().get(&mi, std::move(fingerprint), [&] { return cookMesh(mi); });
+  if (!data) return false;
+  out = *static_cast<const CookedMesh*>(data.get());
+  return true;
+}
+
+bool cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out) {
+  const btVector3& s = shape.getLocalScaling();
+  if (!HeightFieldFields::plainQuads(shape) || !(s.x() > 0 && s.y() > 0 && s.z() > 0)) return false;
+  std::vector<double> fingerprint{double(reinterpret_cast<std::uintptr_t>(HeightFieldFields::data(shape))),
+                                  double(HeightFieldFields::width(shape)), double(HeightFieldFields::length(shape)),
+                                  double(shape.getUpAxis()), s.x(), s.y(), s.z()};
+  auto data = cache().get(&shape, std::move(fingerprint), [&] { return cookHeightFieldShape(shape); });
+  if (!data) return false;
+  out = *static_cast<const CookedHeightField*>(data.get());
+  return true;
+}
+
+void clearShapeCache() { cache().clear(); }
+
+}  // namespace gq::bullet

@@ -1,0 +1,140 @@
+// Convex shape against a triangle mesh or heightfield: the triangles under the shape's bounds (gq's midphase),
+// then contacts per triangle (gq's generateTriangleContacts; GJK against the triangle for cylinders and cones).
+// Triangles are two-sided, as Bullet's convex-triangle contacts are.
+#include <array>
+
+#include "contacts.h"
+#include "gq/contacts.h"
+#include "gq/custom.h"
+#include "gq/mesh_query.h"
+#include "gq/query.h"
+
+namespace gq::bullet {
+namespace {
+
+// Triangles come in pages of this many from the midphase.
+constexpr std::uint32_t kTrianglePage = 64;
+// generateTriangleContacts keeps the face normal when it is within this fraction of the shape size of the
+// closest-feature separation (flat resting contacts stay flat).
+constexpr Real kMeshContactMarginFactor = Real(0.05);
+
+// A world-space triangle as a convex custom shape, for GJK against shapes generateTriangleContacts does not take.
+class TriangleShape final : public CustomGeometryCallbacks<Real> {
+ public:
+  explicit TriangleShape(const Triangle<Real>& t) : t_(t) {}
+  const char* name() const override { return "bullet-adapter-triangle"; }
+  Bounds3<Real> localBounds() const override {
+    Bounds3<Real> b;
+    for (const V3& v : t_.verts) b.include(v);
+    return b;
+  }
+  V3 support(const V3& dir) const override {
+    int best = 0;
+    for (int i = 1; i < 3; ++i)
+      if (t_.verts[i].dot(dir) > t_.verts[best].dot(dir)) best = i;
+    return t_.verts[best];
+  }
+  // Two-sided ray-triangle test (Moller-Trumbore); not used by the contact path but part of the contract.
+  bool raycast(const V3& origin, const V3& dir, Real maxDist, HitFlags, RaycastHit<Real>& hit) const override {
+    const V3 e1 = t_.verts[1] - t_.verts[0], e2 = t_.verts[2] - t_.verts[0];
+    const V3 p = dir.cross(e2);
+    const Real det = e1.dot(p);
+    if (det == Real(0)) return false;
+    const V3 s = origin - t_.verts[0];
+    const Real u = s.dot(p) / det;
+    const V3 q = s.cross(e1);
+    const Real v = dir.dot(q) / det;
+    const Real t = e2.dot(q) / det;
+    if (u < 0 || v < 0 || u + v > 1 || t < 0 || t > maxDist) return false;
+    hit.distance = t;
+    hit.position = origin + dir * t;
+    hit.normal = e1.cross(e2).normalized();
+    if (hit.normal.dot(dir) > 0) hit.normal = -hit.normal;
+    hit.flags = HitFlag::Position | HitFlag::Normal;
+    return true;
+  }
+
+ private:
+  Triangle<Real> t_;
+};
+
+struct SurfaceQuery {
+  const PlacedShape& convex;
+  const PlacedShape& surface;
+  Real threshold;
+  ContactSink& sink;
+};
+
+bool getSurfaceTriangle(const PlacedShape& s, std::uint32_t index, Triangle<Real>& tri) {
+  const Geometry<Real>& g = s.view->geom;
+  if (const auto* mesh = g.getIf<TriangleMeshGeometry<Real>>()) return getTriangle(*mesh, s.pose, index, tri).ok();
+  return getTriangle(g.get<HeightFieldGeometry<Real>>(), s.pose, index, tri).ok();
+}
+
+// Reports one contact of the convex shape (point on its core surface, normal from the triangle to it).
+void report(const SurfaceQuery& q, const V3& pointOnConvex, const V3& normal, Real separation, std::uint32_t index) {
+  const Real depth = separation - q.convex.view->margin - q.surface.view->margin;
+  if (!(depth <= q.threshold)) return;
+  const V3 pointOnA = pointOnConvex - normal * q.convex.view->margin;
+  q.sink.add(normal, pointOnA - normal * depth, depth, q.surface.view->triangleIds(index), true);
+}
+
+void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry<Real>& contactGeom) {
+  Triangle<Real> tri;
+  if (!getSurfaceTriangle(q.surface, index, tri)) return;
+  const Real reach = q.threshold + q.convex.view->margin + q.surface.view->margin;
+  const Real size = q.convex.view->size;
+  if (contactGeom.type() != GeometryType::Custom) {
+    ContactBuffer<Real> buffer;
+    bool has = false;
+    if (!generateTriangleContacts(contactGeom, q.convex.pose, tri, index, std::max(reach, Real(0)),
+                                  kMeshContactMarginFactor * size, size, buffer, has).ok())
+      return;
+    for (std::uint32_t i = 0; i < buffer.count; ++i)
+      report(q, buffer.contacts[i].position, buffer.contacts[i].normal, buffer.contacts[i].separation, index);
+    return;
+  }
+  const Geometry<Real> triangle = CustomGeometry<Real>(std::make_shared<TriangleShape>(tri));
+  DistanceResult<Real> d;
+  if (!distance(d, contactGeom, q.convex.pose, triangle, Pose(), static_cast<GjkCache<Real>*>(nullptr)).ok()) return;
+  const V3 normal = -d.normal;
+  if (isFinite(normal) && normal.squaredNorm() > Real(0.5)) report(q, d.point0, normal, d.distance, index);
+}
+
+// generateTriangleContacts takes capsules, boxes and hulls: a sphere is a capsule of zero length.
+Geometry<Real> contactGeometry(const Geometry<Real>& g) {
+  if (const auto* s = g.getIf<SphereGeometry<Real>>()) return CapsuleGeometry<Real>(s->radius, Real(0));
+  return g;
+}
+
+Status overlappingTriangles(const PlacedShape& surface, const Geometry<Real>& box, const Pose& boxPose,
+                            std::uint32_t* page, std::uint32_t start, bool& more, std::uint32_t& count) {
+  const Geometry<Real>& g = surface.view->geom;
+  if (const auto* mesh = g.getIf<TriangleMeshGeometry<Real>>())
+    return findOverlapTriangleMesh(box, boxPose, *mesh, surface.pose, page, kTrianglePage, start, more, count);
+  return findOverlapHeightField(box, boxPose, g.get<HeightFieldGeometry<Real>>(), surface.pose, page, kTrianglePage,
+                                start, more, count);
+}
+
+}  // namespace
+
+void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
+  Bounds3<Real> bounds;
+  const Real reach = std::max(threshold, Real(0)) + a.view->margin + b.view->margin;
+  if (!computeGeomBounds(bounds, a.view->geom, a.pose, reach, Real(1)).ok()) return;
+  const Geometry<Real> box = BoxGeometry<Real>(bounds.extents());
+  const Pose boxPose(bounds.center());
+  const Geometry<Real> contactGeom = contactGeometry(a.view->geom);
+  const SurfaceQuery q{a, b, threshold, sink};
+  std::array<std::uint32_t, kTrianglePage> page;
+  bool more = true;
+  for (std::uint32_t start = 0; more;) {
+    std::uint32_t count = 0;
+    if (!overlappingTriangles(b, box, boxPose, page.data(), start, more, count).ok()) return;
+    for (std::uint32_t i = 0; i < count; ++i) triangleContacts(q, page[i], contactGeom);
+    start += count;
+    if (count == 0) break;
+  }
+}
+
+}  // namespace gq::bullet

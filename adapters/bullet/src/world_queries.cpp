@@ -1,0 +1,195 @@
+// rayTest and convexSweepTest through gq: Bullet's broadphase finds the candidate objects, gq answers per object.
+#include <BulletCollision/CollisionShapes/btConvexShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
+
+#include "gq/bullet/collision_world.h"
+#include "gq/query.h"
+#include "shape_view.h"
+
+namespace gq::bullet {
+namespace {
+
+using RayCallback = btCollisionWorld::RayResultCallback;
+using SweepCallback = btCollisionWorld::ConvexResultCallback;
+
+// Bullet's broadphase ray walk reads the inverse unit direction, its signs and the ray length.
+void prepareRay(btBroadphaseRayCallback& cb, const btVector3& from, const btVector3& to) {
+  btVector3 dir = to - from;
+  dir.normalize();
+  for (int i = 0; i < 3; ++i) {
+    cb.m_rayDirectionInverse[i] = dir[i] == btScalar(0) ? btScalar(BT_LARGE_FLOAT) : btScalar(1) / dir[i];
+    cb.m_signs[i] = cb.m_rayDirectionInverse[i] < btScalar(0);
+  }
+  cb.m_lambda_max = dir.dot(to - from);
+}
+
+bool isSurface(const ShapeView& v) { return v.kind == ShapeKind::Mesh || v.kind == ShapeKind::HeightField; }
+
+// Rounding radius a query sees: only convex shapes carry Bullet's outside margin into rays and sweeps.
+Real roundingOf(const ShapeView& v) { return v.kind == ShapeKind::Convex ? v.margin : Real(0); }
+
+struct Hit {
+  Real distance = 0;
+  V3 normal = V3::Zero();
+  V3 position = V3::Zero();
+  std::uint32_t face = kInvalidFaceIndex;
+};
+
+// A ray against a rounded shape is a sphere of the rounding radius swept against its core.
+bool castRay(const V3& origin, const V3& dir, Real maxDist, const ShapeView& view, const Pose& pose, bool twoSided,
+             Hit& out) {
+  const Real rounding = roundingOf(view);
+  if (rounding > Real(0)) {
+    SweepHit<Real> h;
+    bool has = false;
+    if (!sweep(dir, maxDist, Geometry<Real>(SphereGeometry<Real>(rounding)), Pose(origin), view.geom, pose, h, has,
+               HitFlag::Position | HitFlag::Normal)
+             .ok() ||
+        !has)
+      return false;
+    out = Hit{h.distance, h.normal, origin + dir * h.distance, kInvalidFaceIndex};
+    return true;
+  }
+  HitFlags flags = HitFlag::Position | HitFlag::Normal | HitFlag::FaceIndex;
+  if (twoSided && isSurface(view)) flags |= HitFlag::MeshBothSides;
+  RaycastHit<Real> h;
+  std::uint32_t n = 0;
+  if (!raycast(origin, dir, view.geom, pose, maxDist, flags, 1, &h, n).ok() || n == 0) return false;
+  out = Hit{h.distance, h.normal, h.position, h.faceIndex};
+  return true;
+}
+
+class RayVisitor final : public btBroadphaseRayCallback {
+ public:
+  RayVisitor(const btVector3& from, const btVector3& to, RayCallback& cb) : from_(from), to_(to), cb_(cb) {
+    fromT_.setIdentity();
+    fromT_.setOrigin(from);
+    toT_.setIdentity();
+    toT_.setOrigin(to);
+    prepareRay(*this, from, to);
+  }
+  bool process(const btBroadphaseProxy* proxy) override {
+    if (cb_.m_closestHitFraction == btScalar(0)) return false;
+    auto* object = static_cast<btCollisionObject*>(proxy->m_clientObject);
+    if (!cb_.needsCollision(object->getBroadphaseHandle())) return true;
+    ShapeView view;
+    if (!makeShapeView(object->getCollisionShape(), view)) {
+      btCollisionWorld::rayTestSingle(fromT_, toT_, object, object->getCollisionShape(), object->getWorldTransform(),
+                                      cb_);
+      return true;
+    }
+    const V3 delta = toGq(to_ - from_);
+    const Real length = delta.norm();
+    if (!(length > Real(0))) return true;
+    const bool twoSided = (cb_.m_flags & btTriangleRaycastCallback::kF_FilterBackfaces) == 0;
+    const Pose pose = toGq(object->getWorldTransform()) * view.localPose;
+    Hit hit;
+    if (!castRay(toGq(from_), delta / length, length * cb_.m_closestHitFraction, view, pose, twoSided, hit)) return true;
+    const Real fraction = hit.distance / length;
+    if (!(fraction < cb_.m_closestHitFraction)) return true;
+    btCollisionWorld::LocalShapeInfo info;
+    const TriangleIds ids = view.triangleIds(hit.face);
+    info.m_shapePart = ids.part;
+    info.m_triangleIndex = ids.index;
+    btCollisionWorld::LocalRayResult result(object, isSurface(view) ? &info : nullptr, toBt(hit.normal), fraction);
+    cb_.addSingleResult(result, true);
+    return true;
+  }
+
+ private:
+  btVector3 from_, to_;
+  btTransform fromT_, toT_;
+  RayCallback& cb_;
+};
+
+class SweepVisitor final : public btBroadphaseRayCallback {
+ public:
+  SweepVisitor(const btConvexShape* cast, const btTransform& from, const btTransform& to, SweepCallback& cb,
+               btScalar allowedPenetration)
+      : cast_(cast), from_(from), to_(to), cb_(cb), allowed_(allowedPenetration) {
+    castOk_ = makeShapeView(cast, castView_) && castView_.kind == ShapeKind::Convex;
+    prepareRay(*this, from.getOrigin(), to.getOrigin());
+  }
+  bool process(const btBroadphaseProxy* proxy) override {
+    if (cb_.m_closestHitFraction == btScalar(0)) return false;
+    auto* object = static_cast<btCollisionObject*>(proxy->m_clientObject);
+    if (!cb_.needsCollision(object->getBroadphaseHandle())) return true;
+    ShapeView target;
+    const V3 delta = toGq(to_.getOrigin() - from_.getOrigin());
+    const Real length = delta.norm();
+    if (!castOk_ || !(length > Real(0)) || !makeShapeView(object->getCollisionShape(), target)) {
+      btCollisionWorld::objectQuerySingle(cast_, from_, to_, object, object->getCollisionShape(),
+                                          object->getWorldTransform(), cb_, allowed_);
+      return true;
+    }
+    HitFlags flags = HitFlag::Position | HitFlag::Normal | HitFlag::FaceIndex;
+    if (isSurface(target)) flags |= HitFlag::MeshBothSides;
+    SweepHit<Real> hit;
+    bool has = false;
+    const Pose castPose = toGq(from_) * castView_.localPose;
+    const Pose targetPose = toGq(object->getWorldTransform()) * target.localPose;
+    if (!sweep(V3(delta / length), length * cb_.m_closestHitFraction, castView_.geom, castPose, target.geom,
+               targetPose, hit, has, flags, roundingOf(castView_) + roundingOf(target))
+             .ok() ||
+        !has)
+      return true;
+    const Real fraction = hit.distance / length;
+    if (!(fraction < cb_.m_closestHitFraction)) return true;
+    btCollisionWorld::LocalShapeInfo info;
+    const TriangleIds ids = target.triangleIds(hit.faceIndex);
+    info.m_shapePart = ids.part;
+    info.m_triangleIndex = ids.index;
+    btCollisionWorld::LocalConvexResult result(object, isSurface(target) ? &info : nullptr, toBt(hit.normal),
+                                               toBt(hit.position), fraction);
+    cb_.addSingleResult(result, true);
+    return true;
+  }
+
+ private:
+  const btConvexShape* cast_;
+  ShapeView castView_;
+  bool castOk_ = false;
+  btTransform from_, to_;
+  SweepCallback& cb_;
+  btScalar allowed_;
+};
+
+btBroadphaseInterface* broadphaseOf(const btCollisionWorld& world) {
+  return const_cast<btBroadphaseInterface*>(world.getBroadphase());  // Bullet's const queries walk it the same way
+}
+
+}  // namespace
+
+void gqRayTest(const btCollisionWorld& world, const btVector3& from, const btVector3& to, RayCallback& cb) {
+  RayVisitor visitor(from, to, cb);
+  broadphaseOf(world)->rayTest(from, to, visitor);
+}
+
+void gqConvexSweepTest(const btCollisionWorld& world, const btConvexShape* castShape, const btTransform& from,
+                       const btTransform& to, SweepCallback& cb, btScalar allowedCcdPenetration) {
+  if (!castShape) return;
+  // The broadphase walks the swept box of the cast shape's bounds at the `from` rotation.
+  btTransform rotation(from.getBasis(), btVector3(0, 0, 0));
+  btVector3 aabbMin, aabbMax;
+  castShape->getAabb(rotation, aabbMin, aabbMax);
+  SweepVisitor visitor(castShape, from, to, cb, allowedCcdPenetration);
+  broadphaseOf(world)->rayTest(from.getOrigin(), to.getOrigin(), visitor, aabbMin, aabbMax);
+}
+
+void CollisionWorld::rayTest(const btVector3& from, const btVector3& to, RayResultCallback& cb) const {
+  gqRayTest(*this, from, to, cb);
+}
+void CollisionWorld::convexSweepTest(const btConvexShape* castShape, const btTransform& from, const btTransform& to,
+                                     ConvexResultCallback& cb, btScalar allowedCcdPenetration) const {
+  gqConvexSweepTest(*this, castShape, from, to, cb, allowedCcdPenetration);
+}
+void DiscreteDynamicsWorld::rayTest(const btVector3& from, const btVector3& to, RayResultCallback& cb) const {
+  gqRayTest(*this, from, to, cb);
+}
+void DiscreteDynamicsWorld::convexSweepTest(const btConvexShape* castShape, const btTransform& from,
+                                            const btTransform& to, ConvexResultCallback& cb,
+                                            btScalar allowedCcdPenetration) const {
+  gqConvexSweepTest(*this, castShape, from, to, cb, allowedCcdPenetration);
+}
+
+}  // namespace gq::bullet
