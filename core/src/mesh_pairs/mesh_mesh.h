@@ -1,8 +1,9 @@
 #pragma once
 // Dual BVH traversal of two triangle-mesh instances: visits the pairs of triangles whose world boxes, grown by
 // `margin`, overlap. At each step the node with the larger box is split (so both trees descend at the same pace),
-// and a child is pushed only when its box still meets the other side's box. Inline template: the pair callable is
-// inlined into the leaf loop.
+// and a child is pushed only when it still meets the other side's node on the six face axes: the frame's axes
+// (callers put mesh A's frame there, so A's boxes are exact) and B's mesh axes (A's box mapped into B's mesh space
+// against B's own node box). Inline template: the pair callable is inlined into the leaf loop.
 #include <vector>
 
 #include "mesh_pairs/surface.h"
@@ -15,10 +16,22 @@ template <class T> T boxVolume(const Bounds3<T>& b) {
   return e.x() * e.y() * e.z();
 }
 
+// Volume of the intersection of two boxes (0 when they are apart).
+template <class T> T sharedVolume(const Bounds3<T>& a, const Bounds3<T>& b) {
+  const Vec3<T> e = (a.max.cwiseMin(b.max) - a.min.cwiseMax(b.min)).cwiseMax(Vec3<T>::Zero());
+  return e.x() * e.y() * e.z();
+}
+
 // The world box of a BVH reference: the mesh's bounds for the root, else the box stored in its parent's lane.
 template <class T> struct BvhPairEntry {
   std::uint32_t refA, refB;
   Bounds3<T> boxA, boxB;
+};
+
+// Node pair of the boolean traversal: also B's node box in B's mesh space, for the test on B's axes.
+template <class T> struct BvhOverlapEntry {
+  std::uint32_t refA, refB;
+  Bounds3<T> boxA, boxB, localB;
 };
 
 // fn(cookedA, triA, cookedB, triB) returns true to stop; returns whether it stopped.
@@ -28,15 +41,20 @@ bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T mar
   const Bvh4& bvhB = b.mesh().bvh;
   if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return false;
   const auto meets = [margin](const Bounds3<T>& x, const Bounds3<T>& y) { return grown(x, margin).overlaps(y); };
-  std::vector<BvhPairEntry<T>> stack;
+  // A's box against B's node on both sets of face axes (a separating plane on either set proves the nodes apart).
+  const auto nodesMeet = [&](const Bounds3<T>& boxA, const Bounds3<T>& boxB, const Bounds3<T>& localB) {
+    return meets(boxA, boxB) && b.toLocalBox(grown(boxA, margin)).overlaps(localB);
+  };
+  std::vector<BvhOverlapEntry<T>> stack;
   stack.reserve(128);
-  const Bounds3<T> rootA = a.worldBounds(), rootB = b.worldBounds();
-  if (!meets(rootA, rootB)) return false;
-  stack.push_back({bvhA.rootChild, bvhB.rootChild, rootA, rootB});
+  // Root boxes from the cooked mesh-space bounds (one box map each, not a pass over the hull vertices).
+  const Bounds3<T> rootA = a.toWorldBox(a.mesh().localBounds), rootB = b.toWorldBox(b.mesh().localBounds);
+  if (!nodesMeet(rootA, rootB, b.mesh().localBounds)) return false;
+  stack.push_back({bvhA.rootChild, bvhB.rootChild, rootA, rootB, b.mesh().localBounds});
   Triangle<T> trisA[Bvh4Node::kMaxLeafSize], trisB[Bvh4Node::kMaxLeafSize];
   Bounds3<T> boxesA[Bvh4Node::kMaxLeafSize], boxesB[Bvh4Node::kMaxLeafSize];
   while (!stack.empty()) {
-    const BvhPairEntry<T> e = stack.back();
+    const BvhOverlapEntry<T> e = stack.back();
     stack.pop_back();
     const bool leafA = Bvh4Node::isLeaf(e.refA), leafB = Bvh4Node::isLeaf(e.refB);
     if (leafA && leafB) {
@@ -55,22 +73,36 @@ bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T mar
           if (meets(boxesA[i], boxesB[j]) && fn(firstA + i, trisA[i], firstB + j, trisB[j])) return true;
       continue;
     }
+    // Split the larger box; children are pushed so that the one sharing the most volume with the other side is
+    // popped first (a boolean query ends at the first intersecting pair, which deep overlaps reach sooner).
     const bool splitA = !leafA && (leafB || boxVolume(e.boxA) >= boxVolume(e.boxB));
-    if (splitA) {
-      const Bvh4Node& node = bvhA.nodes[e.refA];
-      for (int lane = 0; lane < 4; ++lane) {
-        if (node.child[lane] == Bvh4Node::kEmpty) continue;
-        const Bounds3<T> box = a.childWorldBounds(node, lane);
-        if (meets(box, e.boxB)) stack.push_back({node.child[lane], e.refB, box, e.boxB});
+    const Bvh4Node& node = splitA ? bvhA.nodes[e.refA] : bvhB.nodes[e.refB];
+    BvhOverlapEntry<T> children[4];
+    T shared[4];
+    int n = 0;
+    for (int lane = 0; lane < 4; ++lane) {
+      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+      BvhOverlapEntry<T> c = e;
+      if (splitA) {
+        c.refA = node.child[lane];
+        c.boxA = a.childWorldBounds(node, lane);
+      } else {
+        c.refB = node.child[lane];
+        c.localB = MeshSurface<T>::childLocalBounds(node, lane);
+        c.boxB = b.toWorldBox(c.localB);
       }
-    } else {
-      const Bvh4Node& node = bvhB.nodes[e.refB];
-      for (int lane = 0; lane < 4; ++lane) {
-        if (node.child[lane] == Bvh4Node::kEmpty) continue;
-        const Bounds3<T> box = b.childWorldBounds(node, lane);
-        if (meets(e.boxA, box)) stack.push_back({e.refA, node.child[lane], e.boxA, box});
+      if (!nodesMeet(c.boxA, c.boxB, c.localB)) continue;
+      const T v = sharedVolume(c.boxA, c.boxB);
+      int j = n++;
+      while (j > 0 && shared[j - 1] > v) {  // ascending: the largest ends on top of the stack
+        children[j] = children[j - 1];
+        shared[j] = shared[j - 1];
+        --j;
       }
+      children[j] = c;
+      shared[j] = v;
     }
+    for (int i = 0; i < n; ++i) stack.push_back(children[i]);
   }
   return false;
 }
@@ -94,7 +126,7 @@ template <class T> MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, c
   };
   std::vector<Entry> stack;
   stack.reserve(128);
-  const Bounds3<T> rootA = a.worldBounds(), rootB = b.worldBounds();
+  const Bounds3<T> rootA = a.toWorldBox(a.mesh().localBounds), rootB = b.toWorldBox(b.mesh().localBounds);
   stack.push_back({{bvhA.rootChild, bvhB.rootChild, rootA, rootB}, boxDistanceSq(rootA, rootB)});
   while (!stack.empty() && best.distSq > T(0)) {
     const Entry e = stack.back();

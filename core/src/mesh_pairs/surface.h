@@ -59,7 +59,10 @@ template <class T> T boxDistanceSq(const Bounds3<T>& a, const Bounds3<T>& b) {
 template <class T> class MeshSurface {
  public:
   MeshSurface(const TriangleMeshGeometry<T>& g, const Transform<T>& pose)
-      : geom_(g), inst_(g, pose), linear_(pose.q.toRotationMatrix() * inst_.scale) {}
+      : geom_(g),
+        inst_(g, pose),
+        linear_(pose.q.toRotationMatrix() * inst_.scale),
+        invLinear_(inst_.invScale * pose.q.toRotationMatrix().transpose()) {}
 
   const TriangleMesh<T>& mesh() const { return inst_.mesh; }
   Bounds3<T> worldBounds() const { return boundsTriangleMesh(geom_, inst_.pose); }
@@ -75,12 +78,18 @@ template <class T> class MeshSurface {
     return t;
   }
 
-  // World AABB of child `lane` of a BVH node (the node's mesh-space box through scale and pose).
-  Bounds3<T> childWorldBounds(const Bvh4Node& n, int lane) const {
-    const Bounds3<T> local = Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
-                                                    Vec3<T>(T(n.maxX[lane]), T(n.maxY[lane]), T(n.maxZ[lane])));
-    return mapBox(local, linear_, inst_.pose.p);
+  // Mesh-space box of child `lane` of a BVH node.
+  static Bounds3<T> childLocalBounds(const Bvh4Node& n, int lane) {
+    return Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
+                                  Vec3<T>(T(n.maxX[lane]), T(n.maxY[lane]), T(n.maxZ[lane])));
   }
+
+  // World AABB of child `lane` of a BVH node (the node's mesh-space box through scale and pose).
+  Bounds3<T> childWorldBounds(const Bvh4Node& n, int lane) const { return toWorldBox(childLocalBounds(n, lane)); }
+  Bounds3<T> toWorldBox(const Bounds3<T>& local) const { return mapBox(local, linear_, inst_.pose.p); }
+
+  // Mesh-space AABB of a world box: x_mesh = linear^-1 (x - p), linear^-1 = S^-1 R^T.
+  Bounds3<T> toLocalBox(const Bounds3<T>& world) const { return mapBox(world, invLinear_, Vec3<T>(-(invLinear_ * inst_.pose.p))); }
 
   // Mesh-space box containing the world box: its 8 corners through pose^-1 and S^-1.
   Bounds3<T> toMeshSpace(const Bounds3<T>& world) const {
@@ -121,7 +130,8 @@ template <class T> class MeshSurface {
  private:
   const TriangleMeshGeometry<T>& geom_;
   MeshInstance<T> inst_;
-  Mat3<T> linear_;  // rotation * S: mesh space -> world, before translation
+  Mat3<T> linear_;     // rotation * S: mesh space -> world, before translation
+  Mat3<T> invLinear_;  // S^-1 * rotation^T
 };
 
 template <class T> class HeightFieldSurface {
