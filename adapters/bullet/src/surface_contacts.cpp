@@ -3,6 +3,7 @@
 // Triangles are two-sided, as Bullet's convex-triangle contacts are.
 #include <array>
 
+#include "contact_features.h"
 #include "contacts.h"
 #include "gq/contacts.h"
 #include "gq/custom.h"
@@ -79,6 +80,22 @@ void report(const SurfaceQuery& q, const V3& pointOnConvex, const V3& normal, Re
   q.sink.add(normal, pointOnA - normal * depth, depth, q.surface.view->triangleIds(index), true);
 }
 
+// A flat cap or side resting on the triangle's face: the incident feature clipped to the triangle (GJK alone
+// would give one point per frame and let a standing cylinder rock).
+int faceContacts(const SurfaceQuery& q, const Triangle<Real>& tri, const V3& normal, std::uint32_t index) {
+  Feature face, incident;
+  face.count = 3;
+  for (int i = 0; i < 3; ++i) face.points[i] = tri.verts[i];
+  face.normal = tri.normal();
+  if (face.normal.dot(normal) < 0) face.normal = -face.normal;  // two-sided: the side facing the shape
+  face.origin = tri.verts[0];
+  if (face.normal.dot(normal) < kFaceAlignmentCos || !incidentFeature(q.convex, -face.normal, incident)) return 0;
+  clipToFace(face, incident);
+  for (int i = 0; i < incident.count; ++i)
+    report(q, incident.points[i], face.normal, (incident.points[i] - face.origin).dot(face.normal), index);
+  return incident.count;
+}
+
 void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry<Real>& contactGeom) {
   Triangle<Real> tri;
   if (!getSurfaceTriangle(q.surface, index, tri)) return;
@@ -98,7 +115,8 @@ void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry
   DistanceResult<Real> d;
   if (!distance(d, contactGeom, q.convex.pose, triangle, Pose(), static_cast<GjkCache<Real>*>(nullptr)).ok()) return;
   const V3 normal = -d.normal;
-  if (isFinite(normal) && normal.squaredNorm() > Real(0.5)) report(q, d.point0, normal, d.distance, index);
+  if (!isFinite(normal) || normal.squaredNorm() < Real(0.5)) return;
+  if (faceContacts(q, tri, normal, index) == 0) report(q, d.point0, normal, d.distance, index);
 }
 
 // generateTriangleContacts takes capsules, boxes and hulls: a sphere is a capsule of zero length.
