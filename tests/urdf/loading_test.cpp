@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "gq/cooking.h"
+#include "gq/custom_shapes.h"
 #include "robot_paths.h"
 
 namespace gq::urdf::test {
@@ -141,21 +142,35 @@ TYPED_TEST(UrdfLoading, MeshScaleStretchesEachAxis) {
   EXPECT_NEAR(m.shapes[0].origin.p.z(), T(1.5), tol);
 }
 
-TYPED_TEST(UrdfLoading, CylinderIsTheInscribedPrismWithItsSagittaReported) {
+// A URDF cylinder (axis Z) is gq's exact custom Cylinder (axis X) turned onto Z: no polygonal approximation, so a
+// ball grazing the rim between where a 64-gon prism's vertices would be touches it, and error 0 is reported.
+TYPED_TEST(UrdfLoading, CylinderIsTheExactCustomCylinderAlongZ) {
   using T = TypeParam;
   RobotModel<T> m;
   ASSERT_TRUE(loadString(oneLinkUrdf("<cylinder radius=\"0.1\" length=\"0.4\"/>"), "", m).ok());
   ASSERT_EQ(m.shapes.size(), 1u);
   const Shape<T>& shape = m.shapes[0];
   EXPECT_EQ(shape.source, ShapeSource::Cylinder);
-  const auto* hull = shape.geometry.template getIf<ConvexMeshGeometry<T>>();
-  ASSERT_NE(hull, nullptr);
-  EXPECT_EQ(hull->mesh->vertices.size(), 2u * kCylinderSegments);
-  for (const auto& v : hull->mesh->vertices) {
-    EXPECT_NEAR(std::hypot(double(v.x()), double(v.y())), 0.1, 1e-6);
-    EXPECT_NEAR(std::abs(double(v.z())), 0.2, 1e-6);
-  }
-  EXPECT_NEAR(double(shape.error.meshToApproximation), 0.1 * (1 - std::cos(M_PI / 64)), 1e-9);
+  const auto* custom = shape.geometry.template getIf<CustomGeometry<T>>();
+  ASSERT_NE(custom, nullptr);
+  const auto* cylinder = dynamic_cast<const CylinderCallbacks<T>*>(custom->callbacks.get());
+  ASSERT_NE(cylinder, nullptr);
+  const T tol = T(50) * std::numeric_limits<T>::epsilon();
+  EXPECT_NEAR(cylinder->radius(), T(0.1), tol);
+  EXPECT_NEAR(cylinder->halfHeight(), T(0.2), tol);
+  EXPECT_NEAR(std::abs(shape.origin.rotate(Vec3<T>::UnitX()).z()), T(1), tol) << "custom X axis = URDF Z axis";
+  EXPECT_EQ(shape.error.meshToApproximation, T(0));
+  EXPECT_EQ(shape.error.approximationToMesh, T(0));
+  // Ball of radius 0.01 centred at angle pi/64 (mid-edge of a 64-gon) at radial distance 0.11 - 3e-5: it overlaps
+  // the true cylinder by 3e-5 but clears the prism by sagitta - 3e-5 = 0.1 (1 - cos(pi/64)) - 3e-5 = 9e-5.
+  const double angle = M_PI / 64, radial = 0.11 - 3e-5;
+  const Transform<T> ball(Vec3<T>(T(radial * std::cos(angle)), T(radial * std::sin(angle)), T(0.1)));
+  bool hit = false;
+  ASSERT_TRUE(overlap(shape.geometry, shape.origin, Geometry<T>(SphereGeometry<T>(T(0.01))), ball, hit).ok());
+  EXPECT_TRUE(hit);
+  const Transform<T> beyondCap(Vec3<T>(T(0), T(0), T(0.2 + 0.01 + 1e-4)));
+  ASSERT_TRUE(overlap(shape.geometry, shape.origin, Geometry<T>(SphereGeometry<T>(T(0.01))), beyondCap, hit).ok());
+  EXPECT_FALSE(hit);
 }
 
 }  // namespace

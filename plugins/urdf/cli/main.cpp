@@ -68,7 +68,7 @@ int runInfo(const CommonOptions& o) {
     std::printf("  %-20s %-9s as %-14s src tris %6u  model faces %5u  err %.5f / %.5f  %7.1f KiB  %s\n",
                 m->links[sh.link].name.c_str(), toString(sh.source),
                 sh.source == ShapeSource::Mesh ? toString(sh.representation)
-                : sh.source == ShapeSource::Cylinder ? "64-gon prism" : toString(sh.source),
+                : sh.source == ShapeSource::Cylinder ? "exact cylinder" : toString(sh.source),
                 sh.sourceTriangles, sh.modelTriangles, double(sh.error.meshToApproximation),
                 double(sh.error.approximationToMesh), sh.bytes / 1024.0, sh.file.c_str());
   std::size_t checked = 0, allowed = 0;
@@ -79,8 +79,7 @@ int runInfo(const CommonOptions& o) {
     }
   std::printf("\nlink pairs with shapes: %zu checked, %zu allowed (adjacent / same link / SRDF)\nhome: %s\n", checked,
               allowed, m->homeSource.c_str());
-  std::printf("cylinders: hull of a %u-gon prism, radial error r(1-cos(pi/%u)) = %.3g r\n", kCylinderSegments,
-              kCylinderSegments, 1.0 - std::cos(M_PI / kCylinderSegments));
+  std::printf("cylinders: exact (gq custom Cylinder), error 0\n");
   return 0;
 }
 
@@ -188,50 +187,90 @@ std::string machineName() {
 
 // Checks per second over `qs`, or a negative value with the status when the backend cannot answer.
 template <class Check> double checksPerSecond(const std::vector<std::vector<double>>& qs, Check&& check, gq::Status& s) {
+  CollisionResult r;
   const auto t0 = Clock::now();
   for (const auto& q : qs) {
-    CollisionResult r;
     s = check(q, r);
     if (!s.ok()) return -1;
   }
   return double(qs.size()) / std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-int runBench(const CommonOptions& o, std::size_t n, std::uint64_t seed, const std::string& csv) {
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct BenchOptions {
+  std::size_t n = 2000, repetitions = 5;
+  std::uint64_t seed = 1;
+  std::string csv;
+  std::vector<std::string> modes{"mesh", "hull", "best-primitive"};
+  std::vector<std::string> backends{"gq", "fcl"};
+};
+
+// One backend's median rate (negative: unsupported, with the status).
+struct BenchRow {
+  std::string backend;
+  double rate = -1;
+  gq::Status status;
+};
+
+// Median over `repetitions` timed runs of the same configurations; gq and FCL alternate within each repetition so
+// that machine noise hits both alike.
+int runBench(const CommonOptions& o, const BenchOptions& b) {
   std::ofstream out;
-  if (!csv.empty()) {
-    const bool fresh = !std::ifstream(csv).good();
-    out.open(csv, std::ios::app);
+  if (!b.csv.empty()) {
+    const bool fresh = !std::ifstream(b.csv).good();
+    out.open(b.csv, std::ios::app);
     if (fresh) out << "date,machine,mode,backend,checks_per_s,ratio\n";  // mode = <robot>:<representation>
   }
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
   const std::string machine = machineName();
-  std::printf("%-15s %-8s %14s %10s\n", "mode", "backend", "checks/s", "gq/fcl");
-  for (const char* mode : {"mesh", "hull", "best-primitive"}) {
+  const bool withGq = std::count(b.backends.begin(), b.backends.end(), "gq") > 0;
+  const bool withFcl = std::count(b.backends.begin(), b.backends.end(), "fcl") > 0;
+  std::printf("%-15s %-8s %14s %10s   (median of %zu runs of %zu configurations)\n", "mode", "backend",
+              "checks/s", "gq/fcl", b.repetitions, b.n);
+  for (const std::string& mode : b.modes) {
     std::shared_ptr<const RobotModel<double>> m;
     if (gq::Status s = load(o, mode, m); !s.ok()) return fail(s);
-    std::uint64_t rng = seed;
+    std::uint64_t rng = b.seed;
     std::vector<std::vector<double>> qs;
-    for (std::size_t i = 0; i < n; ++i) qs.push_back(randomConfiguration(*m, rng));
+    for (std::size_t i = 0; i < b.n; ++i) qs.push_back(randomConfiguration(*m, rng));
     CollisionRequest first;
     first.allPairs = false;
     SelfCollisionChecker<double> gqChecker(m);
     std::unique_ptr<FclSelfCollisionChecker> fclChecker;
-    if (gq::Status s = FclSelfCollisionChecker::create(m, fclChecker); !s.ok()) return fail(s);
-    gq::Status sg, sf;
-    const double gqRate = checksPerSecond(qs, [&](auto& q, auto& r) { return gqChecker.checkSelfCollision(q, r, first); }, sg);
-    const double fclRate = checksPerSecond(qs, [&](auto& q, auto& r) { return fclChecker->checkSelfCollision(q, r, first); }, sf);
-    const double ratio = gqRate > 0 && fclRate > 0 ? gqRate / fclRate : 0;
-    for (auto [backend, rate, st] : {std::tuple{"gq", gqRate, sg}, std::tuple{"fcl", fclRate, sf}}) {
-      if (rate > 0) std::printf("%-15s %-8s %14.0f %10s\n", mode, backend, rate,
-                                std::string(backend) == "gq" ? std::to_string(ratio).substr(0, 5).c_str() : "");
-      else std::printf("%-15s %-8s %14s  (%s)\n", mode, backend, "n/a", st.message.c_str());
+    if (withFcl)
+      if (gq::Status s = FclSelfCollisionChecker::create(m, fclChecker); !s.ok()) return fail(s);
+    BenchRow gqRow{"gq"}, fclRow{"fcl"};
+    std::vector<double> gqRates, fclRates;
+    for (std::size_t rep = 0; rep < b.repetitions; ++rep) {
+      if (withGq)
+        gqRates.push_back(checksPerSecond(qs, [&](auto& q, auto& r) { return gqChecker.checkSelfCollision(q, r, first); },
+                                          gqRow.status));
+      if (withFcl)
+        fclRates.push_back(checksPerSecond(
+            qs, [&](auto& q, auto& r) { return fclChecker->checkSelfCollision(q, r, first); }, fclRow.status));
+    }
+    if (withGq) gqRow.rate = gqRow.status.ok() ? median(gqRates) : -1;
+    if (withFcl) fclRow.rate = fclRow.status.ok() ? median(fclRates) : -1;
+    const double ratio = gqRow.rate > 0 && fclRow.rate > 0 ? gqRow.rate / fclRow.rate : 0;
+    for (const BenchRow* row : {&gqRow, &fclRow}) {
+      if (!(row->backend == "gq" ? withGq : withFcl)) continue;
+      const bool isGq = row->backend == "gq";
+      if (row->rate > 0)
+        std::printf("%-15s %-8s %14.0f %10s\n", mode.c_str(), row->backend.c_str(), row->rate,
+                    isGq && ratio > 0 ? std::to_string(ratio).substr(0, 5).c_str() : "");
+      else
+        std::printf("%-15s %-8s %14s  (%s)\n", mode.c_str(), row->backend.c_str(), "n/a", row->status.message.c_str());
       if (out.is_open())
-        out << date << "," << machine << "," << m->name << ":" << mode << "," << backend << ","
-            << (rate > 0 ? std::to_string(rate) : "unsupported") << ","
-            << (std::string(backend) == "gq" ? std::to_string(ratio) : "1") << "\n";
+        out << date << "," << machine << "," << m->name << ":" << mode << "," << row->backend << ","
+            << (row->rate > 0 ? std::to_string(row->rate) : "unsupported") << ","
+            << (isGq ? std::to_string(ratio) : "1") << "\n";
     }
   }
   return 0;
@@ -246,9 +285,10 @@ int main(int argc, char** argv) {
   auto* info = app.add_subcommand("info", "links, joints, shapes, triangle counts, approximation errors, memory");
   addCommon(*info, common);
   std::string config;
-  std::size_t random = 0, benchN = 2000;
+  std::size_t random = 0;
+  BenchOptions benchOptions;
   std::uint64_t seed = 1, samples = 10000;
-  std::string out, csv;
+  std::string out;
   auto* check = app.add_subcommand("check", "self-collision of one configuration (JSON) or of N random ones");
   addCommon(*check, common);
   check->add_option("--config", config, "JSON: [q0, q1, ...] or {\"joint\": value}; default: the home pose");
@@ -261,15 +301,19 @@ int main(int argc, char** argv) {
   never->add_option("--out", out, "SRDF file to write (default: stdout)");
   auto* bench = app.add_subcommand("bench", "checks/s in mesh, hull and primitive modes, gq next to FCL");
   addCommon(*bench, common);
-  bench->add_option("--n", benchN, "random configurations per mode");
-  bench->add_option("--seed", seed, "random seed");
-  bench->add_option("--csv", csv, "append rows to this CSV");
+  bench->add_option("--n", benchOptions.n, "random configurations per mode");
+  bench->add_option("--seed", benchOptions.seed, "random seed");
+  bench->add_option("--repetitions", benchOptions.repetitions, "timed runs per backend; the median is reported")
+      ->check(CLI::PositiveNumber);
+  bench->add_option("--modes", benchOptions.modes, "representations to time (default: mesh hull best-primitive)");
+  bench->add_option("--backends", benchOptions.backends, "gq and/or fcl (default: both)");
+  bench->add_option("--csv", benchOptions.csv, "append rows (median rates) to this CSV");
   CLI11_PARSE(app, argc, argv);
   try {
     if (*info) return runInfo(common);
     if (*check) return runCheck(common, config, random, seed);
     if (*never) return runNever(common, samples, seed, out);
-    if (*bench) return runBench(common, benchN, seed, csv);
+    if (*bench) return runBench(common, benchOptions);
   } catch (const std::exception& e) {
     std::cerr << "gq-urdf: " << e.what() << "\n";
     return 1;

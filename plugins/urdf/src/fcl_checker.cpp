@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gq/cooking.h"
+#include "gq/custom_shapes.h"
 
 namespace gq::urdf {
 
@@ -39,6 +40,11 @@ std::shared_ptr<fcl::CollisionGeometryd> meshToFcl(const TriangleMesh<double>& m
   return model;
 }
 
+const CylinderCallbacks<double>* cylinderOf(const Geometry<double>& g) {
+  const auto* custom = g.getIf<CustomGeometry<double>>();
+  return custom ? dynamic_cast<const CylinderCallbacks<double>*>(custom->callbacks.get()) : nullptr;
+}
+
 Status toFcl(const Shape<double>& shape, std::shared_ptr<fcl::CollisionGeometryd>& out, fcl::Transform3d& offset) {
   offset = fcl::Transform3d::Identity();
   const Geometry<double>& g = shape.geometry;
@@ -46,6 +52,9 @@ Status toFcl(const Shape<double>& shape, std::shared_ptr<fcl::CollisionGeometryd
   else if (auto* b = g.getIf<BoxGeometry<double>>()) out = std::make_shared<fcl::Boxd>(2.0 * b->halfExtents);
   else if (auto* c = g.getIf<CapsuleGeometry<double>>()) {
     out = std::make_shared<fcl::Capsuled>(c->radius, 2.0 * c->halfHeight);
+    offset.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  } else if (auto* cyl = cylinderOf(g)) {
+    out = std::make_shared<fcl::Cylinderd>(cyl->radius(), 2.0 * cyl->halfHeight());
     offset.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   } else if (auto* h = g.getIf<ConvexMeshGeometry<double>>()) out = convexToFcl(*h->mesh);
   else if (auto* m = g.getIf<TriangleMeshGeometry<double>>()) out = meshToFcl(*m->mesh);

@@ -36,8 +36,8 @@ Status parseSrdf(const std::string& xml, SrdfData& out);
 
 // ---- Shapes (cylinder.cpp, mesh_shape.cpp, approximation_error.cpp) -------------------------------------------
 template <class T> std::size_t hullBytes(const ConvexMesh<T>& hull);
-// The convex hull of the `segments`-gon prism inscribed in a cylinder along local Z (URDF convention).
-template <class T> Status cylinderShape(T radius, T length, std::uint32_t segments, Shape<T>& shape);
+// The exact custom Cylinder for a URDF cylinder along local Z; `fit` turns the custom shape's X axis onto Z.
+template <class T> Status cylinderShape(T radius, T length, Shape<T>& shape, Transform<T>& fit);
 
 // Fills shape.geometry and the fit's pose relative to the collision element frame (`fit`), per representation.
 template <class T>
@@ -48,6 +48,10 @@ Status meshShape(const MeshData<T>& mesh, Representation rep, const LoadOptions&
 template <class T>
 Status measureApproximationError(const MeshData<T>& mesh, const Geometry<T>& approximation, const Transform<T>& fit,
                                  const LoadOptions& options, ApproximationError<T>& error);
+
+// ---- Culling volumes (shape_bounds.cpp) ----------------------------------------------------------------------
+// Local AABB and an enclosing sphere (centre, radius) of a shape in its own frame.
+template <class T> Status shapeLocalBounds(const Geometry<T>& g, Bounds3<T>& box, Vec3<T>& centre, T& radius);
 
 // ---- Model semantics (allowed_collisions.cpp) ---------------------------------------------------------------
 // Fills model.allowed/allowedReason (adjacent links across fixed joints and shapeless links, same link, SRDF)

@@ -31,14 +31,20 @@ template <class T> Status checkConfiguration(const RobotModel<T>& model, const s
   return {};
 }
 
-template <class T> Transform<T> jointMotion(const Joint<T>& j, T value) {
+// origin * motion(value): a rotation by `value` about the unit axis is the quaternion (cos v/2, sin v/2 axis), so
+// only the rotation part changes; a prismatic joint moves along the axis expressed in the parent frame.
+template <class T> Transform<T> jointTransform(const Joint<T>& j, T value) {
   switch (j.type) {
     case JointType::Revolute:
-    case JointType::Continuous: return Transform<T>(Vec3<T>::Zero(), Quat<T>(Eigen::AngleAxis<T>(value, j.axis)));
-    case JointType::Prismatic: return Transform<T>(j.axis * value);
+    case JointType::Continuous: {
+      const T half = T(0.5) * value, c = std::cos(half), s = std::sin(half);
+      const Quat<T> motion(c, s * j.axis.x(), s * j.axis.y(), s * j.axis.z());
+      return Transform<T>(j.origin.p, j.origin.q * motion);
+    }
+    case JointType::Prismatic: return Transform<T>(j.origin.p + j.origin.q * (j.axis * value), j.origin.q);
     case JointType::Fixed: break;
   }
-  return Transform<T>();
+  return j.origin;
 }
 
 }  // namespace
@@ -53,7 +59,7 @@ Status forwardKinematics(const RobotModel<T>& model, const std::vector<T>& q, st
     T value = T(0);
     if (j.variable >= 0) value = q[std::size_t(j.variable)];
     if (j.mimicJoint >= 0) value = j.multiplier * q[std::size_t(model.joints[std::size_t(j.mimicJoint)].variable)] + j.offset;
-    linkPoses[j.childLink] = linkPoses[j.parentLink] * j.origin * jointMotion(j, value);
+    linkPoses[j.childLink] = linkPoses[j.parentLink] * jointTransform(j, value);
   }
   return {};
 }

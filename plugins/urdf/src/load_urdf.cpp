@@ -51,6 +51,12 @@ Status parseUrdfModel(const std::string& xml, ::urdf::ModelInterfaceSharedPtr& m
     thrown = e.what();
   }
   console_bridge::restorePreviousOutputHandler();
+  // urdfdom drops a <collision> it cannot parse (NaN or "abc" sizes, non-finite origins) and still returns a model:
+  // the robot would silently lose a collision body, so any collision error fails the load.
+  if (model && log.messages.find("collision") != std::string::npos) {
+    model.reset();
+    return Status::parseError("malformed URDF: " + log.messages);
+  }
   if (model) return {};
   std::string why = !thrown.empty() ? thrown : log.messages;
   return Status::parseError("malformed URDF: " + (why.empty() ? std::string("urdfdom rejected the document") : why));
@@ -119,7 +125,7 @@ Status collisionElement(const ::urdf::Collision& c, const std::string& linkName,
     }
     case ::urdf::Geometry::CYLINDER: {
       const auto& cyl = static_cast<const ::urdf::Cylinder&>(g);
-      s = detail::cylinderShape(T(cyl.radius), T(cyl.length), kCylinderSegments, shape);
+      s = detail::cylinderShape(T(cyl.radius), T(cyl.length), shape, fit);
       break;
     }
     case ::urdf::Geometry::MESH: s = meshElement(static_cast<const ::urdf::Mesh&>(g), baseDir, options, shape, fit); break;

@@ -1,10 +1,10 @@
-// Self-collision and self-distance: forward kinematics places every shape; the broadphase sorts the links with
-// shapes by the x of their world AABB and sweeps (an AABB pair overlaps only if its x-intervals do), keeping pairs
-// that the allowed-collision matrix does not exclude; the narrow phase tests shape pairs whose world AABBs and
-// oriented boxes (the shape's local AABB carried by its pose) overlap.
-// Narrow phase: gq::overlap for primitive pairs (closed forms); for pairs with a convex hull the sign of the GJK
-// distance, warm-started per shape pair, because the core's hull overlap runs SAT over all edge pairs, O(E^2 V),
-// which costs ~100x more on the 200-300 face hulls of real robot links.
+// Self-collision and self-distance. Everything that does not depend on the configuration is done once: the link
+// pairs the allowed-collision matrix leaves (checkedPairs_), an enclosing sphere per shape and per link (in the link
+// frame) and each shape's local AABB. Per configuration: forward kinematics, world sphere centres (one rotation
+// each), then for each checked link pair the link spheres, the shape spheres, the shapes' oriented boxes (15-axis
+// SAT) and only then the narrow phase, gq::overlap (GJK boolean for hulls and custom cylinders, exact kernels for
+// primitives, dual BVH for meshes). Full shape poses are computed lazily, for shapes that reach the oriented-box
+// test. No allocation per check once the buffers have grown.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,10 +15,17 @@
 namespace gq::urdf {
 namespace {
 
-// Euclidean distance between two AABBs (0 when they overlap): a lower bound of any distance between their contents.
-template <class T> T boundsDistance(const Bounds3<T>& a, const Bounds3<T>& b) {
-  const Vec3<T> gap = (a.min - b.max).cwiseMax(b.min - a.max).cwiseMax(Vec3<T>::Zero());
-  return gap.norm();
+// Culling compares world placements computed in T: spheres and boxes grow by this many ulps of the robot's size so
+// that rounding never culls a touching pair (touching counts as colliding).
+constexpr double kCullSlackUlps = 64.0;
+
+// Lower bound of the distance between two shapes from their enclosing spheres (0 when the spheres overlap).
+template <class T> T sphereGap(const Vec3<T>& ca, T ra, const Vec3<T>& cb, T rb) {
+  return std::max(T(0), (ca - cb).norm() - ra - rb);
+}
+
+template <class T> bool spheresOverlap(const Vec3<T>& ca, T ra, const Vec3<T>& cb, T rb) {
+  return (ca - cb).squaredNorm() <= (ra + rb) * (ra + rb);
 }
 
 // Oriented boxes (centre c, rotation columns r, half extents e, all world) are disjoint when one of the 15 axes of
@@ -44,75 +51,114 @@ template <class T> bool orientedBoxesDisjoint(const OrientedBox<T>& a, const Ori
   return false;
 }
 
+// Length scale of the robot: the sum of its joint offsets (bounds any link origin's distance from the root) plus
+// the largest shape sphere.
+template <class T> T robotSize(const RobotModel<T>& model, T largestShape) {
+  T size = largestShape;
+  for (const auto& j : model.joints) size += j.origin.p.norm() + (j.type == JointType::Prismatic ? std::max(std::abs(j.lower), std::abs(j.upper)) : T(0));
+  return size;
+}
+
 }  // namespace
 
 template <class T>
 SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model) : model_(std::move(model)) {
-  linkPoses_.resize(model_->links.size());
-  shapePoses_.resize(model_->shapes.size());
-  shapeBounds_.resize(model_->shapes.size());
-  linkBounds_.resize(model_->links.size());
-  caches_.resize(model_->shapes.size() * model_->shapes.size());
-  localBounds_.resize(model_->shapes.size());
-  shapeBoxes_.resize(model_->shapes.size());
-  for (std::size_t i = 0; i < model_->shapes.size(); ++i)
-    if (!computeGeomBounds(localBounds_[i], model_->shapes[i].geometry, Transform<T>(), T(0), T(1)).ok())
-      localBounds_[i] = Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>::Constant(T(0)));  // the narrow phase reports the invalid geometry
-  for (std::uint32_t i = 0; i < model_->links.size(); ++i)
-    if (!model_->links[i].shapes.empty()) order_.push_back(i);
+  const RobotModel<T>& m = *model_;
+  const std::size_t links = m.links.size(), shapes = m.shapes.size();
+  shapeBounds_.resize(shapes);
+  T largest = T(0);
+  for (std::size_t i = 0; i < shapes; ++i) {
+    ShapeBound& b = shapeBounds_[i];
+    Vec3<T> centre;
+    if (!detail::shapeLocalBounds(m.shapes[i].geometry, b.local, centre, b.radius).ok()) {
+      // Invalid geometry: a point bound, so that the pair reaches the narrow phase, which reports it.
+      b.local = Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>::Zero());
+      centre.setZero();
+      b.radius = T(0);
+    }
+    b.centreInLink = m.shapes[i].origin.transform(centre);
+    largest = std::max(largest, b.centreInLink.norm() + b.radius);
+  }
+  slack_ = T(kCullSlackUlps) * std::numeric_limits<T>::epsilon() * robotSize(m, largest);
+  for (auto& b : shapeBounds_) {
+    b.radius += slack_;
+    b.local = Bounds3<T>::fromCenterExtents(b.local.center(), b.local.extents().array() + slack_);
+  }
+  linkCentreInLink_.assign(links, Vec3<T>::Zero());
+  linkRadius_.assign(links, T(0));
+  for (std::size_t l = 0; l < links; ++l) {
+    const auto& own = m.links[l].shapes;
+    if (own.empty()) continue;
+    Bounds3<T> centres;
+    for (std::uint32_t s : own) centres.include(shapeBounds_[s].centreInLink);
+    linkCentreInLink_[l] = centres.center();
+    for (std::uint32_t s : own)
+      linkRadius_[l] = std::max(linkRadius_[l], (shapeBounds_[s].centreInLink - linkCentreInLink_[l]).norm() +
+                                                    shapeBounds_[s].radius);
+  }
+  for (std::uint32_t a = 0; a < links; ++a)
+    for (std::uint32_t b = a + 1; b < links; ++b)
+      if (!m.links[a].shapes.empty() && !m.links[b].shapes.empty() && !m.isAllowed(a, b)) checkedPairs_.push_back({a, b});
+  linkPoses_.resize(links);
+  linkCentres_.resize(links);
+  shapeCentres_.resize(shapes);
+  shapePoses_.resize(shapes);
+  shapeBoxes_.resize(shapes);
+  placedStamp_.assign(shapes, 0);
+  candidates_.reserve(checkedPairs_.size());
 }
 
-template <class T> Status SelfCollisionChecker<T>::placeShapes(const std::vector<T>& q) {
+template <class T> Status SelfCollisionChecker<T>::placeLinks(const std::vector<T>& q) {
   Status s = forwardKinematics(*model_, q, linkPoses_);
   if (!s.ok()) return s;
-  for (std::uint32_t l : order_) linkBounds_[l] = Bounds3<T>();
-  for (std::size_t i = 0; i < model_->shapes.size(); ++i) {
-    const Shape<T>& shape = model_->shapes[i];
-    shapePoses_[i] = linkPoses_[shape.link] * shape.origin;
-    shapeBoxes_[i].axes = shapePoses_[i].q.toRotationMatrix();
-    shapeBoxes_[i].centre = shapePoses_[i].transform(localBounds_[i].center());
-    shapeBoxes_[i].halfExtents = localBounds_[i].extents();
-    shapeBounds_[i] = Bounds3<T>::fromCenterExtents(shapeBoxes_[i].centre,
-                                                    shapeBoxes_[i].axes.cwiseAbs() * shapeBoxes_[i].halfExtents);
-    linkBounds_[shape.link].include(shapeBounds_[i]);
+  if (++stamp_ == 0) {  // wrapped: forget every placement
+    std::fill(placedStamp_.begin(), placedStamp_.end(), 0u);
+    stamp_ = 1;
   }
+  for (std::size_t l = 0; l < linkPoses_.size(); ++l)
+    if (linkRadius_[l] > T(0)) linkCentres_[l] = linkPoses_[l].transform(linkCentreInLink_[l]);
+  for (std::size_t i = 0; i < shapeBounds_.size(); ++i)
+    shapeCentres_[i] = linkPoses_[model_->shapes[i].link].transform(shapeBounds_[i].centreInLink);
   return {};
 }
 
+template <class T> void SelfCollisionChecker<T>::placeShape(std::uint32_t i) {
+  if (placedStamp_[i] == stamp_) return;
+  placedStamp_[i] = stamp_;
+  const Shape<T>& shape = model_->shapes[i];
+  shapePoses_[i] = linkPoses_[shape.link] * shape.origin;
+  OrientedBox<T>& box = shapeBoxes_[i];
+  box.axes = shapePoses_[i].q.toRotationMatrix();
+  box.centre = shapePoses_[i].p + box.axes * shapeBounds_[i].local.center();
+  box.halfExtents = shapeBounds_[i].local.extents();
+}
+
 template <class T> void SelfCollisionChecker<T>::broadphase() {
-  std::sort(order_.begin(), order_.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return linkBounds_[a].min.x() < linkBounds_[b].min.x(); });
   candidates_.clear();
-  for (std::size_t i = 0; i < order_.size(); ++i) {
-    const Bounds3<T>& bi = linkBounds_[order_[i]];
-    for (std::size_t j = i + 1; j < order_.size() && linkBounds_[order_[j]].min.x() <= bi.max.x(); ++j) {
-      const std::uint32_t a = order_[i], b = order_[j];
-      if (!model_->isAllowed(a, b) && bi.overlaps(linkBounds_[b])) candidates_.push_back({std::min(a, b), std::max(a, b)});
-    }
-  }
-  std::sort(candidates_.begin(), candidates_.end());
+  for (const LinkPair& p : checkedPairs_)
+    if (spheresOverlap(linkCentres_[p.a], linkRadius_[p.a], linkCentres_[p.b], linkRadius_[p.b])) candidates_.push_back(p);
+}
+
+template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa, std::uint32_t sb) {
+  if (!spheresOverlap(shapeCentres_[sa], shapeBounds_[sa].radius, shapeCentres_[sb], shapeBounds_[sb].radius))
+    return false;
+  placeShape(sa);
+  placeShape(sb);
+  return !orientedBoxesDisjoint(shapeBoxes_[sa], shapeBoxes_[sb]);
 }
 
 template <class T> Status SelfCollisionChecker<T>::narrowPhase(std::uint32_t sa, std::uint32_t sb, bool& hit) {
-  const Geometry<T>& ga = model_->shapes[sa].geometry;
-  const Geometry<T>& gb = model_->shapes[sb].geometry;
-  if (ga.type() != GeometryType::ConvexMesh && gb.type() != GeometryType::ConvexMesh)
-    return overlap(ga, shapePoses_[sa], gb, shapePoses_[sb], hit);
-  DistanceResult<T> d;
-  Status s = distance(d, ga, shapePoses_[sa], gb, shapePoses_[sb], &caches_[std::size_t(sa) * shapePoses_.size() + sb]);
-  if (s.ok()) hit = d.distance <= T(0);  // touching counts as colliding, as gq::overlap
-  return s;
+  return overlap(model_->shapes[sa].geometry, shapePoses_[sa], model_->shapes[sb].geometry, shapePoses_[sb], hit);
 }
 
 template <class T> Status SelfCollisionChecker<T>::collide(const CollisionRequest& request, CollisionResult& result) {
-  CollisionResult out;
   lastNarrow_ = 0;
+  hits_.clear();
   for (const LinkPair& pair : candidates_) {
     bool hit = false;
     for (std::uint32_t sa : model_->links[pair.a].shapes) {
       for (std::uint32_t sb : model_->links[pair.b].shapes) {
-        if (!shapeBounds_[sa].overlaps(shapeBounds_[sb]) || orientedBoxesDisjoint(shapeBoxes_[sa], shapeBoxes_[sb]))
-          continue;
+        if (!shapesMayTouch(sa, sb)) continue;
         ++lastNarrow_;
         Status s = narrowPhase(sa, sb, hit);
         if (!s.ok()) return s;
@@ -121,18 +167,18 @@ template <class T> Status SelfCollisionChecker<T>::collide(const CollisionReques
       if (hit) break;
     }
     if (!hit) continue;
-    out.colliding = true;
-    out.pairs.push_back(pair);
+    hits_.push_back(pair);
     if (!request.allPairs) break;
   }
-  result = std::move(out);
+  result.colliding = !hits_.empty();
+  result.pairs.assign(hits_.begin(), hits_.end());  // reuses the caller's capacity
   return {};
 }
 
 template <class T>
 Status SelfCollisionChecker<T>::checkSelfCollision(const std::vector<T>& q, CollisionResult& result,
                                                    const CollisionRequest& request) {
-  Status s = placeShapes(q);
+  Status s = placeLinks(q);
   if (!s.ok()) return s;
   broadphase();
   return collide(request, result);
@@ -154,22 +200,20 @@ Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::v
   return {};
 }
 
-// Every checked shape pair, nearest AABBs first so the best distance found early prunes the rest by bounds.
+// Every checked shape pair, nearest enclosing spheres first, so the best distance found early prunes the rest.
 template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result) {
-  Status s = placeShapes(q);
+  Status s = placeLinks(q);
   if (!s.ok()) return s;
   struct Candidate {
     T bound;
     std::uint32_t sa, sb;
   };
   std::vector<Candidate> pairs;
-  for (std::uint32_t a = 0; a < model_->links.size(); ++a)
-    for (std::uint32_t b = a + 1; b < model_->links.size(); ++b) {
-      if (model_->isAllowed(a, b)) continue;
-      for (std::uint32_t sa : model_->links[a].shapes)
-        for (std::uint32_t sb : model_->links[b].shapes)
-          pairs.push_back({boundsDistance(shapeBounds_[sa], shapeBounds_[sb]), sa, sb});
-    }
+  for (const LinkPair& p : checkedPairs_)
+    for (std::uint32_t sa : model_->links[p.a].shapes)
+      for (std::uint32_t sb : model_->links[p.b].shapes)
+        pairs.push_back({sphereGap(shapeCentres_[sa], shapeBounds_[sa].radius, shapeCentres_[sb], shapeBounds_[sb].radius),
+                         sa, sb});
   std::sort(pairs.begin(), pairs.end(), [](const Candidate& x, const Candidate& y) { return x.bound < y.bound; });
   SelfDistanceResult<T> best;
   best.distance = std::numeric_limits<T>::infinity();
@@ -177,6 +221,8 @@ template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vecto
   for (const Candidate& c : pairs) {
     if (c.bound > best.distance) break;
     ++lastNarrow_;
+    placeShape(c.sa);
+    placeShape(c.sb);
     DistanceResult<T> d;
     s = distance(d, model_->shapes[c.sa].geometry, shapePoses_[c.sa], model_->shapes[c.sb].geometry, shapePoses_[c.sb]);
     if (!s.ok()) return s;

@@ -12,8 +12,8 @@
 
 namespace gq::urdf {
 
-// How a mesh collision element is modelled. Box/sphere/cylinder elements keep their own shape in every mode
-// (a cylinder is the convex hull of a kCylinderSegments-gon prism until the exact custom Cylinder lands).
+// How a mesh collision element is modelled. Box/sphere/cylinder elements keep their own exact shape in every mode
+// (a cylinder is gq's custom CylinderCallbacks, gq/custom_shapes.h).
 enum class Representation : std::uint8_t {
   Mesh,           // the triangle mesh itself (needs mesh-mesh queries)
   Hull,           // convex hull (qhull)
@@ -25,9 +25,6 @@ enum class Representation : std::uint8_t {
 };
 const char* toString(Representation r);
 Status parseRepresentation(const std::string& name, Representation& out);
-
-// Segments of the polygonal prism standing in for a URDF cylinder; its radial error is r (1 - cos(pi / n)).
-inline constexpr std::uint32_t kCylinderSegments = 64;
 
 struct LoadOptions {
   Representation representation = Representation::Hull;
@@ -67,7 +64,7 @@ template <class T> struct ApproximationError {
   // (the one-sided Hausdorff distance mesh -> approximation; 0 when the approximation encloses the mesh)
   T meshToApproximation = T(0);
   // max over points sampled on the approximation's surface of the distance to the source surface: how far the
-  // representation reaches beyond the real shape (for cylinders: the closed form sagitta, a lower bound of 0)
+  // representation reaches beyond the real shape (0 for boxes, spheres and the exact cylinders)
   T approximationToMesh = T(0);
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-// Self-collision and self-distance of a RobotModel: forward kinematics, broadphase over link world AABBs
-// (sort and sweep on x), then gq::overlap / gq::distance on the shape pairs the allowed-collision matrix leaves.
+// Self-collision and self-distance of a RobotModel: forward kinematics, a broadphase over link bounding spheres
+// (the link pairs the allowed-collision matrix leaves, listed once), shape spheres and oriented boxes, then
+// gq::overlap / gq::distance on the shape pairs that survive.
 // A checker owns scratch buffers: use one per thread (the model itself is shared and immutable).
 #include <cstdint>
 #include <memory>
@@ -58,21 +59,36 @@ template <class T> class SelfCollisionChecker {
   std::size_t lastNarrowPhasePairs() const { return lastNarrow_; }
 
  private:
-  Status placeShapes(const std::vector<T>& q);
+  // Fixed per shape: an enclosing sphere (centre in the link frame, radius with the culling slack) and the local
+  // AABB (shape frame) carried to the world as an oriented box.
+  struct ShapeBound {
+    Vec3<T> centreInLink = Vec3<T>::Zero();
+    T radius = T(0);
+    Bounds3<T> local;
+  };
+
+  Status placeLinks(const std::vector<T>& q);
+  void placeShape(std::uint32_t shape);
   void broadphase();
+  bool shapesMayTouch(std::uint32_t shapeA, std::uint32_t shapeB);
   Status narrowPhase(std::uint32_t shapeA, std::uint32_t shapeB, bool& hit);
   Status collide(const CollisionRequest& request, CollisionResult& result);
 
   std::shared_ptr<const RobotModel<T>> model_;
+  std::vector<LinkPair> checkedPairs_;       // link pairs with shapes that the allowed-collision matrix leaves
+  std::vector<ShapeBound> shapeBounds_;
+  std::vector<Vec3<T>> linkCentreInLink_;    // per link: sphere enclosing its shapes' spheres
+  std::vector<T> linkRadius_;
+  T slack_ = T(0);                           // absolute culling slack (rounding of world placements)
+  // Per configuration.
   std::vector<Transform<T>> linkPoses_;
-  std::vector<Transform<T>> shapePoses_;
-  std::vector<Bounds3<T>> localBounds_;     // per shape, in the shape frame
-  std::vector<Bounds3<T>> shapeBounds_;     // world AABB of each shape's oriented box
+  std::vector<Vec3<T>> linkCentres_, shapeCentres_;  // world sphere centres
+  std::vector<Transform<T>> shapePoses_;             // valid when placedStamp_[s] == stamp_
   std::vector<OrientedBox<T>> shapeBoxes_;
-  std::vector<Bounds3<T>> linkBounds_;
-  std::vector<std::uint32_t> order_;        // links with shapes sorted by bounds min x
-  std::vector<LinkPair> candidates_;        // link pairs whose bounds overlap and are not allowed
-  std::vector<GjkCache<T>> caches_;         // per shape pair (shapes x shapes), GJK warm start
+  std::vector<std::uint32_t> placedStamp_;
+  std::uint32_t stamp_ = 0;
+  std::vector<LinkPair> candidates_;        // checked link pairs whose spheres overlap
+  std::vector<LinkPair> hits_;              // colliding pairs found so far in this call
   std::size_t lastNarrow_ = 0;
 };
 
