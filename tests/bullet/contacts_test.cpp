@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "bullet_test_scene.h"
 
@@ -236,6 +237,44 @@ TEST(BulletContacts, HeightFieldCentringAndUpAxesMatchClosedForm) {
       expectVec(p.normalOnB, normal, kTol);
     }
   }
+}
+
+// Bullet's compound algorithm dispatches each child pair through the same tables, so children reach gq.
+TEST(BulletContacts, CompoundChildrenGetContactsEach) {
+  QueryWorld w;
+  btSphereShape ball(btScalar(0.5));
+  btBoxShape brick(btVector3(0.5, 0.25, 0.5));
+  btCompoundShape compound;
+  compound.addChildShape(btTransform(btQuaternion::getIdentity(), btVector3(-1, 0, 0)), &ball);
+  compound.addChildShape(btTransform(btQuaternion::getIdentity(), btVector3(1, btScalar(-0.26), 0)), &brick);
+  btStaticPlaneShape plane(btVector3(0, 1, 0), 0);
+  auto* ground = w.add(&plane, btVector3(0, 0, 0));
+  auto* body = w.add(&compound, btVector3(0, btScalar(0.49), 0));
+  const auto pts = w.contacts(body, ground);
+  for (const Point& p : pts) std::printf("pt %f %f %f d %f\n", double(p.pointOnB.x()), double(p.pointOnB.y()), double(p.pointOnB.z()), double(p.distance));
+  ASSERT_EQ(pts.size(), 5u);  // the sphere's point and the brick's four corners
+  int sphereHits = 0;
+  for (const Point& p : pts) {
+    // sphere bottom at 0.49 - 0.5; brick bottom at 0.49 - 0.26 - 0.25
+    EXPECT_NEAR(p.distance, std::abs(p.pointOnB.x() + 1) < kTol ? -0.01 : -0.02, kTol);
+    expectVec(p.normalOnB, btVector3(0, 1, 0), kTol);
+    if (std::abs(p.pointOnB.x() + 1) < kTol) ++sphereHits;
+  }
+  EXPECT_EQ(sphereHits, 1);
+}
+
+// Shapes gq does not model (here btMultiSphereShape) keep Bullet's own algorithms in a gq world.
+TEST(BulletContacts, UnmodelledShapesFallBackToBullet) {
+  QueryWorld w;
+  const btVector3 centres[2] = {btVector3(-0.5, 0, 0), btVector3(0.5, 0, 0)};
+  const btScalar radii[2] = {0.5, 0.5};
+  btMultiSphereShape pill(centres, radii, 2);
+  btBoxShape ground(btVector3(5, 1, 5));
+  auto* g = w.add(&ground, btVector3(0, -1, 0));
+  auto* p = w.add(&pill, btVector3(0, btScalar(0.48), 0));
+  const auto pts = w.contacts(p, g);
+  ASSERT_GE(pts.size(), 1u);
+  for (const Point& c : pts) EXPECT_NEAR(c.distance, -0.02, btScalar(1e-3));  // Bullet's GJK tolerance
 }
 
 }  // namespace
