@@ -49,9 +49,23 @@ template <class T>
 Status measureApproximationError(const MeshData<T>& mesh, const Geometry<T>& approximation, const Transform<T>& fit,
                                  const LoadOptions& options, ApproximationError<T>& error);
 
+// ---- Point-cloud frames (mesh_shape.cpp) ---------------------------------------------------------------------
+// Principal axes of the points as a proper rotation (columns by decreasing variance), and their mean.
+template <class T> Mat3<double> principalAxes(const std::vector<Vec3<T>>& v, Vec3<double>& mean);
+// Extents of the points in frame `r`: lo/hi of R^T v.
+template <class T> void extentsIn(const std::vector<Vec3<T>>& v, const Mat3<double>& r, Vec3<double>& lo, Vec3<double>& hi);
+
 // ---- Culling volumes (shape_bounds.cpp) ----------------------------------------------------------------------
-// Local AABB and an enclosing sphere (centre, radius) of a shape in its own frame.
-template <class T> Status shapeLocalBounds(const Geometry<T>& g, Bounds3<T>& box, Vec3<T>& centre, T& radius);
+// Bounding volumes of a shape in its own frame: an enclosing sphere and an enclosing box (the smaller of the
+// local AABB and, for hulls and meshes, the box along the vertices' principal axes).
+template <class T> struct CullVolume {
+  Vec3<T> sphereCentre = Vec3<T>::Zero();
+  T radius = T(0);
+  Vec3<T> boxCentre = Vec3<T>::Zero();
+  Mat3<T> boxAxes = Mat3<T>::Identity();  // columns: box axes in the shape frame
+  Vec3<T> halfExtents = Vec3<T>::Zero();
+};
+template <class T> Status shapeCullVolume(const Geometry<T>& g, CullVolume<T>& out);
 
 // ---- Model semantics (allowed_collisions.cpp) ---------------------------------------------------------------
 // Fills model.allowed/allowedReason (adjacent links across fixed joints and shapeless links, same link, SRDF)

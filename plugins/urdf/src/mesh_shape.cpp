@@ -13,20 +13,6 @@
 #include "internal.h"
 
 namespace gq::urdf::detail {
-namespace {
-
-template <class T> struct Fit {
-  Geometry<T> geometry;
-  Transform<T> pose;  // in the mesh frame
-  double volume = 0;
-  Representation representation = Representation::Box;
-};
-
-template <class T> double sizeOf(const std::vector<Vec3<T>>& v) {
-  Bounds3<double> b;
-  for (const auto& p : v) b.include(p.template cast<double>());
-  return (b.max - b.min).norm();
-}
 
 // Principal axes of the vertex cloud as a proper rotation (columns sorted by decreasing variance), and the mean.
 template <class T> Mat3<double> principalAxes(const std::vector<Vec3<T>>& v, Vec3<double>& mean) {
@@ -45,7 +31,6 @@ template <class T> Mat3<double> principalAxes(const std::vector<Vec3<T>>& v, Vec
   return r;
 }
 
-// Local extents of the vertices in frame `r`: lo/hi of R^T v.
 template <class T> void extentsIn(const std::vector<Vec3<T>>& v, const Mat3<double>& r, Vec3<double>& lo, Vec3<double>& hi) {
   lo.setConstant(std::numeric_limits<double>::max());
   hi.setConstant(-std::numeric_limits<double>::max());
@@ -54,6 +39,21 @@ template <class T> void extentsIn(const std::vector<Vec3<T>>& v, const Mat3<doub
     lo = lo.cwiseMin(l);
     hi = hi.cwiseMax(l);
   }
+}
+
+namespace {
+
+template <class T> struct Fit {
+  Geometry<T> geometry;
+  Transform<T> pose;  // in the mesh frame
+  double volume = 0;
+  Representation representation = Representation::Box;
+};
+
+template <class T> double sizeOf(const std::vector<Vec3<T>>& v) {
+  Bounds3<double> b;
+  for (const auto& p : v) b.include(p.template cast<double>());
+  return (b.max - b.min).norm();
 }
 
 template <class T> Transform<T> poseOf(const Vec3<double>& centre, const Mat3<double>& r) {
@@ -157,10 +157,14 @@ Status meshShape(const MeshData<T>& mesh, Representation rep, const LoadOptions&
     MeshCookReport report;
     Status s = cookTriangleMesh(mesh.vertices, mesh.triangles, cooked, &report);
     if (!s.ok()) return s;
+    std::shared_ptr<const ConvexMesh<T>> hull;
+    s = cookConvexMesh(mesh.vertices, hull);
+    if (!s.ok()) return s;
     shape.geometry = TriangleMeshGeometry<T>(cooked);
+    shape.boundingHull = hull;
     shape.representation = rep;
     shape.modelTriangles = report.cookedTriangles;
-    shape.bytes = meshBytes(*cooked, report.bvhBytes);
+    shape.bytes = meshBytes(*cooked, report.bvhBytes) + hullBytes(*hull);
     return {};
   }
   if (rep == Representation::Hull) {
@@ -183,6 +187,10 @@ Status meshShape(const MeshData<T>& mesh, Representation rep, const LoadOptions&
   return {};
 }
 
+template Mat3<double> principalAxes<float>(const std::vector<Vec3<float>>&, Vec3<double>&);
+template Mat3<double> principalAxes<double>(const std::vector<Vec3<double>>&, Vec3<double>&);
+template void extentsIn<float>(const std::vector<Vec3<float>>&, const Mat3<double>&, Vec3<double>&, Vec3<double>&);
+template void extentsIn<double>(const std::vector<Vec3<double>>&, const Mat3<double>&, Vec3<double>&, Vec3<double>&);
 template Status meshShape<float>(const MeshData<float>&, Representation, const LoadOptions&, Shape<float>&,
                                  Transform<float>&);
 template Status meshShape<double>(const MeshData<double>&, Representation, const LoadOptions&, Shape<double>&,

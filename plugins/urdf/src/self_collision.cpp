@@ -69,20 +69,23 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
   T largest = T(0);
   for (std::size_t i = 0; i < shapes; ++i) {
     ShapeBound& b = shapeBounds_[i];
-    Vec3<T> centre;
-    if (!detail::shapeLocalBounds(m.shapes[i].geometry, b.local, centre, b.radius).ok()) {
-      // Invalid geometry: a point bound, so that the pair reaches the narrow phase, which reports it.
-      b.local = Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>::Zero());
-      centre.setZero();
-      b.radius = T(0);
+    detail::CullVolume<T> v;  // invalid geometry keeps a point volume: the narrow phase reports it
+    (void)detail::shapeCullVolume(m.shapes[i].geometry, v);
+    b.centreInLink = m.shapes[i].origin.transform(v.sphereCentre);
+    b.radius = v.radius;
+    b.boxCentre = v.boxCentre;
+    b.boxAxes = v.boxAxes;
+    b.halfExtents = v.halfExtents;
+    if (m.shapes[i].boundingHull) {
+      b.hull = ConvexMeshGeometry<T>(m.shapes[i].boundingHull);
+      b.hasHull = true;
     }
-    b.centreInLink = m.shapes[i].origin.transform(centre);
     largest = std::max(largest, b.centreInLink.norm() + b.radius);
   }
   slack_ = T(kCullSlackUlps) * std::numeric_limits<T>::epsilon() * robotSize(m, largest);
   for (auto& b : shapeBounds_) {
     b.radius += slack_;
-    b.local = Bounds3<T>::fromCenterExtents(b.local.center(), b.local.extents().array() + slack_);
+    b.halfExtents.array() += slack_;
   }
   linkCentreInLink_.assign(links, Vec3<T>::Zero());
   linkRadius_.assign(links, T(0));
@@ -91,7 +94,7 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
     if (own.empty()) continue;
     Bounds3<T> centres;
     for (std::uint32_t s : own) centres.include(shapeBounds_[s].centreInLink);
-    linkCentreInLink_[l] = centres.center();
+    linkCentreInLink_[l] = own.size() == 1 ? shapeBounds_[own[0]].centreInLink : centres.center();
     for (std::uint32_t s : own)
       linkRadius_[l] = std::max(linkRadius_[l], (shapeBounds_[s].centreInLink - linkCentreInLink_[l]).norm() +
                                                     shapeBounds_[s].radius);
@@ -100,6 +103,7 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
     for (std::uint32_t b = a + 1; b < links; ++b)
       if (!m.links[a].shapes.empty() && !m.links[b].shapes.empty() && !m.isAllowed(a, b)) checkedPairs_.push_back({a, b});
   linkPoses_.resize(links);
+  linkRotations_.resize(links);
   linkCentres_.resize(links);
   shapeCentres_.resize(shapes);
   shapePoses_.resize(shapes);
@@ -108,6 +112,8 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
   candidates_.reserve(checkedPairs_.size());
 }
 
+// World rotation and sphere centre of every link with shapes; shape sphere centres only where a link has several
+// shapes (a single shape's sphere is its link's).
 template <class T> Status SelfCollisionChecker<T>::placeLinks(const std::vector<T>& q) {
   Status s = forwardKinematics(*model_, q, linkPoses_);
   if (!s.ok()) return s;
@@ -115,10 +121,15 @@ template <class T> Status SelfCollisionChecker<T>::placeLinks(const std::vector<
     std::fill(placedStamp_.begin(), placedStamp_.end(), 0u);
     stamp_ = 1;
   }
-  for (std::size_t l = 0; l < linkPoses_.size(); ++l)
-    if (linkRadius_[l] > T(0)) linkCentres_[l] = linkPoses_[l].transform(linkCentreInLink_[l]);
-  for (std::size_t i = 0; i < shapeBounds_.size(); ++i)
-    shapeCentres_[i] = linkPoses_[model_->shapes[i].link].transform(shapeBounds_[i].centreInLink);
+  for (std::size_t l = 0; l < linkPoses_.size(); ++l) {
+    const auto& own = model_->links[l].shapes;
+    if (own.empty()) continue;
+    const Mat3<T>& r = linkRotations_[l] = linkPoses_[l].q.toRotationMatrix();
+    linkCentres_[l] = r * linkCentreInLink_[l] + linkPoses_[l].p;
+    if (own.size() == 1) shapeCentres_[own[0]] = linkCentres_[l];
+    else
+      for (std::uint32_t i : own) shapeCentres_[i] = r * shapeBounds_[i].centreInLink + linkPoses_[l].p;
+  }
   return {};
 }
 
@@ -127,10 +138,11 @@ template <class T> void SelfCollisionChecker<T>::placeShape(std::uint32_t i) {
   placedStamp_[i] = stamp_;
   const Shape<T>& shape = model_->shapes[i];
   shapePoses_[i] = linkPoses_[shape.link] * shape.origin;
+  const Mat3<T> r = shapePoses_[i].q.toRotationMatrix();
   OrientedBox<T>& box = shapeBoxes_[i];
-  box.axes = shapePoses_[i].q.toRotationMatrix();
-  box.centre = shapePoses_[i].p + box.axes * shapeBounds_[i].local.center();
-  box.halfExtents = shapeBounds_[i].local.extents();
+  box.axes = r * shapeBounds_[i].boxAxes;
+  box.centre = shapePoses_[i].p + r * shapeBounds_[i].boxCentre;
+  box.halfExtents = shapeBounds_[i].halfExtents;
 }
 
 template <class T> void SelfCollisionChecker<T>::broadphase() {
@@ -140,15 +152,31 @@ template <class T> void SelfCollisionChecker<T>::broadphase() {
 }
 
 template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa, std::uint32_t sb) {
-  if (!spheresOverlap(shapeCentres_[sa], shapeBounds_[sa].radius, shapeCentres_[sb], shapeBounds_[sb].radius))
+  const bool sameAsLinkSpheres = model_->links[model_->shapes[sa].link].shapes.size() == 1 &&
+                                 model_->links[model_->shapes[sb].link].shapes.size() == 1;
+  if (!sameAsLinkSpheres &&
+      !spheresOverlap(shapeCentres_[sa], shapeBounds_[sa].radius, shapeCentres_[sb], shapeBounds_[sb].radius))
     return false;
   placeShape(sa);
   placeShape(sb);
   return !orientedBoxesDisjoint(shapeBoxes_[sa], shapeBoxes_[sb]);
 }
 
+// Mesh shapes first meet as their convex hulls (GJK): disjoint hulls prove disjoint meshes.
 template <class T> Status SelfCollisionChecker<T>::narrowPhase(std::uint32_t sa, std::uint32_t sb, bool& hit) {
-  return overlap(model_->shapes[sa].geometry, shapePoses_[sa], model_->shapes[sb].geometry, shapePoses_[sb], hit);
+  const Geometry<T>& ga = model_->shapes[sa].geometry;
+  const Geometry<T>& gb = model_->shapes[sb].geometry;
+  if (shapeBounds_[sa].hasHull || shapeBounds_[sb].hasHull) {
+    const Geometry<T>& ha = shapeBounds_[sa].hasHull ? shapeBounds_[sa].hull : ga;
+    const Geometry<T>& hb = shapeBounds_[sb].hasHull ? shapeBounds_[sb].hull : gb;
+    bool hullsTouch = false;
+    if (Status s = overlap(ha, shapePoses_[sa], hb, shapePoses_[sb], hullsTouch); !s.ok()) return s;
+    if (!hullsTouch) {
+      hit = false;
+      return {};
+    }
+  }
+  return overlap(ga, shapePoses_[sa], gb, shapePoses_[sb], hit);
 }
 
 template <class T> Status SelfCollisionChecker<T>::collide(const CollisionRequest& request, CollisionResult& result) {

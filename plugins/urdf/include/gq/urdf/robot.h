@@ -74,6 +74,9 @@ template <class T> struct Shape {
   Geometry<T> geometry;
   ShapeSource source = ShapeSource::Box;
   Representation representation = Representation::Hull;  // what `geometry` is, for mesh sources
+  // Mesh representation only: the mesh's convex hull. Hull-disjoint implies mesh-disjoint, so the checker tests
+  // the hulls (GJK) before the triangles.
+  std::shared_ptr<const ConvexMesh<T>> boundingHull;
   std::string file;                 // resolved mesh path
   std::uint32_t sourceTriangles = 0;
   std::uint32_t modelTriangles = 0;  // triangles (or hull polygons) of what is checked

@@ -59,12 +59,16 @@ template <class T> class SelfCollisionChecker {
   std::size_t lastNarrowPhasePairs() const { return lastNarrow_; }
 
  private:
-  // Fixed per shape: an enclosing sphere (centre in the link frame, radius with the culling slack) and the local
-  // AABB (shape frame) carried to the world as an oriented box.
+  // Fixed per shape: an enclosing sphere (centre in the link frame) and an enclosing box (shape frame), both
+  // grown by the culling slack; the box is carried to the world as an oriented box.
   struct ShapeBound {
     Vec3<T> centreInLink = Vec3<T>::Zero();
     T radius = T(0);
-    Bounds3<T> local;
+    Vec3<T> boxCentre = Vec3<T>::Zero();
+    Mat3<T> boxAxes = Mat3<T>::Identity();
+    Vec3<T> halfExtents = Vec3<T>::Zero();
+    bool hasHull = false;  // mesh shapes: `hull` is their convex hull, tested before the triangles
+    Geometry<T> hull;
   };
 
   Status placeLinks(const std::vector<T>& q);
@@ -82,6 +86,7 @@ template <class T> class SelfCollisionChecker {
   T slack_ = T(0);                           // absolute culling slack (rounding of world placements)
   // Per configuration.
   std::vector<Transform<T>> linkPoses_;
+  std::vector<Mat3<T>> linkRotations_;
   std::vector<Vec3<T>> linkCentres_, shapeCentres_;  // world sphere centres
   std::vector<Transform<T>> shapePoses_;             // valid when placedStamp_[s] == stamp_
   std::vector<OrientedBox<T>> shapeBoxes_;
