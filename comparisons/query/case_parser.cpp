@@ -267,6 +267,9 @@ bool CaseParser::parse(const std::string& text, std::size_t line, Case& out, Jso
   } catch (const Json::parse_error& e) {
     error = where + "invalid JSON at byte " + std::to_string(e.byte);
     return false;
+  } catch (const Json::exception& e) {  // e.g. out_of_range 406: a number beyond the double range (1e999)
+    error = where + "invalid JSON: " + e.what();
+    return false;
   }
   if (!v.is_object()) {
     error = where + "expected a JSON object, got " + std::string(v.type_name());
