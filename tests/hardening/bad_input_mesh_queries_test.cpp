@@ -1,0 +1,203 @@
+// The bad-input contract of the mesh queries (gq/mesh_query.h) and triangle contacts (gq/contacts.h):
+// docs/hardening.md, table "mesh queries", one test per row.
+#include <gtest/gtest.h>
+
+#include "hardening_fixtures.h"
+
+namespace gq::hardening {
+namespace {
+
+template <class T> class BadInputMeshQueries : public ::testing::Test {};
+TYPED_TEST_SUITE(BadInputMeshQueries, Scalars);
+
+template <class T> TriangleMeshGeometry<T> cubeMesh() { return TriangleMeshGeometry<T>(Cooked<T>::get().mesh); }
+template <class T> Transform<T> nanPose() { return Transform<T>(Vec3<T>(kNaN<T>, T(0), T(0))); }
+template <class T> Triangle<T> sentinelTriangle() { return Triangle<T>{{sentinelVec<T>(), sentinelVec<T>(), sentinelVec<T>()}}; }
+template <class T> Triangle<T> unitTriangle() {
+  return Triangle<T>{{Vec3<T>(T(0), T(0), T(0)), Vec3<T>(T(1), T(0), T(0)), Vec3<T>(T(0), T(1), T(0))}};
+}
+
+TYPED_TEST(BadInputMeshQueries, TriangleIndexOutOfRangeIsInvalidArgument) {
+  using T = TypeParam;
+  Triangle<T> tri = sentinelTriangle<T>();
+  std::uint32_t indices[3] = {7, 7, 7};
+  EXPECT_EQ(getTriangle(cubeMesh<T>(), Transform<T>(), 12u, tri, indices).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(getTriangle(cubeMesh<T>(), Transform<T>(), 0xffffffffu, tri, indices).code, StatusCode::InvalidArgument);
+  // 8 x 8 cells, 2 triangles each.
+  EXPECT_EQ(getTriangle(heightFieldGeometry<T>(), Transform<T>(), 128u, tri, indices).code,
+            StatusCode::InvalidArgument);
+  EXPECT_TRUE(sameBits(tri, sentinelTriangle<T>()));
+  EXPECT_EQ(indices[0], 7u);
+  EXPECT_TRUE(getTriangle(cubeMesh<T>(), Transform<T>(), 11u, tri, indices).ok());
+}
+
+TYPED_TEST(BadInputMeshQueries, TriangleRemovedAtCookingIsInvalidArgument) {
+  using T = TypeParam;
+  std::vector<Vec3<T>> v = cubePoints<T>();
+  std::vector<TriangleIndices> t = cubeTriangles();
+  t.push_back({0, 1, 1});  // zero area: dropped by cooking, input index 12
+  std::shared_ptr<const TriangleMesh<T>> mesh;
+  ASSERT_TRUE(cookTriangleMesh(v, t, mesh).ok());
+  Triangle<T> tri = sentinelTriangle<T>();
+  EXPECT_EQ(getTriangle(TriangleMeshGeometry<T>(mesh), Transform<T>(), 12u, tri).code, StatusCode::InvalidArgument);
+  EXPECT_TRUE(sameBits(tri, sentinelTriangle<T>()));
+}
+
+TYPED_TEST(BadInputMeshQueries, NaNPoseIsInvalidArgumentInEveryMeshQuery) {
+  using T = TypeParam;
+  const Geometry<T> sphere = SphereGeometry<T>(T(0.5));
+  Triangle<T> tri = sentinelTriangle<T>();
+  EXPECT_EQ(getTriangle(cubeMesh<T>(), nanPose<T>(), 0u, tri).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(getTriangle(heightFieldGeometry<T>(), nanPose<T>(), 0u, tri).code, StatusCode::InvalidArgument);
+  EXPECT_TRUE(sameBits(tri, sentinelTriangle<T>()));
+
+  std::uint32_t results[4] = {7, 7, 7, 7}, count = 4242;
+  bool overflow = true;
+  EXPECT_EQ(findOverlapTriangleMesh(sphere, nanPose<T>(), cubeMesh<T>(), Transform<T>(), results, 4u, 0u, overflow,
+                                    count).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(findOverlapHeightField(sphere, Transform<T>(), heightFieldGeometry<T>(), nanPose<T>(), results, 4u, 0u,
+                                   overflow, count).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(count, 4242u);
+  EXPECT_TRUE(overflow);
+  EXPECT_EQ(results[0], 7u);
+
+  bool found = true;
+  EXPECT_EQ(findOverlapTriangleMeshPairs<T>([](std::uint32_t, std::uint32_t) { return true; }, cubeMesh<T>(),
+                                            nanPose<T>(), cubeMesh<T>(), Transform<T>(), found).code,
+            StatusCode::InvalidArgument);
+  EXPECT_TRUE(found);
+
+  PenetrationResult<T> mtd = sentinelPenetration<T>();
+  EXPECT_EQ(computeTriangleMeshPenetration(mtd, sphere, nanPose<T>(), cubeMesh<T>(), Transform<T>()).code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(computeHeightFieldPenetration(mtd, sphere, Transform<T>(), heightFieldGeometry<T>(), nanPose<T>()).code,
+            StatusCode::InvalidArgument);
+  EXPECT_TRUE(sameBits(mtd, sentinelPenetration<T>()));
+
+  const Triangle<T> triangles[1] = {unitTriangle<T>()};
+  SweepHit<T> hit = sentinelSweepHit<T>();
+  bool hasHit = true;
+  EXPECT_EQ(sweepTriangles<T>(Vec3<T>::UnitZ(), T(10), sphere, nanPose<T>(), triangles, 1u, hit, hasHit).code,
+            StatusCode::InvalidArgument);
+  EXPECT_TRUE(hasHit && sameBits(hit, sentinelSweepHit<T>()));
+
+  ContactBuffer<T> contacts;
+  contacts.count = 4242;
+  bool hasContacts = true;
+  EXPECT_EQ(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(1), T(1), T(1))), nanPose<T>(), unitTriangle<T>(),
+                                     0u, T(0.1), T(0.01), T(1), contacts, hasContacts).code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(contacts.count, 4242u);
+  EXPECT_TRUE(hasContacts);
+}
+
+TYPED_TEST(BadInputMeshQueries, NullResultBufferWithNonZeroSizeIsInvalidArgument) {
+  using T = TypeParam;
+  bool overflow = true;
+  std::uint32_t count = 4242;
+  const Geometry<T> sphere = SphereGeometry<T>(T(0.5));
+  EXPECT_EQ(findOverlapTriangleMesh(sphere, Transform<T>(), cubeMesh<T>(), Transform<T>(), nullptr, 4u, 0u, overflow,
+                                    count).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(findOverlapHeightField(sphere, Transform<T>(), heightFieldGeometry<T>(), Transform<T>(), nullptr, 4u, 0u,
+                                   overflow, count).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(count, 4242u);
+  // bufferSize 0 with a null buffer is a valid "count only" call.
+  EXPECT_TRUE(findOverlapTriangleMesh(sphere, Transform<T>(Vec3<T>(T(1), T(0), T(0))), cubeMesh<T>(), Transform<T>(),
+                                      nullptr, 0u, 0u, overflow, count).ok());
+}
+
+TYPED_TEST(BadInputMeshQueries, ShapesOutsideTheSpecsListReturnUnsupported) {
+  using T = TypeParam;
+  bool overflow = true;
+  std::uint32_t results[2], count = 4242;
+  const Geometry<T> hull = ConvexMeshGeometry<T>(Cooked<T>::get().hull);
+  EXPECT_EQ(findOverlapTriangleMesh(hull, Transform<T>(), cubeMesh<T>(), Transform<T>(), results, 2u, 0u, overflow,
+                                    count).code, StatusCode::Unsupported);
+  SweepHit<T> hit = sentinelSweepHit<T>();
+  bool hasHit = true;
+  const Triangle<T> triangles[1] = {unitTriangle<T>()};
+  EXPECT_EQ(sweepTriangles<T>(Vec3<T>::UnitZ(), T(1), Geometry<T>(PlaneGeometry<T>()), Transform<T>(), triangles, 1u, hit,
+                           hasHit).code, StatusCode::Unsupported);
+  PenetrationResult<T> mtd = sentinelPenetration<T>();
+  EXPECT_EQ(computeTriangleMeshPenetration(mtd, Geometry<T>(cubeMesh<T>()), Transform<T>(), cubeMesh<T>(),
+                                           Transform<T>()).code, StatusCode::Unsupported);
+  ContactBuffer<T> contacts;
+  bool hasContacts = true;
+  EXPECT_EQ(generateTriangleContacts(Geometry<T>(SphereGeometry<T>(T(1))), Transform<T>(), unitTriangle<T>(), 0u,
+                                     T(0.1), T(0.01), T(1), contacts, hasContacts).code, StatusCode::Unsupported);
+  EXPECT_EQ(count, 4242u);
+  EXPECT_TRUE(hasHit && hasContacts && sameBits(mtd, sentinelPenetration<T>()));
+}
+
+TYPED_TEST(BadInputMeshQueries, EmptyCallbackOrNegativeToleranceIsInvalidArgument) {
+  using T = TypeParam;
+  bool found = true;
+  EXPECT_EQ(findOverlapTriangleMeshPairs<T>(TrianglePairCallback(), cubeMesh<T>(), Transform<T>(), cubeMesh<T>(),
+                                            Transform<T>(), found).code, StatusCode::InvalidArgument);
+  for (const T tol : {T(-1), kNaN<T>, kInf<T>})
+    EXPECT_EQ(findOverlapTriangleMeshPairs<T>([](std::uint32_t, std::uint32_t) { return true; }, cubeMesh<T>(),
+                                              Transform<T>(), cubeMesh<T>(), Transform<T>(), found, tol).code,
+              StatusCode::InvalidArgument);
+  EXPECT_TRUE(found);
+}
+
+TYPED_TEST(BadInputMeshQueries, ZeroIterationsIsInvalidArgument) {
+  using T = TypeParam;
+  PenetrationResult<T> mtd = sentinelPenetration<T>();
+  const Geometry<T> sphere = SphereGeometry<T>(T(0.5));
+  EXPECT_EQ(computeTriangleMeshPenetration(mtd, sphere, Transform<T>(), cubeMesh<T>(), Transform<T>(), 0u).code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(computeHeightFieldPenetration(mtd, sphere, Transform<T>(), heightFieldGeometry<T>(), Transform<T>(), 0u).code,
+            StatusCode::InvalidArgument);
+  EXPECT_TRUE(sameBits(mtd, sentinelPenetration<T>()));
+}
+
+TYPED_TEST(BadInputMeshQueries, SweepTrianglesRejectsNullArraysNaNVerticesAndBadCachedIndex) {
+  using T = TypeParam;
+  const Geometry<T> sphere = SphereGeometry<T>(T(0.5));
+  SweepHit<T> hit = sentinelSweepHit<T>();
+  bool hasHit = true;
+  Triangle<T> triangles[2] = {unitTriangle<T>(), unitTriangle<T>()};
+  const Transform<T> above(Vec3<T>(T(0.2), T(0.2), T(2)));
+  EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, static_cast<const Triangle<T>*>(nullptr), 2u, hit,
+                           hasHit).code, StatusCode::InvalidArgument);
+  const std::uint32_t cached = 2;
+  EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, triangles, 2u, hit, hasHit, kDefaultHitFlags,
+                           &cached).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, triangles, 2u, hit, hasHit,
+                           kDefaultHitFlags | HitFlag::Mtd).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(-1), sphere, above, triangles, 2u, hit, hasHit).code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(sweepTriangles<T>(Vec3<T>(T(0), T(0), T(-2)), T(10), sphere, above, triangles, 2u, hit, hasHit).code,
+            StatusCode::InvalidArgument);
+  triangles[1].verts[2].x() = kNaN<T>;
+  EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, triangles, 2u, hit, hasHit).code,
+            StatusCode::InvalidArgument);
+  EXPECT_TRUE(hasHit && sameBits(hit, sentinelSweepHit<T>()));
+}
+
+TYPED_TEST(BadInputMeshQueries, TriangleContactsRejectBadDistancesAndDegenerateOrNaNTriangles) {
+  using T = TypeParam;
+  const Geometry<T> box = BoxGeometry<T>(T(1), T(1), T(1));
+  ContactBuffer<T> contacts;
+  contacts.count = 4242;
+  bool hasContacts = true;
+  auto call = [&](const Triangle<T>& tri, T contactDistance, T margin, T toleranceLength) {
+    return generateTriangleContacts(box, Transform<T>(), tri, 0u, contactDistance, margin, toleranceLength, contacts,
+                                    hasContacts).code;
+  };
+  EXPECT_EQ(call(unitTriangle<T>(), T(-0.1), T(0), T(1)), StatusCode::InvalidArgument);
+  EXPECT_EQ(call(unitTriangle<T>(), T(0.1), kNaN<T>, T(1)), StatusCode::InvalidArgument);
+  EXPECT_EQ(call(unitTriangle<T>(), T(0.1), T(0), T(0)), StatusCode::InvalidArgument);
+  Triangle<T> collinear = unitTriangle<T>();
+  collinear.verts[2] = T(2) * collinear.verts[1];
+  EXPECT_EQ(call(collinear, T(0.1), T(0), T(1)), StatusCode::InvalidArgument);
+  Triangle<T> nan = unitTriangle<T>();
+  nan.verts[0].y() = kNaN<T>;
+  EXPECT_EQ(call(nan, T(0.1), T(0), T(1)), StatusCode::InvalidArgument);
+  EXPECT_EQ(contacts.count, 4242u);
+  EXPECT_TRUE(hasContacts);
+}
+
+}  // namespace
+}  // namespace gq::hardening

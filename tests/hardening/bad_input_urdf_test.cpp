@@ -1,0 +1,134 @@
+// The bad-input contract of gq::urdf: docs/hardening.md, table "URDF / SRDF", one test per row. A failed load leaves
+// the model empty; a rejected configuration leaves the outputs untouched.
+#ifdef GQ_HARDENING_HAVE_URDF
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gq/urdf/robot.h"
+#include "gq/urdf/self_collision.h"
+#include "hardening_fixtures.h"
+
+namespace gq::hardening {
+namespace {
+
+using urdf::LoadOptions;
+using urdf::RobotModel;
+
+LoadOptions quickOptions() {
+  LoadOptions o;
+  o.useRosPackagePath = false;
+  o.errorSamplesPerShape = 16;
+  return o;
+}
+
+std::string twoLinkUrdf(const std::string& geometry, const std::string& origin = "0 0 0",
+                        const std::string& axis = "0 0 1") {
+  return "<robot name=\"r\"><link name=\"a\"><collision><geometry><box size=\"1 1 1\"/></geometry></collision></link>"
+         "<link name=\"b\"><collision><origin xyz=\"" + origin + "\"/><geometry>" + geometry +
+         "</geometry></collision></link><joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>"
+         "<axis xyz=\"" + axis + "\"/><origin xyz=\"0 0 2\"/>"
+         "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint></robot>";
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+std::string pandaDir() { return std::string(GQ_SHARED_DIR) + "/robots/example-robot-data/robots/panda_description"; }
+
+template <class T> class BadInputUrdf : public ::testing::Test {};
+TYPED_TEST_SUITE(BadInputUrdf, Scalars);
+
+TYPED_TEST(BadInputUrdf, ValidTwoLinkRobotLoads) {
+  RobotModel<TypeParam> m;
+  const Status s = urdf::loadRobotFromStrings(twoLinkUrdf("<sphere radius=\"0.5\"/>"), "", "/tmp", quickOptions(), m);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  EXPECT_EQ(m.links.size(), 2u);
+}
+
+TYPED_TEST(BadInputUrdf, MissingUrdfSrdfOrMeshFileIsFileError) {
+  RobotModel<TypeParam> m;
+  EXPECT_EQ(urdf::loadRobot("/nonexistent/r.urdf", "", quickOptions(), m).code, StatusCode::FileError);
+  EXPECT_EQ(urdf::loadRobotFromStrings(twoLinkUrdf("<mesh filename=\"missing_part.stl\"/>"), "", "/tmp",
+                                       quickOptions(), m).code, StatusCode::FileError);
+  EXPECT_EQ(urdf::loadRobotFromStrings(twoLinkUrdf("<mesh filename=\"package://no_such_pkg/m.stl\"/>"), "", "/tmp",
+                                       quickOptions(), m).code, StatusCode::FileError);
+  EXPECT_TRUE(m.links.empty());
+}
+
+TYPED_TEST(BadInputUrdf, NonPositiveOrNonFiniteShapeSizesAreParseError) {
+  for (const std::string g : {"<sphere radius=\"0\"/>", "<sphere radius=\"nan\"/>", "<box size=\"1 0 1\"/>",
+                              "<box size=\"1 -1 1\"/>", "<box size=\"inf 1 1\"/>", "<cylinder radius=\"0\" length=\"1\"/>",
+                              "<cylinder radius=\"1\" length=\"-2\"/>", "<sphere radius=\"abc\"/>"}) {
+    RobotModel<TypeParam> m;
+    const Status s = urdf::loadRobotFromStrings(twoLinkUrdf(g), "", "/tmp", quickOptions(), m);
+    EXPECT_EQ(s.code, StatusCode::ParseError) << g << " -> " << s.toString();
+    EXPECT_TRUE(m.links.empty()) << g;
+  }
+}
+
+TYPED_TEST(BadInputUrdf, NonFiniteOriginOrZeroJointAxisIsParseError) {
+  for (const auto& [origin, axis] : std::vector<std::pair<std::string, std::string>>{
+           {"nan 0 0", "0 0 1"}, {"0 inf 0", "0 0 1"}, {"0 0 0", "0 0 0"}, {"0 0 0", "nan 0 1"}}) {
+    RobotModel<TypeParam> m;
+    const Status s = urdf::loadRobotFromStrings(twoLinkUrdf("<sphere radius=\"0.5\"/>", origin, axis), "", "/tmp",
+                                                quickOptions(), m);
+    EXPECT_EQ(s.code, StatusCode::ParseError) << origin << " / " << axis << " -> " << s.toString();
+    EXPECT_TRUE(m.links.empty());
+  }
+}
+
+TYPED_TEST(BadInputUrdf, TruncatedRealUrdfAndSrdfAreParseErrors) {
+  const std::string urdfText = readFile(pandaDir() + "/urdf/panda_collision.urdf");
+  const std::string srdfText = readFile(pandaDir() + "/srdf/panda.srdf");
+  ASSERT_FALSE(urdfText.empty());
+  ASSERT_FALSE(srdfText.empty());
+  // Cut at 16 places spread over the file: every prefix misses at least the closing </robot>.
+  for (int k = 0; k < 16; ++k) {
+    RobotModel<TypeParam> m;
+    const std::size_t cut = urdfText.size() * std::size_t(k) / 16;
+    const Status s = urdf::loadRobotFromStrings(urdfText.substr(0, cut), "", pandaDir(), quickOptions(), m);
+    EXPECT_EQ(s.code, StatusCode::ParseError) << "URDF cut at " << cut << ": " << s.toString();
+    EXPECT_TRUE(m.links.empty());
+  }
+  const std::string urdfOk = twoLinkUrdf("<sphere radius=\"0.5\"/>");
+  for (int k = 1; k < 16; ++k) {
+    RobotModel<TypeParam> m;
+    const std::size_t cut = srdfText.size() * std::size_t(k) / 16;
+    const Status s = urdf::loadRobotFromStrings(urdfOk, srdfText.substr(0, cut), "/tmp", quickOptions(), m);
+    EXPECT_EQ(s.code, StatusCode::ParseError) << "SRDF cut at " << cut << ": " << s.toString();
+  }
+}
+
+TYPED_TEST(BadInputUrdf, WrongSizeNonFiniteOrOutOfLimitConfigurationIsInvalidArgument) {
+  using T = TypeParam;
+  auto model = std::make_shared<RobotModel<T>>();
+  ASSERT_TRUE(urdf::loadRobotFromStrings(twoLinkUrdf("<sphere radius=\"0.5\"/>"), "", "/tmp", quickOptions(), *model)
+                  .ok());
+  std::vector<Transform<T>> poses(3, Transform<T>(sentinelVec<T>()));
+  urdf::CollisionResult collision;
+  collision.colliding = true;
+  urdf::SelfDistanceResult<T> dist;
+  dist.distance = kSentinel<T>;
+  urdf::SelfCollisionChecker<T> checker(model);
+  for (const std::vector<T>& q : {std::vector<T>{}, std::vector<T>{T(0), T(0)}, std::vector<T>{kNaN<T>},
+                                  std::vector<T>{kInf<T>}, std::vector<T>{T(1.5)}}) {
+    EXPECT_EQ(urdf::forwardKinematics(*model, q, poses).code, StatusCode::InvalidArgument);
+    EXPECT_EQ(checker.checkSelfCollision(q, collision).code, StatusCode::InvalidArgument);
+    EXPECT_EQ(checker.selfDistance(q, dist).code, StatusCode::InvalidArgument);
+  }
+  EXPECT_EQ(poses.size(), 3u);
+  EXPECT_TRUE(sameBits(poses[0].p, sentinelVec<T>()));
+  EXPECT_TRUE(collision.colliding);
+  EXPECT_TRUE(sameBits(dist.distance, kSentinel<T>));
+}
+
+}  // namespace
+}  // namespace gq::hardening
+#endif  // GQ_HARDENING_HAVE_URDF

@@ -1,0 +1,136 @@
+// No NaN out (issue 9, item 4): every query family over extreme but valid inputs (sizes 1e-6 ... 1e6, coordinates to
+// 1e6, nearly parallel and nearly degenerate configurations) answers with finite numbers or an error status.
+// runEveryFamily (query_families.h) fails the test on any accepted call with a non-finite output.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "query_families.h"
+
+namespace gq::hardening {
+namespace {
+
+template <class T> class NoNaN : public ::testing::Test {};
+TYPED_TEST_SUITE(NoNaN, Scalars);
+
+const double kSizes[] = {1e-6, 1e-3, 1.0, 1e3, 1e6};
+
+// The geometry of `type` with characteristic size `s` (a plane has none).
+template <class T> Geometry<T> scaled(std::size_t type, double s) {
+  const Cooked<T>& c = Cooked<T>::get();
+  const T ts = T(s);
+  switch (static_cast<GeometryType>(type)) {
+    case GeometryType::Sphere: return SphereGeometry<T>(ts);
+    case GeometryType::Plane: return PlaneGeometry<T>();
+    case GeometryType::Capsule: return CapsuleGeometry<T>(T(0.3) * ts, T(0.6) * ts);
+    case GeometryType::Box: return BoxGeometry<T>(ts, T(0.5) * ts, T(2) * ts);
+    case GeometryType::ConvexMesh: return ConvexMeshGeometry<T>(c.hull, MeshScale<T>(ts));
+    case GeometryType::TriangleMesh: return TriangleMeshGeometry<T>(c.mesh, MeshScale<T>(ts));
+    case GeometryType::HeightField: return HeightFieldGeometry<T>(c.heightField, ts, T(0.25) * ts, T(0.25) * ts);
+    case GeometryType::Custom: {
+      CustomGeometry<T> cyl;
+      EXPECT_TRUE(makeCylinder(T(0.5) * ts, T(0.75) * ts, cyl).ok());
+      return cyl;
+    }
+  }
+  return {};
+}
+
+// Relative placements of geom1 against geom0 at combined size `s`: coincident, touching within 1e-7, nearly
+// parallel (rotated by 1e-7 rad, offset sideways), far (1e6 away), and a nearly grazing direction.
+template <class T> std::vector<FamilyInputs<T>> configurations(const Geometry<T>& g0, const Geometry<T>& g1, double s,
+                                                               const Vec3<T>& base) {
+  std::vector<FamilyInputs<T>> out;
+  const Quat<T> tiny(Eigen::AngleAxis<T>(T(1e-7), Vec3<T>(T(0), T(0), T(1)).normalized()));
+  const Vec3<T> grazing = Vec3<T>(T(1), T(1e-7), T(-1e-7)).normalized();
+  const std::vector<std::pair<Vec3<T>, Quat<T>>> offsets = {
+      {Vec3<T>::Zero(), Quat<T>::Identity()},
+      {Vec3<T>(T(2 * s * (1 + 1e-7)), T(0), T(0)), Quat<T>::Identity()},
+      {Vec3<T>(T(0), T(2 * s), T(0)), tiny},
+      {Vec3<T>(T(1e6), T(-1e6), T(1e6)), tiny},
+      {Vec3<T>(T(s), T(s * 1e-7), T(0)), Quat<T>(T(std::sqrt(0.5)), T(0), T(std::sqrt(0.5)), T(0))}};
+  for (const auto& [offset, rotation] : offsets) {
+    FamilyInputs<T> in;
+    in.geom0 = g0;
+    in.geom1 = g1;
+    in.pose0 = Transform<T>(base, tiny);
+    in.pose1 = Transform<T>(base + offset, rotation);
+    in.origin = in.pose1.p - T(10 * s) * grazing + Vec3<T>(T(0), T(0.1 * s), T(0));
+    in.dir = grazing;
+    in.maxDist = T(1e7);
+    in.point = in.pose1.p + Vec3<T>(T(0.5 * s), T(1e-7 * s), T(0));
+    in.inflation = T(0.01 * s);
+    out.push_back(in);
+  }
+  return out;
+}
+
+TYPED_TEST(NoNaN, EveryFamilyOverExtremeSizesAndPlacementsAnswersFiniteOrAnError) {
+  using T = TypeParam;
+  std::size_t answered = 0, rejected = 0;
+  for (const Vec3<T>& base : {Vec3<T>::Zero().eval(), Vec3<T>(T(1e6), T(-1e6), T(1e6))})
+    for (std::size_t t0 = 0; t0 < kGeometryTypeCount; ++t0)
+      for (std::size_t t1 = 0; t1 < kGeometryTypeCount; ++t1)
+        for (const double s0 : kSizes)
+          for (const double s1 : {s0, s0 * 1e-3, s0 * 1e3}) {
+            if (s1 < 1e-6 || s1 > 1e6) continue;
+            for (const FamilyInputs<T>& in : configurations(scaled<T>(t0, s0), scaled<T>(t1, s1), s0, base)) {
+              for (const FamilyOutcome& o : runEveryFamily(in)) (o.status.ok() ? answered : rejected)++;
+              if (::testing::Test::HasFailure()) {
+                ADD_FAILURE() << "types " << t0 << "," << t1 << " sizes " << s0 << "," << s1 << " base "
+                              << base.transpose();
+                return;
+              }
+            }
+          }
+  EXPECT_GT(answered, rejected);  // extreme but valid: most calls answer
+}
+
+TYPED_TEST(NoNaN, MeshQueriesOverExtremeSizesAnswerFiniteOrAnError) {
+  using T = TypeParam;
+  const Vec3<T> grazing = Vec3<T>(T(1e-7), T(-1e-7), T(-1)).normalized();
+  for (const double s : kSizes)
+    for (const Vec3<T>& base : {Vec3<T>::Zero().eval(), Vec3<T>(T(1e6), T(1e6), T(-1e6))}) {
+      const TriangleMeshGeometry<T> mesh(Cooked<T>::get().mesh, MeshScale<T>(T(s)));
+      const HeightFieldGeometry<T> hf(Cooked<T>::get().heightField, T(s), T(s), T(s));
+      const Transform<T> meshPose(base);
+      for (const std::size_t type : {0u, 2u, 3u, 4u, 7u}) {
+        const Geometry<T> g = scaled<T>(type, s);
+        const Transform<T> pose(base + Vec3<T>(T(0.9 * s), T(0.3 * s), T(s * (1 - 1e-7))));
+        PenetrationResult<T> r;
+        Status st = computeTriangleMeshPenetration(r, g, pose, mesh, meshPose);
+        if (st.ok()) EXPECT_TRUE(isFinite(r.direction) && std::isfinite(r.depth)) << type << " " << s;
+        st = computeHeightFieldPenetration(r, g, pose, hf, meshPose);
+        if (st.ok()) EXPECT_TRUE(isFinite(r.direction) && std::isfinite(r.depth)) << type << " " << s;
+
+        Triangle<T> tris[12];
+        for (std::uint32_t i = 0; i < 12; ++i) ASSERT_TRUE(getTriangle(mesh, meshPose, i, tris[i]).ok());
+        SweepHit<T> hit;
+        bool hasHit = false;
+        st = sweepTriangles<T>(grazing, T(4 * s), g, Transform<T>(pose.p + Vec3<T>(T(0), T(0), T(2 * s))), tris, 12u,
+                               hit, hasHit, kDefaultHitFlags, nullptr, T(0.001 * s));
+        if (st.ok() && hasHit)
+          EXPECT_TRUE(isFinite(hit.position) && isFinite(hit.normal) && std::isfinite(hit.distance)) << type << " " << s;
+
+        ContactBuffer<T> contacts;
+        bool hasContacts = false;
+        st = generateTriangleContacts(g, pose, tris[2], 2u, T(0.1 * s), T(0.01 * s), T(s), contacts, hasContacts);
+        for (std::uint32_t i = 0; st.ok() && i < contacts.count; ++i)
+          EXPECT_TRUE(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&
+                      std::isfinite(contacts.contacts[i].separation)) << type << " " << s;
+
+        std::uint32_t results[32], count = 0;
+        bool overflow = false;
+        st = findOverlapTriangleMesh(g, pose, mesh, meshPose, results, 32u, 0u, overflow, count);
+        for (std::uint32_t i = 0; st.ok() && i < count; ++i) EXPECT_LT(results[i], 12u);
+      }
+      bool found = false;
+      const Status st = findOverlapTriangleMeshPairs<T>([](std::uint32_t, std::uint32_t) { return true; }, mesh,
+                                                        meshPose, mesh, Transform<T>(base + Vec3<T>::Constant(T(s))),
+                                                        found, T(1e-7 * s));
+      EXPECT_TRUE(st.ok() || !st.message.empty());
+    }
+}
+
+}  // namespace
+}  // namespace gq::hardening
