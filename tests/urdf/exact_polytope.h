@@ -1,6 +1,6 @@
 #pragma once
 // Independent exact referee for the FCL comparison: separating-axis test in long double between two convex
-// polytopes (hulls or boxes) placed in the world. Axes: face normals of both and all cross products of edge
+// polytopes (hulls, boxes or single triangles) placed in the world. Axes: face normals of both and all cross products of edge
 // directions; the largest gap over these axes is > 0 exactly when the polytopes are disjoint, and when they overlap
 // its magnitude is the exact penetration depth (minimum translational distance) of the two polytopes.
 #include <cmath>
@@ -48,6 +48,20 @@ inline bool worldPolytope(const Shape<double>& shape, const Transform<double>& p
     }
   }
   return true;
+}
+
+// One triangle as a flat polytope. Besides its normal, the in-plane edge normals n x e are face axes too: they
+// separate coplanar triangles, which the normal and the edge cross products cannot.
+inline Polytope trianglePolytope(const Vec3L& a, const Vec3L& b, const Vec3L& c) {
+  Polytope out;
+  out.vertices = {a, b, c};
+  const Vec3L n = (b - a).cross(c - a);
+  out.faceNormals.push_back(n);
+  for (const Vec3L& e : {Vec3L(b - a), Vec3L(c - b), Vec3L(a - c)}) {
+    out.edgeDirections.push_back(e);
+    out.faceNormals.push_back(n.cross(e));
+  }
+  return out;
 }
 
 inline void project(const Polytope& p, const Vec3L& axis, LD& lo, LD& hi) {

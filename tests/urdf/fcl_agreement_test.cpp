@@ -1,7 +1,8 @@
-// gq against the FCL reference checker (fcl::Convex on the same hulls, same allowed-collision matrix) on 10,000
-// random configurations per robot in hull mode. Every disagreeing link pair is settled by the exact long double
-// separating-axis test and listed; gq must be right on each unless the pair is within a rounding tolerance of
-// touching.
+// gq against the FCL reference checker (same model, forward kinematics and allowed-collision matrix; FCL's
+// fcl::Convex for hulls, BVHModel<OBBRSS> for meshes, its own primitives and cylinders) on 10,000 random
+// configurations per robot and mode. Every disagreeing link pair is settled by an independent long double referee
+// (exact_polytope.h, exact_surfaces.h) and listed; gq must be right on each unless the pair is within a rounding
+// tolerance of touching.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <iterator>
 
 #include "exact_polytope.h"
+#include "exact_surfaces.h"
 #include "gq/urdf/fcl_checker.h"
 #include "robot_paths.h"
 
@@ -19,37 +21,68 @@ namespace {
 // ~1e-7 relative, GJK stops at its own tolerance.
 template <class T> constexpr double kTouchingTolerance = std::is_same_v<T, float> ? 1e-5 : 1e-9;
 
-// Exact gap of a link pair: the smallest SAT gap over its shape pairs (<= 0: the links collide).
-LD exactLinkGap(const RobotModel<double>& m, const std::vector<double>& q, const LinkPair& pair) {
+// Exact separation of two placed shapes: SAT for polytope pairs, triangle-pair SAT when a mesh is involved,
+// projections for primitive solids.
+Bracket exactShapeGap(const Shape<double>& a, const Transform<double>& pa, const Shape<double>& b,
+                      const Transform<double>& pb) {
+  const auto* meshA = a.geometry.getIf<TriangleMeshGeometry<double>>();
+  const auto* meshB = b.geometry.getIf<TriangleMeshGeometry<double>>();
+  if (meshA || meshB) {
+    if (!meshA) return exactShapeGap(b, pb, a, pa);
+    const WorldTriangles trianglesA = worldTriangles(*meshA->mesh, pa);
+    std::vector<Polytope> piecesB;
+    if (meshB) {
+      piecesB = worldTriangles(*meshB->mesh, pb).triangles;
+    } else {
+      Polytope box;
+      EXPECT_TRUE(worldPolytope(b, pb, box)) << "mesh mode pairs meshes with meshes or boxes";
+      piecesB.push_back(box);
+    }
+    const LD gap = surfaceGap(trianglesA, piecesB);
+    return {gap, gap};
+  }
+  Polytope polyA, polyB;
+  if (worldPolytope(a, pa, polyA) && worldPolytope(b, pb, polyB)) {
+    const LD gap = satGap(polyA, polyB);
+    return {gap, gap};
+  }
+  Solid solidA, solidB;
+  const bool ok = worldSolid(a, pa, solidA) && worldSolid(b, pb, solidB);
+  EXPECT_TRUE(ok) << "no referee for " << toString(a.geometry.type()) << " - " << toString(b.geometry.type());
+  return ok ? solidGap(solidA, solidB) : Bracket{};
+}
+
+// A link pair touches when any of its shape pairs does: the bracket of the closest shape pair.
+Bracket exactLinkGap(const RobotModel<double>& m, const std::vector<double>& q, const LinkPair& pair) {
   std::vector<Transform<double>> poses;
   EXPECT_TRUE(forwardKinematics(m, q, poses).ok());
-  LD gap = std::numeric_limits<LD>::infinity();
+  Bracket best{std::numeric_limits<LD>::infinity(), std::numeric_limits<LD>::infinity()};
   for (std::uint32_t sa : m.links[pair.a].shapes)
     for (std::uint32_t sb : m.links[pair.b].shapes) {
-      Polytope pa, pb;
-      const bool ok = worldPolytope(m.shapes[sa], poses[pair.a] * m.shapes[sa].origin, pa) &&
-                      worldPolytope(m.shapes[sb], poses[pair.b] * m.shapes[sb].origin, pb);
-      EXPECT_TRUE(ok) << "hull mode of this robot has only polytopes";
-      if (ok) gap = std::min(gap, satGap(pa, pb));
+      const Bracket g = exactShapeGap(m.shapes[sa], poses[pair.a] * m.shapes[sa].origin, m.shapes[sb],
+                                      poses[pair.b] * m.shapes[sb].origin);
+      best.lower = std::min(best.lower, g.lower);
+      best.upper = std::min(best.upper, g.upper);
     }
-  return gap;
+  return best;
 }
 
 struct Disagreement {
   std::size_t configuration;
   LinkPair pair;
   bool gqSays;
-  LD exactGap;
+  Bracket exact;
 };
 
 template <class T> class FclAgreement : public ::testing::Test {};
 TYPED_TEST_SUITE(FclAgreement, Scalars);
 
-template <class T> void compareOnRandomConfigurations(const RobotFiles& robot, std::size_t count) {
-  const auto gqModel = loadCached<T>(robot, Representation::Hull);
-  const auto refModel = loadCached<double>(robot, Representation::Hull);
+template <class T> void compareOnRandomConfigurations(const RobotFiles& robot, Representation rep, std::size_t count) {
+  const auto gqModel = loadCached<T>(robot, rep);
+  const auto refModel = loadCached<double>(robot, rep);
   std::unique_ptr<FclSelfCollisionChecker> fcl;
-  ASSERT_TRUE(FclSelfCollisionChecker::create(refModel, fcl).ok());
+  const Status created = FclSelfCollisionChecker::create(refModel, fcl);
+  ASSERT_TRUE(created.ok()) << created.toString();
   SelfCollisionChecker<T> gq(gqModel);
   std::uint64_t rng = 2024;
   std::vector<Disagreement> disagreements;
@@ -66,26 +99,48 @@ template <class T> void compareOnRandomConfigurations(const RobotFiles& robot, s
     for (const auto& p : onlyGq) disagreements.push_back({k, p, true, exactLinkGap(*refModel, q, p)});
     for (const auto& p : onlyFcl) disagreements.push_back({k, p, false, exactLinkGap(*refModel, q, p)});
   }
-  std::printf("[%s, %s] %zu configurations, %zu colliding (FCL), %zu disagreements\n", robot.name,
+  std::printf("[%s %s, %s] %zu configurations, %zu colliding (FCL), %zu disagreements\n", robot.name, toString(rep),
               std::is_same_v<T, float> ? "float" : "double", count, collidingConfigurations, disagreements.size());
   EXPECT_GT(collidingConfigurations, count / 100) << "the sample must exercise collisions";
   for (const auto& d : disagreements) {
-    const bool exactSays = d.exactGap <= 0;
-    std::printf("  config %zu %s - %s: gq %s, FCL %s, exact SAT gap %.3Le m -> %s right\n", d.configuration,
+    const bool decided = d.exact.provesContact() || d.exact.provesSeparation();
+    const bool gqRight = decided && d.gqSays == d.exact.provesContact();
+    std::printf("  config %zu %s - %s: gq %s, FCL %s, exact gap in [%.3Le, %.3Le] m -> %s\n", d.configuration,
                 refModel->links[d.pair.a].name.c_str(), refModel->links[d.pair.b].name.c_str(),
-                d.gqSays ? "collides" : "free", d.gqSays ? "free" : "collides", d.exactGap,
-                d.gqSays == exactSays ? "gq" : "FCL");
-    EXPECT_TRUE(d.gqSays == exactSays || std::abs(double(d.exactGap)) <= kTouchingTolerance<T>)
-        << "gq is wrong by " << double(d.exactGap) << " m on configuration " << d.configuration;
+                d.gqSays ? "collides" : "free", d.gqSays ? "free" : "collides", d.exact.lower, d.exact.upper,
+                !decided ? "touching within rounding" : gqRight ? "gq right" : "FCL right");
+    const bool nearTouching = std::max(std::abs(double(d.exact.lower)), std::abs(double(d.exact.upper))) <=
+                                  kTouchingTolerance<T> ||
+                              (!decided && double(d.exact.upper) <= kTouchingTolerance<T>);
+    EXPECT_TRUE(gqRight || nearTouching) << "gq is wrong on configuration " << d.configuration;
   }
 }
 
 TYPED_TEST(FclAgreement, PandaHullModeAgreesWithFclOnTenThousandRandomConfigurations) {
-  compareOnRandomConfigurations<TypeParam>(kPanda, 10000);
+  compareOnRandomConfigurations<TypeParam>(kPanda, Representation::Hull, 10000);
 }
 
 TYPED_TEST(FclAgreement, Ur5HullModeAgreesWithFclOnTenThousandRandomConfigurations) {
-  compareOnRandomConfigurations<TypeParam>(kUr5, 10000);
+  compareOnRandomConfigurations<TypeParam>(kUr5, Representation::Hull, 10000);
+}
+
+// Exact triangle meshes (surfaces: a link inside another without crossing triangles is not a contact, in gq and FCL).
+TYPED_TEST(FclAgreement, PandaMeshModeAgreesWithFclOnTenThousandRandomConfigurations) {
+  compareOnRandomConfigurations<TypeParam>(kPanda, Representation::Mesh, 10000);
+}
+
+TYPED_TEST(FclAgreement, Ur5MeshModeAgreesWithFclOnTenThousandRandomConfigurations) {
+  compareOnRandomConfigurations<TypeParam>(kUr5, Representation::Mesh, 10000);
+}
+
+// Panda's primitive URDF: spheres and exact cylinders (fcl::Cylinder on the FCL side).
+TYPED_TEST(FclAgreement, PandaPrimitiveUrdfAgreesWithFclOnTenThousandRandomConfigurations) {
+  compareOnRandomConfigurations<TypeParam>(kPandaPrimitives, Representation::Hull, 10000);
+}
+
+TYPED_TEST(FclAgreement, BestPrimitiveModeAgreesWithFclOnTenThousandRandomConfigurations) {
+  compareOnRandomConfigurations<TypeParam>(kPanda, Representation::BestPrimitive, 10000);
+  compareOnRandomConfigurations<TypeParam>(kUr5, Representation::BestPrimitive, 10000);
 }
 
 }  // namespace
