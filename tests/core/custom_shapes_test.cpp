@@ -74,15 +74,22 @@ TYPED_TEST(CustomShapes, ConeRaycastHitsBaseSideAndApexAtTheClosedForm) {
     const double x = 0.9 * h * u(gen), rx = k * (h - x), zs = 0.9 * rx * u(gen), ys = std::sqrt(rx * rx - zs * zs);
     this->expectHit(cone, pose, {x, 5, zs}, {0, -1, 0}, 5 - ys, Eigen::Vector3d(k * rx, ys, zs).normalized());
   }
-  // Along -X on the axis: the apex at x = h. The apex is a double root of the side's quadratic, so the entry is
-  // conditioned like sqrt(epsilon): the tolerance is sqrt(float epsilon) in float.
+  // Along -X on the axis: the apex at x = h, a double root of the side's quadratic. The discriminant is evaluated
+  // without cancellation (exactly 0 here), so the apex is as accurate as any other hit: a few ulps of the distance.
   RaycastHit<T> hit;
   std::uint32_t count = 0;
   ASSERT_TRUE(raycast(Vec3<T>(T(5), T(0), T(0)), Vec3<T>(T(-1), T(0), T(0)), Geometry<T>(cone), Transform<T>(), T(100),
                       HitFlags(), 1u, &hit, count).ok());
   ASSERT_EQ(count, 1u);
-  const double apexTol = std::is_same_v<T, double> ? 1e-7 : 2e-3;
+  const double apexTol = std::is_same_v<T, double> ? 1e-12 : 2e-6;
   EXPECT_NEAR(double(hit.distance), 5 - h, apexTol);
+  // Parallel to the axis just off it: enters the side where the section radius k (h - x) equals the offset.
+  for (const double offset : {1e-2, 1e-3, 1e-4}) {
+    ASSERT_TRUE(raycast(Vec3<T>(T(5), T(offset), T(0)), Vec3<T>(T(-1), T(0), T(0)), Geometry<T>(cone), Transform<T>(),
+                        T(100), HitFlags(), 1u, &hit, count).ok());
+    ASSERT_EQ(count, 1u);
+    EXPECT_NEAR(double(hit.distance), 5 - (h - offset / k), apexTol * 10) << "offset " << offset;
+  }
 }
 
 TYPED_TEST(CustomShapes, RaysPastTheShapesMiss) {

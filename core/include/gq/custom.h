@@ -1,11 +1,14 @@
 #pragma once
 // Custom geometry: a user shape that takes part in every query through callbacks (the spec's
 // PxCustomGeometry::Callbacks). Everything is in the shape's local frame. A convex custom shape needs only
-// localBounds, support and raycast: overlap, penetration, distance and sweeps then go through GJK/EPA.
+// localBounds, support and raycast: overlap, penetration, distance and sweeps then go through GJK/EPA. It may also
+// answer overlap, penetration and sweeps itself (exactly, or faster) by overriding the optional query callbacks.
 #include <cstdint>
 
+#include "gq/geometry.h"
 #include "gq/hit.h"
 #include "gq/math.h"
+#include "gq/transform.h"
 
 namespace gq {
 
@@ -25,6 +28,30 @@ template <class T> class CustomGeometryCallbacks {
   // Whether the shape is convex (support mapping describes it exactly). Non-convex custom shapes answer only
   // raycast and bounds; other queries report Unsupported.
   virtual bool isConvex() const { return true; }
+
+  // Optional queries against another geometry (the spec's Callbacks::overlap, computePenetration and sweep). The
+  // other geometry's pose and every vector are in this shape's local frame. Return true when answered (outputs
+  // written), false to let gq run its generic algorithm: GJK for overlap, GJK + EPA for penetration, conservative
+  // advancement for sweeps. Only convex custom shapes are asked; when both shapes are custom, geom0's callbacks are
+  // asked first. Answers must be finite (a non-finite answer makes the query return InternalError).
+  //
+  // overlap: touching counts as overlapping.
+  virtual bool overlap(const Geometry<T>& /*other*/, const Transform<T>& /*otherPose*/, bool& /*overlapping*/) const {
+    return false;
+  }
+  // When `penetrating`: translating THIS shape by direction * depth separates the two (direction unit, depth >= 0).
+  virtual bool computePenetration(const Geometry<T>& /*other*/, const Transform<T>& /*otherPose*/, bool& /*penetrating*/,
+                                  Vec3<T>& /*direction*/, T& /*depth*/) const {
+    return false;
+  }
+  // `swept` (sphere, capsule, box or convex mesh, grown by the rounded shell `inflation`) moves from sweptPose along
+  // unitDir for at most maxDist against this shape. On a hit set hasHit and hit.distance, hit.normal (unit, out of
+  // this shape: dot(normal, unitDir) <= 0) and hit.position (the touching point); an initial overlap (touching
+  // counts) is hit.initialOverlap = true with distance 0. Other hit fields are ignored; gq applies the flag rules.
+  virtual bool sweep(const Vec3<T>& /*unitDir*/, T /*maxDist*/, const Geometry<T>& /*swept*/,
+                     const Transform<T>& /*sweptPose*/, T /*inflation*/, SweepHit<T>& /*hit*/, bool& /*hasHit*/) const {
+    return false;
+  }
 };
 
 }  // namespace gq

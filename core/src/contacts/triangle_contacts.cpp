@@ -5,11 +5,15 @@
 // 2. The face normal n (oriented towards the shape) explains the contact when the shape's separation from the
 //    triangle's plane, s_f = n.(support(-n) - v0) - margin, is within meshContactMargin of s (always s_f <= s). Then
 //    the manifold is built along n: core vertices of the shape whose projection falls inside the triangle (separation
-//    n.(p - v0) - margin), and triangle vertices under the shape (a ray from below the vertex along n enters the
-//    shape at its lower surface). Otherwise, or when no point lies under the face, the closest point alone, along N.
+//    n.(p - v0) - margin), triangle vertices under the shape (a ray from below the vertex along n enters the shape
+//    at its lower surface), and the crossings of the shape's core edges with the triangle's edges seen along n (the
+//    corners of the contact polygon where a face or an edge of the shape straddles the triangle's boundary).
+//    Otherwise, or when no point lies under the face, the closest point alone, along N.
 // 3. At most 4 points: the deepest, the one farthest from it, the one farthest from the line of those two, and the
 //    one farthest from the three chosen (a spread-out, stable set).
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "common/validate.h"
@@ -37,6 +41,46 @@ template <class T> std::vector<Vec3<T>> coreVertices(const detail::ConvexShape<T
     for (const Vec3<T>& v : a.hull->vertices) out.push_back(a.pose.transform(a.hullScaled ? Vec3<T>(a.hullScale * v) : v));
   }
   return out;
+}
+
+// Core edges of the shape (index pairs into coreVertices): the box's 12, the capsule's segment, every hull polygon
+// edge once (each appears in two polygons, once in each direction).
+template <class T> std::vector<std::array<std::uint32_t, 2>> coreEdges(const detail::ConvexShape<T>& a) {
+  using Kind = typename detail::ConvexShape<T>::Kind;
+  std::vector<std::array<std::uint32_t, 2>> out;
+  if (a.kind == Kind::Box) {
+    for (std::uint32_t c = 0; c < 8; ++c)
+      for (std::uint32_t axis = 1; axis < 8; axis <<= 1)
+        if (!(c & axis)) out.push_back({c, c | axis});
+  } else if (a.kind == Kind::Segment) {
+    out.push_back({0u, 1u});
+  } else if (a.kind == Kind::Hull) {
+    for (const HullPolygon<T>& poly : a.hull->polygons)
+      for (std::uint32_t k = 0; k < poly.indexCount; ++k) {
+        const std::uint32_t u = a.hull->polygonVertices[poly.indexBase + k];
+        const std::uint32_t v = a.hull->polygonVertices[poly.indexBase + (k + 1) % poly.indexCount];
+        if (u < v) out.push_back({u, v});
+      }
+  }
+  return out;
+}
+
+// Crossings, seen along n, of the core edge p-q with the triangle's edges: the point of p-q above each crossing.
+// Solves p + s (q - p) = a + t (b - a) in the plane orthogonal to n (2D cross products taken along n).
+template <class T>
+void addEdgeCrossings(const Triangle<T>& tri, const Vec3<T>& n, const Vec3<T>& p, const Vec3<T>& q,
+                      std::vector<Vec3<T>>& out) {
+  const Vec3<T> e = q - p;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3<T>& a = tri.verts[k];
+    const Vec3<T> f = tri.verts[(k + 1) % 3] - a;
+    const T den = n.dot(e.cross(f));
+    // Parallel in projection (or an edge along n): no single crossing.
+    if (!(std::abs(den) > T(tol::Rel<T>::kEpsilon) * e.norm() * f.norm())) continue;
+    const Vec3<T> r = a - p;
+    const T s = n.dot(r.cross(f)) / den, t = n.dot(r.cross(e)) / den;
+    if (s >= T(0) && s <= T(1) && t >= T(0) && t <= T(1)) out.push_back(Vec3<T>(p + s * e));
+  }
 }
 
 // Whether p projects (along the triangle's normal) inside the triangle grown by `slack`.
@@ -135,9 +179,14 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
       std::vector<Candidate<T>> face;
       if (faceSeparation <= contactDistance && projectsInside(triangle, n, lowest, slack))
         face.push_back({lowest, faceSeparation});
-      for (const Vec3<T>& p : coreVertices(a)) {
+      const std::vector<Vec3<T>> vertices = coreVertices(a);
+      std::vector<Vec3<T>> points;  // core points to test: vertices over the triangle, edge crossings of its boundary
+      for (const Vec3<T>& p : vertices)
+        if (projectsInside(triangle, n, p, slack)) points.push_back(p);
+      for (const auto& edge : coreEdges(a)) addEdgeCrossings(triangle, n, vertices[edge[0]], vertices[edge[1]], points);
+      for (const Vec3<T>& p : points) {
         const T s = n.dot(p - triangle.verts[0]) - a.margin;
-        if (s <= contactDistance && projectsInside(triangle, n, p, slack)) face.push_back({Vec3<T>(p - a.margin * n), s});
+        if (s <= contactDistance) face.push_back({Vec3<T>(p - a.margin * n), s});
       }
       // Triangle vertices under the shape: a ray from below the vertex along n enters the shape's lower surface.
       const T below = T(2) * a.size + std::abs(faceSeparation) + contactDistance;

@@ -2,7 +2,8 @@
 // x >= -h and y^2 + z^2 <= k^2 (h - x)^2 with h - x >= 0 (one nappe of the double cone).
 // Support: the apex or the base rim point along d, whichever is farther. Raycast: the base slab clipped with the
 // nappe; f(t) = |o_yz + t d_yz|^2 - k^2 (w0 - t d.x)^2 (w = h - x) is a quadratic A t^2 + 2 B t + C whose
-// non-positive set, restricted to w >= 0, is the nappe's interval.
+// non-positive set, restricted to w >= 0, is the nappe's interval. Its discriminant is evaluated in a cancellation-free
+// form (see clipNappe).
 #include <cmath>
 
 #include "custom/ray_interval.h"
@@ -35,7 +36,12 @@ template <class T> void clipNappe(detail::RayInterval<T>& r, const Vec3<T>& o, c
     if (!(B > T(0) ? clipPiece(-kInf, t) : clipPiece(t, kInf))) r.exit = -kInf;
     return;
   }
-  const T disc = B * B - A * C;
+  // B^2 - AC with the k^4 terms cancelled symbolically: k^2 |w0 d_yz + dx o_yz|^2 - (o_yz x d_yz)^2. On the axis
+  // (apex double root) both terms vanish exactly instead of leaving rounding noise of order eps, whose square root
+  // moved the apex hit by sqrt(eps).
+  const T my = w0 * d.y() + d.x() * o.y(), mz = w0 * d.z() + d.x() * o.z();
+  const T cross = o.y() * d.z() - o.z() * d.y();
+  const T disc = k2 * (my * my + mz * mz) - cross * cross;
   if (disc < T(0)) {
     if (A > T(0) || !clipPiece(-kInf, kInf)) r.exit = -kInf;
     return;

@@ -33,7 +33,9 @@ bool CylinderCallbacks<T>::raycast(const Vec3<T>& o, const Vec3<T>& d, T maxDist
   if (a == T(0)) {
     if (c > T(0)) return false;  // parallel to the axis, outside the side
   } else {
-    const T disc = b * b - a * c;
+    // b^2 - a c = r^2 |d_yz|^2 - (o_yz x d_yz)^2 (Lagrange's identity): no cancellation for rays grazing the side.
+    const T cross = o.y() * d.z() - o.z() * d.y();
+    const T disc = radius_ * radius_ * a - cross * cross;
     if (disc < T(0)) return false;
     // Roots (-b -+ sqrt(disc)) / a, the first through c / (-b + sqrt) when that avoids cancellation.
     const T s = std::sqrt(disc);

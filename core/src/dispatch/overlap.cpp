@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/validate.h"
+#include "custom/callback_queries.h"
 #include "gq/custom.h"
 #include "gq/query.h"
 #include "overlap/overlap.h"
@@ -47,6 +48,14 @@ Status customKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geometr
   return Status();
 }
 
+// A cell with custom geometry: the shape's own overlap callback when it answers, else `Fallback` (gq/custom.h).
+template <class T, OverlapFn<T> Fallback>
+Status customFirst(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                   bool& overlapping) {
+  if (detail::customOverlap(g0, p0, g1, p1, overlapping)) return Status();
+  return Fallback(g0, p0, g1, p1, overlapping);
+}
+
 // Non-convex custom shapes answer only raycast and bounds (gq/custom.h).
 template <class T> Status checkConvexCustom(const Geometry<T>& g) {
   if (g.type() != GeometryType::Custom || callbacksOf(g).isConvex()) return Status();
@@ -82,35 +91,35 @@ template <class T> constexpr OverlapTable<T> makeOverlapTable() {
   setPair<T, GT::Sphere, GT::Capsule, pairKernel<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::overlapSphereCapsule<T>>>(t);
   setPair<T, GT::Sphere, GT::Box, pairKernel<T, SphereGeometry<T>, BoxGeometry<T>, detail::overlapSphereBox<T>>>(t);
   setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::overlapSphereConvex<T>>>(t);
-  setPair<T, GT::Sphere, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Sphere, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::Plane, GT::Plane, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::Capsule, pairKernel<T, PlaneGeometry<T>, CapsuleGeometry<T>, detail::overlapPlaneCapsule<T>>>(t);
   setPair<T, GT::Plane, GT::Box, pairKernel<T, PlaneGeometry<T>, BoxGeometry<T>, detail::overlapPlaneBox<T>>>(t);
   setPair<T, GT::Plane, GT::ConvexMesh, pairKernel<T, PlaneGeometry<T>, ConvexMeshGeometry<T>, detail::overlapPlaneConvex<T>>>(t);
   setPair<T, GT::Plane, GT::TriangleMesh, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::HeightField, notDefinedBySpec<T>>(t);
-  setPair<T, GT::Plane, GT::Custom, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::overlapPlaneCustom<T>>>(t);
+  setPair<T, GT::Plane, GT::Custom, customFirst<T, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::overlapPlaneCustom<T>>>>(t);
   setPair<T, GT::Capsule, GT::Capsule, pairKernel<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::overlapCapsuleCapsule<T>>>(t);
   setPair<T, GT::Capsule, GT::Box, pairKernel<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::overlapCapsuleBox<T>>>(t);
   setPair<T, GT::Capsule, GT::ConvexMesh, pairKernel<T, CapsuleGeometry<T>, ConvexMeshGeometry<T>, detail::overlapCapsuleConvex<T>>>(t);
-  setPair<T, GT::Capsule, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Capsule, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::Box, GT::Box, pairKernel<T, BoxGeometry<T>, BoxGeometry<T>, detail::overlapBoxBox<T>>>(t);
   setPair<T, GT::Box, GT::ConvexMesh, pairKernel<T, BoxGeometry<T>, ConvexMeshGeometry<T>, detail::overlapBoxConvex<T>>>(t);
-  setPair<T, GT::Box, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Box, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::overlapConvexConvex<T>>>(t);
-  setPair<T, GT::ConvexMesh, GT::Custom, customKernel<T>>(t);
-  setPair<T, GT::Custom, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::ConvexMesh, GT::Custom, customFirst<T, customKernel<T>>>(t);
+  setPair<T, GT::Custom, GT::Custom, customFirst<T, customKernel<T>>>(t);
   // Thin surfaces (triangle mesh, heightfield): overlap/<shape>_triangle_mesh.cpp etc., exact per-triangle tests.
   setPair<T, GT::Sphere, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
   setPair<T, GT::Capsule, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
   setPair<T, GT::Box, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
   setPair<T, GT::ConvexMesh, GT::TriangleMesh, detail::overlapConvexTriangleMesh<T>>(t);
-  setPair<T, GT::TriangleMesh, GT::Custom, swapped<T, detail::overlapConvexTriangleMesh<T>>>(t);
+  setPair<T, GT::TriangleMesh, GT::Custom, customFirst<T, swapped<T, detail::overlapConvexTriangleMesh<T>>>>(t);
   setPair<T, GT::Sphere, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
   setPair<T, GT::Capsule, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
   setPair<T, GT::Box, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
   setPair<T, GT::ConvexMesh, GT::HeightField, detail::overlapConvexHeightField<T>>(t);
-  setPair<T, GT::HeightField, GT::Custom, swapped<T, detail::overlapConvexHeightField<T>>>(t);
+  setPair<T, GT::HeightField, GT::Custom, customFirst<T, swapped<T, detail::overlapConvexHeightField<T>>>>(t);
   setPair<T, GT::TriangleMesh, GT::TriangleMesh, detail::overlapTriangleMeshTriangleMesh<T>>(t);
   setPair<T, GT::TriangleMesh, GT::HeightField, detail::overlapTriangleMeshHeightField<T>>(t);
   setPair<T, GT::HeightField, GT::HeightField, detail::overlapHeightFieldHeightField<T>>(t);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/validate.h"
+#include "custom/callback_queries.h"
 #include "gq/custom.h"
 #include "gq/mesh_query.h"
 #include "gq/query.h"
@@ -50,6 +51,17 @@ Status customKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geometr
   return detail::penetrationCustomAny(g0, p0, g1, p1, result.penetrating, result.direction, result.depth);
 }
 
+// A cell with custom geometry: the shape's own penetration callback when it answers, else `Fallback` (gq/custom.h).
+template <class T, PenetrationFn<T> Fallback>
+Status customFirst(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                   PenetrationResult<T>& result) {
+  bool answered = false;
+  if (Status s = detail::customPenetration(g0, p0, g1, p1, answered, result.penetrating, result.direction, result.depth);
+      !s.ok() || answered)
+    return s;
+  return Fallback(g0, p0, g1, p1, result);
+}
+
 // Non-convex custom shapes answer only raycast and bounds (gq/custom.h).
 template <class T> Status checkConvexCustom(const Geometry<T>& g) {
   if (g.type() != GeometryType::Custom || callbacksOf(g).isConvex()) return Status();
@@ -88,34 +100,34 @@ template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   setPair<T, GT::Sphere, GT::Capsule, pairKernel<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::penetrationSphereCapsule<T>>>(t);
   setPair<T, GT::Sphere, GT::Box, pairKernel<T, SphereGeometry<T>, BoxGeometry<T>, detail::penetrationSphereBox<T>>>(t);
   setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationSphereConvex<T>>>(t);
-  setPair<T, GT::Sphere, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Sphere, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::Plane, GT::Plane, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::Capsule, pairKernel<T, PlaneGeometry<T>, CapsuleGeometry<T>, detail::penetrationPlaneCapsule<T>>>(t);
   setPair<T, GT::Plane, GT::Box, pairKernel<T, PlaneGeometry<T>, BoxGeometry<T>, detail::penetrationPlaneBox<T>>>(t);
   setPair<T, GT::Plane, GT::ConvexMesh, pairKernel<T, PlaneGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationPlaneConvex<T>>>(t);
   setPair<T, GT::Plane, GT::TriangleMesh, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::HeightField, notDefinedBySpec<T>>(t);
-  setPair<T, GT::Plane, GT::Custom, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::penetrationPlaneCustom<T>>>(t);
+  setPair<T, GT::Plane, GT::Custom, customFirst<T, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::penetrationPlaneCustom<T>>>>(t);
   setPair<T, GT::Capsule, GT::Capsule, pairKernel<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::penetrationCapsuleCapsule<T>>>(t);
   setPair<T, GT::Capsule, GT::Box, pairKernel<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::penetrationCapsuleBox<T>>>(t);
   setPair<T, GT::Capsule, GT::ConvexMesh, pairKernel<T, CapsuleGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationCapsuleConvex<T>>>(t);
-  setPair<T, GT::Capsule, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Capsule, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::Box, GT::Box, pairKernel<T, BoxGeometry<T>, BoxGeometry<T>, detail::penetrationBoxBox<T>>>(t);
   setPair<T, GT::Box, GT::ConvexMesh, pairKernel<T, BoxGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationBoxConvex<T>>>(t);
-  setPair<T, GT::Box, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::Box, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationConvexConvex<T>>>(t);
-  setPair<T, GT::ConvexMesh, GT::Custom, customKernel<T>>(t);
-  setPair<T, GT::Custom, GT::Custom, customKernel<T>>(t);
+  setPair<T, GT::ConvexMesh, GT::Custom, customFirst<T, customKernel<T>>>(t);
+  setPair<T, GT::Custom, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::Sphere, GT::TriangleMesh, surfaceKernel<T>>(t);
   setPair<T, GT::Capsule, GT::TriangleMesh, surfaceKernel<T>>(t);
   setPair<T, GT::Box, GT::TriangleMesh, surfaceKernel<T>>(t);
   setPair<T, GT::ConvexMesh, GT::TriangleMesh, surfaceKernel<T>>(t);
-  setPair<T, GT::TriangleMesh, GT::Custom, swapped<T, surfaceKernel<T>>>(t);
+  setPair<T, GT::TriangleMesh, GT::Custom, customFirst<T, swapped<T, surfaceKernel<T>>>>(t);
   setPair<T, GT::Sphere, GT::HeightField, surfaceKernel<T>>(t);
   setPair<T, GT::Capsule, GT::HeightField, surfaceKernel<T>>(t);
   setPair<T, GT::Box, GT::HeightField, surfaceKernel<T>>(t);
   setPair<T, GT::ConvexMesh, GT::HeightField, surfaceKernel<T>>(t);
-  setPair<T, GT::HeightField, GT::Custom, swapped<T, surfaceKernel<T>>>(t);
+  setPair<T, GT::HeightField, GT::Custom, customFirst<T, swapped<T, surfaceKernel<T>>>>(t);
   setPair<T, GT::TriangleMesh, GT::TriangleMesh, notDefinedBySpec<T>>(t);
   setPair<T, GT::TriangleMesh, GT::HeightField, notDefinedBySpec<T>>(t);
   setPair<T, GT::HeightField, GT::HeightField, notDefinedBySpec<T>>(t);

@@ -42,7 +42,7 @@ template <class T> constexpr Row<T> convexRow(SweepFn<T> sphereCell) {
           detail::sweepConvexConvex<T>,
           detail::sweepConvexTriangleMesh<T>,
           detail::sweepConvexHeightField<T>,
-          detail::sweepConvexConvex<T>};
+          detail::sweepConvexCustom<T>};
 }
 template <class T> constexpr Row<T> unsupportedRow() {
   return {unsupported<T>, unsupported<T>, unsupported<T>, unsupported<T>,
@@ -166,6 +166,7 @@ Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const 
     detail::SweepOutcome<T> o;
     kSweepTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())](
         geom0, local0, geom1, local1, q, o);
+    if (!o.status.ok()) return o.status;
     if (!finiteOutcome(o)) return Status::internal("sweep produced a non-finite result");
     hasHit = o.hit;
     if (o.hit) writeHit(o, q, pose0.p, hit);

@@ -5,6 +5,16 @@
 //
 // The polytope lives in fixed-capacity arrays on the stack (no allocation per query): at most kEpaMaxIterations + 4
 // vertices, and a closed triangulated polytope with V vertices has 2V - 4 faces; dead faces' slots are reused.
+//
+// Bounds: the polytope lies inside D, so its closest face distance L is a lower bound of the core depth; every
+// support value h_D(n) = n.s_D(n) along a unit n is an upper bound U (translating by U along n separates). EPA stops
+// when the closest face's own gap h_D(n_f) - L, or the best U - L, is within tolerance. On curved support maps
+// (cylinders, cones, user shapes) whose closest boundary is a ring or a disk, the polytope only approaches it as
+// O(1/N^2) in its vertex count N, so the iterations may run out first: then the best upper bound is reported (a
+// translation that separates, never too shallow) when U - L is within kEpaCurvedTolerance of the shapes' size, and
+// NotConverged otherwise. A face whose expansion would make a degenerate face (the new support point collinear with a
+// horizon edge: coplanar disks, diameters) is kept as final instead of aborting: it still bounds from below.
+// The size of D is a.size + b.size (its bounding radius about the centre difference).
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -21,7 +31,11 @@ template <class T> struct EpaFace {
   Vec3<T> n;                       // outward unit normal
   T dist;                          // n . vertex: signed distance of the plane from the origin
   bool alive = true;
+  bool final = false;              // cannot be expanded without degenerating: bounds, but is not refined
 };
+
+// Relative certified error accepted when EPA runs out of iterations on a curved support map (see above).
+inline constexpr double kEpaCurvedTolerance = 1e-2;
 
 inline constexpr std::uint32_t kEpaMaxPoints = kEpaMaxIterations + 4;
 inline constexpr std::uint32_t kEpaMaxFaces = 2 * kEpaMaxPoints;
@@ -132,11 +146,17 @@ template <class T> bool buildTetrahedron(const GjkSimplex<T>& s, Polytope<T>& po
   return true;
 }
 
-template <class T> std::uint32_t closestFace(const Polytope<T>& poly) {
-  std::uint32_t best = 0;
+// Closest face that may still be expanded (faceCount when none), and the lower bound: the closest face of all.
+template <class T> std::uint32_t closestFace(const Polytope<T>& poly, T& lowerBound) {
+  std::uint32_t best = poly.faceCount;
   T bestDist = std::numeric_limits<T>::infinity();
-  for (std::uint32_t i = 0; i < poly.faceCount; ++i)
-    if (poly.faces[i].alive && poly.faces[i].dist < bestDist) { bestDist = poly.faces[i].dist; best = i; }
+  lowerBound = std::numeric_limits<T>::infinity();
+  for (std::uint32_t i = 0; i < poly.faceCount; ++i) {
+    const EpaFace<T>& f = poly.faces[i];
+    if (!f.alive) continue;
+    lowerBound = std::min(lowerBound, f.dist);
+    if (!f.final && f.dist < bestDist) { bestDist = f.dist; best = i; }
+  }
   return best;
 }
 
@@ -160,28 +180,39 @@ struct Horizon {
   }
 };
 
-// Removes the faces that see `w` and closes the hole with faces fanning from w to the horizon edges, reusing the
-// removed faces' slots. False (polytope left as is or partly updated) when a buffer is full or a face degenerates.
-template <class T> bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p) {
+// Removes the faces that see `w` (farther than `tolerance` in front of them) and closes the hole with faces fanning from w to the horizon edges, reusing the
+// removed faces' slots. Transactional: when a buffer is full, w is already a vertex, or a new face degenerates or
+// comes closer to the origin than `lower` (the closest face), returns false and leaves the polytope as it was.
+template <class T>
+bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p, T lower, T tolerance) {
   if (poly.pointCount == kEpaMaxPoints) return false;
+  // A support point already in the polytope (a cone's apex, a box corner reached again) would fold the polytope.
+  for (std::uint32_t i = 0; i < poly.pointCount; ++i)
+    if ((poly.points[i].w - p.w).squaredNorm() <= tolerance * tolerance) return false;
   const std::uint32_t newIndex = poly.pointCount;
-  poly.points[poly.pointCount++] = p;
+  poly.points[newIndex] = p;
   Horizon horizon;
   std::array<std::uint32_t, kEpaMaxFaces> freeSlots;
   std::uint32_t freeCount = 0;
   for (std::uint32_t i = 0; i < poly.faceCount; ++i) {
-    EpaFace<T>& f = poly.faces[i];
-    if (!f.alive || (i != best && !(f.n.dot(p.w - poly.points[f.v[0]].w) > T(0)))) continue;
-    f.alive = false;
+    const EpaFace<T>& f = poly.faces[i];
+    // Faces coplanar with w within tolerance stay (a consistent verdict on flat patches: cylinder caps, cone
+    // bases), so the removed region stays a disk and its boundary one loop.
+    if (!f.alive || (i != best && !(f.n.dot(p.w - poly.points[f.v[0]].w) > tolerance))) continue;
     freeSlots[freeCount++] = i;
     for (int e = 0; e < 3; ++e) horizon.toggle(Edge(f.v[e], f.v[(e + 1) % 3]));
   }
   if (horizon.overflow || poly.faceCount + horizon.count > kEpaMaxFaces + freeCount) return false;
-  for (std::uint32_t k = 0; k < horizon.count; ++k) {
-    EpaFace<T> f;
-    if (!makeFace(poly, horizon.edges[k].first, horizon.edges[k].second, newIndex, f)) return false;
-    poly.faces[k < freeCount ? freeSlots[k] : poly.faceCount++] = f;
-  }
+  std::array<EpaFace<T>, kEpaMaxHorizon> added;
+  // The polytope only grows, so no plane may come closer to the origin than the closest face did: a new face that
+  // does is a rounding-flipped sliver (w nearly on a horizon edge, e.g. between two close rim points in float).
+  for (std::uint32_t k = 0; k < horizon.count; ++k)
+    if (!makeFace(poly, horizon.edges[k].first, horizon.edges[k].second, newIndex, added[k]) ||
+        added[k].dist < lower - tolerance)
+      return false;
+  ++poly.pointCount;
+  for (std::uint32_t k = 0; k < freeCount; ++k) poly.faces[freeSlots[k]].alive = false;
+  for (std::uint32_t k = 0; k < horizon.count; ++k) poly.faces[k < freeCount ? freeSlots[k] : poly.faceCount++] = added[k];
   return true;
 }
 
@@ -206,6 +237,73 @@ void finishPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, const V
   r.depth = std::max(T(0), coreDepth) + a.margin + b.margin;
   r.point0 = coreA + a.margin * n;
   r.point1 = coreB - b.margin * n;
+}
+
+// Upper bound refinement for curved support maps: around a direction n, three support points at directions tilted
+// by `tilt` span a plane whose normal m is the boundary's normal there when the support region is flat or ruled
+// (cylinder caps and sides, cone sides): h_D(m) then drops to the exact depth. Keeps m when it lowers the bound.
+inline constexpr std::array<double, 4> kRefineTilts = {1e-1, 1e-2, 1e-4, 1e-6};
+
+template <class T>
+void refineUpperBound(SupportMap<T>& sa, SupportMap<T>& sb, Vec3<T> n, T& upper, SupportPoint<T>& upperPoint) {
+  for (const double tilt : kRefineTilts) {
+    const auto [e1, e2] = orthonormalPair(n);
+    const T t(tilt), c = T(0.5), s = T(0.8660254037844386);
+    const Vec3<T> p0 = supportOfDifference(sa, sb, Vec3<T>(n + t * e1)).w;
+    const Vec3<T> p1 = supportOfDifference(sa, sb, Vec3<T>(n + t * (-c * e1 + s * e2))).w;
+    const Vec3<T> p2 = supportOfDifference(sa, sb, Vec3<T>(n + t * (-c * e1 - s * e2))).w;
+    Vec3<T> m = (p1 - p0).cross(p2 - p0);
+    if (!(m.squaredNorm() > T(0)) || !isFinite(m)) continue;
+    m.normalize();
+    if (m.dot(n) < T(0)) m = -m;
+    const SupportPoint<T> p = supportOfDifference(sa, sb, m);
+    const T h = m.dot(p.w);
+    if (h < upper) {
+      upper = h;
+      upperPoint = p;
+      n = m;
+    }
+  }
+}
+
+// Upper bound refinement for smooth support maps (balls, rounded user shapes): fits the osculating sphere of D's
+// boundary at the support point s(n) (radius from the support's derivative along two tangents: s(n + t e) - s(n) is
+// about R t e) and moves n to the normal of that sphere's point nearest to the origin, -C/|C| with C = s(n) - R n:
+// Newton's step on the depth, exact on a ball. Stops when a step no longer lowers the bound.
+inline constexpr double kOsculatingTilt = 1e-3;
+inline constexpr std::uint32_t kOsculatingSteps = 6;
+
+template <class T>
+void osculatingSteps(SupportMap<T>& sa, SupportMap<T>& sb, Vec3<T> n, T& upper, SupportPoint<T>& upperPoint) {
+  const T tilt(kOsculatingTilt);
+  for (std::uint32_t step = 0; step < kOsculatingSteps; ++step) {
+    const auto [e1, e2] = orthonormalPair(n);
+    const Vec3<T> s0 = supportOfDifference(sa, sb, n).w;
+    const T r1 = (supportOfDifference(sa, sb, Vec3<T>(n + tilt * e1)).w - s0).dot(e1) / tilt;
+    const T r2 = (supportOfDifference(sa, sb, Vec3<T>(n + tilt * e2)).w - s0).dot(e2) / tilt;
+    if (!(r1 > T(0) && r2 > T(0))) return;  // flat or ruled there: the plane fit's case
+    const Vec3<T> centre = s0 - T(0.5) * (r1 + r2) * n;
+    if (!(centre.squaredNorm() > T(0))) return;
+    const Vec3<T> m = -centre.normalized();
+    const SupportPoint<T> p = supportOfDifference(sa, sb, m);
+    const T h = m.dot(p.w);
+    if (!(h < upper)) return;
+    upper = h;
+    upperPoint = p;
+    n = m;
+  }
+}
+
+// Refines from the normal of every face that could still hide a lower bound (f.dist < upper: the minimum's basin may
+// be any of them, e.g. a cylinder's cap while the side's ring took the iterations) and from the best direction.
+template <class T>
+void refineFromFaces(const Polytope<T>& poly, SupportMap<T>& sa, SupportMap<T>& sb, T tolerance, T& upper,
+                     SupportPoint<T>& upperPoint) {
+  refineUpperBound(sa, sb, Vec3<T>(upperPoint.d.normalized()), upper, upperPoint);
+  for (std::uint32_t i = 0; i < poly.faceCount; ++i)
+    if (poly.faces[i].alive && poly.faces[i].dist < upper - tolerance)
+      refineUpperBound(sa, sb, poly.faces[i].n, upper, upperPoint);
+  osculatingSteps(sa, sb, Vec3<T>(upperPoint.d.normalized()), upper, upperPoint);
 }
 
 }  // namespace
@@ -241,24 +339,42 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
     finishPenetration(a, b, coreA, coreB, flatNormal, T(0), r);
     return r;
   }
-  EpaFace<T> f;  // closest face (a copy: expand may reuse its slot)
-  T gap = std::numeric_limits<T>::infinity();
+  // Best face (a copy: expand may reuse its slot) and best upper bound with its support point.
+  EpaFace<T> f;
+  T gap = std::numeric_limits<T>::infinity(), lower = T(0), upper = std::numeric_limits<T>::infinity();
+  SupportPoint<T> upperPoint{};
   std::uint32_t it = 0;
   while (it < kEpaMaxIterations) {
+    const std::uint32_t best = closestFace(poly, lower);
+    if (best == poly.faceCount) break;  // every face is final
     ++it;
-    const std::uint32_t best = closestFace(poly);
     f = poly.faces[best];
     const SupportPoint<T> p = supportOfDifference(sa, sb, f.n);
-    gap = f.n.dot(p.w) - f.dist;  // h_D(n) - face distance >= 0: the error bound of this face
-    if (gap <= tolerance || !expand(poly, best, p)) break;
+    const T h = f.n.dot(p.w);
+    gap = h - f.dist;  // h_D(n) - face distance >= 0: the error bound of this face
+    if (h < upper) { upper = h; upperPoint = p; }
+    if (gap <= tolerance || upper - lower <= tolerance) break;
+    if (!expand(poly, best, p, lower, tolerance)) poly.faces[best].final = true;
   }
-  if (!(gap <= tolerance))
-    r.status = Status::notConverged("EPA stopped after " + std::to_string(it) + " iterations with error bound " +
-                                    std::to_string(double(gap)));
-  Vec3<T> coreA, coreB;
-  faceWitnesses(poly, f, coreA, coreB);
-  finishPenetration(a, b, coreA, coreB, f.n, f.dist, r);
   r.iterations = it;
+  if (gap <= tolerance) {
+    Vec3<T> coreA, coreB;
+    faceWitnesses(poly, f, coreA, coreB);
+    finishPenetration(a, b, coreA, coreB, f.n, f.dist, r);
+    return r;
+  }
+  if (!std::isfinite(upper)) {
+    r.status = Status::notConverged("EPA found no face to expand");
+    return r;
+  }
+  refineFromFaces(poly, sa, sb, tolerance, upper, upperPoint);
+  // The best upper bound: its support point touches along its direction once translated by it.
+  const Vec3<T> n = upperPoint.d.normalized();
+  finishPenetration(a, b, upperPoint.a, upperPoint.b, n, upper, r);
+  const T curved = T(kEpaCurvedTolerance) * (a.size + b.size);  // the size of D = A - B
+  if (!(upper - lower <= std::max(tolerance, curved)))
+    r.status = Status::notConverged("EPA stopped after " + std::to_string(it) + " iterations with error bound " +
+                                    std::to_string(double(upper - lower)));
   return r;
 }
 

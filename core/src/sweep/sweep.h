@@ -15,6 +15,7 @@
 #include "gq/geometry.h"
 #include "gq/hit.h"
 #include "gq/mesh_query.h"
+#include "gq/status.h"
 #include "gq/transform.h"
 
 namespace gq::detail {
@@ -40,6 +41,7 @@ template <class T> struct SweepQuery {
 };
 
 template <class T> struct SweepOutcome {
+  Status status;  // not ok: a custom callback answered wrongly; the façade returns it
   bool hit = false;
   bool initialOverlap = false;
   T distance = T(0);
@@ -128,6 +130,10 @@ template <class T> void outcomeFromToi(const ToiResult<T>& toi, SweepOutcome<T>&
 // Kernels (the façade's table).
 template <class T>
 void sweepConvexConvex(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                       const SweepQuery<T>& q, SweepOutcome<T>& out);
+// Against custom geometry: its sweep callback when it answers (gq/custom.h), else sweepConvexConvex.
+template <class T>
+void sweepConvexCustom(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
                        const SweepQuery<T>& q, SweepOutcome<T>& out);
 template <class T>
 void sweepSphereSphere(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,

@@ -1,0 +1,74 @@
+// Custom geometry's optional overlap and penetration callbacks, asked by the dispatch tables (see callback_queries.h).
+#include "custom/callback_queries.h"
+
+#include <cmath>
+#include <string>
+
+#include "gq/tolerances.h"
+
+namespace gq::detail {
+namespace {
+
+template <class T> const CustomGeometryCallbacks<T>* callbacksIf(const Geometry<T>& g) {
+  const auto* c = g.template getIf<CustomGeometry<T>>();
+  return c ? c->callbacks.get() : nullptr;
+}
+
+template <class T> Status badAnswer(const CustomGeometryCallbacks<T>& cb, const char* what) {
+  return Status::internal(std::string("the custom geometry '") + cb.name() + "' returned " + what);
+}
+
+// The penetration callback of `self` (at pSelf) against `other` (at pOther). `sign` = +1 when self is geom0, -1 when
+// it is geom1 (then geom0 moves the other way).
+template <class T>
+Status askPenetration(const CustomGeometryCallbacks<T>& self, const Transform<T>& pSelf, const Geometry<T>& other,
+                      const Transform<T>& pOther, T sign, bool& answered, bool& penetrating, Vec3<T>& direction,
+                      T& depth) {
+  bool pen = false;
+  Vec3<T> dirLocal = Vec3<T>::UnitX();
+  T d = T(0);
+  answered = self.computePenetration(other, pOther.relativeTo(pSelf), pen, dirLocal, d);
+  if (!answered) return {};
+  if (pen) {
+    const T unitError = std::abs(dirLocal.norm() - T(1));
+    if (!isFinite(dirLocal) || !std::isfinite(d) || d < T(0) || !(unitError <= T(tol::kUnitDirection)))
+      return badAnswer(self, "a non-finite, negative or non-unit penetration");
+    direction = sign * pSelf.rotate(dirLocal.normalized());
+    depth = d;
+  }
+  penetrating = pen;
+  return {};
+}
+
+}  // namespace
+
+template <class T>
+bool customOverlap(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                   bool& overlapping) {
+  if (const auto* cb = callbacksIf(g0); cb && cb->overlap(g1, p1.relativeTo(p0), overlapping)) return true;
+  if (const auto* cb = callbacksIf(g1); cb && cb->overlap(g0, p0.relativeTo(p1), overlapping)) return true;
+  return false;
+}
+
+template <class T>
+Status customPenetration(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                         bool& answered, bool& penetrating, Vec3<T>& direction, T& depth) {
+  answered = false;
+  if (const auto* cb = callbacksIf(g0))
+    if (Status s = askPenetration(*cb, p0, g1, p1, T(1), answered, penetrating, direction, depth); !s.ok() || answered)
+      return s;
+  if (const auto* cb = callbacksIf(g1))
+    return askPenetration(*cb, p1, g0, p0, T(-1), answered, penetrating, direction, depth);
+  return {};
+}
+
+template bool customOverlap<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
+                                   const Transform<float>&, bool&);
+template bool customOverlap<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
+                                    const Transform<double>&, bool&);
+template Status customPenetration<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
+                                         const Transform<float>&, bool&, bool&, Vec3<float>&, float&);
+template Status customPenetration<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
+                                          const Transform<double>&, bool&, bool&, Vec3<double>&, double&);
+
+}  // namespace gq::detail
