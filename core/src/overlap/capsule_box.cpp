@@ -1,14 +1,19 @@
-// Capsule/box overlap: exact segment-box test (SAT) then segment-box distance <= r.
+// Capsule/box overlap: the capsule's segment against the box in the box's frame (overlap/segment_box.h). A
+// separating axis with a gap beyond the radius proves them apart; a segment meeting the box on every axis
+// overlaps; otherwise the exact segment-box distance decides. Touching counts as overlapping.
 #include "overlap/overlap.h"
-#include "overlap/polytope.h"
+#include "overlap/segment_box.h"
 
 namespace gq::detail {
 
 template <class T>
 bool overlapCapsuleBox(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1) {
-  Polytope<T>& box = scratchPolytope<T>(0);
-  buildBoxPolytope(g1, p1, box);
-  return overlapRoundedPolytope(capsuleCore(g0, p0), box);
+  const Vec3<T> c = p1.transformInv(p0.p);
+  const Vec3<T> d = p1.rotateInv(p0.rotate(Vec3<T>(g0.halfHeight, T(0), T(0))));
+  const SegmentBoxSat<T> sat = satSegmentBox(c, d, g1.halfExtents);
+  if (sat.overlap >= T(0)) return true;
+  if (-sat.overlap > g0.radius) return false;  // a separating gap bounds the distance from below
+  return closestSegmentBox(c, d, g1.halfExtents).distSq <= g0.radius * g0.radius;
 }
 
 template bool overlapCapsuleBox<float>(const CapsuleGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&);

@@ -1,17 +1,30 @@
-// Box/box MTD: exact SAT, minimum push-out over the 6 + 6 face planes and the crossing edge pairs.
+// Box/box MTD: the smallest normalised projection overlap over the 15 separating axes (overlap/box_box_sat.h),
+// exact; face axes win ties. Box 0 moves against the centre gap: direction = -sign(t.L) L / |L|.
+#include "overlap/box_box_sat.h"
 #include "penetration/penetration.h"
-#include "overlap/polytope.h"
 
 namespace gq::detail {
 
 template <class T>
 bool penetrationBoxBox(const BoxGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1,
                        Vec3<T>& direction, T& depth) {
-  Polytope<T>& a = scratchPolytope<T>(0);
-  Polytope<T>& b = scratchPolytope<T>(1);
-  buildBoxPolytope(g0, p0, a);
-  buildBoxPolytope(g1, p1, b);
-  return penetrationPolytopes(a, b, direction, depth);
+  const BoxPair<T> pair = boxPair(g0, p0, g1, p1);
+  T best = std::numeric_limits<T>::max();
+  Vec3<T> bestDir = Vec3<T>::UnitX();
+  bool separated = false;
+  forEachBoxAxis(pair, [&](const BoxAxis<T>& axis) {
+    if (axis.overlap < T(0)) return separated = true;
+    const T d = axis.overlap / axis.length;
+    if (d < best) {
+      best = d;
+      bestDir = (axis.gap > T(0) ? -axis.axis : axis.axis) / axis.length;
+    }
+    return false;
+  });
+  if (separated) return false;
+  direction = p0.rotate(bestDir);
+  depth = best;
+  return true;
 }
 
 template bool penetrationBoxBox<float>(const BoxGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&,

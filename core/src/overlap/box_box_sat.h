@@ -1,0 +1,74 @@
+#pragma once
+// Separating axes of two oriented boxes, worked in box 0's frame (Gottschalk, Lin & Manocha 1996): box 0's three
+// face normals, box 1's three, and the nine edge-pair cross products. With R = R0^T R1 (box 1's axes as columns in
+// box 0's frame) and t = box 1's centre in box 0's frame, an axis L has projected radii
+// ra = sum_i a_i |L.e_i|, rb = sum_j b_j |L.r_j| and centre gap |t.L|; the boxes' projections overlap by
+// ra + rb - |t.L|. A box is centrally symmetric, so this is exact on every axis, and the minimum over the 15
+// axes (normalised) is the exact minimum translation distance: the facet normals of the Minkowski difference are
+// among them, and any other axis only overestimates.
+#include <cmath>
+
+#include "gq/geometry.h"
+#include "gq/tolerances.h"
+#include "gq/transform.h"
+
+namespace gq::detail {
+
+template <class T> struct BoxPair {
+  Mat3<T> r;     // box 1's axes in box 0's frame (columns)
+  Mat3<T> absR;  // |r|
+  Vec3<T> t;     // box 1's centre in box 0's frame
+  Vec3<T> a, b;  // half extents
+};
+
+template <class T>
+BoxPair<T> boxPair(const BoxGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1) {
+  BoxPair<T> s;
+  s.r = (p0.q.conjugate() * p1.q).toRotationMatrix();
+  s.absR = s.r.cwiseAbs();
+  s.t = p0.transformInv(p1.p);
+  s.a = g0.halfExtents;
+  s.b = g1.halfExtents;
+  return s;
+}
+
+// One candidate axis (in box 0's frame, not normalised): overlap of the projections (scaled by |axis|) and the
+// signed centre gap t.L.
+template <class T> struct BoxAxis {
+  Vec3<T> axis;
+  T overlap, gap, length;
+};
+
+// Calls visit(BoxAxis) for the 15 axes in the order face(0), face(1), edges; stops when visit returns true.
+// Edge axes of (nearly) parallel edges are skipped: they carry no facet of their own (same rule as the polytope SAT).
+template <class T, class Visit> void forEachBoxAxis(const BoxPair<T>& s, Visit&& visit) {
+  for (int i = 0; i < 3; ++i) {
+    const T rb = s.b.dot(s.absR.row(i).transpose());
+    if (visit(BoxAxis<T>{Vec3<T>::Unit(i), s.a[i] + rb - std::abs(s.t[i]), s.t[i], T(1)})) return;
+  }
+  for (int j = 0; j < 3; ++j) {
+    const T gap = s.t.dot(s.r.col(j));
+    const T ra = s.a.dot(s.absR.col(j));
+    if (visit(BoxAxis<T>{Vec3<T>(s.r.col(j)), ra + s.b[j] - std::abs(gap), gap, T(1)})) return;
+  }
+  const T eps = T(tol::Rel<T>::kEpsilon);
+  for (int i = 0; i < 3; ++i) {
+    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    for (int j = 0; j < 3; ++j) {
+      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      // L = e_i x r_j: components (i1, i2) = (-r(i2, j), r(i1, j)), component i = 0. Its length comes from these
+      // components, not from 1 - r(i, j)^2, which cancels badly for nearly parallel edges.
+      Vec3<T> axis = Vec3<T>::Zero();
+      axis[i1] = -s.r(i2, j);
+      axis[i2] = s.r(i1, j);
+      const T sinSq = axis.squaredNorm();
+      if (sinSq <= eps * eps) continue;
+      const T gap = s.t[i2] * s.r(i1, j) - s.t[i1] * s.r(i2, j);
+      const T ra = s.a[i1] * s.absR(i2, j) + s.a[i2] * s.absR(i1, j);
+      const T rb = s.b[j1] * s.absR(i, j2) + s.b[j2] * s.absR(i, j1);
+      if (visit(BoxAxis<T>{axis, ra + rb - std::abs(gap), gap, std::sqrt(sinSq)})) return;
+    }
+  }
+}
+
+}  // namespace gq::detail
