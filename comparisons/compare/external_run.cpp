@@ -56,7 +56,7 @@ cases::Result resultFromLine(const std::string& family, const std::string& line)
 
 }  // namespace
 
-bool isExternalBackend(const std::string& name) { return name == "bullet"; }
+bool isExternalBackend(const std::string& name) { return name == "bullet" || name == "gq-bullet"; }
 
 std::vector<CaseRecord> runBackendExternal(const std::string& gqQuery, const std::string& name,
                                            const std::vector<LoadedCase>& cases, int repeat) {

@@ -22,6 +22,10 @@
 #include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 
+#ifdef GQ_HAVE_BULLET_ADAPTER
+#include "gq/bullet/collision_configuration.h"
+#include "gq/bullet/collision_world.h"
+#endif
 #include "gq/hit.h"
 #include "native_shapes.h"
 #include "timing.h"
@@ -275,6 +279,142 @@ Result sweep(BulletShapes& shapes, const SweepCase& q, int repeat) {
   return success(ns, out);
 }
 
+#ifdef GQ_HAVE_BULLET_ADAPTER
+// A query-only world through the adapter; each case adds its objects, queries, and removes them.
+struct AdapterWorld {
+  gq::bullet::CollisionConfiguration config;
+  gq::bullet::CollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  gq::bullet::CollisionWorld world{&dispatcher, &broadphase, &config};
+};
+
+class ScopedObject {
+ public:
+  ScopedObject(btCollisionWorld& world, btCollisionShape* shape, const btTransform& pose) : world_(world) {
+    object_.setCollisionShape(shape);
+    object_.setWorldTransform(pose);
+    world_.addCollisionObject(&object_);
+  }
+  ~ScopedObject() { world_.removeCollisionObject(&object_); }
+  btCollisionObject* get() { return &object_; }
+
+ private:
+  btCollisionWorld& world_;
+  btCollisionObject object_;
+};
+
+Result adapterRaycast(AdapterWorld& w, BulletShapes& shapes, const RaycastCase& q, int repeat) {
+  const HitFlags flags(q.flags);
+  if (flags.has(HitFlag::MeshMultiple)) return Result::failure("unsupported: rayTest reports one hit (meshMultiple)");
+  BulletShape target;
+  std::string error;
+  if (!shapes.build(q.geom, target, error)) return Result::failure(error);
+  ScopedObject object(w.world, target.shape.get(), target.placed(q.pose));
+  const btVector3 from = toBt(q.origin), to = toBt(q.origin + q.maxDist * q.dir);
+  const bool cull = (q.geom.kind == ShapeKind::Mesh || q.geom.kind == ShapeKind::HeightField) && !q.geom.doubleSided &&
+                    !flags.has(HitFlag::MeshBothSides);
+  ClosestRayWithFace cb(from, to);
+  const double ns = medianNanoseconds(repeat, [&] {
+    cb = ClosestRayWithFace(from, to);
+    if (cull) cb.m_flags |= btTriangleRaycastCallback::kF_FilterBackfaces;
+    w.world.rayTest(from, to, cb);
+  });
+  RaycastOut out;
+  if (cb.hasHit()) {
+    RayHitOut hit;
+    hit.distance = double(cb.m_closestHitFraction) * q.maxDist;
+    if (flags.has(HitFlag::Position)) hit.position = fromBt(cb.m_hitPointWorld);
+    if (flags.has(HitFlag::Normal)) hit.normal = native::unitOrZero(fromBt(cb.m_hitNormalWorld));
+    if (q.geom.kind == ShapeKind::Mesh && cb.triangle >= 0) hit.faceIndex = std::uint32_t(cb.triangle);
+    out.hits.push_back(hit);
+  }
+  return success(ns, std::move(out));
+}
+
+// The deepest contactPairTest point, re-expressed with A = the first object.
+struct DeepestPoint : btCollisionWorld::ContactResultCallback {
+  const btCollisionObject* a = nullptr;
+  bool found = false;
+  double distance = 0;
+  Vec3d normalOnB = Vec3d::Zero(), pointOnA = Vec3d::Zero(), pointOnB = Vec3d::Zero();
+  btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper* w0, int, int,
+                           const btCollisionObjectWrapper*, int, int) override {
+    if (found && double(cp.getDistance()) >= distance) return 0;
+    const bool swapped = w0->getCollisionObject() != a;
+    found = true;
+    distance = double(cp.getDistance());
+    normalOnB = fromBt(swapped ? -cp.m_normalWorldOnB : cp.m_normalWorldOnB);
+    pointOnA = fromBt(swapped ? cp.getPositionWorldOnB() : cp.getPositionWorldOnA());
+    pointOnB = fromBt(swapped ? cp.getPositionWorldOnA() : cp.getPositionWorldOnB());
+    return 0;
+  }
+};
+
+// contactPairTest reports points up to this distance (the suites' shapes are within a few units of each other).
+constexpr btScalar kPairReach = btScalar(1e3);
+
+Result adapterPair(AdapterWorld& w, BulletShapes& shapes, QueryKind kind, const PairCase& q, int repeat) {
+  BulletShape a, b;
+  std::string error;
+  if (!shapes.build(q.geom0, a, error) || !shapes.build(q.geom1, b, error)) return Result::failure(error);
+  if (!gq::bullet::CollisionConfiguration::routesToGq(a.shape->getShapeType(), b.shape->getShapeType()))
+    return native::unsupportedQuery("gq-bullet", kind, "pairs the adapter leaves to Bullet (two non-convex shapes)");
+  ScopedObject objectA(w.world, a.shape.get(), a.placed(q.pose0));
+  ScopedObject objectB(w.world, b.shape.get(), b.placed(q.pose1));
+  DeepestPoint cb;
+  const double ns = medianNanoseconds(repeat, [&] {
+    cb = DeepestPoint();
+    cb.a = objectA.get();
+    cb.m_closestDistanceThreshold = kPairReach;
+    w.world.contactPairTest(objectA.get(), objectB.get(), cb);
+  });
+  if (kind == QueryKind::Overlap) return success(ns, OverlapOut{cb.found && cb.distance <= 0});
+  if (kind == QueryKind::Penetration) {
+    PenetrationOut out;
+    out.penetrating = cb.found && cb.distance < 0;
+    if (out.penetrating) {
+      out.depth = -cb.distance;
+      out.direction = cb.normalOnB;  // moving A along B's outward normal separates them
+    }
+    return success(ns, out);
+  }
+  if (!cb.found) return Result::failure("gq-bullet: no contact point within reach", ns);
+  DistanceOut out;
+  out.distance = cb.distance;
+  out.point0 = cb.pointOnA;
+  out.point1 = cb.pointOnB;
+  out.normal = -cb.normalOnB;
+  return success(ns, out);
+}
+
+Result adapterSweep(AdapterWorld& w, BulletShapes& shapes, const SweepCase& q, int repeat) {
+  if (q.inflation != 0) return Result::failure("unsupported: Bullet's convexSweepTest has no inflation");
+  BulletShape swept, target;
+  std::string error;
+  if (!shapes.build(q.geom0, swept, error) || !shapes.build(q.geom1, target, error)) return Result::failure(error);
+  if (!swept.convex()) return native::unsupportedQuery("gq-bullet (convexSweepTest)", QueryKind::Sweep, "a non-convex swept shape");
+  ScopedObject object(w.world, target.shape.get(), target.placed(q.pose1));
+  const btTransform fromT = swept.placed(q.pose0);
+  btTransform toT = fromT;
+  toT.setOrigin(fromT.getOrigin() + toBt(q.maxDist * q.dir));
+  btCollisionWorld::ClosestConvexResultCallback cb(fromT.getOrigin(), toT.getOrigin());
+  const double ns = medianNanoseconds(repeat, [&] {
+    cb = btCollisionWorld::ClosestConvexResultCallback(fromT.getOrigin(), toT.getOrigin());
+    w.world.convexSweepTest(swept.convex(), fromT, toT, cb);
+  });
+  SweepOut out;
+  out.hit = cb.hasHit();
+  if (out.hit) {
+    out.distance = double(cb.m_closestHitFraction) * q.maxDist;
+    const HitFlags flags(q.flags);
+    if (flags.has(HitFlag::Position)) out.position = fromBt(cb.m_hitPointWorld);
+    if (flags.has(HitFlag::Normal)) out.normal = native::unitOrZero(fromBt(cb.m_hitNormalWorld));
+    out.initialOverlap = cb.m_closestHitFraction == 0;
+  }
+  return success(ns, out);
+}
+#endif
+
 }  // namespace
 
 struct BulletBackend::Impl {
@@ -298,5 +438,31 @@ Result BulletBackend::run(const Case& c, int repeat) {
     default: return native::unsupportedQuery("bullet", c.query, "any geometry");
   }
 }
+
+#ifdef GQ_HAVE_BULLET_ADAPTER
+struct GqBulletBackend::Impl {
+  BulletShapes shapes;
+  AdapterWorld world;
+};
+
+GqBulletBackend::GqBulletBackend() : impl_(new Impl) {}
+GqBulletBackend::~GqBulletBackend() { delete impl_; }
+
+Result GqBulletBackend::run(const Case& c, int repeat) {
+  if (c.precision != kNativePrecision)
+    return Result::failure(std::string(kBulletPrecisionUnsupported) +
+                           (c.precision == Precision::Float ? "float is answered by gq-query-bullet"
+                                                            : "double is answered by gq-query-bullet64"));
+  switch (c.query) {
+    case QueryKind::Raycast: return adapterRaycast(impl_->world, impl_->shapes, std::get<RaycastCase>(c.input), repeat);
+    case QueryKind::Overlap:
+    case QueryKind::Penetration:
+    case QueryKind::Distance:
+      return adapterPair(impl_->world, impl_->shapes, c.query, std::get<PairCase>(c.input), repeat);
+    case QueryKind::Sweep: return adapterSweep(impl_->world, impl_->shapes, std::get<SweepCase>(c.input), repeat);
+    default: return native::unsupportedQuery("gq-bullet", c.query, "any geometry");
+  }
+}
+#endif
 
 }  // namespace gq::cases

@@ -26,4 +26,22 @@ class BulletBackend final : public Backend {
   Impl* impl_;
 };
 
+#ifdef GQ_HAVE_BULLET_ADAPTER
+// "gq-bullet": the same Bullet shapes answered by gq through the Bullet adapter (gq::bullet / gq::bullet_double):
+//   raycast: gq::bullet::CollisionWorld::rayTest; sweep: its convexSweepTest;
+//   overlap, penetration, distance: contactPairTest with the adapter's closest-point algorithms (deepest point).
+// Pairs the adapter leaves to Bullet (concave-concave, unmodelled shapes) are unsupported here.
+class GqBulletBackend final : public Backend {
+ public:
+  GqBulletBackend();
+  ~GqBulletBackend() override;
+  const char* name() const override { return "gq-bullet"; }
+  Result run(const Case& c, int repeat) override;
+
+ private:
+  struct Impl;
+  Impl* impl_;
+};
+#endif
+
 }  // namespace gq::cases
