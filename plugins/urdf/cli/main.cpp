@@ -224,12 +224,15 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
   if (!b.csv.empty()) {
     const bool fresh = !std::ifstream(b.csv).good();
     out.open(b.csv, std::ios::app);
-    if (fresh) out << "date,machine,mode,backend,checks_per_s,ratio\n";  // mode = <robot>:<representation>
+    // mode = <robot>:<representation>; load1 = 1-minute load average at the start (the machine is shared)
+    if (fresh) out << "date,machine,load1,mode,backend,checks_per_s_median,repetitions,configurations,ratio\n";
   }
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
   const std::string machine = machineName();
+  std::string load1 = "unknown";
+  if (std::ifstream loadavg("/proc/loadavg"); loadavg) loadavg >> load1;
   const bool withGq = std::count(b.backends.begin(), b.backends.end(), "gq") > 0;
   const bool withFcl = std::count(b.backends.begin(), b.backends.end(), "fcl") > 0;
   std::printf("%-15s %-8s %14s %10s   (median of %zu runs of %zu configurations)\n", "mode", "backend",
@@ -268,9 +271,9 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
       else
         std::printf("%-15s %-8s %14s  (%s)\n", mode.c_str(), row->backend.c_str(), "n/a", row->status.message.c_str());
       if (out.is_open())
-        out << date << "," << machine << "," << m->name << ":" << mode << "," << row->backend << ","
-            << (row->rate > 0 ? std::to_string(row->rate) : "unsupported") << ","
-            << (isGq ? std::to_string(ratio) : "1") << "\n";
+        out << date << "," << machine << "," << load1 << "," << m->name << ":" << mode << "," << row->backend << ","
+            << (row->rate > 0 ? std::to_string(row->rate) : "unsupported") << "," << b.repetitions << "," << b.n
+            << "," << (isGq ? std::to_string(ratio) : "1") << "\n";
     }
   }
   return 0;
