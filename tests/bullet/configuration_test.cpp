@@ -24,7 +24,8 @@ TEST(BulletConfiguration, RoutesModelledPairsAndKeepsBulletForOthers) {
   EXPECT_TRUE(CollisionConfiguration::routesToGq(STATIC_PLANE_PROXYTYPE, CONE_SHAPE_PROXYTYPE));
   EXPECT_FALSE(CollisionConfiguration::routesToGq(TRIANGLE_MESH_SHAPE_PROXYTYPE, TERRAIN_SHAPE_PROXYTYPE));
   EXPECT_FALSE(CollisionConfiguration::routesToGq(COMPOUND_SHAPE_PROXYTYPE, SPHERE_SHAPE_PROXYTYPE));
-  EXPECT_FALSE(CollisionConfiguration::routesToGq(MULTI_SPHERE_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE));
+  EXPECT_TRUE(CollisionConfiguration::routesToGq(MULTI_SPHERE_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE));
+  EXPECT_FALSE(CollisionConfiguration::routesToGq(CONVEX_POINT_CLOUD_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE));
 
   CollisionConfiguration config;
   btDefaultCollisionConfiguration stock;

@@ -3,7 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
+
+#include <BulletCollision/CollisionShapes/btConvexPointCloudShape.h>
 
 #include "bullet_test_scene.h"
 
@@ -263,18 +264,41 @@ TEST(BulletContacts, CompoundChildrenGetContactsEach) {
   EXPECT_EQ(sphereHits, 1);
 }
 
-// Shapes gq does not model (here btMultiSphereShape) keep Bullet's own algorithms in a gq world.
+// Shapes gq does not model (here btConvexPointCloudShape) keep Bullet's own algorithms in a gq world.
 TEST(BulletContacts, UnmodelledShapesFallBackToBullet) {
   QueryWorld w;
-  const btVector3 centres[2] = {btVector3(-0.5, 0, 0), btVector3(0.5, 0, 0)};
-  const btScalar radii[2] = {0.5, 0.5};
-  btMultiSphereShape pill(centres, radii, 2);
+  btVector3 corners[8];
+  for (int i = 0; i < 8; ++i) corners[i] = btVector3(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5);
+  btConvexPointCloudShape cloud(corners, 8, btVector3(1, 1, 1), false);
+  cloud.setMargin(0);
+  btBoxShape ground(btVector3(5, 1, 5));
+  auto* g = w.add(&ground, btVector3(0, -1, 0));
+  auto* p = w.add(&cloud, btVector3(0, btScalar(0.48), 0));
+  const auto pts = w.contacts(p, g);
+  ASSERT_GE(pts.size(), 1u);
+  for (const Point& c : pts) EXPECT_NEAR(c.distance, -0.02, btScalar(1e-3));  // Bullet's GJK tolerance
+}
+
+// btMultiSphereShape is the convex hull of its spheres: two spheres of radius 0.5 at x = -0.5, 0.5 make a capsule.
+// Resting 0.02 deep on a box, and hit from above at x = 0 at height 0.5 (the hull; their union would give 0).
+TEST(BulletContacts, MultiSphereIsTheHullOfItsSpheres) {
+  QueryWorld w;
+  const btVector3 centres[3] = {btVector3(-0.5, 0, 0), btVector3(0.5, 0, 0), btVector3(0, 0, 0.3)};
+  const btScalar radii[3] = {0.5, 0.5, 0.25};
+  btMultiSphereShape pill(centres, radii, 3);
   btBoxShape ground(btVector3(5, 1, 5));
   auto* g = w.add(&ground, btVector3(0, -1, 0));
   auto* p = w.add(&pill, btVector3(0, btScalar(0.48), 0));
   const auto pts = w.contacts(p, g);
   ASSERT_GE(pts.size(), 1u);
-  for (const Point& c : pts) EXPECT_NEAR(c.distance, -0.02, btScalar(1e-3));  // Bullet's GJK tolerance
+  for (const Point& c : pts) EXPECT_NEAR(c.distance, -0.02, kTol);
+  TestWorld world(Backend::Gq);
+  world.add(&pill, 0, btVector3(0, 0, 0));
+  btCollisionWorld::ClosestRayResultCallback ray(btVector3(0, 5, 0), btVector3(0, -5, 0));
+  world.world().rayTest(btVector3(0, 5, 0), btVector3(0, -5, 0), ray);
+  ASSERT_TRUE(ray.hasHit());
+  EXPECT_NEAR(5 - 10 * ray.m_closestHitFraction, 0.5, kTol * 10);
+  EXPECT_NEAR(ray.m_hitNormalWorld.y(), 1, kTol * 10);
 }
 
 }  // namespace

@@ -165,6 +165,29 @@ std::shared_ptr<const ConvexMesh<Real>> cachedHull(const btConvexHullShape& shap
   return std::static_pointer_cast<const ConvexMesh<Real>>(data);
 }
 
+std::shared_ptr<const MultiSphereShape> cachedMultiSphere(const btMultiSphereShape& shape) {
+  const btVector3& s = shape.getLocalScaling();
+  if (!(s.x() > 0 && s.x() == s.y() && s.y() == s.z())) return nullptr;  // Bullet scales radii per axis
+  const int n = shape.getSphereCount();
+  std::vector<double> fingerprint{double(n), s.x()};
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) fingerprint.push_back(shape.getSpherePosition(i)[k]);
+    fingerprint.push_back(shape.getSphereRadius(i));
+  }
+  auto data = cache().get(&shape, std::move(fingerprint), [&]() -> std::shared_ptr<const void> {
+    std::vector<V3> centres;
+    std::vector<Real> radii;
+    for (int i = 0; i < n; ++i) {
+      if (!(shape.getSphereRadius(i) > 0)) return nullptr;
+      centres.push_back(toGq(shape.getSpherePosition(i) * s.x()));
+      radii.push_back(shape.getSphereRadius(i) * s.x());
+    }
+    if (centres.empty()) return nullptr;
+    return std::make_shared<MultiSphereShape>(std::move(centres), std::move(radii));
+  });
+  return std::static_pointer_cast<const MultiSphereShape>(data);
+}
+
 bool cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
   std::vector<double> fingerprint{double(mi.getNumSubParts())};
   for (int part = 0; part < mi.getNumSubParts(); ++part) {

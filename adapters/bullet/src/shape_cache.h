@@ -6,15 +6,20 @@
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
+#include <BulletCollision/CollisionShapes/btMultiSphereShape.h>
 #include <BulletCollision/CollisionShapes/btStridingMeshInterface.h>
 
 #include "bt_convert.h"
 #include "gq/cooking.h"
+#include "multi_sphere.h"
 
 namespace gq::bullet {
 
 // Hull of the unscaled points (the shape's local scaling becomes the gq MeshScale). Null if qhull refuses them.
 std::shared_ptr<const ConvexMesh<Real>> cachedHull(const btConvexHullShape& shape);
+
+// The hull of the spheres at the shape's (uniform) local scaling; null for non-uniform scaling or a radius <= 0.
+std::shared_ptr<const MultiSphereShape> cachedMultiSphere(const btMultiSphereShape& shape);
 
 struct CookedMesh {
   std::shared_ptr<const TriangleMesh<Real>> mesh;              // unscaled vertices, all sub-parts concatenated

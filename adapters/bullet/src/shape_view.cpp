@@ -116,7 +116,8 @@ TriangleIds ShapeView::triangleIds(std::uint32_t gqTriangle) const {
 
 bool isGqConvexType(int t) {
   return t == SPHERE_SHAPE_PROXYTYPE || t == CAPSULE_SHAPE_PROXYTYPE || t == BOX_SHAPE_PROXYTYPE ||
-         t == CONVEX_HULL_SHAPE_PROXYTYPE || t == CYLINDER_SHAPE_PROXYTYPE || t == CONE_SHAPE_PROXYTYPE;
+         t == CONVEX_HULL_SHAPE_PROXYTYPE || t == CYLINDER_SHAPE_PROXYTYPE || t == CONE_SHAPE_PROXYTYPE ||
+         t == MULTI_SPHERE_SHAPE_PROXYTYPE;
 }
 
 bool isGqShapeType(int t) {
@@ -152,6 +153,13 @@ bool makeShapeView(const btCollisionShape* shape, ShapeView& v) {
     case CONE_SHAPE_PROXYTYPE:
       if (!viewCone(*static_cast<const btConeShape*>(shape), v)) return false;
       break;
+    case MULTI_SPHERE_SHAPE_PROXYTYPE: {
+      auto spheres = cachedMultiSphere(*static_cast<const btMultiSphereShape*>(shape));
+      if (!spheres) return false;
+      v.size = spheres->localBounds().extents().maxCoeff();
+      v.geom = CustomGeometry<Real>(std::move(spheres));
+      break;
+    }
     case STATIC_PLANE_PROXYTYPE:
       return viewPlane(*static_cast<const btStaticPlaneShape*>(shape), v);
     case TRIANGLE_MESH_SHAPE_PROXYTYPE:

@@ -107,7 +107,9 @@ class SweepVisitor final : public btBroadphaseRayCallback {
   SweepVisitor(const btConvexShape* cast, const btTransform& from, const btTransform& to, SweepCallback& cb,
                btScalar allowedPenetration)
       : cast_(cast), from_(from), to_(to), cb_(cb), allowed_(allowedPenetration) {
-    castOk_ = makeShapeView(cast, castView_) && castView_.kind == ShapeKind::Convex;
+    // gq sweeps spheres, capsules, boxes and hulls; custom cast shapes (cylinder, cone, multi-sphere) go to Bullet.
+    castOk_ = makeShapeView(cast, castView_) && castView_.kind == ShapeKind::Convex &&
+              castView_.geom.type() != GeometryType::Custom;
     prepareRay(*this, from.getOrigin(), to.getOrigin());
   }
   bool process(const btBroadphaseProxy* proxy) override {

@@ -28,8 +28,8 @@ class CollisionConfiguration : public btDefaultCollisionConfiguration {
   // whose parameters gq does not model (e.g. a heightfield with diamond subdivision).
   btCollisionAlgorithmCreateFunc* bulletCreateFunc(int proxyType0, int proxyType1, bool closestPoints);
 
-  // Whether a pair of broadphase proxy types is routed to gq: sphere, capsule, box, convex hull, cylinder and cone
-  // against each other, and against static planes, BVH triangle meshes (also scaled) and heightfields.
+  // Whether a pair of broadphase proxy types is routed to gq: sphere, capsule, box, convex hull, cylinder, cone and
+  // multi-sphere against each other, and against static planes, BVH triangle meshes (also scaled) and heightfields.
   static bool routesToGq(int proxyType0, int proxyType1);
 
  private:
