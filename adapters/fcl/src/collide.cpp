@@ -1,0 +1,111 @@
+// gq::fcl::collide: FCL's collide semantics answered by gq (see gq/fcl/collision.h).
+#include <algorithm>
+#include <vector>
+
+#include "convert.h"
+#include "fallback.h"
+#include "gq/fcl/collision.h"
+#include "pair_kernels.h"
+
+namespace gq::fcl {
+namespace {
+
+using detail::FclShape;
+
+bool either(FclShape a, FclShape b, FclShape x) { return a == x || b == x; }
+bool pairIs(FclShape a, FclShape b, FclShape x, FclShape y) { return (a == x && b == y) || (a == y && b == x); }
+
+// Whether FCL 0.7 (GJKSolver_libccd) computes this pair's contact with a closed form, where gq's exact answer is
+// the same: sphere against sphere/capsule/box/cylinder/BVHModel triangles, and the shapes it has a half-space or
+// plane formula for. Every other pair goes through libccd's MPR (or, box-box, FCL's box routine).
+bool fclContactIsClosedForm(FclShape a, FclShape b) {
+  const FclShape other = a == FclShape::Sphere ? b : a;
+  if (either(a, b, FclShape::Sphere))
+    return other == FclShape::Sphere || other == FclShape::Capsule || other == FclShape::Box ||
+           other == FclShape::Cylinder || other == FclShape::Mesh || other == FclShape::Halfspace ||
+           other == FclShape::Plane;
+  const bool halfspace = either(a, b, FclShape::Halfspace), plane = either(a, b, FclShape::Plane);
+  if (!halfspace && !plane) return false;
+  const FclShape shape = (a == FclShape::Halfspace || a == FclShape::Plane) ? b : a;
+  return shape == FclShape::Ellipsoid || shape == FclShape::Box || shape == FclShape::Capsule ||
+         shape == FclShape::Cylinder || shape == FclShape::Cone || shape == FclShape::Mesh ||
+         (halfspace && shape == FclShape::Convex);
+}
+
+// Contacts that stay FCL's own unless a correction is opted into (see Options).
+bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
+  if (options.minimumTranslation) return false;
+  if (pairIs(a, b, FclShape::Box, FclShape::Box)) return !options.exactContainedBoxDepth;
+  return !fclContactIsClosedForm(a, b);
+}
+
+}  // namespace
+
+template <typename S>
+std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                    const Options& options) {
+  if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
+  if (request.isSatisfied(result)) return result.numContacts();
+  detail::Converted<S> a, b;
+  if (request.enable_cost || !detail::convert(o1, a) || !detail::convert(o2, b) ||
+      (request.enable_contact && contactFromFcl(a.shape, b.shape, options)))
+    return detail::fclCollide(o1, tf1, o2, tf2, request, result);
+  thread_local std::vector<detail::PairContact<S>> contacts;
+  contacts.clear();
+  const std::size_t room = request.num_max_contacts - std::min(request.num_max_contacts, result.numContacts());
+  const Status s = detail::pairContacts(a, detail::toGq(tf1) * a.offset, b, detail::toGq(tf2) * b.offset,
+                                        request.enable_contact, room, contacts);
+  if (s.code == StatusCode::InvalidArgument) return result.numContacts();  // NaN pose or size: nothing written
+  if (!s.ok()) return detail::fclCollide(o1, tf1, o2, tf2, request, result);
+  detail::countGq();
+  for (const detail::PairContact<S>& c : contacts) {
+    if (result.numContacts() >= request.num_max_contacts) break;
+    if (request.enable_contact)
+      result.addContact(::fcl::Contact<S>(o1, o2, c.b1, c.b2, c.position, c.normal, c.depth));
+    else
+      result.addContact(::fcl::Contact<S>(o1, o2, c.b1, c.b2));
+  }
+  return result.numContacts();
+}
+
+template <typename S>
+std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
+  return collide(o1, tf1, o2, tf2, request, result, Options());
+}
+
+template <typename S>
+std::size_t collide(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
+  return collide(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
+                 o2->getTransform(), request, result, Options());
+}
+
+template std::size_t collide<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,
+                                    const ::fcl::CollisionRequest<float>&, ::fcl::CollisionResult<float>&);
+template std::size_t collide<double>(const ::fcl::CollisionObject<double>*, const ::fcl::CollisionObject<double>*,
+                                     const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&);
+template std::size_t collide<float>(const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                                    const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                                    const ::fcl::CollisionRequest<float>&, ::fcl::CollisionResult<float>&);
+template std::size_t collide<double>(const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                     const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                     const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&);
+template std::size_t collide<float>(const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                                    const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                                    const ::fcl::CollisionRequest<float>&, ::fcl::CollisionResult<float>&,
+                                    const Options&);
+template std::size_t collide<double>(const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                     const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                     const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&,
+                                     const Options&);
+
+template <typename S> void forgetGeometry(const ::fcl::CollisionGeometry<S>* geometry) { detail::forget(geometry); }
+template void forgetGeometry<float>(const ::fcl::CollisionGeometry<float>*);
+template void forgetGeometry<double>(const ::fcl::CollisionGeometry<double>*);
+void clearGeometryCache() { detail::clearCache(); }
+
+}  // namespace gq::fcl

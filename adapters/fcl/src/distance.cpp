@@ -1,0 +1,79 @@
+// gq::fcl::distance: FCL's distance semantics answered by gq (see gq/fcl/collision.h).
+//  - DistanceResult::update keeps the smaller distance (pre-seeded results stay when the pair is farther);
+//  - a result already at min_distance <= 0 is satisfied: nothing is computed (as FCL's isSatisfied);
+//  - shapes: signed distance whether or not enable_signed_distance is set (FCL leaves the penetrating value
+//    "implementation defined", mostly -1); nearest points are always filled, in world frame;
+//  - BVHModel sides are thin surfaces: 0 when touching or crossing; with enable_signed_distance the deepest
+//    triangle contact's depth is reported negated, with both nearest points at its position (FCL's workaround).
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+#include "convert.h"
+#include "fallback.h"
+#include "gq/fcl/collision.h"
+#include "pair_kernels.h"
+
+namespace gq::fcl {
+namespace {
+
+// FCL's signed distance for pairs with a BVHModel: minus the deepest contact's depth, witnesses at its position.
+template <class S>
+Status deepestContact(const detail::Converted<S>& a, const Transform<S>& pa, const detail::Converted<S>& b,
+                      const Transform<S>& pb, detail::PairDistance<S>& d) {
+  thread_local std::vector<detail::PairContact<S>> contacts;
+  contacts.clear();
+  const Status s = detail::pairContacts(a, pa, b, pb, true, std::numeric_limits<std::size_t>::max(), contacts);
+  if (!s.ok() || contacts.empty()) return s;
+  const auto deepest = std::max_element(contacts.begin(), contacts.end(),
+                                        [](const auto& x, const auto& y) { return x.depth < y.depth; });
+  d.distance = -deepest->depth;
+  d.point1 = d.point2 = deepest->position;
+  d.b1 = deepest->b1;
+  d.b2 = deepest->b2;
+  return s;
+}
+
+}  // namespace
+
+template <typename S>
+S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+           const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  if (request.isSatisfied(result)) return result.min_distance;
+  detail::Converted<S> a, b;
+  if (!detail::convert(o1, a) || !detail::convert(o2, b))
+    return detail::fclDistance(o1, tf1, o2, tf2, request, result);
+  const Transform<S> pa = detail::toGq(tf1) * a.offset, pb = detail::toGq(tf2) * b.offset;
+  detail::PairDistance<S> d;
+  Status s = detail::pairDistance(a, pa, b, pb, d);
+  const bool meshPair = a.shape == detail::FclShape::Mesh || b.shape == detail::FclShape::Mesh;
+  if (s.ok() && meshPair && d.distance <= S(0) && request.enable_signed_distance) s = deepestContact(a, pa, b, pb, d);
+  if (s.code == StatusCode::InvalidArgument) return result.min_distance;  // NaN pose or size: nothing written
+  // FCL 0.7 crashes on these (libccd's GJK calls a null support function for Halfspace/Plane): nothing written.
+  if (!s.ok() && (a.isPlaneLike() || b.isPlaneLike())) return result.min_distance;
+  if (!s.ok()) return detail::fclDistance(o1, tf1, o2, tf2, request, result);
+  detail::countGq();
+  result.update(d.distance, o1, o2, d.b1, d.b2, d.point1, d.point2);
+  return result.min_distance;
+}
+
+template <typename S>
+S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  return distance(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
+                  o2->getTransform(), request, result);
+}
+
+template float distance<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,
+                               const ::fcl::DistanceRequest<float>&, ::fcl::DistanceResult<float>&);
+template double distance<double>(const ::fcl::CollisionObject<double>*, const ::fcl::CollisionObject<double>*,
+                                 const ::fcl::DistanceRequest<double>&, ::fcl::DistanceResult<double>&);
+template float distance<float>(const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                               const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                               const ::fcl::DistanceRequest<float>&, ::fcl::DistanceResult<float>&);
+template double distance<double>(const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                 const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                 const ::fcl::DistanceRequest<double>&, ::fcl::DistanceResult<double>&);
+
+}  // namespace gq::fcl

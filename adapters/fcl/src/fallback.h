@@ -1,0 +1,26 @@
+#pragma once
+// The pairs gq does not answer go to FCL itself, unchanged (the only translation unit that instantiates FCL's
+// narrow phase).
+#include <cstddef>
+
+#include <fcl/narrowphase/collision_object.h>
+#include <fcl/narrowphase/collision_request.h>
+#include <fcl/narrowphase/collision_result.h>
+#include <fcl/narrowphase/distance_request.h>
+#include <fcl/narrowphase/distance_result.h>
+
+namespace gq::fcl::detail {
+
+template <class S>
+std::size_t fclCollide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                       const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                       const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result);
+template <class S>
+S fclDistance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+              const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+              const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result);
+
+void countGq();
+void countFallback();
+
+}  // namespace gq::fcl::detail

@@ -1,0 +1,356 @@
+// Contacts and distances of converted pairs through gq's public queries.
+//  - Solids: overlap() for booleans; distance() (signed, exact MTD for convex pairs) for contacts.
+//  - FCL's two-sided Plane n.x = d: the shape's signed distances to the solid half-spaces below (n.x <= d) and
+//    above (n.x >= d) are lo - d and d - hi (lo/hi = the shape's extent along n). The plane answer is the larger
+//    one: the gap when the shape lies on one side, else minus the smaller push-out depth (FCL's rule
+//    depth = r - |signed distance| for a sphere).
+//  - BVHModel against a shape: one contact per triangle touched, as FCL's mesh-shape traversal. Candidates come from
+//    findOverlapTriangleMesh (exact for sphere/capsule/box; the shape's oriented bounding box otherwise, then an
+//    exact test); a triangle's depth and normal come from distance() against the triangle as a support shape.
+//  - BVHModel against BVHModel: findOverlapTriangleMeshPairs, one contact per intersecting triangle pair.
+//  - BVHModel against Halfspace/Plane (gq has no mesh-plane query): per triangle from its vertices' heights.
+#include "pair_kernels.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include "gq/cooking.h"
+#include "gq/mesh_query.h"
+#include "gq/query.h"
+#include "support_shapes.h"
+
+namespace gq::fcl::detail {
+namespace {
+
+constexpr std::uint32_t kTrianglePage = 64;  // triangles fetched per findOverlapTriangleMesh call
+
+template <class T> Vec3<T> midpoint(const Vec3<T>& a, const Vec3<T>& b) { return (a + b) * T(0.5); }
+
+template <class T> void flip(PairContact<T>& c) {
+  c.normal = -c.normal;
+  std::swap(c.b1, c.b2);
+}
+template <class T> void flip(PairDistance<T>& d) {
+  std::swap(d.point1, d.point2);
+  std::swap(d.b1, d.b2);
+}
+
+// A stack object as a CustomGeometry without allocating (empty control block: the caller keeps it alive).
+template <class T> CustomGeometry<T> borrowed(const CustomGeometryCallbacks<T>& callbacks) {
+  return CustomGeometry<T>(std::shared_ptr<const CustomGeometryCallbacks<T>>(std::shared_ptr<const void>(), &callbacks));
+}
+
+template <class T> PairContact<T> contactFrom(const DistanceResult<T>& d) {
+  PairContact<T> c;
+  c.position = midpoint(d.point0, d.point1);
+  c.normal = d.normal;
+  c.depth = std::max(T(0), -d.distance);
+  return c;
+}
+
+template <class T>
+Status solidContacts(const Geometry<T>& a, const Transform<T>& pa, const Geometry<T>& b, const Transform<T>& pb,
+                     bool withGeometry, std::vector<PairContact<T>>& out) {
+  if (!withGeometry) {
+    bool hit = false;
+    const Status s = overlap(a, pa, b, pb, hit);
+    if (s.ok() && hit) out.push_back(PairContact<T>());
+    return s;
+  }
+  DistanceResult<T> d;
+  const Status s = distance(d, a, pa, b, pb);
+  if (s.ok() && d.distance <= T(0)) out.push_back(contactFrom(d));
+  return s;
+}
+
+// Signed distance from `shape` to FCL's two-sided plane (see the file comment); normal from the shape to the plane.
+template <class T>
+Status twoSidedPlaneDistance(const Geometry<T>& shape, const Transform<T>& poseShape, const Transform<T>& planePose,
+                             DistanceResult<T>& out) {
+  const Geometry<T> plane = PlaneGeometry<T>();
+  // Turning the plane frame half a turn about its Y axis maps +X to -X: the solid side becomes n.x >= d.
+  const Transform<T> above = planePose * Transform<T>(Vec3<T>::Zero(), Quat<T>(0, 0, 1, 0));
+  DistanceResult<T> toBelow, toAbove;
+  Status s = distance(toBelow, shape, poseShape, plane, planePose);
+  if (!s.ok()) return s;
+  s = distance(toAbove, shape, poseShape, plane, above);
+  if (!s.ok()) return s;
+  out = toBelow.distance >= toAbove.distance ? toBelow : toAbove;
+  return s;
+}
+
+template <class T> bool isPrimitiveQuery(const Geometry<T>& g) {
+  const GeometryType t = g.type();
+  return t == GeometryType::Sphere || t == GeometryType::Capsule || t == GeometryType::Box;
+}
+
+// The box that findOverlapTriangleMesh takes for shapes it does not take itself: the shape's local bounds.
+template <class T> Status boundingBox(const Geometry<T>& g, const Transform<T>& pose, Geometry<T>& box, Transform<T>& boxPose) {
+  Bounds3<T> local;
+  const Status s = computeGeomBounds(local, g, Transform<T>(), T(0), T(1));
+  if (!s.ok()) return s;
+  box = BoxGeometry<T>(local.extents().cwiseMax(Vec3<T>::Constant(std::numeric_limits<T>::min())));
+  boxPose = pose * Transform<T>(local.center());
+  return s;
+}
+
+// Contact of `shape` with one world triangle; normal from the triangle to the shape.
+template <class T>
+Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const Triangle<T>& triangle,
+                       bool withGeometry, bool& hit, PairContact<T>& contact) {
+  const TriangleCallbacks<T> callbacks(triangle.verts[0], triangle.verts[1], triangle.verts[2]);
+  const Geometry<T> tri = borrowed<T>(callbacks);
+  if (!withGeometry) return overlap(shape, pose, tri, Transform<T>(), hit);
+  DistanceResult<T> d;
+  const Status s = distance(d, tri, Transform<T>(), shape, pose);
+  if (!s.ok()) return s;
+  hit = d.distance <= T(0);
+  if (hit) contact = contactFrom(d);
+  return s;
+}
+
+// Mesh first: b1 = triangle, normal from the mesh to the shape.
+template <class T>
+Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Geometry<T>& shape,
+                         const Transform<T>& shapePose, bool withGeometry, std::size_t room,
+                         std::vector<PairContact<T>>& out) {
+  const bool exactCandidates = isPrimitiveQuery(shape);
+  Geometry<T> query = shape;
+  Transform<T> queryPose = shapePose;
+  if (!exactCandidates) {
+    const Status s = boundingBox(shape, shapePose, query, queryPose);
+    if (!s.ok()) return s;
+  }
+  std::uint32_t page[kTrianglePage];
+  std::uint32_t start = 0;
+  const std::size_t first = out.size();
+  for (;;) {
+    bool overflow = false;
+    std::uint32_t count = 0;
+    Status s = findOverlapTriangleMesh(query, queryPose, mesh, meshPose, page, kTrianglePage, start, overflow, count);
+    if (!s.ok()) return s;
+    for (std::uint32_t i = 0; i < count; ++i) {
+      PairContact<T> c;
+      bool hit = true;
+      if (withGeometry || !exactCandidates) {
+        Triangle<T> triangle;
+        s = getTriangle(mesh, meshPose, page[i], triangle);
+        if (s.ok()) s = triangleContact(shape, shapePose, triangle, withGeometry, hit, c);
+        if (!s.ok()) return s;
+      }
+      if (!hit) continue;
+      c.b1 = int(page[i]);
+      out.push_back(c);
+      if (out.size() - first >= room) return s;
+    }
+    start += count;
+    if (!overflow) return s;
+  }
+}
+
+template <class T>
+Status meshMeshContacts(const TriangleMeshGeometry<T>& m1, const Transform<T>& p1, const TriangleMeshGeometry<T>& m2,
+                        const Transform<T>& p2, bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  bool found = false;
+  Status s = findOverlapTriangleMeshPairs<T>(
+      [&](std::uint32_t t1, std::uint32_t t2) {
+        pairs.emplace_back(t1, t2);
+        return pairs.size() < room;
+      },
+      m1, p1, m2, p2, found);
+  if (!s.ok()) return s;
+  std::sort(pairs.begin(), pairs.end());  // a fixed order whatever the traversal's
+  for (const auto& [t1, t2] : pairs) {
+    PairContact<T> c;
+    if (withGeometry) {
+      Triangle<T> a, b;
+      s = getTriangle(m1, p1, t1, a);
+      if (s.ok()) s = getTriangle(m2, p2, t2, b);
+      if (!s.ok()) return s;
+      const TriangleCallbacks<T> ca(a.verts[0], a.verts[1], a.verts[2]), cb(b.verts[0], b.verts[1], b.verts[2]);
+      DistanceResult<T> d;
+      s = distance(d, Geometry<T>(borrowed<T>(ca)), Transform<T>(), Geometry<T>(borrowed<T>(cb)), Transform<T>());
+      if (!s.ok()) return s;
+      c = contactFrom(d);
+    }
+    c.b1 = int(t1);
+    c.b2 = int(t2);
+    out.push_back(c);
+  }
+  return s;
+}
+
+// A triangle's heights above FCL's Halfspace / Plane (n.x = d, n = the gq plane frame's +X).
+template <class T> struct TriangleHeights {
+  T lo, hi;
+  Vec3<T> lowest, highest;  // world vertices
+};
+template <class T>
+TriangleHeights<T> heightsOf(const TriangleMesh<T>& mesh, std::size_t cooked, const Transform<T>& meshPose,
+                             const Vec3<T>& n, T d) {
+  TriangleHeights<T> h{std::numeric_limits<T>::max(), -std::numeric_limits<T>::max(), {}, {}};
+  for (std::uint32_t i : mesh.triangles[cooked]) {
+    const Vec3<T> v = meshPose.transform(mesh.vertices[i]);
+    const T height = n.dot(v) - d;
+    if (height < h.lo) h.lo = height, h.lowest = v;
+    if (height > h.hi) h.hi = height, h.highest = v;
+  }
+  return h;
+}
+
+// Signed distance of one triangle (or the whole mesh, as the min/max over triangles) to the plane-like side, with
+// the normal from the mesh to the plane: a half-space pushes the mesh up (+n); a two-sided plane pushes it to the
+// side it mostly lies on.
+template <class T> T planeSignedDistance(const TriangleHeights<T>& h, bool twoSided, const Vec3<T>& n, Vec3<T>& normal,
+                                         Vec3<T>& meshPoint) {
+  if (!twoSided || -h.lo <= h.hi) {
+    normal = -n;
+    meshPoint = h.lowest;
+    return twoSided ? std::max(h.lo, -h.hi) : h.lo;
+  }
+  normal = n;
+  meshPoint = h.highest;
+  return -h.hi;
+}
+
+// BVHModel against Halfspace / Plane, mesh first: one contact per triangle reaching the solid side (half-space) or
+// crossing the plane, as FCL's mesh-shape traversal does.
+template <class T>
+Status meshPlaneContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Converted<T>& plane,
+                         const Transform<T>& planePose, bool withGeometry, std::size_t room,
+                         std::vector<PairContact<T>>& out) {
+  const Vec3<T> n = planePose.rotate(Vec3<T>::UnitX());
+  const T d = n.dot(planePose.p);
+  const bool twoSided = plane.shape == FclShape::Plane;
+  const TriangleMesh<T>& m = *mesh.mesh;
+  const std::size_t first = out.size();
+  for (std::size_t k = 0; k < m.triangles.size() && out.size() - first < room; ++k) {
+    const TriangleHeights<T> h = heightsOf(m, k, meshPose, n, d);
+    Vec3<T> normal, point;
+    const T signedDistance = planeSignedDistance(h, twoSided, n, normal, point);
+    if (signedDistance > T(0)) continue;
+    PairContact<T> c;
+    if (withGeometry) {
+      c.depth = -signedDistance;
+      c.normal = normal;
+      c.position = point + normal * (c.depth / T(2));  // midway between the deepest vertex and the plane
+    }
+    c.b1 = int(m.inputIndex[k]);
+    out.push_back(c);
+  }
+  return {};
+}
+
+template <class T>
+Status meshPlaneDistance(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Converted<T>& plane,
+                         const Transform<T>& planePose, PairDistance<T>& out) {
+  const Vec3<T> n = planePose.rotate(Vec3<T>::UnitX());
+  const T d = n.dot(planePose.p);
+  const TriangleMesh<T>& m = *mesh.mesh;
+  TriangleHeights<T> all{std::numeric_limits<T>::max(), -std::numeric_limits<T>::max(), {}, {}};
+  int lowTriangle = kNoPrimitive, highTriangle = kNoPrimitive;
+  for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+    const TriangleHeights<T> h = heightsOf(m, k, meshPose, n, d);
+    if (h.lo < all.lo) all.lo = h.lo, all.lowest = h.lowest, lowTriangle = int(m.inputIndex[k]);
+    if (h.hi > all.hi) all.hi = h.hi, all.highest = h.highest, highTriangle = int(m.inputIndex[k]);
+  }
+  Vec3<T> normal, point;
+  out.distance = planeSignedDistance(all, plane.shape == FclShape::Plane, n, normal, point);
+  out.point1 = point;
+  out.point2 = point - (n.dot(point) - d) * n;  // the vertex's projection on the plane
+  out.b1 = point == all.lowest ? lowTriangle : highTriangle;
+  out.b2 = kNoPrimitive;
+  return {};
+}
+
+template <class T> const TriangleMeshGeometry<T>* meshOf(const Converted<T>& c) {
+  return c.shape == FclShape::Mesh ? c.geom.template getIf<TriangleMeshGeometry<T>>() : nullptr;
+}
+
+// Triangle of `mesh` nearest to the world point `p` (a witness of the mesh distance).
+template <class T> int nearestTriangle(const TriangleMeshGeometry<T>& mesh, const Transform<T>& pose, const Vec3<T>& p) {
+  PointDistanceResult<T> r;
+  if (!pointDistance(p, Geometry<T>(mesh), pose, r).ok() || r.closestIndex == kInvalidFaceIndex) return kNoPrimitive;
+  return int(r.closestIndex);
+}
+
+}  // namespace
+
+template <class T>
+Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Converted<T>& b, const Transform<T>& pb,
+                    bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out) {
+  if (room == 0) return {};
+  const TriangleMeshGeometry<T>* ma = meshOf(a);
+  const TriangleMeshGeometry<T>* mb = meshOf(b);
+  if (ma && mb) return meshMeshContacts(*ma, pa, *mb, pb, withGeometry, room, out);
+  if ((ma && b.isPlaneLike()) || (mb && a.isPlaneLike())) {
+    const std::size_t first = out.size();
+    const Status s = ma ? meshPlaneContacts(*ma, pa, b, pb, withGeometry, room, out)
+                        : meshPlaneContacts(*mb, pb, a, pa, withGeometry, room, out);
+    if (mb)
+      for (std::size_t i = first; i < out.size(); ++i) flip(out[i]);
+    return s;
+  }
+  if (ma || mb) {
+    const std::size_t first = out.size();
+    const Status s = ma ? meshShapeContacts(*ma, pa, b.geom, pb, withGeometry, room, out)
+                        : meshShapeContacts(*mb, pb, a.geom, pa, withGeometry, room, out);
+    if (mb)
+      for (std::size_t i = first; i < out.size(); ++i) flip(out[i]);
+    return s;
+  }
+  if (a.shape == FclShape::Plane || b.shape == FclShape::Plane) {
+    if (a.isPlaneLike() && b.isPlaneLike()) return Status::unsupported("plane against plane");
+    const bool planeFirst = a.shape == FclShape::Plane;
+    DistanceResult<T> d;
+    const Status s = planeFirst ? twoSidedPlaneDistance(b.geom, pb, pa, d) : twoSidedPlaneDistance(a.geom, pa, pb, d);
+    if (!s.ok() || d.distance > T(0)) return s;
+    PairContact<T> c = contactFrom(d);
+    if (planeFirst) flip(c);
+    out.push_back(c);
+    return s;
+  }
+  return solidContacts(a.geom, pa, b.geom, pb, withGeometry, out);
+}
+
+template <class T>
+Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Converted<T>& b, const Transform<T>& pb,
+                    PairDistance<T>& out) {
+  const TriangleMeshGeometry<T>* ma = meshOf(a);
+  const TriangleMeshGeometry<T>* mb = meshOf(b);
+  DistanceResult<T> d;
+  Status s;
+  if ((ma && b.isPlaneLike()) || (mb && a.isPlaneLike())) {
+    s = ma ? meshPlaneDistance(*ma, pa, b, pb, out) : meshPlaneDistance(*mb, pb, a, pa, out);
+    if (mb) flip(out);
+    return s;
+  }
+  if (a.shape == FclShape::Plane || b.shape == FclShape::Plane) {
+    if (a.isPlaneLike() && b.isPlaneLike()) return Status::unsupported("plane against plane");
+    const bool planeFirst = a.shape == FclShape::Plane;
+    s = planeFirst ? twoSidedPlaneDistance(b.geom, pb, pa, d) : twoSidedPlaneDistance(a.geom, pa, pb, d);
+    if (!s.ok()) return s;
+    out = PairDistance<T>{d.distance, d.point0, d.point1, kNoPrimitive, kNoPrimitive};
+    if (planeFirst) flip(out);
+    return s;
+  }
+  s = distance(d, a.geom, pa, b.geom, pb);
+  if (!s.ok()) return s;
+  out = PairDistance<T>{d.distance, d.point0, d.point1, kNoPrimitive, kNoPrimitive};
+  if (ma) out.b1 = nearestTriangle(*ma, pa, d.point0);
+  if (mb) out.b2 = nearestTriangle(*mb, pb, d.point1);
+  return s;
+}
+
+template Status pairContacts<float>(const Converted<float>&, const Transform<float>&, const Converted<float>&,
+                                    const Transform<float>&, bool, std::size_t, std::vector<PairContact<float>>&);
+template Status pairContacts<double>(const Converted<double>&, const Transform<double>&, const Converted<double>&,
+                                     const Transform<double>&, bool, std::size_t, std::vector<PairContact<double>>&);
+template Status pairDistance<float>(const Converted<float>&, const Transform<float>&, const Converted<float>&,
+                                    const Transform<float>&, PairDistance<float>&);
+template Status pairDistance<double>(const Converted<double>&, const Transform<double>&, const Converted<double>&,
+                                     const Transform<double>&, PairDistance<double>&);
+
+}  // namespace gq::fcl::detail

@@ -1,0 +1,37 @@
+#pragma once
+// The gq side of the adapter: contacts and distances of one converted pair in world space, FCL's conventions
+// (normal from the first geometry to the second, positive depth, triangle ids of mesh sides). No FCL types here.
+#include <cstddef>
+#include <vector>
+
+#include "convert.h"
+#include "gq/status.h"
+
+namespace gq::fcl::detail {
+
+inline constexpr int kNoPrimitive = -1;  // FCL's Contact::NONE / DistanceResult::NONE
+
+template <class T> struct PairContact {
+  Vec3<T> position = Vec3<T>::Zero();  // midway between the two deepest points
+  Vec3<T> normal = Vec3<T>::Zero();    // from a to b
+  T depth = T(0);                      // >= 0
+  int b1 = kNoPrimitive, b2 = kNoPrimitive;
+};
+
+template <class T> struct PairDistance {
+  T distance = T(0);  // signed for convex pairs; meshes are thin surfaces (>= 0)
+  Vec3<T> point1 = Vec3<T>::Zero(), point2 = Vec3<T>::Zero();
+  int b1 = kNoPrimitive, b2 = kNoPrimitive;
+};
+
+// Appends up to `room` contacts of a colliding pair (one per primitive pair, as FCL). Without `withGeometry` only
+// b1/b2 are meaningful. A non-ok status means gq cannot answer the pair (the caller falls back to FCL).
+template <class T>
+Status pairContacts(const Converted<T>& a, const Transform<T>& poseA, const Converted<T>& b, const Transform<T>& poseB,
+                    bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out);
+
+template <class T>
+Status pairDistance(const Converted<T>& a, const Transform<T>& poseA, const Converted<T>& b, const Transform<T>& poseB,
+                    PairDistance<T>& out);
+
+}  // namespace gq::fcl::detail

@@ -1,0 +1,261 @@
+// FCL's conventions as gq::fcl keeps them, the opt-in corrections (FCL issues 545 and 628), the geometry cache's
+// re-conversion rule and the fallback to FCL. Expected values are closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+#include "gq/fcl/fcl.h"
+
+namespace {
+
+using ::fcl::Vector3d;
+constexpr int kNone = -1;  // ::fcl::Contact::NONE (declared without a definition: not odr-usable)
+
+::fcl::Transform3d at(double x, double y, double z) {
+  ::fcl::Transform3d tf = ::fcl::Transform3d::Identity();
+  tf.translation() = Vector3d(x, y, z);
+  return tf;
+}
+
+std::shared_ptr<::fcl::BVHModel<::fcl::OBBRSSd>> twoTriangles() {
+  auto model = std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>();
+  model->beginModel();
+  model->addTriangle(Vector3d(-1, -1, 0), Vector3d(1, -1, 0), Vector3d(0, 1, 0));      // id 0, at z = 0
+  model->addTriangle(Vector3d(9, -1, 0), Vector3d(11, -1, 0), Vector3d(10, 1, 0));     // id 1, around x = 10
+  model->endModel();
+  return model;
+}
+
+TEST(FclConventions, ResultsAreAppendedNotCleared) {
+  ::fcl::Sphered a(1), b(1);
+  ::fcl::CollisionRequestd request(10, true);
+  ::fcl::CollisionResultd result;
+  gq::fcl::collide(&a, at(0, 0, 0), &b, at(1.5, 0, 0), request, result);
+  const std::size_t n = gq::fcl::collide(&a, at(0, 0, 0), &b, at(0, 1.5, 0), request, result);
+  EXPECT_EQ(n, 2u);
+  EXPECT_EQ(result.numContacts(), 2u);
+}
+
+TEST(FclConventions, NormalPointsFromO1ToO2WithPositiveDepthAndWorldPosition) {
+  ::fcl::Sphered a(1), b(1);
+  ::fcl::CollisionRequestd request(1, true);
+  ::fcl::CollisionResultd result;
+  ASSERT_EQ(gq::fcl::collide(&a, at(2, 0, 0), &b, at(3.5, 0, 0), request, result), 1u);
+  const ::fcl::Contactd& c = result.getContact(0);
+  EXPECT_NEAR(c.penetration_depth, 0.5, 1e-12);
+  EXPECT_NEAR((c.normal - Vector3d::UnitX()).norm(), 0, 1e-12);
+  EXPECT_NEAR((c.pos - Vector3d(2.75, 0, 0)).norm(), 0, 1e-12);  // midway between the deepest points 3 and 2.5
+  EXPECT_EQ(c.b1, kNone);
+  EXPECT_EQ(c.o1, &a);
+  EXPECT_EQ(c.o2, &b);
+}
+
+TEST(FclConventions, WithoutEnableContactAPairAddsOneContactWithoutGeometry) {
+  ::fcl::Sphered a(1), b(1);
+  ::fcl::CollisionRequestd request;  // 1 contact, no contact data
+  ::fcl::CollisionResultd result;
+  EXPECT_EQ(gq::fcl::collide(&a, at(0, 0, 0), &b, at(1.9, 0, 0), request, result), 1u);
+  ::fcl::CollisionResultd apart;
+  EXPECT_EQ(gq::fcl::collide(&a, at(0, 0, 0), &b, at(2.1, 0, 0), request, apart), 0u);
+}
+
+TEST(FclConventions, CapsuleCylinderAndConeRunAlongLocalZWithFullLength) {
+  ::fcl::Capsuled capsule(0.1, 2);  // segment z in [-1, 1]
+  ::fcl::Cylinderd cylinder(0.1, 2);
+  ::fcl::Coned cone(0.5, 2);  // apex at z = +1, base at z = -1
+  ::fcl::Sphered probe(0.1);
+  ::fcl::CollisionRequestd request;
+  const auto hits = [&](const ::fcl::CollisionGeometryd& g, double x, double y, double z) {
+    ::fcl::CollisionResultd r;
+    return gq::fcl::collide(&g, at(0, 0, 0), &probe, at(x, y, z), request, r) > 0;
+  };
+  EXPECT_TRUE(hits(capsule, 0, 0, 1.15));   // tip at 1.1, probe from 1.05
+  EXPECT_FALSE(hits(capsule, 0, 0, 1.25));  // gap 0.05
+  EXPECT_FALSE(hits(capsule, 1.15, 0, 0));  // the axis is not X
+  EXPECT_TRUE(hits(cylinder, 0, 0, 1.05));
+  EXPECT_FALSE(hits(cylinder, 0, 0, 1.15));
+  EXPECT_TRUE(hits(cone, 0, 0, 1.05));      // apex
+  EXPECT_FALSE(hits(cone, 0.3, 0, 0.9));    // the side at z = 0.9 is at radius 0.025: gap ~0.17
+  EXPECT_TRUE(hits(cone, 0.55, 0, -0.95));  // near the base rim
+}
+
+TEST(FclConventions, MinDistanceOnlyChangesWhenSmaller) {
+  ::fcl::Sphered a(1), b(1);
+  ::fcl::DistanceRequestd request(true);
+  ::fcl::DistanceResultd result;
+  result.min_distance = 0.1;  // pre-seeded (as MoveIt does)
+  EXPECT_DOUBLE_EQ(gq::fcl::distance(&a, at(0, 0, 0), &b, at(3, 0, 0), request, result), 0.1);
+  EXPECT_DOUBLE_EQ(result.min_distance, 0.1);
+  EXPECT_EQ(result.o1, nullptr);
+  EXPECT_NEAR(gq::fcl::distance(&a, at(0, 0, 0), &b, at(2.05, 0, 0), request, result), 0.05, 1e-12);
+  EXPECT_EQ(result.o1, &a);
+  EXPECT_NEAR((result.nearest_points[0] - Vector3d(1, 0, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((result.nearest_points[1] - Vector3d(1.05, 0, 0)).norm(), 0, 1e-12);
+}
+
+TEST(FclConventions, SignedDistanceIsMinusThePenetrationDepth) {
+  ::fcl::Boxd a(2, 2, 2), b(2, 2, 2);
+  ::fcl::DistanceRequestd request(true);
+  request.enable_signed_distance = true;
+  ::fcl::DistanceResultd result;
+  EXPECT_NEAR(gq::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), request, result), -0.3, 1e-12);
+}
+
+TEST(FclConventions, MeshContactsCarryTriangleIdsOnTheMeshSide) {
+  auto mesh = twoTriangles();
+  ::fcl::Sphered sphere(0.5);
+  ::fcl::CollisionRequestd request(4, true);
+  gq::fcl::Options exact;
+  exact.minimumTranslation = true;
+  ::fcl::CollisionResultd meshFirst, meshSecond;
+  gq::fcl::collide<double>(mesh.get(), at(0, 0, 0), &sphere, at(10, 0, 0.3), request, meshFirst, exact);
+  gq::fcl::collide<double>(&sphere, at(10, 0, 0.3), mesh.get(), at(0, 0, 0), request, meshSecond, exact);
+  ASSERT_EQ(meshFirst.numContacts(), 1u);
+  ASSERT_EQ(meshSecond.numContacts(), 1u);
+  EXPECT_EQ(meshFirst.getContact(0).b1, 1);
+  EXPECT_EQ(meshFirst.getContact(0).b2, kNone);
+  EXPECT_EQ(meshSecond.getContact(0).b2, 1);
+  EXPECT_NEAR(meshFirst.getContact(0).penetration_depth, 0.2, 1e-9);  // r - height
+  EXPECT_NEAR((meshFirst.getContact(0).normal - Vector3d::UnitZ()).norm(), 0, 1e-9);   // mesh -> sphere
+  EXPECT_NEAR((meshSecond.getContact(0).normal + Vector3d::UnitZ()).norm(), 0, 1e-9);  // sphere -> mesh
+}
+
+TEST(FclConventions, NumMaxContactsCapsMeshContacts) {
+  // A fan of 6 triangles around the origin; a sphere at the centre touches all of them.
+  auto fan = std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>();
+  fan->beginModel();
+  for (int k = 0; k < 6; ++k) {
+    const double a0 = k * M_PI / 3, a1 = (k + 1) * M_PI / 3;
+    fan->addTriangle(Vector3d(0, 0, 0), Vector3d(std::cos(a0), std::sin(a0), 0), Vector3d(std::cos(a1), std::sin(a1), 0));
+  }
+  fan->endModel();
+  ::fcl::Sphered sphere(0.2);
+  ::fcl::CollisionResultd all, two;
+  gq::fcl::collide<double>(fan.get(), at(0, 0, 0), &sphere, at(0, 0, 0.1), ::fcl::CollisionRequestd(100, false), all);
+  gq::fcl::collide<double>(fan.get(), at(0, 0, 0), &sphere, at(0, 0, 0.1), ::fcl::CollisionRequestd(2, false), two);
+  EXPECT_EQ(all.numContacts(), 6u);
+  EXPECT_EQ(two.numContacts(), 2u);
+}
+
+// FCL issue 545: a small cube centred on the big cube's diagonal near its corner. The exact MTD pushes the small
+// cube out through one face: its far face at 0.2 must pass the big cube's face at 0.5, 0.3 along an axis; FCL's MPR
+// path returns the diagonal direction, sqrt(3) x deeper (0.52).
+TEST(FclCorrections, MinimumTranslationGivesTheTrueDepthOfFclIssue545) {
+  ::fcl::Boxd big(1, 1, 1);
+  auto vertices = std::make_shared<std::vector<Vector3d>>();
+  for (int i = 0; i < 8; ++i) vertices->emplace_back(i & 1 ? 0.2 : -0.2, i & 2 ? 0.2 : -0.2, i & 4 ? 0.2 : -0.2);
+  auto faces = std::make_shared<std::vector<int>>(std::vector<int>{4, 0, 2, 3, 1, 4, 4, 5, 7, 6, 4, 0, 1, 5, 4,
+                                                                   4, 2, 6, 7, 3, 4, 0, 4, 6, 2, 4, 1, 3, 7, 5});
+  ::fcl::Convexd small(vertices, 6, faces);
+  const ::fcl::Transform3d pose = at(0.4, 0.4, 0.4);
+  ::fcl::CollisionRequestd request(1, true);
+  ::fcl::CollisionResultd fromFcl, byDefault, corrected;
+  ::fcl::collide<double>(&big, at(0, 0, 0), &small, pose, request, fromFcl);
+  gq::fcl::collide<double>(&big, at(0, 0, 0), &small, pose, request, byDefault);
+  gq::fcl::Options options;
+  options.minimumTranslation = true;
+  gq::fcl::collide<double>(&big, at(0, 0, 0), &small, pose, request, corrected, options);
+  ASSERT_EQ(fromFcl.numContacts(), 1u);
+  ASSERT_EQ(byDefault.numContacts(), 1u);
+  ASSERT_EQ(corrected.numContacts(), 1u);
+  std::cout << "FCL issue 545 case: FCL depth " << fromFcl.getContact(0).penetration_depth << ", exact 0.3\n";
+  // Default: FCL's own numbers.
+  EXPECT_EQ(byDefault.getContact(0).penetration_depth, fromFcl.getContact(0).penetration_depth);
+  EXPECT_NEAR(corrected.getContact(0).penetration_depth, 0.3, 1e-12);
+  const Vector3d n = corrected.getContact(0).normal;
+  EXPECT_NEAR(n.cwiseAbs().maxCoeff(), 1.0, 1e-12);  // a face normal of the big cube
+  EXPECT_NEAR(n.sum(), 1.0, 1e-12);                  // pointing from the big cube out towards the small one
+}
+
+// FCL issue 628: box B = [0,1] x [0.8,1] x [0,1] inside box A = [0,1]^3 with touching faces. The exact MTD moves B by
+// 0.2 along +y whatever the boxes' length along z; FCL reports 1.0, or 0 once both are stretched along z.
+TEST(FclCorrections, ExactContainedBoxDepthOfFclIssue628) {
+  gq::fcl::Options options;
+  options.exactContainedBoxDepth = true;
+  for (double lengthZ : {1.0, 2.0}) {
+    ::fcl::Boxd a(1, 1, lengthZ), b(1, 0.2, lengthZ);
+    ::fcl::CollisionRequestd request(1, true);
+    ::fcl::CollisionResultd fromFcl, corrected;
+    ::fcl::collide<double>(&a, at(0.5, 0.5, lengthZ / 2), &b, at(0.5, 0.9, lengthZ / 2), request, fromFcl);
+    gq::fcl::collide<double>(&a, at(0.5, 0.5, lengthZ / 2), &b, at(0.5, 0.9, lengthZ / 2), request, corrected, options);
+    ASSERT_EQ(corrected.numContacts(), 1u);
+    std::cout << "FCL issue 628 case (length z " << lengthZ << "): FCL depth "
+              << (fromFcl.numContacts() ? fromFcl.getContact(0).penetration_depth : -1.0) << ", exact 0.2\n";
+    EXPECT_NEAR(corrected.getContact(0).penetration_depth, 0.2, 1e-12);
+    EXPECT_NEAR((corrected.getContact(0).normal - Vector3d::UnitY()).norm(), 0, 1e-12);
+  }
+}
+
+TEST(FclCache, AnEditedBvhModelIsReconverted) {
+  auto mesh = twoTriangles();
+  ::fcl::Sphered sphere(0.5);
+  ::fcl::CollisionRequestd request;
+  ::fcl::CollisionResultd before, after;
+  EXPECT_EQ(gq::fcl::collide<double>(mesh.get(), at(0, 0, 0), &sphere, at(0, 0, 0.3), request, before), 1u);
+  // Lift triangle 0 by 5 in place (replace mode keeps the arrays): the sampled vertices change the fingerprint.
+  mesh->beginReplaceModel();
+  mesh->replaceTriangle(Vector3d(-1, -1, 5), Vector3d(1, -1, 5), Vector3d(0, 1, 5));
+  mesh->replaceTriangle(Vector3d(9, -1, 0), Vector3d(11, -1, 0), Vector3d(10, 1, 0));
+  mesh->endReplaceModel();
+  EXPECT_EQ(gq::fcl::collide<double>(mesh.get(), at(0, 0, 0), &sphere, at(0, 0, 0.3), request, after), 0u);
+  EXPECT_EQ(gq::fcl::collide<double>(mesh.get(), at(0, 0, 0), &sphere, at(0, 0, 5.3), request, after), 1u);
+}
+
+TEST(FclFallback, PlanePairsRunThroughFclAndMeshPlaneIsAnsweredByGq) {
+  ::fcl::Halfspaced h1(Vector3d::UnitZ(), 0), h2(-Vector3d::UnitZ(), -1);
+  ::fcl::Planed plane(Vector3d::UnitX(), 0);  // crosses triangle 0
+  auto mesh = twoTriangles();
+  ::fcl::CollisionRequestd request;
+  gq::fcl::resetAdapterCounters();
+  ::fcl::CollisionResultd r1, r2, f1, f2;
+  gq::fcl::collide<double>(&h1, at(0, 0, 0), &h2, at(0, 0, 0), request, r1);
+  ::fcl::collide<double>(&h1, at(0, 0, 0), &h2, at(0, 0, 0), request, f1);
+  gq::fcl::collide<double>(mesh.get(), at(0, 0, 0), &plane, at(0, 0, 0), request, r2);
+  ::fcl::collide<double>(mesh.get(), at(0, 0, 0), &plane, at(0, 0, 0), request, f2);
+  EXPECT_EQ(gq::fcl::adapterCounters().fallback, 1u);  // the half-space pair; the mesh-plane pair is gq's
+  EXPECT_EQ(gq::fcl::adapterCounters().gq, 1u);
+  EXPECT_EQ(r1.isCollision(), f1.isCollision());
+  EXPECT_EQ(r2.isCollision(), f2.isCollision());
+}
+
+TEST(FclConventions, PrimitivePairsAreAnsweredByGq) {
+  ::fcl::Sphered s(1);
+  ::fcl::Boxd b(1, 1, 1);
+  ::fcl::Ellipsoidd e(1, 0.5, 0.3);
+  gq::fcl::resetAdapterCounters();
+  ::fcl::CollisionResultd r;
+  ::fcl::DistanceResultd d;
+  gq::fcl::collide<double>(&s, at(0, 0, 0), &b, at(1, 0, 0), ::fcl::CollisionRequestd(), r);
+  gq::fcl::distance<double>(&e, at(0, 0, 0), &b, at(3, 0, 0), ::fcl::DistanceRequestd(), d);
+  EXPECT_EQ(gq::fcl::adapterCounters().gq, 2u);
+  EXPECT_EQ(gq::fcl::adapterCounters().fallback, 0u);
+  EXPECT_NEAR(d.min_distance, 1.5, 1e-9);  // ellipsoid tip at x = 1, box face at x = 2.5
+}
+
+TEST(FclConventions, NonFinitePoseWritesNothingAndDoesNotThrow) {
+  ::fcl::Sphered a(1), b(1);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ::fcl::CollisionResultd result;
+  ::fcl::DistanceResultd distance;
+  EXPECT_EQ(gq::fcl::collide<double>(&a, at(nan, 0, 0), &b, at(0, 0, 0), ::fcl::CollisionRequestd(1, true), result), 0u);
+  EXPECT_EQ(result.numContacts(), 0u);
+  gq::fcl::distance<double>(&a, at(nan, 0, 0), &b, at(0, 0, 0), ::fcl::DistanceRequestd(true), distance);
+  EXPECT_EQ(distance.min_distance, std::numeric_limits<double>::max());
+}
+
+TEST(FclConventions, FloatOverloadsAnswerInFloat) {
+  ::fcl::Spheref a(1), b(0.5f);
+  ::fcl::Transform3f ta = ::fcl::Transform3f::Identity(), tb = ::fcl::Transform3f::Identity();
+  tb.translation() = ::fcl::Vector3f(2, 0, 0);
+  ::fcl::DistanceResultf d;
+  EXPECT_NEAR(gq::fcl::distance<float>(&a, ta, &b, tb, ::fcl::DistanceRequestf(true), d), 0.5f, 1e-6f);
+  ::fcl::CollisionResultf c;
+  tb.translation() = ::fcl::Vector3f(1.4f, 0, 0);
+  ::fcl::CollisionObjectf oa(std::make_shared<::fcl::Spheref>(1), ta), ob(std::make_shared<::fcl::Spheref>(0.5f), tb);
+  EXPECT_EQ(gq::fcl::collide<float>(&oa, &ob, ::fcl::CollisionRequestf(1, true), c), 1u);
+  EXPECT_NEAR(c.getContact(0).penetration_depth, 0.1f, 1e-6f);
+}
+
+}  // namespace

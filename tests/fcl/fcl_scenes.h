@@ -1,0 +1,36 @@
+#pragma once
+// Test shapes as real ::fcl geometries, seeded random poses, and the shape list the equivalence tests loop over.
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fcl/fcl.h>
+
+namespace gq::fcltest {
+
+enum class Kind { Sphere, Box, Capsule, Cylinder, Cone, Ellipsoid, Convex, TriangleP, Halfspace, Plane, Mesh };
+const char* name(Kind k);
+std::vector<Kind> allKinds();
+bool isPlaneLike(Kind k);
+
+// A geometry with the data the exact references need (polytope vertices/faces, sizes).
+struct TestShape {
+  Kind kind;
+  std::shared_ptr<::fcl::CollisionGeometryd> geometry;
+  std::vector<::fcl::Vector3d> vertices;        // polytopes (box corners, hull, triangle, mesh vertices)
+  std::vector<std::vector<int>> faces;          // polytope faces (CCW from outside); mesh triangles
+  ::fcl::Vector3d size = ::fcl::Vector3d::Zero();  // sphere r; box sides; capsule/cylinder/cone (r, lz); radii
+  ::fcl::Vector3d planeNormal = ::fcl::Vector3d::UnitZ();
+  double planeOffset = 0;
+};
+
+TestShape makeShape(Kind k, std::mt19937& rng);
+
+// A uniformly random rotation and a translation uniform in [-extent, extent]^3.
+::fcl::Transform3d randomPose(std::mt19937& rng, double extent);
+
+// A closed convex polytope: the hull of `count` points on an ellipsoid, as vertices + CCW faces (triangulated).
+void randomHull(std::mt19937& rng, int count, std::vector<::fcl::Vector3d>& vertices, std::vector<std::vector<int>>& faces);
+
+}  // namespace gq::fcltest
