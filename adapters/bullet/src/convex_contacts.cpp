@@ -2,6 +2,7 @@
 // face supports the contact (box or hull on a face, cylinder cap, capsule lying down) the incident feature is
 // clipped to that face so the manifold gets its full support polygon in one frame, as Bullet's box-box does.
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "contact_features.h"
@@ -15,6 +16,27 @@ namespace {
 // face tilted from the contact normal would otherwise overstate their depth.
 struct Clamp {
   Real exactDepth;
+};
+
+// Holds contacts until the caller decides to keep them.
+class BufferedSink final : public ContactSink {
+ public:
+  void add(const V3& normalOnB, const V3& pointOnB, Real depth, TriangleIds ids, bool surfaceIsB) override {
+    if (count_ < kMaxFeaturePoints) points_[count_++] = {normalOnB, pointOnB, depth, ids, surfaceIsB};
+  }
+  void flush(ContactSink& sink) const {
+    for (int i = 0; i < count_; ++i) sink.add(points_[i].n, points_[i].p, points_[i].depth, points_[i].ids, points_[i].surfaceIsB);
+  }
+
+ private:
+  struct Held {
+    V3 n, p;
+    Real depth;
+    TriangleIds ids;
+    bool surfaceIsB;
+  };
+  std::array<Held, kMaxFeaturePoints> points_;
+  int count_ = 0;
 };
 
 // The incident points clipped to the reference face, as contacts; `referenceIsB` says which shape owns the face.
@@ -44,7 +66,37 @@ Real clippedContacts(const PlacedShape& a, const PlacedShape& b, const V3& norma
 
 }  // namespace
 
+namespace {
+
+// Polytope pairs (box, hull, plane) have an exact and cheaper penetration query (SAT) than the signed distance's
+// EPA: resting contacts, which penetrate slightly, take that path.
+bool hasSatPenetration(const PlacedShape& a, const PlacedShape& b) {
+  const auto flat = [](const PlacedShape& s) { return s.view->isPolytope() || s.view->kind == ShapeKind::Plane; };
+  return flat(a) && flat(b) && (a.view->isPolytope() || b.view->isPolytope());
+}
+
+Real toleranceOf(const PlacedShape& a, const PlacedShape& b) {
+  return Real(tol::Rel<Real>::kEpsilon) * std::max(a.view->size, b.view->size);
+}
+
+// Penetrating polytopes: the SAT normal and depth, then the clipped face contacts. False when the cores do not
+// penetrate or no clipped point carries the exact depth (the signed-distance path then answers).
+bool penetratingPolytopeContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
+  PenetrationResult<Real> mtd;
+  if (!computePenetration(mtd, a.view->geom, a.pose, b.view->geom, b.pose).ok() || !mtd.penetrating) return false;
+  const Real depth = -mtd.depth - a.view->margin - b.view->margin;
+  const V3 normalOnB = mtd.direction;  // moving A along it separates: it points from B to A
+  if (!isFinite(normalOnB) || normalOnB.squaredNorm() < Real(0.5)) return false;
+  BufferedSink buffered;
+  if (clippedContacts(a, b, normalOnB, threshold, Clamp{depth}, buffered) > depth + toleranceOf(a, b)) return false;
+  buffered.flush(sink);
+  return true;
+}
+
+}  // namespace
+
 void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
+  if (hasSatPenetration(a, b) && penetratingPolytopeContacts(a, b, threshold, sink)) return;
   DistanceResult<Real> d;
   if (!distance(d, a.view->geom, a.pose, b.view->geom, b.pose).ok()) return;
   const Real depth = d.distance - a.view->margin - b.view->margin;
@@ -52,8 +104,7 @@ void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, 
   if (!(depth <= threshold) || !isFinite(normalOnB) || normalOnB.squaredNorm() < Real(0.5)) return;
   // The exact closest point joins the clipped ones unless one of them already carries the exact depth.
   const Real clippedDeepest = clippedContacts(a, b, normalOnB, threshold, Clamp{depth}, sink);
-  const Real tolerance = Real(tol::Rel<Real>::kEpsilon) * std::max(a.view->size, b.view->size);
-  if (clippedDeepest > depth + tolerance)
+  if (clippedDeepest > depth + toleranceOf(a, b))
     sink.add(normalOnB, d.point1 + normalOnB * b.view->margin, depth, TriangleIds(), true);
 }
 
