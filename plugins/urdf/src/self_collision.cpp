@@ -103,7 +103,8 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
     for (std::uint32_t b = a + 1; b < links; ++b)
       if (!m.links[a].shapes.empty() && !m.links[b].shapes.empty() && !m.isAllowed(a, b)) checkedPairs_.push_back({a, b});
   linkPoses_.resize(links);
-  linkRotations_.resize(links);
+  for (std::uint32_t l = 0; l < links; ++l)
+    if (!m.links[l].shapes.empty()) shapedLinks_.push_back(l);
   linkCentres_.resize(links);
   shapeCentres_.resize(shapes);
   shapePoses_.resize(shapes);
@@ -112,8 +113,8 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
   candidates_.reserve(checkedPairs_.size());
 }
 
-// World rotation and sphere centre of every link with shapes; shape sphere centres only where a link has several
-// shapes (a single shape's sphere is its link's).
+// World sphere centre of every link with shapes; shape sphere centres only where a link has several shapes (a
+// single shape's sphere is its link's).
 template <class T> Status SelfCollisionChecker<T>::placeLinks(const std::vector<T>& q) {
   Status s = forwardKinematics(*model_, q, linkPoses_);
   if (!s.ok()) return s;
@@ -121,14 +122,15 @@ template <class T> Status SelfCollisionChecker<T>::placeLinks(const std::vector<
     std::fill(placedStamp_.begin(), placedStamp_.end(), 0u);
     stamp_ = 1;
   }
-  for (std::size_t l = 0; l < linkPoses_.size(); ++l) {
+  for (const std::uint32_t l : shapedLinks_) {
     const auto& own = model_->links[l].shapes;
-    if (own.empty()) continue;
-    const Mat3<T>& r = linkRotations_[l] = linkPoses_[l].q.toRotationMatrix();
-    linkCentres_[l] = r * linkCentreInLink_[l] + linkPoses_[l].p;
-    if (own.size() == 1) shapeCentres_[own[0]] = linkCentres_[l];
-    else
-      for (std::uint32_t i : own) shapeCentres_[i] = r * shapeBounds_[i].centreInLink + linkPoses_[l].p;
+    linkCentres_[l] = linkPoses_[l].transform(linkCentreInLink_[l]);
+    if (own.size() == 1) {
+      shapeCentres_[own[0]] = linkCentres_[l];
+      continue;
+    }
+    const Mat3<T> r = linkPoses_[l].q.toRotationMatrix();
+    for (std::uint32_t i : own) shapeCentres_[i] = r * shapeBounds_[i].centreInLink + linkPoses_[l].p;
   }
   return {};
 }

@@ -80,13 +80,13 @@ template <class T> class SelfCollisionChecker {
 
   std::shared_ptr<const RobotModel<T>> model_;
   std::vector<LinkPair> checkedPairs_;       // link pairs with shapes that the allowed-collision matrix leaves
+  std::vector<std::uint32_t> shapedLinks_;   // links with at least one shape
   std::vector<ShapeBound> shapeBounds_;
   std::vector<Vec3<T>> linkCentreInLink_;    // per link: sphere enclosing its shapes' spheres
   std::vector<T> linkRadius_;
   T slack_ = T(0);                           // absolute culling slack (rounding of world placements)
   // Per configuration.
   std::vector<Transform<T>> linkPoses_;
-  std::vector<Mat3<T>> linkRotations_;
   std::vector<Vec3<T>> linkCentres_, shapeCentres_;  // world sphere centres
   std::vector<Transform<T>> shapePoses_;             // valid when placedStamp_[s] == stamp_
   std::vector<OrientedBox<T>> shapeBoxes_;
