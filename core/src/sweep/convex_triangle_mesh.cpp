@@ -1,9 +1,15 @@
-// Sweep of a support-mapped shape against a triangle mesh: the BVH gives the triangles whose boxes meet the swept
-// volume's box (in mesh space), each is culled and swept (sweep/convex_triangle.cpp), and the picker keeps the
-// closest hit (initial overlaps first; ties to the triangle facing the sweep most). faceIndex is the input triangle.
+// Sweep of a support-mapped shape against a triangle mesh: a front-to-back BVH traversal of the swept shape's box
+// moving along the sweep (a "fat ray", in mesh space) visits the triangles in order of the parameter at which that box
+// can first touch them, each is culled and swept (sweep/convex_triangle.cpp), and the picker keeps the closest hit
+// (initial overlaps first; ties to the triangle facing the sweep most). Subtrees and triangles that the box could only
+// reach beyond the current closest hit are skipped. faceIndex is the input triangle.
+#include <algorithm>
+#include <array>
+#include <limits>
 #include <vector>
 
 #include "gq/cooking.h"
+#include "bvh/traverse.h"
 #include "mesh/mesh_instance.h"
 #include "sweep/sweep.h"
 
@@ -45,6 +51,78 @@ void collectTriangles(const Bvh4& bvh, const FloatBox& q, std::vector<std::uint3
   }
 }
 
+// The swept shape's start box (centre `origin`, half extents `half`) moving along `dir`, in mesh space. Because mesh
+// space is an affine image of world space, the parameter t along dir is the world sweep distance.
+template <class T> struct FatRay {
+  Vec3<T> origin, dir, half;
+
+  // First t in [0, tMax] at which the moving box meets [lo, hi] (their Minkowski sum contains origin + t dir);
+  // +inf when never. The bounds grow by kFatRayPad of their magnitude: node boxes are float roundings.
+  T entry(const Vec3<T>& lo, const Vec3<T>& hi, T tMax) const {
+    T t0 = T(0), t1 = tMax;
+    for (int i = 0; i < 3; ++i) {
+      const T pad = T(kFatRayPad) * (std::abs(lo[i]) + std::abs(hi[i]) + half[i]);
+      const T a = lo[i] - half[i] - pad, b = hi[i] + half[i] + pad;
+      if (dir[i] == T(0)) {
+        if (origin[i] < a || origin[i] > b) return std::numeric_limits<T>::infinity();
+        continue;
+      }
+      T ta = (a - origin[i]) / dir[i], tb = (b - origin[i]) / dir[i];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+      if (t0 > t1) return std::numeric_limits<T>::infinity();
+    }
+    return t0;
+  }
+  static constexpr double kFatRayPad = 1e-6;
+};
+
+template <class T> T childEntry(const FatRay<T>& ray, const Bvh4Node& n, int lane, T tMax) {
+  return ray.entry(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
+                   Vec3<T>(T(n.maxX[lane]), T(n.maxY[lane]), T(n.maxZ[lane])), tMax);
+}
+
+// Visits cooked triangles nearest-entry first; `visit(cooked, entry)` returns false to stop, `tMax()` gives the
+// current pruning distance.
+template <class T, class TMax, class Visit>
+void traverseFatRay(const TriangleMesh<T>& mesh, const FatRay<T>& ray, TMax&& tMax, Visit&& visit) {
+  const Bvh4& bvh = mesh.bvh;
+  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  struct Entry {
+    std::uint32_t ref;
+    T t;
+  };
+  std::array<Entry, kBvhStackSize> stack;
+  int top = 0;
+  stack[top++] = {bvh.rootChild, T(0)};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    if (e.t > tMax()) continue;
+    if (Bvh4Node::isLeaf(e.ref)) {
+      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(e.ref); ++k) {
+        const std::uint32_t cooked = Bvh4Node::leafFirst(e.ref) + k;
+        const TriangleIndices& idx = mesh.triangles[cooked];
+        Bounds3<T> box;
+        for (const std::uint32_t v : idx) box.include(mesh.vertices[v]);
+        const T t = ray.entry(box.min, box.max, tMax());
+        if (t <= tMax() && !visit(cooked)) return;
+      }
+      continue;
+    }
+    const Bvh4Node& node = bvh.nodes[e.ref];
+    std::array<Entry, 4> hit;
+    int n = 0;
+    for (int lane = 0; lane < 4; ++lane) {
+      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+      const T t = childEntry(ray, node, lane, tMax());
+      if (t <= tMax()) hit[n++] = {node.child[lane], t};
+    }
+    std::sort(hit.begin(), hit.begin() + n, [](const Entry& x, const Entry& y) { return x.t > y.t; });
+    for (int i = 0; i < n && top < kBvhStackSize; ++i) stack[top++] = hit[i];  // nearest pushed last, popped first
+  }
+}
+
 // Mesh-space box of a shape-space box: the 8 corners through S^-1.
 template <class T> Bounds3<T> toMeshSpace(const Bounds3<T>& b, const Mat3<T>& invScale) {
   Bounds3<T> m;
@@ -64,24 +142,29 @@ void sweepConvexTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, cons
   const MeshInstance<T> inst(meshGeom, p1);
   const ConvexShape<T> a = makeSweptShape(g0, p0, q.inflation);
   const Bounds3<T> shapeBox = sweptBoundsInFrame(a, p1, q.dir, q.maxDist);
-  std::vector<std::uint32_t> candidates;
-  collectTriangles(inst.mesh.bvh, toFloatBox(toMeshSpace(shapeBox, inst.invScale)), candidates);
+  const Bounds3<T> startBox = toMeshSpace(sweptBoundsInFrame(a, p1, q.dir, T(0)), inst.invScale);
+  const FatRay<T> ray{startBox.center(), Vec3<T>(inst.invScale * p1.rotateInv(q.dir)), startBox.extents()};
 
   const bool doubleSided = meshGeom.doubleSided();
   TriangleHitPicker<T> picker;
   picker.tieTolerance = triangleTieTolerance(a, shapeBox);
+  // Initial overlaps win (the smallest index among them): once one is found only boxes touched at t = 0 matter.
+  const auto tMax = [&] { return picker.found && picker.overlap ? T(0) : picker.earlyOut(q.maxDist); };
   SweepQuery<T> local = q;
-  for (const std::uint32_t cooked : candidates) {
+  traverseFatRay(inst.mesh, ray, tMax, [&](std::uint32_t cooked) {
     local.maxDist = picker.earlyOut(q.maxDist);
     ToiResult<T> toi;
     T facing;
-    if (!sweepOneTriangle(a, inst.worldTriangle(cooked), local, doubleSided, toi, facing)) continue;
-    if (picker.offer(toi, facing, inst.mesh.inputIndex[cooked], q.anyHit)) break;
-  }
+    if (!sweepOneTriangle(a, inst.worldTriangle(cooked), local, doubleSided, toi, facing)) return true;
+    return !picker.offer(toi, facing, inst.mesh.inputIndex[cooked], q.anyHit);
+  });
   if (!picker.found) return;
   outcomeFromToi(picker.best, out);
   out.faceIndex = picker.bestIndex;
   if (!(out.initialOverlap && q.mtd)) return;
+  // The triangles overlapping at the start: those whose boxes meet the start box.
+  std::vector<std::uint32_t> candidates;
+  collectTriangles(inst.mesh.bvh, toFloatBox(startBox), candidates);
   TriangleMtdPicker<T> mtd;
   for (const std::uint32_t cooked : candidates) {
     const Triangle<T> tri = inst.worldTriangle(cooked);
