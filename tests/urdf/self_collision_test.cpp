@@ -71,22 +71,31 @@ TYPED_TEST(SelfCollision, FoldedArmReportsTheExpectedPair) {
 TYPED_TEST(SelfCollision, DistanceIsPositiveExactlyWhenNoPairCollides) {
   using T = TypeParam;
   const T tol = std::is_same_v<T, float> ? T(1e-4) : T(1e-8);
-  for (const RobotFiles* r : {&kPanda, &kUr5}) {
-    const auto m = loadCached<T>(*r, Representation::Hull);
+  // Mesh mode measures surfaces (distance 0 in contact, never negative); the primitive URDF has exact cylinders.
+  const std::pair<const RobotFiles*, Representation> cases[] = {
+      {&kPanda, Representation::Hull}, {&kUr5, Representation::Hull}, {&kPanda, Representation::Mesh},
+      {&kUr5, Representation::Mesh}, {&kPandaPrimitives, Representation::Hull}};
+  for (const auto& [r, rep] : cases) {
+    const auto m = loadCached<T>(*r, rep);
     SelfCollisionChecker<T> checker(m);
     std::uint64_t rng = 99;
+    std::size_t separated = 0;
     for (int k = 0; k < 300; ++k) {
       const std::vector<T> q = randomConfiguration(*m, rng);
       CollisionResult c;
       SelfDistanceResult<T> d;
       ASSERT_TRUE(checker.checkSelfCollision(q, c).ok());
-      ASSERT_TRUE(checker.selfDistance(q, d).ok());
-      if (std::abs(d.distance) <= tol) continue;  // touching: either answer is right
-      EXPECT_EQ(c.colliding, d.distance < T(0)) << r->name << " config " << k << " distance " << d.distance;
-      if (d.distance > T(0))  // witnesses are that far apart
-        EXPECT_NEAR((d.point1 - d.point0).norm(), d.distance, tol) << r->name << " config " << k;
+      const Status s = checker.selfDistance(q, d);
+      ASSERT_TRUE(s.ok()) << r->name << " " << toString(rep) << " config " << k << ": " << s.toString();
       EXPECT_TRUE(std::isfinite(d.distance));
+      if (std::abs(d.distance) <= tol) continue;  // touching: either answer is right
+      EXPECT_EQ(c.colliding, d.distance < T(0)) << r->name << " " << toString(rep) << " config " << k << " distance " << d.distance;
+      if (d.distance > T(0)) {  // witnesses are that far apart
+        ++separated;
+        EXPECT_NEAR((d.point1 - d.point0).norm(), d.distance, tol) << r->name << " config " << k;
+      }
     }
+    EXPECT_GT(separated, 100u) << r->name << " " << toString(rep);
   }
 }
 
