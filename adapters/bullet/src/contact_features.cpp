@@ -86,7 +86,7 @@ bool cylinderFeature(const CylinderCallbacks<Real>& cyl, const Pose& pose, const
     const V3 u = perpendicular(axis), w = axis.cross(u);
     f.count = kCapRimPoints;
     for (int k = 0; k < kCapRimPoints; ++k) {
-      const Real angle = Real(2 * M_PI) * Real(k) / Real(kCapRimPoints);
+      const Real angle = Real(2 * EIGEN_PI) * Real(k) / Real(kCapRimPoints);
       f.points[k] = cap + cyl.radius() * (std::cos(angle) * u + std::sin(angle) * w);
     }
     return true;

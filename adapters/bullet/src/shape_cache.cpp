@@ -1,5 +1,6 @@
 #include "shape_cache.h"
 
+#include <cstring>
 #include <mutex>
 #include <unordered_map>
 
@@ -8,17 +9,33 @@
 namespace gq::bullet {
 namespace {
 
-// One cache entry: what the data was cooked from (compared on every lookup) and the cooked data (null when
-// cooking failed, so a refused shape is not re-cooked every frame).
+// A 64-bit FNV-1a hash of the values a shape's data was cooked from, compared on every lookup (no allocation
+// per frame).
+class Fingerprint {
+ public:
+  Fingerprint& add(double v) {
+    unsigned char bytes[sizeof v];
+    std::memcpy(bytes, &v, sizeof v);
+    for (unsigned char b : bytes) hash_ = (hash_ ^ b) * 1099511628211ull;
+    return *this;
+  }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  std::uint64_t hash_ = 14695981039346656037ull;
+};
+
+// One cache entry: the fingerprint and the cooked data (null when cooking failed, so a refused shape is not
+// re-cooked every frame).
 struct Entry {
-  std::vector<double> fingerprint;
+  std::uint64_t fingerprint = 0;
   std::shared_ptr<const void> data;
 };
 
 class ShapeCache {
  public:
   template <class Cook>
-  std::shared_ptr<const void> get(const void* key, std::vector<double>&& fingerprint, Cook&& cook) {
+  std::shared_ptr<const void> get(const void* key, std::uint64_t fingerprint, Cook&& cook) {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       auto it = entries_.find(key);
@@ -26,7 +43,7 @@ class ShapeCache {
     }
     std::shared_ptr<const void> data = cook();  // outside the lock: cooking may take milliseconds
     std::lock_guard<std::mutex> lock(mutex_);
-    entries_[key] = Entry{std::move(fingerprint), data};
+    entries_[key] = Entry{fingerprint, data};
     return data;
   }
   void clear() {
@@ -149,13 +166,12 @@ std::shared_ptr<const void> cookHeightFieldShape(const btHeightfieldTerrainShape
 
 std::shared_ptr<const ConvexMesh<Real>> cachedHull(const btConvexHullShape& shape) {
   const int n = shape.getNumPoints();
-  std::vector<double> fingerprint;
-  fingerprint.reserve(std::size_t(n) * 3 + 1);
-  fingerprint.push_back(n);
+  Fingerprint fingerprint;
+  fingerprint.add(n);
   const btVector3* points = shape.getUnscaledPoints();
   for (int i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k) fingerprint.push_back(points[i][k]);
-  auto data = cache().get(&shape, std::move(fingerprint), [&]() -> std::shared_ptr<const void> {
+    for (int k = 0; k < 3; ++k) fingerprint.add(points[i][k]);
+  auto data = cache().get(&shape, fingerprint.value(), [&]() -> std::shared_ptr<const void> {
     std::vector<V3> pts;
     for (int i = 0; i < n; ++i) pts.push_back(toGq(points[i]));
     std::shared_ptr<const ConvexMesh<Real>> hull;
@@ -169,12 +185,13 @@ std::shared_ptr<const MultiSphereShape> cachedMultiSphere(const btMultiSphereSha
   const btVector3& s = shape.getLocalScaling();
   if (!(s.x() > 0 && s.x() == s.y() && s.y() == s.z())) return nullptr;  // Bullet scales radii per axis
   const int n = shape.getSphereCount();
-  std::vector<double> fingerprint{double(n), s.x()};
+  Fingerprint fingerprint;
+  fingerprint.add(n).add(s.x());
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < 3; ++k) fingerprint.push_back(shape.getSpherePosition(i)[k]);
-    fingerprint.push_back(shape.getSphereRadius(i));
+    for (int k = 0; k < 3; ++k) fingerprint.add(shape.getSpherePosition(i)[k]);
+    fingerprint.add(shape.getSphereRadius(i));
   }
-  auto data = cache().get(&shape, std::move(fingerprint), [&]() -> std::shared_ptr<const void> {
+  auto data = cache().get(&shape, fingerprint.value(), [&]() -> std::shared_ptr<const void> {
     std::vector<V3> centres;
     std::vector<Real> radii;
     for (int i = 0; i < n; ++i) {
@@ -189,15 +206,17 @@ std::shared_ptr<const MultiSphereShape> cachedMultiSphere(const btMultiSphereSha
 }
 
 bool cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
-  std::vector<double> fingerprint{double(mi.getNumSubParts())};
+  Fingerprint fingerprint;
+  fingerprint.add(mi.getNumSubParts());
   for (int part = 0; part < mi.getNumSubParts(); ++part) {
     const MeshPart p = lockPart(mi, part);
-    fingerprint.insert(fingerprint.end(), {double(reinterpret_cast<std::uintptr_t>(p.vertexBase)),
-                                           double(reinterpret_cast<std::uintptr_t>(p.indexBase)),
-                                           double(p.vertexCount), double(p.triangleCount)});
+    fingerprint.add(double(reinterpret_cast<std::uintptr_t>(p.vertexBase)))
+        .add(double(reinterpret_cast<std::uintptr_t>(p.indexBase)))
+        .add(p.vertexCount)
+        .add(p.triangleCount);
     mi.unLockReadOnlyVertexBase(part);
   }
-  auto data = cache().get(&mi, std::move(fingerprint), [&] { return cookMesh(mi); });
+  auto data = cache().get(&mi, fingerprint.value(), [&] { return cookMesh(mi); });
   if (!data) return false;
   out = *static_cast<const CookedMesh*>(data.get());
   return true;
@@ -206,10 +225,15 @@ bool cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
 bool cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out) {
   const btVector3& s = shape.getLocalScaling();
   if (!HeightFieldFields::plainQuads(shape) || !(s.x() > 0 && s.y() > 0 && s.z() > 0)) return false;
-  std::vector<double> fingerprint{double(reinterpret_cast<std::uintptr_t>(HeightFieldFields::data(shape))),
-                                  double(HeightFieldFields::width(shape)), double(HeightFieldFields::length(shape)),
-                                  double(shape.getUpAxis()), s.x(), s.y(), s.z()};
-  auto data = cache().get(&shape, std::move(fingerprint), [&] { return cookHeightFieldShape(shape); });
+  Fingerprint fingerprint;
+  fingerprint.add(double(reinterpret_cast<std::uintptr_t>(HeightFieldFields::data(shape))))
+      .add(HeightFieldFields::width(shape))
+      .add(HeightFieldFields::length(shape))
+      .add(shape.getUpAxis())
+      .add(s.x())
+      .add(s.y())
+      .add(s.z());
+  auto data = cache().get(&shape, fingerprint.value(), [&] { return cookHeightFieldShape(shape); });
   if (!data) return false;
   out = *static_cast<const CookedHeightField*>(data.get());
   return true;
