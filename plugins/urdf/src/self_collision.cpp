@@ -1,10 +1,10 @@
 // Self-collision and self-distance. Everything that does not depend on the configuration is done once: the link
 // pairs the allowed-collision matrix leaves (checkedPairs_), an enclosing sphere per shape and per link (in the link
-// frame) and each shape's local AABB. Per configuration: forward kinematics, world sphere centres (one rotation
-// each), then for each checked link pair the link spheres, the shape spheres, the shapes' oriented boxes (15-axis
-// SAT) and only then the narrow phase, gq::overlap (GJK boolean for hulls and custom cylinders, exact kernels for
-// primitives, dual BVH for meshes). Full shape poses are computed lazily, for shapes that reach the oriented-box
-// test. No allocation per check once the buffers have grown.
+// frame) and an enclosing box per shape (shape_bounds.cpp). Per configuration: forward kinematics, world sphere
+// centres (one rotation each), then for each checked link pair the link spheres, the shape spheres, the shapes'
+// oriented boxes (15-axis SAT) and only then the narrow phase, gq::overlap (GJK boolean for hulls and custom
+// cylinders, exact kernels for primitives, convex hulls then dual BVH for meshes). Full shape poses are computed
+// lazily, for shapes that reach the oriented-box test. No allocation per check once the buffers have grown.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -51,11 +51,14 @@ template <class T> bool orientedBoxesDisjoint(const OrientedBox<T>& a, const Ori
   return false;
 }
 
-// Length scale of the robot: the sum of its joint offsets (bounds any link origin's distance from the root) plus
-// the largest shape sphere.
+// Length scale of the robot: the sum of its joint offsets and prismatic travels (bounds any link origin's distance
+// from the root) plus the largest shape sphere.
 template <class T> T robotSize(const RobotModel<T>& model, T largestShape) {
   T size = largestShape;
-  for (const auto& j : model.joints) size += j.origin.p.norm() + (j.type == JointType::Prismatic ? std::max(std::abs(j.lower), std::abs(j.upper)) : T(0));
+  for (const auto& j : model.joints) {
+    size += j.origin.p.norm();
+    if (j.type == JointType::Prismatic) size += std::max(std::abs(j.lower), std::abs(j.upper));
+  }
   return size;
 }
 
