@@ -79,6 +79,14 @@ double boxHalf() { return 0.04 * scene().size; }
 double capsuleRadius() { return 0.03 * scene().size; }
 double capsuleHalfHeight() { return 0.04 * scene().size; }
 
+// Mean signed distance (gq::distance in double, GJK to 1e-12) between the swept shape placed at each reported
+// time of impact and the target: 0 for an exact time of impact, < 0 when a backend stops inside the target.
+struct Report {
+  std::vector<int> index;
+  std::vector<double> distance;
+};
+double meanGapAtHits(Target target, Swept swept, const Report& r);
+
 // ---- gq --------------------------------------------------------------------------------------------------------
 template <class T> std::vector<gq::Vec3<T>> cast(const std::vector<gq::Vec3<double>>& v) {
   std::vector<gq::Vec3<T>> out;
@@ -117,19 +125,27 @@ template <class T> void BM_Sweep_gq(benchmark::State& state, Target target, Swep
   }
   int hits = 0;
   double total = 0;
+  Report report;
   for (auto _ : state) {
     hits = 0;
     total = 0;
+    report = Report();
     for (int i = 0; i < kSweeps; ++i) {
       gq::SweepHit<T> hit;
       bool hasHit = false;
       gq::sweep(dirs[i], T(maxDist()), g0, starts[i], g1, gq::Transform<T>(), hit, hasHit);
-      if (hasHit) { ++hits; total += double(hit.distance); }
+      if (hasHit) {
+        ++hits;
+        total += double(hit.distance);
+        report.index.push_back(i);
+        report.distance.push_back(double(hit.distance));
+      }
     }
     benchmark::DoNotOptimize(total);
   }
   state.counters["hits"] = hits;
   state.counters["meanDistance"] = hits ? total / hits : 0.0;
+  state.counters["meanGapAtHit"] = meanGapAtHits(target, swept, report);
   state.SetItemsProcessed(state.iterations() * kSweeps);
 }
 
@@ -199,19 +215,42 @@ void BM_Sweep_bullet(benchmark::State& state, Target target, Swept swept) {
   }
   int hits = 0;
   double total = 0;
+  Report report;
   for (auto _ : state) {
     hits = 0;
     total = 0;
+    report = Report();
     for (int i = 0; i < kSweeps; ++i) {
       btCollisionWorld::ClosestConvexResultCallback cb(from[i].getOrigin(), to[i].getOrigin());
       w.world.convexSweepTest(cast.get(), from[i], to[i], cb);
-      if (cb.hasHit()) { ++hits; total += double(cb.m_closestHitFraction) * maxDist(); }
+      if (cb.hasHit()) {
+        ++hits;
+        total += double(cb.m_closestHitFraction) * maxDist();
+        report.index.push_back(i);
+        report.distance.push_back(double(cb.m_closestHitFraction) * maxDist());
+      }
     }
     benchmark::DoNotOptimize(total);
   }
   state.counters["hits"] = hits;
   state.counters["meanDistance"] = hits ? total / hits : 0.0;
+  state.counters["meanGapAtHit"] = meanGapAtHits(target, swept, report);
   state.SetItemsProcessed(state.iterations() * kSweeps);
+}
+
+double meanGapAtHits(Target target, Swept swept, const Report& r) {
+  if (r.index.empty()) return 0.0;
+  const gq::Geometry<double> g1 = gqTarget<double>(target), g0 = gqSwept<double>(swept);
+  double sum = 0;
+  for (std::size_t k = 0; k < r.index.size(); ++k) {
+    const SweepCase& c = scene().sweeps[std::size_t(r.index[k])];
+    gq::Transform<double> at = c.start;
+    at.p += r.distance[k] * c.dir;
+    gq::DistanceResult<double> d;
+    gq::distance(d, g0, at, g1, gq::Transform<double>());
+    sum += d.distance;
+  }
+  return sum / double(r.index.size());
 }
 
 void registerAll() {
