@@ -1,0 +1,46 @@
+// libFuzzer target: gq::loadMeshFile on arbitrary bytes saved as .obj, .stl or .dae (first byte picks), then cooking
+// of what loaded. Contract: ok -> every index in range; error -> `out` untouched; nothing crashes or throws.
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "gq/cooking.h"
+
+namespace {
+
+std::string scratchPath(const char* extension) {
+  // /dev/shm keeps the round trip in memory; one file per process (parallel fuzzing jobs do not collide).
+  const std::filesystem::path dir = std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
+  return (dir / ("gq_fuzz_mesh_" + std::to_string(getpid()) + extension)).string();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  static const char* const kExtensions[] = {".obj", ".stl", ".dae"};
+  const std::string path = scratchPath(kExtensions[data[0] % 3]);
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
+  gq::MeshData<double> mesh;
+  mesh.triangles = {{7, 7, 7}};
+  const gq::Status s = gq::loadMeshFile(path, mesh);
+  std::filesystem::remove(path);
+  if (!s.ok()) {
+    if (mesh.triangles.size() != 1 || mesh.triangles[0][0] != 7 || !mesh.vertices.empty()) std::abort();
+    return 0;
+  }
+  for (const auto& t : mesh.triangles)
+    for (std::uint32_t i : t)
+      if (i >= mesh.vertices.size()) std::abort();
+  std::shared_ptr<const gq::TriangleMesh<double>> cooked;
+  gq::cookTriangleMesh(mesh.vertices, mesh.triangles, cooked);
+  if (mesh.vertices.size() <= 64) {
+    std::shared_ptr<const gq::ConvexMesh<double>> hull;
+    gq::cookConvexMesh(mesh.vertices, hull);
+  }
+  return 0;
+}

@@ -1,0 +1,100 @@
+// libFuzzer target: the mesh queries (getTriangle, findOverlapTriangleMesh/HeightField with paging,
+// findOverlapTriangleMeshPairs, computeTriangleMeshPenetration/HeightFieldPenetration, sweepTriangles,
+// generateTriangleContacts) on fuzzed meshes, heightfields, shapes and parameters. Contract: ok -> finite outputs and
+// indices in range; error -> outputs untouched.
+#include "fuzz_decode.h"
+
+namespace {
+
+template <class T> void run(gq::fuzz::Bytes& in) {
+  using namespace gq;
+  const Geometry<T> shape = fuzz::geometry<T>(in);
+  const Transform<T> pose = in.pose<T>();
+  const TriangleMeshGeometry<T> mesh(fuzz::mesh<T>(in), fuzz::meshScale<T>(in),
+                                     in.flag() ? MeshGeometryFlag::DoubleSided : MeshGeometryFlag::None);
+  const Transform<T> meshPose = in.pose<T>();
+  const HeightFieldGeometry<T> hf(fuzz::heightField<T>(in), in.scalar<T>(), in.scalar<T>(), in.scalar<T>());
+  const std::uint32_t meshTriangles = mesh.mesh->inputTriangleCount();
+  {
+    std::uint32_t results[8], count = 999;
+    bool overflow = false;
+    const std::uint32_t start = std::uint32_t(in.small(6));
+    Status s = findOverlapTriangleMesh(shape, pose, mesh, meshPose, results, 8u, start, overflow, count);
+    if (!s.ok()) fuzz::require(count == 999);
+    for (std::uint32_t i = 0; s.ok() && i < count; ++i) fuzz::require(results[i] < meshTriangles);
+    count = 999;
+    s = findOverlapHeightField(shape, pose, hf, meshPose, results, 8u, start, overflow, count);
+    if (!s.ok()) fuzz::require(count == 999);
+  }
+  {
+    PenetrationResult<T> r;
+    r.depth = T(-7);
+    const std::uint32_t maxIter = std::uint32_t(in.small(6));
+    Status s = computeTriangleMeshPenetration(r, shape, pose, mesh, meshPose, maxIter);
+    if (!s.ok()) fuzz::require(r.depth == T(-7));
+    else fuzz::require(isFinite(r.direction) && std::isfinite(r.depth));
+    r.depth = T(-7);
+    s = computeHeightFieldPenetration(r, shape, pose, hf, meshPose, maxIter);
+    if (!s.ok()) fuzz::require(r.depth == T(-7));
+    else fuzz::require(isFinite(r.direction) && std::isfinite(r.depth));
+  }
+  Triangle<T> tris[4];
+  std::uint32_t triCount = 0;
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    Triangle<T> t;
+    t.verts[0].x() = T(-7);
+    const std::uint32_t index = std::uint32_t(in.small(16));
+    const Status s = (k & 1) ? getTriangle(hf, meshPose, index, t) : getTriangle(mesh, meshPose, index, t);
+    if (!s.ok()) fuzz::require(t.verts[0].x() == T(-7));
+    else tris[triCount++] = t;
+  }
+  if (in.flag() && triCount > 0) tris[0].verts[in.small(3)] = in.vec<T>();  // raw vertices too
+  {
+    SweepHit<T> hit;
+    hit.distance = T(-7777);
+    bool hasHit = true;
+    const std::uint32_t cached = std::uint32_t(in.small(6));
+    const Vec3<T> dir = in.direction<T>();
+    const T maxDist = in.scalar<T>();
+    const Status s = sweepTriangles<T>(dir, maxDist, shape, pose, tris, triCount, hit, hasHit, fuzz::hitFlags(in),
+                                       in.flag() ? &cached : nullptr, in.flag() ? in.scalar<T>() : T(0), in.flag());
+    if (!s.ok()) fuzz::require(hasHit && hit.distance == T(-7777));
+    else if (hasHit)
+      fuzz::require(isFinite(hit.position) && isFinite(hit.normal) && std::isfinite(hit.distance) &&
+                    hit.faceIndex < triCount);
+  }
+  if (triCount > 0) {
+    ContactBuffer<T> contacts;
+    contacts.count = 999;
+    bool hasContacts = true;
+    const T contactDistance = in.scalar<T>(), margin = in.scalar<T>(), length = in.scalar<T>();
+    const Status s = generateTriangleContacts(shape, pose, tris[0], 3u, contactDistance, margin, length, contacts,
+                                              hasContacts);
+    if (!s.ok()) fuzz::require(contacts.count == 999 && hasContacts);
+    for (std::uint32_t i = 0; s.ok() && i < contacts.count; ++i)
+      fuzz::require(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&
+                    std::isfinite(contacts.contacts[i].separation));
+  }
+  {
+    bool found = true;
+    std::uint32_t pairs = 0;
+    const TriangleMeshGeometry<T> other(fuzz::mesh<T>(in), fuzz::meshScale<T>(in));
+    const std::uint32_t otherTriangles = other.mesh->inputTriangleCount();
+    const Status s = findOverlapTriangleMeshPairs<T>(
+        [&](std::uint32_t a, std::uint32_t b) {
+          fuzz::require(a < meshTriangles && b < otherTriangles);
+          return ++pairs < 64;
+        },
+        mesh, meshPose, other, in.pose<T>(), found, in.flag() ? in.scalar<T>() : T(0));
+    if (!s.ok()) fuzz::require(found && pairs == 0);
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  gq::fuzz::Bytes in(data, size);
+  if (in.flag()) run<float>(in);
+  else run<double>(in);
+  return 0;
+}
