@@ -2,6 +2,7 @@
 // then contacts per triangle (gq's generateTriangleContacts; GJK against the triangle for cylinders and cones).
 // Triangles are two-sided, as Bullet's convex-triangle contacts are.
 #include <array>
+#include <cmath>
 
 #include "contact_features.h"
 #include "contacts.h"
@@ -59,12 +60,61 @@ class TriangleShape final : public CustomGeometryCallbacks<Real> {
   Triangle<Real> t_;
 };
 
+// Internal edges: a shape resting on one triangle also reaches the edges of its neighbours, whose closest-feature
+// normals tilt away from the surface and push the shape sideways (Bullet's "internal edge" artefact). Contacts are
+// held until every triangle is done; when some triangle gives a face contact (normal along its face normal), edge
+// or vertex contacts whose normal is not along a face contact's normal are dropped. Without a face contact (the
+// shape over a real edge or corner of the surface) every contact stays.
+class InternalEdgeFilter {
+ public:
+  static constexpr int kCapacity = 128;
+  explicit InternalEdgeFilter(ContactSink& sink) : sink_(sink) {}
+  void add(const V3& normalOnB, const V3& pointOnB, Real depth, TriangleIds ids, bool onFace) {
+    if (count_ == kCapacity) {  // too many to hold: pass through unfiltered
+      sink_.add(normalOnB, pointOnB, depth, ids, true);
+      return;
+    }
+    held_[count_++] = {normalOnB, pointOnB, depth, ids, onFace};
+  }
+  void flush() {
+    for (int i = 0; i < count_; ++i)
+      if (keep(held_[i])) sink_.add(held_[i].normal, held_[i].point, held_[i].depth, held_[i].ids, true);
+    count_ = 0;
+  }
+
+ private:
+  struct Held {
+    V3 normal, point;
+    Real depth;
+    TriangleIds ids;
+    bool onFace;
+  };
+  bool keep(const Held& c) const {
+    if (c.onFace) return true;
+    bool anyFace = false;
+    for (int i = 0; i < count_; ++i) {
+      if (!held_[i].onFace) continue;
+      anyFace = true;
+      if (held_[i].normal.dot(c.normal) >= kFaceAlignmentCos) return true;
+    }
+    return !anyFace;
+  }
+  ContactSink& sink_;
+  std::array<Held, kCapacity> held_;
+  int count_ = 0;
+};
+
 struct SurfaceQuery {
   const PlacedShape& convex;
   const PlacedShape& surface;
   Real threshold;
-  ContactSink& sink;
+  InternalEdgeFilter& sink;
 };
+
+// Whether a contact normal is the triangle's face normal (either side): a face contact, not an edge or vertex one.
+bool alongFace(const V3& normal, const Triangle<Real>& tri) {
+  return std::abs(normal.dot(tri.normal())) >= kFaceAlignmentCos;
+}
 
 bool getSurfaceTriangle(const PlacedShape& s, std::uint32_t index, Triangle<Real>& tri) {
   const Geometry<Real>& g = s.view->geom;
@@ -73,11 +123,12 @@ bool getSurfaceTriangle(const PlacedShape& s, std::uint32_t index, Triangle<Real
 }
 
 // Reports one contact of the convex shape (point on its core surface, normal from the triangle to it).
-void report(const SurfaceQuery& q, const V3& pointOnConvex, const V3& normal, Real separation, std::uint32_t index) {
+void report(const SurfaceQuery& q, const V3& pointOnConvex, const V3& normal, Real separation, std::uint32_t index,
+            bool onFace) {
   const Real depth = separation - q.convex.view->margin - q.surface.view->margin;
   if (!(depth <= q.threshold)) return;
   const V3 pointOnA = pointOnConvex - normal * q.convex.view->margin;
-  q.sink.add(normal, pointOnA - normal * depth, depth, q.surface.view->triangleIds(index), true);
+  q.sink.add(normal, pointOnA - normal * depth, depth, q.surface.view->triangleIds(index), onFace);
 }
 
 // A flat cap or side resting on the triangle's face: the incident feature clipped to the triangle (GJK alone
@@ -92,7 +143,7 @@ int faceContacts(const SurfaceQuery& q, const Triangle<Real>& tri, const V3& nor
   if (face.normal.dot(normal) < kFaceAlignmentCos || !incidentFeature(q.convex, -face.normal, incident)) return 0;
   clipToFace(face, incident);
   for (int i = 0; i < incident.count; ++i)
-    report(q, incident.points[i], face.normal, (incident.points[i] - face.origin).dot(face.normal), index);
+    report(q, incident.points[i], face.normal, (incident.points[i] - face.origin).dot(face.normal), index, true);
   return incident.count;
 }
 
@@ -108,7 +159,8 @@ void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry
                                   kMeshContactMarginFactor * size, size, buffer, has).ok())
       return;
     for (std::uint32_t i = 0; i < buffer.count; ++i)
-      report(q, buffer.contacts[i].position, buffer.contacts[i].normal, buffer.contacts[i].separation, index);
+      report(q, buffer.contacts[i].position, buffer.contacts[i].normal, buffer.contacts[i].separation, index,
+             alongFace(buffer.contacts[i].normal, tri));
     return;
   }
   const Geometry<Real> triangle = CustomGeometry<Real>(std::make_shared<TriangleShape>(tri));
@@ -116,7 +168,7 @@ void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry
   if (!distance(d, contactGeom, q.convex.pose, triangle, Pose(), static_cast<GjkCache<Real>*>(nullptr)).ok()) return;
   const V3 normal = -d.normal;
   if (!isFinite(normal) || normal.squaredNorm() < Real(0.5)) return;
-  if (faceContacts(q, tri, normal, index) == 0) report(q, d.point0, normal, d.distance, index);
+  if (faceContacts(q, tri, normal, index) == 0) report(q, d.point0, normal, d.distance, index, alongFace(normal, tri));
 }
 
 // generateTriangleContacts takes capsules, boxes and hulls: a sphere is a capsule of zero length.
@@ -143,16 +195,18 @@ void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold,
   const Geometry<Real> box = BoxGeometry<Real>(bounds.extents());
   const Pose boxPose(bounds.center());
   const Geometry<Real> contactGeom = contactGeometry(a.view->geom);
-  const SurfaceQuery q{a, b, threshold, sink};
+  InternalEdgeFilter filter(sink);
+  const SurfaceQuery q{a, b, threshold, filter};
   std::array<std::uint32_t, kTrianglePage> page;
   bool more = true;
   for (std::uint32_t start = 0; more;) {
     std::uint32_t count = 0;
-    if (!overlappingTriangles(b, box, boxPose, page.data(), start, more, count).ok()) return;
+    if (!overlappingTriangles(b, box, boxPose, page.data(), start, more, count).ok()) break;
     for (std::uint32_t i = 0; i < count; ++i) triangleContacts(q, page[i], contactGeom);
     start += count;
     if (count == 0) break;
   }
+  filter.flush();
 }
 
 }  // namespace gq::bullet
