@@ -45,6 +45,11 @@ cases::Result resultFromLine(const std::string& family, const std::string& line)
       cases::PointDistanceOut p;
       p.distance = j.at("distance").get<double>();
       r.fields = p;
+    } else if (family == "sweep") {
+      cases::SweepOut s;
+      s.hit = j.at("hit").get<bool>();
+      s.distance = j.value("distance", 0.0);
+      r.fields = s;
     } else {
       return cases::Result::failure("unsupported: family " + family);
     }

@@ -33,6 +33,17 @@ Verdict decide(const Expected& e, bool gotBool, bool expBool, std::optional<doub
   return v;
 }
 
+// Raycasts and sweeps: the hit boolean, then the hit distance (`got` empty = no hit).
+Verdict decideHit(const Expected& e, const nlohmann::json& expect, std::optional<double> got) {
+  const bool exp = expect.at("hit").get<bool>();
+  std::optional<double> want;
+  if (exp) want = expect.at("distance").get<double>();
+  Verdict v = decide(e, got.has_value(), exp, got && want ? got : std::nullopt, got && want ? want : std::nullopt);
+  v.answer = got ? "hit at " + number(*got) : "miss";
+  v.exact = want ? "hit at " + number(*want) : "miss";
+  return v;
+}
+
 // The stored spread for this tolerance ("1e-09", "1e-07", "1e-04"); 0 when the answer is insensitive.
 double spreadAt(const nlohmann::json& spread, double tolerance) {
   char key[16];
@@ -93,13 +104,10 @@ Verdict judge(const std::string& family, cases::Precision precision, const nlohm
     v.exact = "distance " + number(exp);
   } else if (family == "raycast") {
     const auto& hits = std::get<cases::RaycastOut>(result.fields).hits;
-    const bool exp = expect.at("hit").get<bool>();
-    std::optional<double> got, want;
-    if (!hits.empty()) got = hits.front().distance;
-    if (exp) want = expect.at("distance").get<double>();
-    v = decide(e, !hits.empty(), exp, got && want ? got : std::nullopt, got && want ? want : std::nullopt);
-    v.answer = got ? "hit at " + number(*got) : "miss";
-    v.exact = want ? "hit at " + number(*want) : "miss";
+    v = decideHit(e, expect, hits.empty() ? std::nullopt : std::optional<double>(hits.front().distance));
+  } else if (family == "sweep") {
+    const auto& out = std::get<cases::SweepOut>(result.fields);
+    v = decideHit(e, expect, out.hit ? std::optional<double>(out.distance) : std::nullopt);
   } else if (family == "pointDistance") {
     const double got = std::get<cases::PointDistanceOut>(result.fields).distance;
     const double exp = expect.at("distance").get<double>();

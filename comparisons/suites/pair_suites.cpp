@@ -106,20 +106,8 @@ void emit(const Scenario& s, std::size_t index, std::vector<nlohmann::json>& ove
   emitBothPrecisions(d, id, distance);
 }
 
-const char* shortName(Kind k) {
-  switch (k) {
-    case Kind::Sphere: return "sphere";
-    case Kind::Capsule: return "capsule";
-    case Kind::Box: return "box";
-    case Kind::Plane: return "plane";
-    case Kind::Convex: return "convex";
-    case Kind::Mesh: return "mesh";
-    case Kind::Cylinder: return "cylinder";
-  }
-  return "";
-}
 
-std::string pairName(Kind a, Kind b) { return std::string(shortName(a)) + "_" + shortName(b); }
+std::string pairName(Kind a, Kind b) { return std::string(kindName(a)) + "_" + kindName(b); }
 
 std::string gapName(double g) {
   char buf[32];
@@ -237,7 +225,7 @@ class PairSuiteBuilder {
         for (double dist : {0.3, 1.0, 2.5}) {
           Placed a{s, {V3d::Zero(), r}};
           Placed b{s, {u * dist * sizeOf(s), compose(r, axisAngle(V3d::UnitZ(), M_PI))}};
-          add("halfTurn", std::string(shortName(k)) + "_d" + std::to_string(dist).substr(0, 3), a, b);
+          add("halfTurn", std::string(kindName(k)) + "_d" + std::to_string(dist).substr(0, 3), a, b);
         }
       }
   }
@@ -250,7 +238,7 @@ class PairSuiteBuilder {
           Placed a{box(1, 1, 1), {V3d::Zero(), rng_.rotation()}};
           Placed b{scaled(rng_.shape(kind), k / 0.8), {V3d::Zero(), rng_.rotation()}};
           placeAtGap(a, b, rng_.unitVector(), sign * 0.1 * std::min(sizeOf(a.shape), sizeOf(b.shape)));
-          add("sizeRatio", std::string(shortName(kind)) + "_x" + gapName(k) + (sign < 0 ? "_in" : "_out"), a, b);
+          add("sizeRatio", std::string(kindName(kind)) + "_x" + gapName(k) + (sign < 0 ? "_in" : "_out"), a, b);
         }
   }
 

@@ -9,6 +9,8 @@ namespace {
 
 nlohmann::json vec(const V3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
+}  // namespace
+
 const char* kindName(Kind k) {
   switch (k) {
     case Kind::Sphere: return "sphere";
@@ -21,8 +23,6 @@ const char* kindName(Kind k) {
   }
   return "";
 }
-
-}  // namespace
 
 nlohmann::json toJson(const Shape& s) {
   nlohmann::json j;

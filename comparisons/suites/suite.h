@@ -46,6 +46,8 @@ struct Placed {
   Pose pose;
 };
 
+// The case-format type name of a kind ("sphere", "capsule", ...).
+const char* kindName(Kind k);
 // Case-format JSON of a shape and a pose.
 nlohmann::json toJson(const Shape& s);
 nlohmann::json toJson(const Pose& p);
@@ -59,6 +61,15 @@ TriangleSoup soupOf(const Placed& s);    // mesh
 // Largest distance of the shape's surface from its own origin.
 double sizeOf(const Shape& s);
 bool isPolytopeOrRound(Kind k);  // has a Core
+
+// Exact time of impact of `swept` moved along unit `dir` up to maxDist against `target` (sweep_suites.cpp).
+struct SweepToi {
+  bool hit = false;
+  Ld distance = 0;  // the TOI when hit (0: initial overlap)
+  Ld margin = 0;    // >= 0: how far the hit boolean is from flipping (length)
+  Ld cosine = 1;    // |contact normal . dir| at the hit (1 for initial overlap)
+};
+SweepToi exactSweepToi(const Placed& swept, const Placed& target, const V3d& dir, double maxDist);
 
 // Random shapes and poses.
 class Random {
@@ -85,7 +96,7 @@ Eigen::Vector4d compose(const Eigen::Vector4d& q, const Eigen::Vector4d& r);
 Shape ellipsoidMesh(const V3d& radii, int subdivisions);
 Shape sliverQuadMesh(double halfSize, int slivers, double sliverWidth);
 
-// One suite per query family: "overlap", "penetration", "distance", "raycast", "pointDistance".
+// One suite per query family: "overlap", "penetration", "distance", "raycast", "pointDistance", "sweep".
 struct Suite {
   std::string family;
   std::vector<nlohmann::json> cases;
@@ -97,6 +108,7 @@ struct SuiteOptions {
   int orientations = 1;    // random orientations per hard case
   int randomRays = 40;     // per target shape
   int randomPoints = 40;   // per target shape
+  int randomSweeps = 4;    // per swept/target shape pair
 };
 
 // The embedded default suites are makeSuites(embeddedOptions()): small, generated in memory.
@@ -109,6 +121,7 @@ void addPairSuites(const SuiteOptions& options, std::vector<nlohmann::json>& ove
                    std::vector<nlohmann::json>& penetration, std::vector<nlohmann::json>& distance);
 void addRaySuite(const SuiteOptions& options, std::vector<nlohmann::json>& out);
 void addPointSuite(const SuiteOptions& options, std::vector<nlohmann::json>& out);
+void addSweepSuite(const SuiteOptions& options, std::vector<nlohmann::json>& out);
 
 // Appends `base` once per precision, with id "<id>/<precision>".
 void emitBothPrecisions(nlohmann::json base, const std::string& id, std::vector<nlohmann::json>& out);

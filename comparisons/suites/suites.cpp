@@ -19,6 +19,7 @@ SuiteOptions embeddedOptions() {
   o.orientations = 1;
   o.randomRays = 4;
   o.randomPoints = 4;
+  o.randomSweeps = 1;
   return o;
 }
 
@@ -29,15 +30,17 @@ SuiteOptions fileOptions() {
   o.orientations = 2;
   o.randomRays = 16;
   o.randomPoints = 16;
+  o.randomSweeps = 3;
   return o;
 }
 
 std::vector<Suite> makeSuites(const SuiteOptions& options) {
   std::vector<Suite> suites = {{"overlap", {}}, {"penetration", {}}, {"distance", {}}, {"raycast", {}},
-                               {"pointDistance", {}}};
+                               {"pointDistance", {}}, {"sweep", {}}};
   addPairSuites(options, suites[0].cases, suites[1].cases, suites[2].cases);
   addRaySuite(options, suites[3].cases);
   addPointSuite(options, suites[4].cases);
+  addSweepSuite(options, suites[5].cases);
   return suites;
 }
 

@@ -87,6 +87,85 @@ TEST(ExactAnswers, MeshRaysAreWatertightOnSharedEdgesAndCullBackFaces) {
   EXPECT_FALSE(rayHit(soup, V3::Zero(), V3(1, 0, 0), 100).has_value());
 }
 
+// ---- sweeps ----------------------------------------------------------------------------------------------------
+
+Placed placedAt(Shape shape, const V3d& p, const Eigen::Vector4d& q = Eigen::Vector4d(0, 0, 0, 1)) {
+  Placed out;
+  out.shape = std::move(shape);
+  out.pose.p = p;
+  out.pose.q = q;
+  return out;
+}
+
+Shape sphereShape(double r) {
+  Shape s;
+  s.kind = Kind::Sphere;
+  s.radius = r;
+  return s;
+}
+
+Shape boxShape(const V3d& h) {
+  Shape s;
+  s.kind = Kind::Box;
+  s.halfExtents = h;
+  return s;
+}
+
+TEST(ExactSweeps, SphereSweptAtASphereHitsWhereTheCentresAreTheRadiiApart) {
+  // |p0 + t d - p1| = r0 + r1 at the smaller root: t = b - sqrt(b^2 - |m|^2 + R^2), b = d.m, m = p1 - p0.
+  const V3d p0(0, 0, 0), p1(5, 0.7, -0.4), d = V3d(1, 0.1, 0).normalized();
+  const double r0 = 0.5, r1 = 0.8, big = r0 + r1;
+  const V3d m = p1 - p0;
+  const double b = d.dot(m), t = b - std::sqrt(b * b - m.squaredNorm() + big * big);
+  const SweepToi toi = exactSweepToi(placedAt(sphereShape(r0), p0), placedAt(sphereShape(r1), p1), d, 10);
+  ASSERT_TRUE(toi.hit);
+  EXPECT_NEAR(double(toi.distance), t, 1e-13);
+  EXPECT_FALSE(exactSweepToi(placedAt(sphereShape(r0), p0), placedAt(sphereShape(r1), p1), d, 0.9 * t).hit);
+  // Aimed sideways: passes by at distance |m x d| - R.
+  const V3d side = V3d(1, 0.6, 0).normalized();
+  const SweepToi miss = exactSweepToi(placedAt(sphereShape(r0), p0), placedAt(sphereShape(r1), p1), side, 10);
+  EXPECT_FALSE(miss.hit);
+  EXPECT_NEAR(double(miss.margin), m.cross(side).norm() - big, 1e-12);
+}
+
+TEST(ExactSweeps, BoxSweptAtABoxOnTheirCommonAxisHitsAtTheFaceGap) {
+  const SweepToi toi = exactSweepToi(placedAt(boxShape(V3d(0.5, 0.5, 0.5)), V3d(0, 0, 0)),
+                                     placedAt(boxShape(V3d(1, 2, 3)), V3d(4, 0.3, -0.2)), V3d(1, 0, 0), 10);
+  ASSERT_TRUE(toi.hit);
+  EXPECT_NEAR(double(toi.distance), 4 - 1 - 0.5, 1e-15);
+  EXPECT_NEAR(double(toi.cosine), 1.0, 1e-15);
+}
+
+TEST(ExactSweeps, BoxTurnedOnItsEdgeHitsAFaceWhenTheEdgeArrives) {
+  // A unit half-extent cube turned 45 degrees about z moves along +x towards a box whose face is at x = 3:
+  // its leading edge is sqrt(2) ahead of its centre.
+  const Eigen::Vector4d turn = axisAngle(V3d::UnitZ(), M_PI / 4);
+  const SweepToi toi = exactSweepToi(placedAt(boxShape(V3d(1, 1, 1)), V3d(0, 0, 0), turn),
+                                     placedAt(boxShape(V3d(1, 5, 5)), V3d(4, 0, 0)), V3d(1, 0, 0), 10);
+  ASSERT_TRUE(toi.hit);
+  EXPECT_NEAR(double(toi.distance), 3 - std::sqrt(2.0), 1e-14);
+}
+
+TEST(ExactSweeps, StartingInsideIsAHitAtZeroWithTheDepthAsMargin) {
+  const SweepToi toi = exactSweepToi(placedAt(boxShape(V3d(1, 1, 1)), V3d(0, 0, 0)),
+                                     placedAt(boxShape(V3d(1, 1, 1)), V3d(1.75, 0, 0)), V3d(0, 1, 0), 1);
+  ASSERT_TRUE(toi.hit);
+  EXPECT_EQ(double(toi.distance), 0.0);
+  EXPECT_NEAR(double(toi.margin), 0.25, 1e-15);
+}
+
+TEST(ExactSweeps, SphereSweptDownOntoAPlaneHitsAtItsHeightMinusRadiusOverTheCosine) {
+  Shape plane;
+  plane.kind = Kind::Plane;
+  // The plane x = 0 (normal +x) turned to normal +z: a rotation of -90 degrees about y.
+  const Placed ground = placedAt(plane, V3d(0, 0, 0.5), axisAngle(V3d::UnitY(), -M_PI / 2));
+  const V3d d = V3d(0.6, 0, -0.8);
+  const SweepToi toi = exactSweepToi(placedAt(sphereShape(0.25), V3d(0, 0, 2.5)), ground, d, 10);
+  ASSERT_TRUE(toi.hit);
+  EXPECT_NEAR(double(toi.distance), (2.5 - 0.5 - 0.25) / 0.8, 1e-14);
+  EXPECT_NEAR(double(toi.cosine), 0.8, 1e-15);
+}
+
 TEST(ExactAnswers, EverySuiteCaseCarriesAnExpectAndAFiniteScale) {
   for (const auto& suite : makeSuites(embeddedOptions())) {
     EXPECT_GT(suite.cases.size(), 20u) << suite.family;
