@@ -175,4 +175,34 @@ TYPED_TEST(SweepSurfaces, MeshAnyHitReturnsATriangleTouchingAtTheReportedDistanc
   EXPECT_GT(hits, 32);
 }
 
+TYPED_TEST(SweepSurfaces, MeshInitialOverlapWithMtdReportsTheDepthAlongTheFaceNormal) {
+  using T = TypeParam;
+  // A flat square (two triangles, y = 0, facing +Y) at random poses; a sphere of radius 0.2 and a box of half height
+  // 0.1 sink to height hc: depths 0.2 - hc and 0.1 - hc, escape along the face normal, sweep distance = -depth.
+  const std::vector<Vec3<T>> v = {Vec3<T>(T(-2), T(0), T(-2)), Vec3<T>(T(-2), T(0), T(2)), Vec3<T>(T(2), T(0), T(2)),
+                                  Vec3<T>(T(2), T(0), T(-2))};
+  std::shared_ptr<const TriangleMesh<T>> square;
+  ASSERT_TRUE(cookTriangleMesh(v, {TriangleIndices{0, 1, 2}, TriangleIndices{0, 2, 3}}, square).ok());
+  const Geometry<T> mesh = TriangleMeshGeometry<T>(square);
+  for (int i = 0; i < 20; ++i) {
+    const Transform<T> pose(this->rng.template inBox<T>(3), this->rng.template rotation<T>());
+    const Vec3<T> up = pose.rotate(Vec3<T>::UnitY());
+    const double hc = this->rng.uniform(0.02, 0.09);
+    const Vec3<T> centre = pose.transform(Vec3<T>(T(this->rng.uniform(-1, 1)), T(hc), T(this->rng.uniform(-1, 1))));
+    const std::pair<Geometry<T>, double> shapes[] = {{SphereGeometry<T>(T(0.2)), 0.2 - hc},
+                                                      {BoxGeometry<T>(T(0.3), T(0.1), T(0.25)), 0.1 - hc}};
+    for (const auto& [shape, depth] : shapes) {
+      SweepHit<T> hit;
+      bool hasHit = false;
+      // The box keeps the square's orientation (its half height 0.1 along the square's normal).
+      const Transform<T> start(centre, pose.q);
+      ASSERT_TRUE(sweep(Vec3<T>(-up), T(1), shape, start, mesh, pose, hit, hasHit, kDefaultHitFlags | HitFlag::Mtd).ok());
+      ASSERT_TRUE(hasHit);
+      EXPECT_TRUE(hit.hadInitialOverlap());
+      EXPECT_NEAR(double(hit.distance), -depth, 10 * kToiTol<T>) << "case " << i;
+      EXPECT_NEAR(double((hit.normal - up).norm()), 0.0, 10 * kToiTol<T>);
+    }
+  }
+}
+
 }  // namespace
