@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -203,7 +204,7 @@ double median(std::vector<double> v) {
 }
 
 struct BenchOptions {
-  std::size_t n = 2000, repetitions = 5;
+  std::size_t n = 5000, repetitions = 5;
   std::uint64_t seed = 1;
   std::string csv;
   std::vector<std::string> modes{"mesh", "hull", "best-primitive"};
@@ -224,7 +225,7 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
   if (!b.csv.empty()) {
     const bool fresh = !std::ifstream(b.csv).good();
     out.open(b.csv, std::ios::app);
-    // mode = <robot>:<representation>; load1 = 1-minute load average at the start (the machine is shared)
+    // mode = <URDF file stem>:<representation>; load1 = 1-minute load average at the start (the machine is shared)
     if (fresh) out << "date,machine,load1,mode,backend,checks_per_s_median,repetitions,configurations,ratio\n";
   }
   char date[32];
@@ -233,6 +234,7 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
   const std::string machine = machineName();
   std::string load1 = "unknown";
   if (std::ifstream loadavg("/proc/loadavg"); loadavg) loadavg >> load1;
+  const std::string urdfStem = std::filesystem::path(o.urdf).stem().string();
   const bool withGq = std::count(b.backends.begin(), b.backends.end(), "gq") > 0;
   const bool withFcl = std::count(b.backends.begin(), b.backends.end(), "fcl") > 0;
   std::printf("%-15s %-8s %14s %10s   (median of %zu runs of %zu configurations)\n", "mode", "backend",
@@ -271,7 +273,7 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
       else
         std::printf("%-15s %-8s %14s  (%s)\n", mode.c_str(), row->backend.c_str(), "n/a", row->status.message.c_str());
       if (out.is_open())
-        out << date << "," << machine << "," << load1 << "," << m->name << ":" << mode << "," << row->backend << ","
+        out << date << "," << machine << "," << load1 << "," << urdfStem << ":" << mode << "," << row->backend << ","
             << (row->rate > 0 ? std::to_string(row->rate) : "unsupported") << "," << b.repetitions << "," << b.n
             << "," << (isGq ? std::to_string(ratio) : "1") << "\n";
     }
