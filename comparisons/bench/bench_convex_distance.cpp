@@ -1,11 +1,20 @@
-// gq::distance (GJK/EPA, hill-climbing support) vs libccd's ccdGJKIntersect / ccdGJKPenetration on the same convex
-// hulls (30, 100, 300 random points on an ellipsoid, all hull vertices) and the same 64 seeded pose pairs (about
-// half of them overlapping), plus box-box and capsule-box on the 30-point scene's poses. Also the boolean overlaps:
-// gq's GJK early-out kernel and the public gq::overlap vs ccdGJKIntersect. Counters: `overlapping` = pairs the
-// backend reported as intersecting.
+// gq::distance (GJK/EPA, hill-climbing support) vs libccd's ccdGJKIntersect / ccdGJKPenetration, FCL 0.7's
+// GST_INDEP solver (fcl::distance with signed distance, fcl::collide) on fcl::Convex, and Bullet's (float64 build)
+// btGjkPairDetector + btGjkEpaPenetrationDepthSolver on margin-free btConvexHullShape, all on the same convex hulls
+// (30, 100, 300 random points on an ellipsoid, all hull vertices) and the same 64 seeded pose pairs (about half of
+// them overlapping), plus box-box and capsule-box on the 30-point scene's poses (libccd only). Also the boolean
+// overlaps: gq's GJK early-out kernel and the public gq::overlap vs ccdGJKIntersect and fcl::collide. Counters:
+// `overlapping` = pairs the backend reported as intersecting.
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <benchmark/benchmark.h>
 #include <ccd/ccd.h>
+#include <fcl/fcl.h>
 
+#include <map>
 #include <memory>
 #include <random>
 #include <string>
@@ -162,6 +171,93 @@ ccd_t makeCcd() {
   return overlapping;
 }
 
+// ---- FCL (GST_INDEP) ------------------------------------------------------------------------------------------
+struct FclScene {
+  std::vector<std::unique_ptr<fcl::CollisionObjectd>> o0, o1;
+};
+
+std::shared_ptr<fcl::Convexd> fclHull(const gq::ConvexMesh<double>& hull) {
+  auto vertices = std::make_shared<std::vector<fcl::Vector3d>>(hull.vertices.begin(), hull.vertices.end());
+  auto faces = std::make_shared<std::vector<int>>();
+  for (const auto& poly : hull.polygons) {
+    faces->push_back(int(poly.indexCount));
+    for (std::uint32_t k = 0; k < poly.indexCount; ++k) faces->push_back(int(hull.polygonVertices[poly.indexBase + k]));
+  }
+  return std::make_shared<fcl::Convexd>(vertices, int(hull.polygons.size()), faces);
+}
+
+const FclScene& fclScene(const Scene& s) {
+  static std::map<const Scene*, FclScene> cache;
+  FclScene& f = cache[&s];
+  if (f.o0.empty()) {
+    const std::shared_ptr<fcl::Convexd> hull = fclHull(*s.hull);
+    for (int i = 0; i < kPairs; ++i) {
+      f.o0.push_back(std::make_unique<fcl::CollisionObjectd>(hull, s.pose0[i].toIsometry()));
+      f.o1.push_back(std::make_unique<fcl::CollisionObjectd>(hull, s.pose1[i].toIsometry()));
+    }
+  }
+  return f;
+}
+
+[[gnu::noinline]] int runFclDistance(const FclScene& f) {
+  // Unsigned: with enable_signed_distance, FCL 0.7 answers an overlapping Convex pair by collide() with contacts,
+  // which under GST_INDEP returns none, and then trips its own assertion (distance-inl.h: index != -1).
+  fcl::DistanceRequestd request;
+  request.gjk_solver_type = fcl::GST_INDEP;
+  request.enable_nearest_points = true;
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    fcl::DistanceResultd r;
+    fcl::distance(f.o0[i].get(), f.o1[i].get(), request, r);
+    overlapping += r.min_distance <= 0;
+    benchmark::DoNotOptimize(r);
+  }
+  return overlapping;
+}
+
+[[gnu::noinline]] int runFclCollide(const FclScene& f) {
+  fcl::CollisionRequestd request;
+  request.gjk_solver_type = fcl::GST_INDEP;
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    fcl::CollisionResultd r;
+    fcl::collide(f.o0[i].get(), f.o1[i].get(), request, r);
+    overlapping += r.isCollision();
+  }
+  return overlapping;
+}
+
+// ---- Bullet (float64) ----------------------------------------------------------------------------------------
+btTransform bulletPose(const gq::Transform<double>& p) {
+  return btTransform(btQuaternion(p.q.x(), p.q.y(), p.q.z(), p.q.w()), btVector3(p.p.x(), p.p.y(), p.p.z()));
+}
+
+std::unique_ptr<btConvexHullShape> bulletHull(const gq::ConvexMesh<double>& hull) {
+  auto shape = std::make_unique<btConvexHullShape>();
+  for (const auto& v : hull.vertices) shape->addPoint(btVector3(v.x(), v.y(), v.z()), false);
+  shape->recalcLocalAabb();
+  shape->setMargin(0);  // margin-free: the exact hull, as gq and libccd see it
+  return shape;
+}
+
+// Signed distance through Bullet's GJK, with EPA when the hulls overlap (as btConvexConvexAlgorithm uses them).
+[[gnu::noinline]] int runBulletDistance(const Scene& s, const btConvexHullShape& hull) {
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver epa;
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    btGjkPairDetector gjk(&hull, &hull, &simplex, &epa);
+    btGjkPairDetector::ClosestPointInput input;
+    input.m_transformA = bulletPose(s.pose0[i]);
+    input.m_transformB = bulletPose(s.pose1[i]);
+    btPointCollector out;
+    gjk.getClosestPoints(input, out, nullptr);
+    overlapping += out.m_hasResult && out.m_distance <= 0;
+    benchmark::DoNotOptimize(out);
+  }
+  return overlapping;
+}
+
 // ---- shape pairs --------------------------------------------------------------------------------------------
 // Arg: 30/100/300 = hull vs hull with that many points; 1 = box vs box; 2 = capsule vs box.
 struct Pair {
@@ -216,6 +312,19 @@ void BM_CcdGJKPenetration(benchmark::State& state) {
   benchPairs(state, [](const Scene& s, const Pair& p) { return runCcdPenetration(s, p.g0, p.g1); });
 }
 
+void BM_FclIndepDistance(benchmark::State& state) {
+  benchPairs(state, [](const Scene& s, const Pair&) { return runFclDistance(fclScene(s)); });
+}
+void BM_FclIndepCollide(benchmark::State& state) {
+  benchPairs(state, [](const Scene& s, const Pair&) { return runFclCollide(fclScene(s)); });
+}
+void BM_BulletGjkEpaDistance(benchmark::State& state) {
+  const Scene& s = sceneFor(int(state.range(0)));
+  if (!s.hull) return state.SkipWithError("convex cooking failed");
+  const std::unique_ptr<btConvexHullShape> hull = bulletHull(*s.hull);
+  benchPairs(state, [&](const Scene& sc, const Pair&) { return runBulletDistance(sc, *hull); });
+}
+
 // One pass of every runner per shape pair, for `valgrind --tool=callgrind` instruction counts.
 void runOnce() {
   for (int arg : {30, 100, 300, 1, 2}) {
@@ -229,6 +338,11 @@ void runOnce() {
     runGqOverlap(s, p.g0, p.g1);
     runCcdIntersect(s, p.g0, p.g1);
     runCcdPenetration(s, p.g0, p.g1);
+    if (arg >= 30) {
+      runFclDistance(fclScene(s));
+      runFclCollide(fclScene(s));
+      runBulletDistance(s, *bulletHull(*s.hull));
+    }
   }
 }
 
@@ -240,6 +354,9 @@ BENCHMARK(BM_GqGjkOverlap)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
 BENCHMARK(BM_GqOverlap)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
 BENCHMARK(BM_CcdGJKIntersect)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
 BENCHMARK(BM_CcdGJKPenetration)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2);
+BENCHMARK(BM_FclIndepDistance)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_FclIndepCollide)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_BulletGjkEpaDistance)->Arg(30)->Arg(100)->Arg(300);
 
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--once") {
