@@ -223,8 +223,8 @@ Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::v
   std::vector<std::uint8_t> out(qs.size(), 0);
   CollisionRequest firstOnly;
   firstOnly.allPairs = false;
+  CollisionResult r;
   for (std::size_t i = 0; i < qs.size(); ++i) {
-    CollisionResult r;
     Status s = checkSelfCollision(qs[i], r, firstOnly);
     if (!s.ok()) return Status(s.code, "configuration " + std::to_string(i) + ": " + s.message);
     out[i] = r.colliding ? 1 : 0;
