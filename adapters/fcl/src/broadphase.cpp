@@ -40,7 +40,7 @@ template <class S> Bounds3<S> worldBounds(::fcl::CollisionObject<S>* obj) {
   const auto* geometry = obj->collisionGeometry().get();
   if (detail::convert(geometry, c) && !c.isPlaneLike()) {
     Bounds3<S> b;
-    const Transform<S> pose = detail::toGq(obj->getTransform()) * c.offset;
+    const Transform<S> pose = detail::shapePose(c, obj->getTransform());
     if (computeGeomBounds(b, c.geom, pose, S(0), S(1)).ok() && isFinite(b.min) && isFinite(b.max)) return b;
   }
   obj->computeAABB();

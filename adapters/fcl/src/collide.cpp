@@ -55,7 +55,7 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
   thread_local std::vector<detail::PairContact<S>> contacts;
   contacts.clear();
   const std::size_t room = request.num_max_contacts - std::min(request.num_max_contacts, result.numContacts());
-  const Status s = detail::pairContacts(a, detail::toGq(tf1) * a.offset, b, detail::toGq(tf2) * b.offset,
+  const Status s = detail::pairContacts(a, detail::shapePose(a, tf1), b, detail::shapePose(b, tf2),
                                         request.enable_contact, room, contacts);
   if (s.code == StatusCode::InvalidArgument) return result.numContacts();  // NaN pose or size: nothing written
   if (!s.ok()) return detail::fclCollide(o1, tf1, o2, tf2, request, result);

@@ -1,8 +1,9 @@
 // Conversion of FCL geometries and the per-CollisionGeometry* cache.
 // Cached: Convex, BVHModel, Cylinder, Cone, Ellipsoid, TriangleP (cooking or a shared callback object); spheres,
 // boxes, capsules and planes are rebuilt per call (a few stores). An entry is reused while its fingerprint matches:
-// the node type, the sizes, the addresses of the vertex/triangle arrays and up to kFingerprintSamples vertices and
-// triangles sampled evenly (shape parameters for primitives). Anything else changed in place is invisible: call
+// the node type, the sizes, the addresses of the vertex/triangle arrays and up to kFingerprintSamples
+// vertices and triangles sampled evenly (shape parameters for primitives). The samples also catch a new geometry
+// allocated at a destroyed one's address (pointer reuse), unless it agrees on all of them. Anything else changed in place is invisible: call
 // gq::fcl::forgetGeometry() after editing a BVHModel or Convex without changing those.
 #include "convert.h"
 
@@ -24,6 +25,7 @@
 #include <fcl/math/bv/kDOP.h>
 #include <fcl/math/bv/kIOS.h>
 
+#include <algorithm>
 #include <cstring>
 #include <mutex>
 #include <shared_mutex>
@@ -39,12 +41,17 @@ namespace {
 
 constexpr int kFingerprintSamples = 16;
 
-// FNV-1a over raw bytes: equal inputs give equal fingerprints; a change is caught unless it collides.
+// FNV-1a over 64-bit words (bytes of a trailing partial word zero-padded): equal inputs give equal fingerprints; a
+// change is caught unless it collides. Word-wise, one multiply per 8 bytes (it runs on every cached lookup).
 struct Fingerprint {
   std::uint64_t h = 1469598103934665603ull;
   void add(const void* data, std::size_t n) {
     const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+    for (std::size_t i = 0; i < n; i += 8) {
+      std::uint64_t word = 0;
+      std::memcpy(&word, p + i, std::min<std::size_t>(8, n - i));
+      h = (h ^ word) * 1099511628211ull;
+    }
   }
   template <class V> void addValue(const V& v) { add(&v, sizeof(V)); }
 };
@@ -79,6 +86,7 @@ template <class T> bool planeFrame(const Vec3<T>& normal, T d, Converted<T>& out
   const Vec3<T> n = normal / len;  // FCL normalises too (Halfspace/Plane unitNormalTest)
   out.geom = PlaneGeometry<T>();
   out.offset = Transform<T>(n * (d / len), xOnto<T>(n));
+  out.hasOffset = true;
   return true;
 }
 
@@ -147,7 +155,7 @@ template <class T> bool fingerprintOf(const ::fcl::CollisionGeometry<T>* g, std:
       f.addValue(s->a), f.addValue(s->b), f.addValue(s->c);
       break;
     }
-    case ::fcl::GEOM_CONVEX: {
+    case ::fcl::GEOM_CONVEX: {  // sampled too: a new Convex may reuse a freed one's addresses
       const auto& vertices = static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
       f.addValue(vertices.size()), f.addValue(vertices.data());
       sampleArray(f, vertices.data(), int(vertices.size()));
@@ -195,6 +203,7 @@ template <class T> bool convertHeavy(const ::fcl::CollisionGeometry<T>* g, Conve
       out.shape = cylinder ? FclShape::Cylinder : FclShape::Cone;
       out.geom = custom;
       out.offset = Transform<T>(Vec3<T>::Zero(), xOntoZ<T>());
+      out.hasOffset = true;
       return true;
     }
     case ::fcl::GEOM_ELLIPSOID: {
@@ -232,6 +241,7 @@ template <class T> bool convertLight(const ::fcl::CollisionGeometry<T>* g, Conve
       valid = positive(r);
       out.shape = FclShape::Sphere;
       out.geom = SphereGeometry<T>(r);
+      out.rotationFree = true;
       return true;
     }
     case ::fcl::GEOM_BOX: {
@@ -247,6 +257,7 @@ template <class T> bool convertLight(const ::fcl::CollisionGeometry<T>* g, Conve
       out.shape = FclShape::Capsule;
       out.geom = CapsuleGeometry<T>(c->radius, c->lz / T(2));
       out.offset = Transform<T>(Vec3<T>::Zero(), xOntoZ<T>());
+      out.hasOffset = true;
       return true;
     }
     case ::fcl::GEOM_HALFSPACE: {

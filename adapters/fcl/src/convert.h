@@ -23,6 +23,8 @@ template <class T> struct Converted {
   FclShape shape = FclShape::Unsupported;
   Geometry<T> geom;
   Transform<T> offset;  // the gq shape frame expressed in the FCL geometry's local frame
+  bool hasOffset = false;    // offset is not the identity
+  bool rotationFree = false; // a sphere: the pose's rotation does not matter
   bool isPlaneLike() const { return shape == FclShape::Halfspace || shape == FclShape::Plane; }
 };
 
@@ -31,9 +33,16 @@ template <class T> bool convert(const ::fcl::CollisionGeometry<T>* geometry, Con
 template <class T> void forget(const ::fcl::CollisionGeometry<T>* geometry);
 void clearCache();
 
-// FCL's Transform3 (an isometry) as a gq pose; the linear part is taken as a rotation without re-orthogonalising.
+// FCL's Transform3 (an isometry) as a gq pose; the linear part is taken as a rotation (gq validates |q| = 1 within
+// 1e-3, which an FCL rotation meets without re-normalising).
 template <class T> Transform<T> toGq(const Eigen::Transform<T, 3, Eigen::Isometry>& tf) {
-  return Transform<T>(tf.translation(), Quat<T>(tf.linear()).normalized());
+  return Transform<T>(tf.translation(), Quat<T>(tf.linear()));
+}
+
+// The world pose of the converted gq shape.
+template <class T> Transform<T> shapePose(const Converted<T>& c, const Eigen::Transform<T, 3, Eigen::Isometry>& tf) {
+  if (c.rotationFree) return Transform<T>(Vec3<T>(tf.translation()));
+  return c.hasOffset ? toGq(tf) * c.offset : toGq(tf);
 }
 
 }  // namespace gq::fcl::detail

@@ -44,7 +44,7 @@ S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf
   detail::Converted<S> a, b;
   if (!detail::convert(o1, a) || !detail::convert(o2, b))
     return detail::fclDistance(o1, tf1, o2, tf2, request, result);
-  const Transform<S> pa = detail::toGq(tf1) * a.offset, pb = detail::toGq(tf2) * b.offset;
+  const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
   detail::PairDistance<S> d;
   Status s = detail::pairDistance(a, pa, b, pb, d);
   const bool meshPair = a.shape == detail::FclShape::Mesh || b.shape == detail::FclShape::Mesh;

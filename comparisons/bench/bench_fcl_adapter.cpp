@@ -1,0 +1,181 @@
+// gq::fcl against FCL 0.7 on the same ::fcl objects, side by side in one run: collide (boolean, FCL's default
+// request) and distance (nearest points) per pair family over 256 seeded random poses, and broadphase self
+// collision of 1000 objects (DynamicAABBTreeCollisionManager, narrow phase in the callback).
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "gq/cooking.h"
+#include "gq/fcl/fcl.h"
+
+namespace {
+
+constexpr int kPoses = 256;
+using Geom = std::shared_ptr<::fcl::CollisionGeometryd>;
+
+::fcl::Transform3d randomPose(std::mt19937& rng, double extent) {
+  std::normal_distribution<double> g(0, 1);
+  std::uniform_real_distribution<double> u(-extent, extent);
+  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
+  ::fcl::Transform3d tf = ::fcl::Transform3d::Identity();
+  tf.linear() = q.normalized().toRotationMatrix();
+  tf.translation() = ::fcl::Vector3d(u(rng), u(rng), u(rng));
+  return tf;
+}
+
+// An FCL Convex from the hull of `count` random points on a unit-ish ellipsoid (faces from gq's cooked polygons).
+Geom convexHull(int count, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  std::vector<gq::Vec3<double>> points;
+  for (int i = 0; i < count; ++i) points.push_back(gq::Vec3<double>(0.6 * g(rng), 0.5 * g(rng), 0.4 * g(rng)).normalized() * 0.6);
+  std::shared_ptr<const gq::ConvexMesh<double>> hull;
+  gq::cookConvexMesh(points, hull);
+  auto vertices = std::make_shared<std::vector<::fcl::Vector3d>>(hull->vertices.begin(), hull->vertices.end());
+  auto faces = std::make_shared<std::vector<int>>();
+  for (const auto& p : hull->polygons) {
+    faces->push_back(int(p.indexCount));
+    for (std::uint32_t k = 0; k < p.indexCount; ++k) faces->push_back(int(hull->polygonVertices[p.indexBase + k]));
+  }
+  return std::make_shared<::fcl::Convexd>(vertices, int(hull->polygons.size()), faces);
+}
+
+Geom sphereMesh(double r, int rings, int segments) {
+  auto model = std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>();
+  const auto at = [&](int i, int j) {
+    const double th = M_PI * i / rings, ph = 2 * M_PI * j / segments;
+    return ::fcl::Vector3d(r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th));
+  };
+  model->beginModel();
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      model->addTriangle(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      model->addTriangle(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  model->endModel();
+  return model;
+}
+
+struct Family {
+  Geom a, b;
+};
+
+Family family(int id) {
+  switch (id) {
+    case 0: return {std::make_shared<::fcl::Sphered>(0.5), std::make_shared<::fcl::Sphered>(0.4)};
+    case 1: return {std::make_shared<::fcl::Boxd>(1.0, 0.6, 0.8), std::make_shared<::fcl::Boxd>(0.7, 0.9, 0.5)};
+    case 2: return {std::make_shared<::fcl::Capsuled>(0.3, 1.0), std::make_shared<::fcl::Capsuled>(0.25, 0.8)};
+    case 3: return {std::make_shared<::fcl::Sphered>(0.5), std::make_shared<::fcl::Boxd>(1.0, 0.6, 0.8)};
+    case 4: return {std::make_shared<::fcl::Capsuled>(0.3, 1.0), std::make_shared<::fcl::Boxd>(1.0, 0.6, 0.8)};
+    case 5: return {std::make_shared<::fcl::Cylinderd>(0.4, 1.0), std::make_shared<::fcl::Boxd>(1.0, 0.6, 0.8)};
+    case 6: return {convexHull(30, 1), convexHull(30, 2)};
+    case 7: return {convexHull(100, 3), convexHull(100, 4)};
+    case 8: return {sphereMesh(0.8, 16, 24), std::make_shared<::fcl::Sphered>(0.3)};
+    default: return {sphereMesh(0.8, 16, 24), convexHull(30, 5)};
+  }
+}
+const char* familyName(int id) {
+  static const char* names[] = {"sphere_sphere", "box_box",    "capsule_capsule", "sphere_box",   "capsule_box",
+                                "cylinder_box",  "convex30",   "convex100",       "mesh_sphere",  "mesh_convex30"};
+  return names[id];
+}
+constexpr int kFamilies = 10;
+
+std::vector<::fcl::Transform3d> poses(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::vector<::fcl::Transform3d> out;
+  for (int i = 0; i < kPoses; ++i) out.push_back(randomPose(rng, 0.9));
+  return out;
+}
+
+template <bool Gq> void BM_Collide(benchmark::State& state) {
+  const Family f = family(int(state.range(0)));
+  const auto pa = poses(1), pb = poses(2);
+  const ::fcl::CollisionRequestd request;
+  std::size_t i = 0, hits = 0;
+  for (auto _ : state) {
+    ::fcl::CollisionResultd result;
+    const std::size_t k = i++ % kPoses;
+    hits += Gq ? gq::fcl::collide(f.a.get(), pa[k], f.b.get(), pb[k], request, result)
+               : ::fcl::collide(f.a.get(), pa[k], f.b.get(), pb[k], request, result);
+  }
+  benchmark::DoNotOptimize(hits);
+  state.SetLabel(familyName(int(state.range(0))));
+}
+
+template <bool Gq> void BM_Distance(benchmark::State& state) {
+  const Family f = family(int(state.range(0)));
+  const auto pa = poses(3), pb = poses(4);
+  const ::fcl::DistanceRequestd request(true);
+  std::size_t i = 0;
+  double sum = 0;
+  for (auto _ : state) {
+    ::fcl::DistanceResultd result;
+    const std::size_t k = i++ % kPoses;
+    sum += Gq ? gq::fcl::distance(f.a.get(), pa[k], f.b.get(), pb[k], request, result)
+              : ::fcl::distance(f.a.get(), pa[k], f.b.get(), pb[k], request, result);
+  }
+  benchmark::DoNotOptimize(sum);
+  state.SetLabel(familyName(int(state.range(0))));
+}
+
+// 1000 mixed objects in [-6, 6]^3; the callback runs the narrow phase of the same library and counts collisions.
+struct Scene {
+  std::vector<std::unique_ptr<::fcl::CollisionObjectd>> objects;
+  std::vector<::fcl::CollisionObjectd*> pointers;
+  Scene() {
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<double> u(0.15, 0.35);
+    for (int i = 0; i < 1000; ++i) {
+      Geom g;
+      switch (i % 4) {
+        case 0: g = std::make_shared<::fcl::Sphered>(u(rng)); break;
+        case 1: g = std::make_shared<::fcl::Boxd>(2 * u(rng), 2 * u(rng), 2 * u(rng)); break;
+        case 2: g = std::make_shared<::fcl::Capsuled>(u(rng), 2 * u(rng)); break;
+        default: g = std::make_shared<::fcl::Cylinderd>(u(rng), 2 * u(rng));
+      }
+      objects.push_back(std::make_unique<::fcl::CollisionObjectd>(g, randomPose(rng, 6.0)));
+      pointers.push_back(objects.back().get());
+    }
+  }
+};
+
+template <bool Gq> bool countCollision(::fcl::CollisionObjectd* a, ::fcl::CollisionObjectd* b, void* data) {
+  ::fcl::CollisionRequestd request;
+  ::fcl::CollisionResultd result;
+  *static_cast<std::size_t*>(data) += Gq ? gq::fcl::collide(a, b, request, result) : ::fcl::collide(a, b, request, result);
+  return false;
+}
+
+template <bool Gq> void BM_BroadphaseSelfCollide(benchmark::State& state) {
+  Scene scene;
+  std::unique_ptr<::fcl::BroadPhaseCollisionManagerd> manager;
+  if (Gq) manager = std::make_unique<gq::fcl::DynamicAABBTreeCollisionManagerd>();
+  else manager = std::make_unique<::fcl::DynamicAABBTreeCollisionManagerd>();
+  manager->registerObjects(scene.pointers);
+  manager->setup();
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    pairs = 0;
+    manager->collide(&pairs, countCollision<Gq>);
+  }
+  state.SetLabel("colliding pairs " + std::to_string(pairs));
+}
+
+void families(benchmark::internal::Benchmark* b) {
+  for (int i = 0; i < kFamilies; ++i) b->Arg(i);
+}
+
+BENCHMARK(BM_Collide<false>)->Name("collide/fcl")->Apply(families);
+BENCHMARK(BM_Collide<true>)->Name("collide/gq_fcl")->Apply(families);
+BENCHMARK(BM_Distance<false>)->Name("distance/fcl")->Apply(families);
+BENCHMARK(BM_Distance<true>)->Name("distance/gq_fcl")->Apply(families);
+BENCHMARK(BM_BroadphaseSelfCollide<false>)->Name("broadphase_self_1000/fcl")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BroadphaseSelfCollide<true>)->Name("broadphase_self_1000/gq_fcl")->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
