@@ -1,4 +1,5 @@
 // rayTest and convexSweepTest through gq: Bullet's broadphase finds the candidate objects, gq answers per object.
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 
@@ -61,6 +62,40 @@ bool castRay(const V3& origin, const V3& dir, Real maxDist, const ShapeView& vie
 
 class RayVisitor final : public btBroadphaseRayCallback {
  public:
+  // The ray against one gq shape at `world`; `child` >= 0 names a compound child (reported as Bullet does: part -1,
+  // triangle index = child index). False when the shape has no gq view.
+  bool shapeRay(btCollisionObject* object, const btCollisionShape* shape, const btTransform& world, int child) {
+    ShapeView view;
+    if (!makeShapeView(shape, view)) return false;
+    const V3 delta = toGq(to_ - from_);
+    const Real length = delta.norm();
+    if (!(length > Real(0))) return false;
+    const bool twoSided = (cb_.m_flags & btTriangleRaycastCallback::kF_FilterBackfaces) == 0;
+    const Pose pose = toGq(world) * view.localPose;
+    Hit hit;
+    if (!castRay(toGq(from_), delta / length, length * cb_.m_closestHitFraction, view, pose, twoSided, hit)) return true;
+    const Real fraction = hit.distance / length;
+    if (!(fraction < cb_.m_closestHitFraction)) return true;
+    btCollisionWorld::LocalShapeInfo info;
+    const TriangleIds ids = view.triangleIds(hit.face);
+    info.m_shapePart = child >= 0 ? -1 : ids.part;
+    info.m_triangleIndex = child >= 0 ? child : ids.index;
+    const bool named = child >= 0 || isSurface(view);
+    btCollisionWorld::LocalRayResult result(object, named ? &info : nullptr, toBt(hit.normal), fraction);
+    cb_.addSingleResult(result, true);
+    return true;
+  }
+
+  // A compound whose children all have gq views (one level; nested compounds go to Bullet).
+  bool compoundRay(btCollisionObject* object, const btCompoundShape* compound) {
+    ShapeView view;
+    for (int i = 0; i < compound->getNumChildShapes(); ++i)
+      if (!makeShapeView(compound->getChildShape(i), view)) return false;
+    for (int i = 0; i < compound->getNumChildShapes(); ++i)
+      shapeRay(object, compound->getChildShape(i), object->getWorldTransform() * compound->getChildTransform(i), i);
+    return true;
+  }
+
   RayVisitor(const btVector3& from, const btVector3& to, RayCallback& cb) : from_(from), to_(to), cb_(cb) {
     fromT_.setIdentity();
     fromT_.setOrigin(from);
@@ -72,27 +107,11 @@ class RayVisitor final : public btBroadphaseRayCallback {
     if (cb_.m_closestHitFraction == btScalar(0)) return false;
     auto* object = static_cast<btCollisionObject*>(proxy->m_clientObject);
     if (!cb_.needsCollision(object->getBroadphaseHandle())) return true;
-    ShapeView view;
-    if (!makeShapeView(object->getCollisionShape(), view)) {
-      btCollisionWorld::rayTestSingle(fromT_, toT_, object, object->getCollisionShape(), object->getWorldTransform(),
-                                      cb_);
-      return true;
+    const btCollisionShape* shape = object->getCollisionShape();
+    if (shape->isCompound() ? !compoundRay(object, static_cast<const btCompoundShape*>(shape))
+                            : !shapeRay(object, shape, object->getWorldTransform(), -1)) {
+      btCollisionWorld::rayTestSingle(fromT_, toT_, object, shape, object->getWorldTransform(), cb_);
     }
-    const V3 delta = toGq(to_ - from_);
-    const Real length = delta.norm();
-    if (!(length > Real(0))) return true;
-    const bool twoSided = (cb_.m_flags & btTriangleRaycastCallback::kF_FilterBackfaces) == 0;
-    const Pose pose = toGq(object->getWorldTransform()) * view.localPose;
-    Hit hit;
-    if (!castRay(toGq(from_), delta / length, length * cb_.m_closestHitFraction, view, pose, twoSided, hit)) return true;
-    const Real fraction = hit.distance / length;
-    if (!(fraction < cb_.m_closestHitFraction)) return true;
-    btCollisionWorld::LocalShapeInfo info;
-    const TriangleIds ids = view.triangleIds(hit.face);
-    info.m_shapePart = ids.part;
-    info.m_triangleIndex = ids.index;
-    btCollisionWorld::LocalRayResult result(object, isSurface(view) ? &info : nullptr, toBt(hit.normal), fraction);
-    cb_.addSingleResult(result, true);
     return true;
   }
 
