@@ -159,6 +159,14 @@ TEST(BulletQueries, RayTestReachesCompoundChildren) {
     if (b.hasHit() && std::abs(b.m_closestHitFraction - g.m_closestHitFraction) * 10 <= kBulletTol) ++agree;
   }
   EXPECT_GE(hits, 15);
+  // A sphere swept down onto the box child stops with its bottom on the box top (y = 0.25 + 0.5).
+  btSphereShape ball(btScalar(0.5));
+  const btVector3 over = btVector3(std::cos(angle), 0, -std::sin(angle)) * btScalar(1.1);  // box child centre
+  btCollisionWorld::ClosestConvexResultCallback sweepCb(over + btVector3(0, 5, 0), over - btVector3(0, 5, 0));
+  gq.convexSweepTest(&ball, btTransform(btQuaternion::getIdentity(), over + btVector3(0, 5, 0)),
+                     btTransform(btQuaternion::getIdentity(), over - btVector3(0, 5, 0)), sweepCb);
+  ASSERT_TRUE(sweepCb.hasHit());
+  EXPECT_NEAR(5 - 10 * sweepCb.m_closestHitFraction, 0.75, kExactTol * 20);
   // Bullet's GJK ray cast strays by up to ~1.6 cm near the sphere's silhouette (gq matches the closed form there).
   EXPECT_GE(agree, hits - hits / 5);
 }

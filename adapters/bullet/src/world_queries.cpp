@@ -135,20 +135,28 @@ class SweepVisitor final : public btBroadphaseRayCallback {
     if (cb_.m_closestHitFraction == btScalar(0)) return false;
     auto* object = static_cast<btCollisionObject*>(proxy->m_clientObject);
     if (!cb_.needsCollision(object->getBroadphaseHandle())) return true;
+    const btCollisionShape* shape = object->getCollisionShape();
+    const bool handled = castOk_ && (shape->isCompound()
+                                         ? compoundSweep(object, static_cast<const btCompoundShape*>(shape))
+                                         : shapeSweep(object, shape, object->getWorldTransform(), -1));
+    if (!handled)
+      btCollisionWorld::objectQuerySingle(cast_, from_, to_, object, shape, object->getWorldTransform(), cb_, allowed_);
+    return true;
+  }
+
+  // The cast shape swept against one gq shape at `world` (`child` >= 0: a compound child, reported as Bullet
+  // does). False when the target has no gq view or the sweep has no length.
+  bool shapeSweep(btCollisionObject* object, const btCollisionShape* shape, const btTransform& world, int child) {
     ShapeView target;
     const V3 delta = toGq(to_.getOrigin() - from_.getOrigin());
     const Real length = delta.norm();
-    if (!castOk_ || !(length > Real(0)) || !makeShapeView(object->getCollisionShape(), target)) {
-      btCollisionWorld::objectQuerySingle(cast_, from_, to_, object, object->getCollisionShape(),
-                                          object->getWorldTransform(), cb_, allowed_);
-      return true;
-    }
+    if (!(length > Real(0)) || !makeShapeView(shape, target)) return false;
     HitFlags flags = HitFlag::Position | HitFlag::Normal | HitFlag::FaceIndex;
     if (isSurface(target)) flags |= HitFlag::MeshBothSides;
     SweepHit<Real> hit;
     bool has = false;
     const Pose castPose = toGq(from_) * castView_.localPose;
-    const Pose targetPose = toGq(object->getWorldTransform()) * target.localPose;
+    const Pose targetPose = toGq(world) * target.localPose;
     if (!sweep(V3(delta / length), length * cb_.m_closestHitFraction, castView_.geom, castPose, target.geom,
                targetPose, hit, has, flags, roundingOf(castView_) + roundingOf(target))
              .ok() ||
@@ -158,11 +166,23 @@ class SweepVisitor final : public btBroadphaseRayCallback {
     if (!(fraction < cb_.m_closestHitFraction)) return true;
     btCollisionWorld::LocalShapeInfo info;
     const TriangleIds ids = target.triangleIds(hit.faceIndex);
-    info.m_shapePart = ids.part;
-    info.m_triangleIndex = ids.index;
-    btCollisionWorld::LocalConvexResult result(object, isSurface(target) ? &info : nullptr, toBt(hit.normal),
-                                               toBt(hit.position), fraction);
+    info.m_shapePart = child >= 0 ? -1 : ids.part;
+    info.m_triangleIndex = child >= 0 ? child : ids.index;
+    const bool named = child >= 0 || isSurface(target);
+    btCollisionWorld::LocalConvexResult result(object, named ? &info : nullptr, toBt(hit.normal), toBt(hit.position),
+                                               fraction);
     cb_.addSingleResult(result, true);
+    return true;
+  }
+
+  // A compound whose children all have gq views (one level; others go to Bullet).
+  bool compoundSweep(btCollisionObject* object, const btCompoundShape* compound) {
+    ShapeView view;
+    for (int i = 0; i < compound->getNumChildShapes(); ++i)
+      if (!makeShapeView(compound->getChildShape(i), view)) return false;
+    if ((to_.getOrigin() - from_.getOrigin()).fuzzyZero()) return false;
+    for (int i = 0; i < compound->getNumChildShapes(); ++i)
+      shapeSweep(object, compound->getChildShape(i), object->getWorldTransform() * compound->getChildTransform(i), i);
     return true;
   }
 
