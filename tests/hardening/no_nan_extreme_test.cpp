@@ -134,3 +134,30 @@ TYPED_TEST(NoNaN, MeshQueriesOverExtremeSizesAnswerFiniteOrAnError) {
 
 }  // namespace
 }  // namespace gq::hardening
+
+namespace gq::hardening {
+namespace {
+
+// Regression (found by fuzz_raycast): a double ray whose mesh-space origin lies beyond the float range made the float
+// BVH slab test accept empty node lanes (inf - inf = NaN) and read nodes[0xffffffff].
+TEST(NoNaNDouble, RaysFromBeyondTheFloatRangeAnswerFiniteForEveryGeometry) {
+  using T = double;
+  for (const Geometry<T>& g : everyGeometry<T>())
+    for (const double far : {1e39, 1e100, 1e300}) {
+      for (const Transform<T>& pose : {Transform<T>(), Transform<T>(Vec3<T>(T(4e100), T(-1e200), T(5e205)))}) {
+        RaycastHit<T> hits[4];
+        std::uint32_t count = 0;
+        const Vec3<T> origin = pose.p + Vec3<T>(T(far), T(0.1), T(0.2));
+        for (const HitFlags flags : {kDefaultHitFlags, kDefaultHitFlags | HitFlag::MeshMultiple}) {
+          const Status s = raycast(origin, Vec3<T>(T(-1), T(0), T(0)), g, pose, T(2 * far), flags, 4u, hits, count);
+          ASSERT_TRUE(s.ok()) << toString(g.type()) << " " << s.toString();
+          for (std::uint32_t i = 0; i < count; ++i)
+            EXPECT_TRUE(isFinite(hits[i].position) && isFinite(hits[i].normal) && std::isfinite(hits[i].distance))
+                << toString(g.type()) << " from " << far;
+        }
+      }
+    }
+}
+
+}  // namespace
+}  // namespace gq::hardening

@@ -104,6 +104,10 @@ inline void traverseRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, L
       const Bvh4Node& node = bvh.nodes[e.ref];
       float tn[4];
       int mask = intersectChildren(node, ray, tMax, tn);
+      // Empty lanes (all-+inf boxes) fail the slab test only for a finite float origin; an origin beyond the float
+      // range (|x| > 3.4e38 in mesh space) gives inf - inf = NaN there, so they are masked out explicitly.
+      for (int i = 0; i < 4; ++i)
+        if (node.child[i] == Bvh4Node::kEmpty) mask &= ~(1 << i);
       if (mask == 0) { missed = true; break; }
       // Collect hit children sorted by entry distance (insertion sort of at most 4).
       Entry hit[4];
