@@ -170,7 +170,12 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
   return r;
 }
 
-template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b) {
+template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness) {
+  // Positive answers leave the evidence: an enclosing simplex, or |v| (an upper bound of the cores' distance).
+  const auto overlapping = [&](const GjkSimplex<T>& simplex, bool enclosing, T upper) {
+    if (witness) *witness = {enclosing, simplex, upper};
+    return true;
+  };
   const T tolerance = gjkTolerance(a, b);
   const T margins = a.margin + b.margin;
   SupportMap<T> sa(a), sb(b);
@@ -194,27 +199,29 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
         continue;
       }
       // Converged: |v| is the core distance within tolerance.
-      if (gapClosed || repeated) return vNorm <= margins + tolerance;
+      if (gapClosed || repeated) return vNorm <= margins + tolerance && overlapping(s, false, vNorm);
     }
     momentum.lastW = p.w;
     ++momentum.step;
     s.points[s.size++] = p;
     const SimplexClosest<T> c = closestOnSimplex(s);
-    if (c.containsOrigin || c.v.norm() <= margins + tolerance) return true;
+    if (c.containsOrigin) return overlapping(s, true, T(0));
+    if (c.v.norm() <= margins + tolerance) return overlapping(s, false, c.v.norm());
     // No progress: drop momentum; plain GJK stalls only by rounding (see gjkDistance), at most kGjkMaxStalls times.
     if (!(c.v.squaredNorm() < bestSquared)) {
       if (accelerated) momentum.on = false;
-      else if (++stalls > kGjkMaxStalls) return std::sqrt(bestSquared) <= margins + tolerance;
+      else if (++stalls > kGjkMaxStalls)
+        return std::sqrt(bestSquared) <= margins + tolerance && overlapping(s, false, std::sqrt(bestSquared));
     }
     v = c.v;
     bestSquared = std::min(bestSquared, v.squaredNorm());
   }
-  return v.norm() <= margins + tolerance;
+  return v.norm() <= margins + tolerance && overlapping(s, false, v.norm());
 }
 
 template GjkResult<float> gjkDistance<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkCache<float>*);
 template GjkResult<double> gjkDistance<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkCache<double>*);
-template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<float>&);
-template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&);
+template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkOverlapWitness<float>*);
+template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkOverlapWitness<double>*);
 
 }  // namespace gq::detail

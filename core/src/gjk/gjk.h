@@ -93,9 +93,18 @@ template <class T> struct GjkResult {
 // Distance between a and b. `cache` (optional): warm-start direction in a's local frame, updated on return.
 template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache = nullptr);
 
+// What a positive gjkOverlap saw of the cores when it stopped: either a simplex enclosing the origin (cores
+// overlap) or a point of the cores' Minkowski difference, whose norm bounds the core distance from above.
+template <class T> struct GjkOverlapWitness {
+  bool coresOverlap = false;
+  GjkSimplex<T> simplex;              // valid when coresOverlap
+  T coreDistanceUpper = T(0);         // >= the cores' distance (when !coresOverlap)
+};
+
 // Boolean overlap of the full shapes (margins included); returns as soon as a separating axis is found.
-// Touching counts as overlapping.
-template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b);
+// Touching counts as overlapping. `witness` (optional) is written when the answer is true.
+template <class T>
+bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness = nullptr);
 
 template <class T> struct EpaResult {
   Status status;                     // Ok, or NotConverged (best face found is reported)

@@ -542,9 +542,14 @@ bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Ge
   // Separated by more than the band: GJK's separating axis is conclusive.
   ConvexShape<T> grown = a;
   grown.margin += band;
-  if (!gjkOverlap(grown, b)) return false;
+  GjkOverlapWitness<T> witness;
+  if (!gjkOverlap(grown, b, &witness)) return false;
   // Overlapping by more than the band: the cores' distance (rounded shells) or the origin's clearance inside
-  // GJK's final tetrahedron (cores overlapping) proves it.
+  // GJK's final tetrahedron (cores overlapping) proves it. The boolean run's own evidence usually suffices
+  // (|v| bounds the cores' distance from above); otherwise a full distance query decides.
+  const T margins = a.margin + b.margin;
+  if (!witness.coresOverlap && witness.coreDistanceUpper - margins < -band) return true;
+  if (witness.coresOverlap && originClearance(witness.simplex) + margins > band) return true;
   const GjkResult<T> g = gjkDistance(a, b);
   if (g.status.ok()) {
     if (!g.coresOverlap && g.distance + g.errorBound < -band) return true;
