@@ -3,10 +3,16 @@
 // 1M seeded rays: half aimed at random points of the surface from outside, half through random points of the
 // bounds in random directions. Also BVH build time and BVH bytes per triangle.
 // Embree never culls back faces, so the headline gq rows use MeshBothSides; "gq_*_culled" rows use the default.
+// Bullet (float build): btBvhTriangleMeshShape (quantized BVH) performRaycast with a btTriangleRaycastCallback,
+// both faces; its "any hit" row answers 0 to stop shortening, but Bullet's BVH walk has no early exit.
+#include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
+#include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 
 #include <cstdio>
+#include <memory>
 #include <cstdlib>
 #include <limits>
 #include <random>
@@ -233,17 +239,82 @@ void BM_build_embree(benchmark::State& state) {
   state.counters["bytes_per_triangle"] = double(bytes) / double(bunny().triangles.size());
 }
 
+
+// ---- Bullet ---------------------------------------------------------------------------------------------------
+struct BulletMesh {
+  std::vector<btScalar> vertices;
+  std::vector<int> indices;
+  std::unique_ptr<btTriangleIndexVertexArray> array;
+  std::unique_ptr<btBvhTriangleMeshShape> shape;
+  BulletMesh() {
+    for (const auto& v : bunny().vertices)
+      for (int k = 0; k < 3; ++k) vertices.push_back(btScalar(v[k]));
+    for (const auto& t : bunny().triangles)
+      for (int k = 0; k < 3; ++k) indices.push_back(int(t[k]));
+    array = std::make_unique<btTriangleIndexVertexArray>(int(bunny().triangles.size()), indices.data(), 3 * int(sizeof(int)),
+                                                         int(bunny().vertices.size()), vertices.data(), 3 * int(sizeof(btScalar)));
+    shape = std::make_unique<btBvhTriangleMeshShape>(array.get(), true);  // quantized AABB compression
+  }
+};
+
+class ClosestTriangle : public btTriangleRaycastCallback {
+ public:
+  ClosestTriangle(const btVector3& from, const btVector3& to, bool stopAtFirst)
+      : btTriangleRaycastCallback(from, to), stopAtFirst_(stopAtFirst) {}
+  btScalar reportHit(const btVector3&, btScalar fraction, int, int) override {
+    hit = true;
+    return stopAtFirst_ ? btScalar(0) : fraction;  // the returned fraction bounds later triangles
+  }
+  bool hit = false;
+
+ private:
+  bool stopAtFirst_;
+};
+
+void bulletRays(benchmark::State& state, bool anyHit) {
+  BulletMesh bm;
+  const Rays& r = rays();
+  std::size_t hits = 0;
+  for (auto _ : state) {
+    hits = 0;
+    for (std::size_t i = 0; i < kRays; ++i) {
+      const gq::Vec3<double> to = r.origin[i] + r.dir[i] * r.maxDist;
+      const btVector3 a(btScalar(r.origin[i].x()), btScalar(r.origin[i].y()), btScalar(r.origin[i].z()));
+      const btVector3 b(btScalar(to.x()), btScalar(to.y()), btScalar(to.z()));
+      ClosestTriangle cb(a, b, anyHit);
+      bm.shape->performRaycast(&cb, a, b);
+      hits += cb.hit;
+      benchmark::DoNotOptimize(cb.m_hitFraction);
+    }
+  }
+  state.SetItemsProcessed(std::int64_t(state.iterations() * kRays));
+  state.counters["hit_fraction"] = double(hits) / double(kRays);
+}
+
+void BM_closest_bullet(benchmark::State& state) { bulletRays(state, false); }
+void BM_any_bullet(benchmark::State& state) { bulletRays(state, true); }
+
+void BM_build_bullet(benchmark::State& state) {
+  for (auto _ : state) {
+    BulletMesh bm;
+    benchmark::DoNotOptimize(bm.shape.get());
+  }
+}
+
 }  // namespace
 
 BENCHMARK(BM_closest_gq_double)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_closest_gq_float)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_closest_gq_double_culled)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_closest_embree)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_closest_bullet)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_any_gq_double)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_any_gq_float)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_any_embree)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_any_bullet)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_build_gq_double)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_build_gq_float)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_build_embree)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_build_bullet)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
