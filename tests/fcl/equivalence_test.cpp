@@ -23,6 +23,9 @@ constexpr double kExactTolerance = 1e-9;     // gq against the exact long-double
 // A separating plane along a witness direction off by an angle e certifies a gap short by O(e^2 x size): GJK on
 // curved shapes stops with e ~ 1e-4, so the certificate is checked to 1e-7.
 constexpr double kCertificateTolerance = 1e-7;
+// Where FCL's depth is right (within kFclWrongDistance) its normal is still approximate (MPR/EPA portals): within
+// 0.8 degrees of the exact one.
+constexpr double kFclNormalCosine = 1 - 1e-4;
 constexpr double kFclWrongDistance = 1e-6;   // FCL's distance counts as wrong beyond this from the exact one
 
 using Pair = std::pair<Kind, Kind>;
@@ -224,6 +227,59 @@ TEST_P(FclEquivalence, SeparationDistancesMatchTheExactAnswerAndFcl) {
   std::cout << name(pair.first) << "-" << name(pair.second) << ": gq distance certified within " << maxCertificateError << "\n";
   EXPECT_LE(maxCertificateError, certificateTolerance(pair));
 }
+
+// Contacts with minimumTranslation: gq's depth equals the exact one; moving o2 along the normal by the depth
+// separates the pair (exact answer); FCL's depth is counted wrong beyond kFclWrongDistance, and where it is right
+// its normal agrees with gq's.
+class FclContacts : public ::testing::TestWithParam<Pair> {};
+
+TEST_P(FclContacts, DepthsAndNormalsMatchTheExactMinimumTranslation) {
+  const Pair pair = GetParam();
+  std::mt19937 rng(seedOf(pair) + 2);
+  const TestShape a = makeShape(pair.first, rng), b = makeShape(pair.second, rng);
+  gq::fcl::Options options;
+  options.minimumTranslation = true;
+  int checked = 0, fclWrongCount = 0, fclNormalsCompared = 0;
+  double maxFclError = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const ::fcl::Transform3d pa = randomPose(rng, kPoseExtent), pb = randomPose(rng, kPoseExtent);
+    long double depth = 0;
+    if (!exactDepth(a, pa, b, pb, depth) || depth < kTouchBand) continue;
+    const ::fcl::CollisionRequestd request(1, true);
+    ::fcl::CollisionResultd fromGq, fromFcl;
+    gq::fcl::collide<double>(a.geometry.get(), pa, b.geometry.get(), pb, request, fromGq, options);
+    ASSERT_EQ(fromGq.numContacts(), 1u) << "pose " << i;
+    const ::fcl::Contactd& c = fromGq.getContact(0);
+    EXPECT_NEAR(c.penetration_depth, double(depth), kExactTolerance) << "pose " << i;
+    EXPECT_NEAR(c.normal.norm(), 1.0, 1e-12);
+    ::fcl::Transform3d apart = pb, still = pb;
+    apart.translation() += c.normal * (double(depth) + 1e-7);
+    still.translation() += c.normal * (double(depth) - 1e-7);
+    EXPECT_FALSE(exactAnswer(a, pa, b, apart).colliding) << "pose " << i << ": the normal does not separate";
+    EXPECT_TRUE(exactAnswer(a, pa, b, still).colliding) << "pose " << i;
+    ++checked;
+    ::fcl::collide<double>(a.geometry.get(), pa, b.geometry.get(), pb, request, fromFcl);
+    if (fromFcl.numContacts() != 1) continue;
+    const double fclError = std::fabs(fromFcl.getContact(0).penetration_depth - double(depth));
+    maxFclError = std::max(maxFclError, fclError);
+    if (fclError > kFclWrongDistance) {
+      ++fclWrongCount;
+      continue;
+    }
+    EXPECT_GT(fromFcl.getContact(0).normal.dot(c.normal), kFclNormalCosine) << "pose " << i;
+    ++fclNormalsCompared;
+  }
+  std::cout << name(pair.first) << "-" << name(pair.second) << ": " << checked << " penetrating poses; FCL depth wrong by > "
+            << kFclWrongDistance << " in " << fclWrongCount << " (max " << maxFclError << "), normals compared in "
+            << fclNormalsCompared << "\n";
+  EXPECT_GT(checked, 50);
+}
+
+INSTANTIATE_TEST_SUITE_P(ExactDepthPairs, FclContacts,
+                         ::testing::Values(Pair{Kind::Sphere, Kind::Sphere}, Pair{Kind::Sphere, Kind::Capsule},
+                                           Pair{Kind::Capsule, Kind::Capsule}, Pair{Kind::Box, Kind::Box},
+                                           Pair{Kind::Box, Kind::Convex}, Pair{Kind::Convex, Kind::Convex}),
+                         pairName);
 
 INSTANTIATE_TEST_SUITE_P(AllPairs, FclEquivalence, ::testing::ValuesIn(allPairs()), pairName);
 

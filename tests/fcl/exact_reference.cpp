@@ -190,6 +190,44 @@ ExactAnswer planeAnswer(const TestShape& plane, const World& wp, const TestShape
 
 }  // namespace
 
+bool exactDepth(const TestShape& a, const ::fcl::Transform3d& pa, const TestShape& b, const ::fcl::Transform3d& pb,
+                long double& depth) {
+  const World wa = worldOf(pa), wb = worldOf(pb);
+  const auto round = [](Kind k) { return k == Kind::Sphere || k == Kind::Capsule; };
+  if (round(a.kind) && round(b.kind)) {
+    const ExactAnswer e = exactAnswer(a, pa, b, pb);
+    depth = -e.distance;
+    return e.colliding;
+  }
+  const auto solidPolytope = [](Kind k) { return k == Kind::Box || k == Kind::Convex; };
+  if (!solidPolytope(a.kind) || !solidPolytope(b.kind)) return false;
+  const Poly x = polyOf(a, wa), y = polyOf(b, wb);
+  std::vector<V> axes, ex, ey;
+  for (const auto& f : x.f) {
+    axes.push_back(faceNormal(x, f));
+    for (std::size_t i = 0; i < f.size(); ++i) ex.push_back(x.v[f[(i + 1) % f.size()]] - x.v[f[i]]);
+  }
+  for (const auto& f : y.f) {
+    axes.push_back(faceNormal(y, f));
+    for (std::size_t i = 0; i < f.size(); ++i) ey.push_back(y.v[f[(i + 1) % f.size()]] - y.v[f[i]]);
+  }
+  for (const V& p : ex)
+    for (const V& q : ey) axes.push_back(p.cross(q));
+  depth = std::numeric_limits<L>::infinity();
+  for (V axis : axes) {
+    const L len = axis.norm();
+    if (len < L(1e-12)) continue;
+    axis /= len;
+    L alo, ahi, blo, bhi;
+    project(x.v, axis, alo, ahi);
+    project(y.v, axis, blo, bhi);
+    const L overlap = std::min(ahi - blo, bhi - alo);
+    if (overlap < 0) return false;
+    depth = std::min(depth, overlap);
+  }
+  return true;
+}
+
 long double certifiedGap(const TestShape& a, const ::fcl::Transform3d& pa, const TestShape& b, const ::fcl::Transform3d& pb,
                          const ::fcl::Vector3d& direction) {
   const V n = direction.cast<L>().normalized();

@@ -25,4 +25,10 @@ ExactAnswer exactAnswer(const TestShape& a, const ::fcl::Transform3d& pa, const 
 long double certifiedGap(const TestShape& a, const ::fcl::Transform3d& pa, const TestShape& b, const ::fcl::Transform3d& pb,
                          const ::fcl::Vector3d& n);
 
+// Exact penetration depth (minimum translation) where a closed form is known: sphere/capsule pairs (radii minus the
+// segment distance) and polytope pairs Box/Convex (SAT: the least overlap over face normals and edge-edge axes).
+// False for other pairs or when the shapes do not overlap.
+bool exactDepth(const TestShape& a, const ::fcl::Transform3d& pa, const TestShape& b, const ::fcl::Transform3d& pb,
+                long double& depth);
+
 }  // namespace gq::fcltest
