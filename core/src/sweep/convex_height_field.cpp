@@ -1,7 +1,11 @@
 // Sweep of a support-mapped shape against a heightfield: the cells under the swept volume's box (in heightfield
-// shape space) are visited, hole cells skipped, and each of their two triangles is culled and swept like a mesh
-// triangle (normals face +Y; double-sided with the doubleSided flag or meshBothSides). faceIndex = 2*cell (+1).
+// shape space) are gathered, hole cells skipped, and their triangles are visited in order of the parameter at which
+// the swept shape's box, moving along the sweep, can first touch them (FatRay), stopping beyond the closest hit; each
+// is culled and swept like a mesh triangle (normals face +Y; double-sided with the doubleSided flag or
+// meshBothSides). faceIndex = 2*cell (+1).
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "cook/height_field_layout.h"
@@ -60,12 +64,27 @@ void sweepConvexHeightField(const Geometry<T>& g0, const Transform<T>& p0, const
       candidates.push_back(2 * cell + 1);
     }
 
+  // Candidates ordered by the first parameter at which the start box, moving along dir, meets their boxes (world).
+  const Bounds3<T> startBox = sweptBoundsInFrame(a, Transform<T>(), q.dir, T(0));
+  const FatRay<T> ray{startBox.center(), q.dir, startBox.extents()};
+  std::vector<std::pair<T, std::uint32_t>> order;
+  for (const std::uint32_t tri : candidates) {
+    const Triangle<T> t = heightFieldTriangle(hfGeom, p1, tri);
+    Bounds3<T> box;
+    for (const Vec3<T>& v : t.verts) box.include(v);
+    const T entry = ray.entry(box.min, box.max, q.maxDist);
+    if (entry <= q.maxDist) order.emplace_back(entry, tri);
+  }
+  std::sort(order.begin(), order.end());
+
   const bool doubleSided = hfGeom.doubleSided();
   SweepQuery<T> local = q;
   local.cullBackFaces = q.cullBackFaces && !doubleSided;
   TriangleHitPicker<T> picker;
   picker.tieTolerance = triangleTieTolerance(a, shapeBox);
-  for (const std::uint32_t tri : candidates) {
+  for (const auto& [entry, tri] : order) {
+    // Initial overlaps win (the smallest index among them): once one is found only boxes met at t = 0 matter.
+    if (entry > (picker.found && picker.overlap ? T(0) : picker.earlyOut(q.maxDist))) break;
     local.maxDist = picker.earlyOut(q.maxDist);
     ToiResult<T> toi;
     T facing;

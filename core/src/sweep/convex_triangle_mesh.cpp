@@ -51,33 +51,6 @@ void collectTriangles(const Bvh4& bvh, const FloatBox& q, std::vector<std::uint3
   }
 }
 
-// The swept shape's start box (centre `origin`, half extents `half`) moving along `dir`, in mesh space. Because mesh
-// space is an affine image of world space, the parameter t along dir is the world sweep distance.
-template <class T> struct FatRay {
-  Vec3<T> origin, dir, half;
-
-  // First t in [0, tMax] at which the moving box meets [lo, hi] (their Minkowski sum contains origin + t dir);
-  // +inf when never. The bounds grow by kFatRayPad of their magnitude: node boxes are float roundings.
-  T entry(const Vec3<T>& lo, const Vec3<T>& hi, T tMax) const {
-    T t0 = T(0), t1 = tMax;
-    for (int i = 0; i < 3; ++i) {
-      const T pad = T(kFatRayPad) * (std::abs(lo[i]) + std::abs(hi[i]) + half[i]);
-      const T a = lo[i] - half[i] - pad, b = hi[i] + half[i] + pad;
-      if (dir[i] == T(0)) {
-        if (origin[i] < a || origin[i] > b) return std::numeric_limits<T>::infinity();
-        continue;
-      }
-      T ta = (a - origin[i]) / dir[i], tb = (b - origin[i]) / dir[i];
-      if (ta > tb) std::swap(ta, tb);
-      t0 = std::max(t0, ta);
-      t1 = std::min(t1, tb);
-      if (t0 > t1) return std::numeric_limits<T>::infinity();
-    }
-    return t0;
-  }
-  static constexpr double kFatRayPad = 1e-6;
-};
-
 template <class T> T childEntry(const FatRay<T>& ray, const Bvh4Node& n, int lane, T tMax) {
   return ray.entry(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
                    Vec3<T>(T(n.maxX[lane]), T(n.maxY[lane]), T(n.maxZ[lane])), tMax);

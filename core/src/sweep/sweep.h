@@ -8,7 +8,10 @@
 //  - hit at distance t: the swept shape translated by t * dir touches the target; normal is unit, points out of
 //    the target towards the swept shape (dot(normal, dir) < 0), position is the touching point;
 //  - initial overlap (t = 0 and the shapes intersect or touch): the façade fills the hit from `mtd*` fields.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "gjk/gjk.h"
 #include "gq/custom.h"
@@ -115,6 +118,34 @@ template <class T> struct TriangleMtdPicker {
   std::uint32_t index = kInvalidFaceIndex;
   void offer(const ConvexShape<T>& a, const Triangle<T>& tri, std::uint32_t triIndex, bool doubleSided);
   void writeTo(SweepOutcome<T>& out, const Vec3<T>& dir) const;
+};
+
+// The swept shape's start box (centre `origin`, half extents `half`) moving along `dir` (a "fat ray"), in world space
+// or in a mesh's space: that is an affine image of world space, so the parameter t along dir stays the world sweep
+// distance. Triangles and BVH nodes are visited in order of entry() and skipped beyond the current closest hit.
+template <class T> struct FatRay {
+  Vec3<T> origin, dir, half;
+
+  // First t in [0, tMax] at which the moving box meets [lo, hi] (their Minkowski sum contains origin + t dir);
+  // +inf when never. The bounds grow by kFatRayPad of their magnitude: node boxes are float roundings.
+  T entry(const Vec3<T>& lo, const Vec3<T>& hi, T tMax) const {
+    T t0 = T(0), t1 = tMax;
+    for (int i = 0; i < 3; ++i) {
+      const T pad = T(kFatRayPad) * (std::abs(lo[i]) + std::abs(hi[i]) + half[i]);
+      const T a = lo[i] - half[i] - pad, b = hi[i] + half[i] + pad;
+      if (dir[i] == T(0)) {
+        if (origin[i] < a || origin[i] > b) return std::numeric_limits<T>::infinity();
+        continue;
+      }
+      T ta = (a - origin[i]) / dir[i], tb = (b - origin[i]) / dir[i];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+      if (t0 > t1) return std::numeric_limits<T>::infinity();
+    }
+    return t0;
+  }
+  static constexpr double kFatRayPad = 1e-6;
 };
 
 // AABB, in the frame `frame` (shape space of a mesh or heightfield), of the swept shape over [0, reach] along dir.
