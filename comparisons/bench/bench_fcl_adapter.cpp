@@ -165,6 +165,27 @@ template <bool Gq> void BM_BroadphaseSelfCollide(benchmark::State& state) {
   state.SetLabel("colliding pairs " + std::to_string(pairs));
 }
 
+// The broadphase alone: the callback only counts candidate pairs (tree quality and traversal, no narrow phase).
+bool countCandidate(::fcl::CollisionObjectd*, ::fcl::CollisionObjectd*, void* data) {
+  ++*static_cast<std::size_t*>(data);
+  return false;
+}
+
+template <bool Gq> void BM_BroadphaseCandidates(benchmark::State& state) {
+  Scene scene;
+  std::unique_ptr<::fcl::BroadPhaseCollisionManagerd> manager;
+  if (Gq) manager = std::make_unique<gq::fcl::DynamicAABBTreeCollisionManagerd>();
+  else manager = std::make_unique<::fcl::DynamicAABBTreeCollisionManagerd>();
+  manager->registerObjects(scene.pointers);
+  manager->setup();
+  std::size_t candidates = 0;
+  for (auto _ : state) {
+    candidates = 0;
+    manager->collide(&candidates, countCandidate);
+  }
+  state.SetLabel("candidate pairs " + std::to_string(candidates));
+}
+
 void families(benchmark::internal::Benchmark* b) {
   for (int i = 0; i < kFamilies; ++i) b->Arg(i);
 }
@@ -175,6 +196,8 @@ BENCHMARK(BM_Distance<false>)->Name("distance/fcl")->Apply(families);
 BENCHMARK(BM_Distance<true>)->Name("distance/gq_fcl")->Apply(families);
 BENCHMARK(BM_BroadphaseSelfCollide<false>)->Name("broadphase_self_1000/fcl")->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BroadphaseSelfCollide<true>)->Name("broadphase_self_1000/gq_fcl")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BroadphaseCandidates<false>)->Name("broadphase_candidates_1000/fcl")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BroadphaseCandidates<true>)->Name("broadphase_candidates_1000/gq_fcl")->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
