@@ -10,7 +10,7 @@
 // d_k = delta_k v_k + (1 - delta_k) w_{k-1} with delta_k = (k+1)/(k+3), a momentum on the support points. Momentum is
 // switched off for the rest of the query (plain GJK, whose termination proof then applies) as soon as it stops
 // paying: when the momentum support would pass the duality-gap test at v (it proves nothing about v), when it
-// repeats a simplex point, or when |v| fails to decrease.
+// repeats a simplex point, when |v| fails to decrease, or after kGjkMomentumIterations iterations.
 #include <cmath>
 
 #include "gjk/gjk.h"
@@ -102,6 +102,7 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
   }
   while (!r.coresOverlap && it < kGjkMaxIterations) {
     ++it;
+    if (it > kGjkMomentumIterations) momentum.on = false;
     const Vec3<T> d = s.size > 0 ? momentum.direction(v) : v;
     const bool accelerated = d != v;
     const SupportPoint<T> p = supportOfDifference(sa, sb, Vec3<T>(-d));
@@ -185,6 +186,7 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
   Momentum<T> momentum;
   std::uint32_t stalls = 0;
   for (std::uint32_t it = 0; it < kGjkMaxIterations; ++it) {
+    if (it >= kGjkMomentumIterations) momentum.on = false;
     const Vec3<T> d = s.size > 0 ? momentum.direction(v) : v;
     const bool accelerated = d != v;
     const SupportPoint<T> p = supportOfDifference(sa, sb, Vec3<T>(-d));
