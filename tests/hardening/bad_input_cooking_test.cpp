@@ -183,3 +183,26 @@ TYPED_TEST(BadInputCooking, NaNCoordinatesInAMeshFileAreRejectedAtLoadOrCook) {
 
 }  // namespace
 }  // namespace gq::hardening
+
+namespace gq::hardening {
+namespace {
+
+// Regression (found by fuzz_point_queries): these points crashed qhull (its determinants overflow double).
+TEST(BadInputCookingDouble, ConvexHullOfCoordinatesBeyond1e50IsInvalidArgument) {
+  const std::vector<Vec3<double>> points = {
+      {-8.2081686391925773e+291, -3, -1.6797940290797989e+62}, {7.6898357492576918e-78, -7.6875, 5.9042329941270784e+169},
+      {5.3185841757355179e+87, -1.6797940290797989e+62, 7.6898357492576276e-78},
+      {-8, 1.6453608312084192e+223, -5.1181110322177104e+271},
+      {6.2448849556242614e+178, -2.5444737109221841e-111, 3.9947470077931918e-107},
+      {-1e+30, -1.5032125394247303e-95, 0.25}, {-3.1875, 3.8125, -3.25}, {5.375, -4.625, -3.346003892147548e-265}};
+  std::shared_ptr<const ConvexMesh<double>> out;
+  EXPECT_EQ(cookConvexMesh(points, out).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(out, nullptr);
+  // Up to the limit, hulls cook (a cube of half size 1e49).
+  std::vector<Vec3<double>> big = cubePoints<double>();
+  for (auto& p : big) p *= 1e49;
+  EXPECT_TRUE(cookConvexMesh(big, out).ok());
+}
+
+}  // namespace
+}  // namespace gq::hardening

@@ -164,6 +164,10 @@ Status buildHull(const std::vector<Vec3d>& input, const std::vector<QhullPolygon
 
 }  // namespace
 
+// qhull's determinants multiply up to six coordinate differences: beyond this magnitude they overflow double and
+// qhull dereferences a null facet (found by fuzz_point_queries with coordinates near 1e290).
+constexpr double kMaxHullCoordinate = 1e50;
+
 template <class T>
 Status cookConvexMesh(const std::vector<Vec3<T>>& points, std::shared_ptr<const ConvexMesh<T>>& out,
                       const ConvexCookParams& params) {
@@ -177,6 +181,8 @@ Status cookConvexMesh(const std::vector<Vec3<T>>& points, std::shared_ptr<const 
     Bounds3<double> box;
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (!isFinite(points[i])) return Status::invalid("convex point " + std::to_string(i) + " is not finite");
+      if (points[i].template cast<double>().cwiseAbs().maxCoeff() > kMaxHullCoordinate)
+        return Status::invalid("convex point " + std::to_string(i) + " has a coordinate beyond 1e50");
       input.push_back(points[i].template cast<double>());
       box.include(input.back());
     }
