@@ -41,23 +41,6 @@ template <class T> CustomGeometry<T> borrowed(const CustomGeometryCallbacks<T>& 
   return CustomGeometry<T>(std::shared_ptr<const CustomGeometryCallbacks<T>>(std::shared_ptr<const void>(), &callbacks));
 }
 
-// FCL shapes that become gq custom support shapes. gq's GJK on them can stop short from a cold start (measured: up to
-// 0.19 too far apart); a second run warm-started from the first one's simplex converges (certified to 1e-7 by the
-// equivalence tests), so their distances run twice and a boolean "apart" is confirmed that way.
-template <class T> bool isCustomSupport(const Converted<T>& c) {
-  return c.shape == FclShape::Cylinder || c.shape == FclShape::Cone || c.shape == FclShape::Ellipsoid ||
-         c.shape == FclShape::TriangleP;
-}
-
-template <class T>
-Status restartedDistance(DistanceResult<T>& d, const Geometry<T>& a, const Transform<T>& pa, const Geometry<T>& b,
-                         const Transform<T>& pb, bool restart) {
-  GjkCache<T> cache;
-  Status s = distance(d, a, pa, b, pb, &cache);
-  if (s.ok() && restart) s = distance(d, a, pa, b, pb, &cache);
-  return s;
-}
-
 template <class T> PairContact<T> contactFrom(const DistanceResult<T>& d) {
   PairContact<T> c;
   c.position = midpoint(d.point0, d.point1);
@@ -68,20 +51,15 @@ template <class T> PairContact<T> contactFrom(const DistanceResult<T>& d) {
 
 template <class T>
 Status solidContacts(const Geometry<T>& a, const Transform<T>& pa, const Geometry<T>& b, const Transform<T>& pb,
-                     bool withGeometry, bool customSupport, std::vector<PairContact<T>>& out) {
+                     bool withGeometry, std::vector<PairContact<T>>& out) {
   if (!withGeometry) {
     bool hit = false;
-    Status s = overlap(a, pa, b, pb, hit);
-    if (s.ok() && !hit && customSupport) {
-      DistanceResult<T> d;
-      s = restartedDistance(d, a, pa, b, pb, true);
-      hit = d.distance <= T(0);
-    }
+    const Status s = overlap(a, pa, b, pb, hit);
     if (s.ok() && hit) out.push_back(PairContact<T>());
     return s;
   }
   DistanceResult<T> d;
-  const Status s = restartedDistance(d, a, pa, b, pb, customSupport);
+  const Status s = distance(d, a, pa, b, pb);
   if (s.ok() && d.distance <= T(0)) out.push_back(contactFrom(d));
   return s;
 }
@@ -334,7 +312,7 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
     out.push_back(c);
     return s;
   }
-  return solidContacts(a.geom, pa, b.geom, pb, withGeometry, isCustomSupport(a) || isCustomSupport(b), out);
+  return solidContacts(a.geom, pa, b.geom, pb, withGeometry, out);
 }
 
 template <class T>
@@ -358,7 +336,7 @@ Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Convert
     if (planeFirst) flip(out);
     return s;
   }
-  s = restartedDistance(d, a.geom, pa, b.geom, pb, isCustomSupport(a) || isCustomSupport(b));
+  s = distance(d, a.geom, pa, b.geom, pb);
   if (!s.ok()) return s;
   out = PairDistance<T>{d.distance, d.point0, d.point1, kNoPrimitive, kNoPrimitive};
   if (ma) out.b1 = nearestTriangle(*ma, pa, d.point0);
