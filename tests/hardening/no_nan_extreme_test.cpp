@@ -161,3 +161,30 @@ TEST(NoNaNDouble, RaysFromBeyondTheFloatRangeAnswerFiniteForEveryGeometry) {
 
 }  // namespace
 }  // namespace gq::hardening
+
+namespace gq::hardening {
+namespace {
+
+// Regression (found by fuzz_raycast): origin near -1.4e307 against a mirrored, rotated, double-sided mesh gave hits
+// with NaN distance and position (the watertight test's products overflow; NaN passed t <= maxDist).
+TEST(NoNaNDouble, RayOriginNearTheDoubleLimitGivesNoNaNHits) {
+  using T = double;
+  const MeshScale<T> scale(Vec3<T>::Constant(T(-1.3125)), Quat<T>(T(-0.5), T(-0.5), T(-0.5), T(-0.5)));
+  const Geometry<T> mesh = TriangleMeshGeometry<T>(Cooked<T>::get().mesh, scale, MeshGeometryFlag::DoubleSided);
+  const Transform<T> pose(Vec3<T>::Constant(T(-1.3125)),
+                          Quat<T>(T(-0.21174347428431575), T(-0.21174347428431575), T(0.55456624217320794),
+                                  T(0.77639273904249106)).normalized());
+  const Vec3<T> origin(T(-4), T(-0.625), T(-1.3997060152723061e+307));
+  const Vec3<T> dir = Vec3<T>(T(1.0219713197572166e-275), T(-1), T(-4.900392699363832e-284)).normalized();
+  for (const T maxDist : {T(4.94066e-324), T(1), kInf<T>}) {
+    RaycastHit<T> hits[4];
+    std::uint32_t count = 0;
+    ASSERT_TRUE(raycast(origin, dir, mesh, pose, maxDist, kDefaultHitFlags | HitFlag::MeshMultiple | HitFlag::UV, 4u,
+                        hits, count).ok());
+    for (std::uint32_t i = 0; i < count; ++i)
+      EXPECT_TRUE(std::isfinite(hits[i].distance) && isFinite(hits[i].position) && std::isfinite(hits[i].u));
+  }
+}
+
+}  // namespace
+}  // namespace gq::hardening

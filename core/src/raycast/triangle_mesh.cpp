@@ -41,7 +41,10 @@ template <class T> class MeshRaycaster {
 
   bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
     const Vec3<T>* v = &mesh_.triangleVertices[3 * std::size_t(cooked)];
-    return intersectRayTriangle(ray_, v[0], v[1], v[2], maxT, cull_, hit);
+    // Coordinates near the scalar's limit (|x| ~ 1e307) overflow the watertight test's products: its NaN t would
+    // pass the t <= maxT test, so a hit must also be finite.
+    return intersectRayTriangle(ray_, v[0], v[1], v[2], maxT, cull_, hit) && std::isfinite(hit.t) &&
+           std::isfinite(hit.u) && std::isfinite(hit.v);
   }
 
   // Closest hit (anyHit = false) or the first hit found (anyHit = true) within maxDist.
