@@ -188,3 +188,29 @@ TEST(NoNaNDouble, RayOriginNearTheDoubleLimitGivesNoNaNHits) {
 
 }  // namespace
 }  // namespace gq::hardening
+
+namespace gq::hardening {
+namespace {
+
+// Regression (found by fuzz_mesh_queries): a capsule of radius 1.8e180 and half height 1.7e278 against a
+// double-sided cube mesh made computeTriangleMeshPenetration return Ok with a non-finite direction/depth.
+TEST(NoNaNDouble, HugeCapsuleMeshPenetrationIsFiniteOrAnError) {
+  using T = double;
+  const Geometry<T> capsule = CapsuleGeometry<T>(T(1.8079690119310907e+180), T(1.7201529712891337e+278));
+  const TriangleMeshGeometry<T> mesh(Cooked<T>::get().mesh, MeshScale<T>(), MeshGeometryFlag::DoubleSided);
+  const Transform<T> pose(Vec3<T>(T(4.5), T(-2.061175303536391e-245), T(-1.2432276683596013e-23)),
+                          Quat<T>(T(-1.6952321677816607e-192), T(-0.57716242136646911), T(0.70341670104038434),
+                                  T(0.41483549035714973)).normalized());
+  const Transform<T> meshPose(Vec3<T>(T(2.3125), T(-4.125), T(5.0625)),
+                              Quat<T>(T(0.87642183312277178), T(-0.46275072788882349), T(1.918865728887961e-81),
+                                      T(-0.13321611863466132)).normalized());
+  for (const std::uint32_t maxIter : {1u, 4u}) {
+    PenetrationResult<T> r = sentinelPenetration<T>();
+    const Status s = computeTriangleMeshPenetration(r, capsule, pose, mesh, meshPose, maxIter);
+    if (s.ok()) EXPECT_TRUE(isFinite(r.direction) && std::isfinite(r.depth));
+    else EXPECT_TRUE(sameBits(r, sentinelPenetration<T>())) << s.toString();
+  }
+}
+
+}  // namespace
+}  // namespace gq::hardening
