@@ -10,10 +10,16 @@ template <class T> void run(gq::fuzz::Bytes& in) {
   using namespace gq;
   const Geometry<T> shape = fuzz::geometry<T>(in);
   const Transform<T> pose = in.pose<T>();
-  const TriangleMeshGeometry<T> mesh(fuzz::mesh<T>(in), fuzz::meshScale<T>(in),
+  const auto meshData = fuzz::mesh<T>(in);
+  const MeshScale<T> meshScale = fuzz::meshScale<T>(in);
+  const TriangleMeshGeometry<T> mesh(meshData, meshScale,
                                      in.flag() ? MeshGeometryFlag::DoubleSided : MeshGeometryFlag::None);
   const Transform<T> meshPose = in.pose<T>();
-  const HeightFieldGeometry<T> hf(fuzz::heightField<T>(in), in.scalar<T>(), in.scalar<T>(), in.scalar<T>());
+  // Every decoding step is its own statement: argument evaluation order differs between compilers, and a crash
+  // input must decode the same in a gcc debug build.
+  const auto hfData = fuzz::heightField<T>(in);
+  const T hs = in.scalar<T>(), rs = in.scalar<T>(), cs = in.scalar<T>();
+  const HeightFieldGeometry<T> hf(hfData, hs, rs, cs);
   const std::uint32_t meshTriangles = mesh.mesh->inputTriangleCount();
   {
     std::uint32_t results[8], count = 999;
@@ -56,12 +62,16 @@ template <class T> void run(gq::fuzz::Bytes& in) {
     const std::uint32_t cached = std::uint32_t(in.small(6));
     const Vec3<T> dir = in.direction<T>();
     const T maxDist = in.scalar<T>();
-    const Status s = sweepTriangles<T>(dir, maxDist, shape, pose, tris, triCount, hit, hasHit, fuzz::hitFlags(in),
-                                       in.flag() ? &cached : nullptr, in.flag() ? in.scalar<T>() : T(0), in.flag());
+    const HitFlags flags = fuzz::hitFlags(in);
+    const std::uint32_t* cachedIndex = in.flag() ? &cached : nullptr;
+    const T inflation = in.flag() ? in.scalar<T>() : T(0);
+    const bool doubleSided = in.flag();
+    const Status s = sweepTriangles<T>(dir, maxDist, shape, pose, tris, triCount, hit, hasHit, flags, cachedIndex,
+                                       inflation, doubleSided);
     if (!s.ok()) fuzz::require(hasHit && hit.distance == T(-7777));
     else if (hasHit)
       fuzz::require(isFinite(hit.position) && isFinite(hit.normal) && std::isfinite(hit.distance) &&
-                    hit.faceIndex < triCount);
+                    (!hit.flags.has(HitFlag::FaceIndex) || hit.faceIndex < triCount));
   }
   if (triCount > 0) {
     ContactBuffer<T> contacts;
@@ -78,14 +88,17 @@ template <class T> void run(gq::fuzz::Bytes& in) {
   {
     bool found = true;
     std::uint32_t pairs = 0;
-    const TriangleMeshGeometry<T> other(fuzz::mesh<T>(in), fuzz::meshScale<T>(in));
+    const auto otherMesh = fuzz::mesh<T>(in);
+    const TriangleMeshGeometry<T> other(otherMesh, fuzz::meshScale<T>(in));
     const std::uint32_t otherTriangles = other.mesh->inputTriangleCount();
+    const Transform<T> otherPose = in.pose<T>();
+    const T tolerance = in.flag() ? in.scalar<T>() : T(0);
     const Status s = findOverlapTriangleMeshPairs<T>(
         [&](std::uint32_t a, std::uint32_t b) {
           fuzz::require(a < meshTriangles && b < otherTriangles);
           return ++pairs < 64;
         },
-        mesh, meshPose, other, in.pose<T>(), found, in.flag() ? in.scalar<T>() : T(0));
+        mesh, meshPose, other, otherPose, found, tolerance);
     if (!s.ok()) fuzz::require(found && pairs == 0);
   }
 }
