@@ -214,3 +214,28 @@ TEST(NoNaNDouble, HugeCapsuleMeshPenetrationIsFiniteOrAnError) {
 
 }  // namespace
 }  // namespace gq::hardening
+
+namespace gq::hardening {
+namespace {
+
+// Regression (found by fuzz_pair_queries): in float, a heightfield with columnScale 8.3e27 and a shape 8.3e27 away
+// made distance()'s growing search radius loop forever (its bound overflowed to +inf).
+TEST(NoNaNFloat, DistanceToAHeightFieldBeyondTheFloatRangeTerminates) {
+  using T = float;
+  const HeightFieldGeometry<T> hf(Cooked<T>::get().heightField, T(1.4012984643248171e-45), T(5.375),
+                                  T(8.290288497941718e+27), MeshGeometryFlag::DoubleSided);
+  const Transform<T> hfPose(Vec3<T>(T(3.4392579466537215e+24), T(1.5625), T(1.229822955384114e+27)));
+  const Transform<T> shapePose(Vec3<T>(T(-0.0009453499224036932), T(8.290288497941718e+27), T(-1.3840866813552566e-05)));
+  CustomGeometry<T> cylinder, cone;
+  ASSERT_TRUE(makeCylinder(T(1), T(1), cylinder).ok());
+  ASSERT_TRUE(makeCone(T(1), T(1), cone).ok());
+  for (const Geometry<T>& g : {Geometry<T>(cylinder), Geometry<T>(cone), Geometry<T>(SphereGeometry<T>(T(1)))}) {
+    DistanceResult<T> r = sentinelDistance<T>();
+    const Status s = distance(r, g, shapePose, Geometry<T>(hf), hfPose);
+    if (s.ok()) EXPECT_TRUE(std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1));
+    else EXPECT_TRUE(sameBits(r, sentinelDistance<T>())) << s.toString();
+  }
+}
+
+}  // namespace
+}  // namespace gq::hardening

@@ -86,7 +86,9 @@ void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldS
   const T limit = std::sqrt(boxDistanceSq(box, fieldBox)) + span;
   for (;;) {
     field.forEachTriangle(grown(box, radius), visit);
-    if (best.found || radius > limit) break;
+    // !(radius <= limit) also ends NaN bounds, and an infinite radius has just visited every cell (coordinates
+    // beyond the scalar range made `limit` infinite and this loop endless; found by fuzz_pair_queries).
+    if (best.found || !(radius <= limit) || !std::isfinite(radius)) break;
     radius *= T(2);
   }
   if (best.found && best.result.distance > radius) field.forEachTriangle(grown(box, best.result.distance), visit);

@@ -174,6 +174,13 @@ template <class T> class HeightFieldSurface {
   // Cells [first, last] of `cells` whose span [i*scale, (i+1)*scale] (either sign of scale) may meet [lo, hi].
   static bool cellRange(T lo, T hi, T scale, std::uint32_t cells, std::uint32_t& first, std::uint32_t& last) {
     double a = double(lo) / double(scale), b = double(hi) / double(scale);
+    // A NaN span (a box with inf - inf corners, from coordinates beyond the scalar range) would convert to a
+    // garbage cell range (a near-endless loop, found by fuzz_pair_queries): take every cell, the exact test decides.
+    if (std::isnan(a) || std::isnan(b)) {
+      first = 0;
+      last = cells - 1;
+      return true;
+    }
     if (a > b) std::swap(a, b);
     a = std::floor(a) - 1.0;
     b = std::floor(b) + 1.0;
