@@ -7,14 +7,12 @@
 #include "gq_backend.h"
 #include "libccd_backend.h"
 
-// The adapters' rows (gq through ::fcl types, gq through Bullet's world) join when their backends are built.
-#if __has_include("gq_fcl_backend.h")
+// The adapters' rows (gq through ::fcl types, gq through Bullet's world), defined by CMake when the adapters are built.
+#ifdef GQ_HAVE_FCL_ADAPTER_BACKEND
 #include "gq_fcl_backend.h"
-#define GQ_HAVE_FCL_ADAPTER_BACKEND 1
 #endif
-#if __has_include("gq_bullet_forward.h")
+#ifdef GQ_HAVE_BULLET_ADAPTER_BACKEND
 #include "gq_bullet_forward.h"
-#define GQ_HAVE_BULLET_ADAPTER_BACKEND 1
 #endif
 
 namespace gq::cases {
