@@ -239,3 +239,24 @@ TEST(NoNaNFloat, DistanceToAHeightFieldBeyondTheFloatRangeTerminates) {
 
 }  // namespace
 }  // namespace gq::hardening
+
+namespace gq::hardening {
+namespace {
+
+// Regression (found by fuzz_raycast under UBSan): a heightfield ray whose cell range lies entirely beyond the grid
+// (origin ~1e161 cells away) converted the floor of that position to int64 (undefined behaviour).
+TEST(NoNaNDouble, HeightFieldRayFarBeyondTheGridMissesWithoutOverflow) {
+  using T = double;
+  const Geometry<T> hf = heightFieldGeometry<T>();
+  for (const double far : {1e19, 1e161, 1e300})
+    for (const Vec3<T>& dir : {Vec3<T>::UnitX().eval(), Vec3<T>(T(-1), T(0), T(0)), Vec3<T>(T(0), T(0), T(1))}) {
+      RaycastHit<T> hits[2];
+      std::uint32_t count = 7;
+      ASSERT_TRUE(raycast(Vec3<T>(T(far), T(0.1), T(far)), dir, hf, Transform<T>(), T(1), kDefaultHitFlags, 2u, hits,
+                          count).ok());
+      EXPECT_EQ(count, 0u);
+    }
+}
+
+}  // namespace
+}  // namespace gq::hardening

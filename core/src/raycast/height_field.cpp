@@ -53,8 +53,14 @@ template <class T> void touchedRange(T a, T b, T pad, std::int64_t lo, std::int6
                                      std::int64_t& last) {
   const T f = std::max(T(lo), std::floor(std::min(a, b) - pad));
   const T l = std::min(T(hi), std::floor(std::max(a, b) + pad));
+  // An empty (or NaN) range converts nothing: f can be ~1e161 for far rays, beyond int64 (UB; found by fuzz_raycast).
+  if (!(f <= l)) {
+    first = lo;
+    last = lo - 1;
+    return;
+  }
   first = std::int64_t(f);
-  last = f > l ? first - 1 : std::int64_t(l);
+  last = std::int64_t(l);
 }
 
 // Visits the grid cells (r, c) with r in [rowLo, rowHi], c in [colLo, colHi] that the line crosses during `span`,
