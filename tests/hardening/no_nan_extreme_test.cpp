@@ -260,3 +260,26 @@ TEST(NoNaNDouble, HeightFieldRayFarBeyondTheGridMissesWithoutOverflow) {
 
 }  // namespace
 }  // namespace gq::hardening
+
+namespace gq::hardening {
+namespace {
+
+// Regression (found by fuzz_raycast; exact input in tests/fuzz/known_crashes/fuzz_raycast_heightfield_float_nan.bin):
+// a float ray from y = 1e6 going up past a heightfield returned Ok with a NaN distance.
+TEST(NoNaNFloat, HeightFieldRayFromFarAboveGivesNoNaNHits) {
+  using T = float;
+  const Vec3<T> dir = Vec3<T>(T(1.0191115947815027e-16), T(1), T(-1.3123142572624147e-08)).normalized();
+  for (const T heightScale : {T(1), T(1e-30), T(1e30)})
+    for (const T maxDist : {T(5.28491e-10), T(1), T(1e7)}) {
+      const Geometry<T> hf = HeightFieldGeometry<T>(Cooked<T>::get().heightField, heightScale, T(0.25), T(0.25),
+                                                    MeshGeometryFlag::DoubleSided);
+      RaycastHit<T> hits[6];
+      std::uint32_t count = 0;
+      ASSERT_TRUE(raycast(Vec3<T>(T(6.4375), T(1e6), T(-3.125)), dir, hf, Transform<T>(Vec3<T>(T(1), T(-3.6875), T(3.75))),
+                          maxDist, HitFlag::Position | HitFlag::MeshBothSides, 6u, hits, count).ok());
+      for (std::uint32_t i = 0; i < count; ++i) EXPECT_TRUE(std::isfinite(hits[i].distance) && isFinite(hits[i].position));
+    }
+}
+
+}  // namespace
+}  // namespace gq::hardening

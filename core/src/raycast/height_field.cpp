@@ -216,7 +216,9 @@ template <class T> class HeightFieldRaycaster {
 
   void testTriangle(std::uint32_t tri, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
     TriangleRayHit<T> h;
-    if (intersectRayTriangle(wray_, a, b, c, collector_.limit(), cullBackFaces_, h))
+    // As for meshes: overflowing products give a NaN t that passes t <= limit (float ray from y = 1e6, fuzz_raycast).
+    if (intersectRayTriangle(wray_, a, b, c, collector_.limit(), cullBackFaces_, h) && std::isfinite(h.t) &&
+        std::isfinite(h.u) && std::isfinite(h.v))
       collector_.add({h.t, h.u, h.v, tri, h.frontFace});
   }
 
