@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "gq/cooking.h"
 #include "gq/custom.h"
@@ -326,7 +327,7 @@ class TempDir {
  public:
   TempDir() {
     path_ = std::filesystem::temp_directory_path() /
-            ("gq_bad_input_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+            ("gq_bad_input_" + std::to_string(::getpid()) + "_" +
              ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::create_directories(path_);
   }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unistd.h>
 
 #include "hardening_fixtures.h"
 
@@ -17,7 +18,8 @@ TYPED_TEST_SUITE(BadInputCooking, Scalars);
 
 // Each test writes its files into its own folder under the system temp dir.
 std::filesystem::path scratchFile(const std::string& name, const std::string& bytes) {
-  const auto dir = std::filesystem::temp_directory_path() / "gq_hardening_files";
+  // Per process: ctest runs the float and double instances of a test at the same time.
+  const auto dir = std::filesystem::temp_directory_path() / ("gq_hardening_files_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto path = dir / name;
   std::ofstream(path, std::ios::binary) << bytes;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "robot_paths.h"
 
@@ -16,7 +17,7 @@ TYPED_TEST_SUITE(Approximation, Scalars);
 
 // A 0.4 x 0.2 x 0.1 box mesh centred at (1, 2, 3), as OBJ.
 std::string boxUrdf() {
-  const auto dir = std::filesystem::temp_directory_path() / "gq_urdf_tests";
+  const auto dir = std::filesystem::temp_directory_path() / ("gq_urdf_tests_" + std::to_string(::getpid()));  // per process: ctest runs tests in parallel
   std::filesystem::create_directories(dir);
   std::ofstream obj(dir / "box.obj");
   for (int i = 0; i < 8; ++i)
