@@ -107,8 +107,12 @@ class Builder {
     return m;
   }
 
+  // Clamped in float before the conversion: with extents beyond the float range (scale 0, offsets inf) or tiny ones
+  // (scale inf) the product is NaN or inf, which int() must never see (found by fuzz_raycast under UBSan).
   static int binOf(float c, float lo, float scale) {
-    return std::min(kBins - 1, std::max(0, int((c - lo) * scale)));
+    const float t = (c - lo) * scale;
+    if (!(t > 0.0f)) return 0;
+    return t >= float(kBins - 1) ? kBins - 1 : int(t);
   }
 
   // Reference to the subtree over r; `packet` receives the leaf's packet number when r becomes a leaf.
