@@ -35,6 +35,11 @@ struct TriangleSoup {
   bool doubleSided = false;
 };
 
+// SAT candidate axes (unit) appended to `axes`: the normals of every point triple of `pts`, and the cross products of
+// every edge (point pair) of `a` with every edge of `b`; near-parallel factors give no axis.
+void addTriangleNormals(const std::vector<V3>& pts, std::vector<V3>& axes);
+void addEdgePairAxes(const std::vector<V3>& a, const std::vector<V3>& b, std::vector<V3>& axes);
+
 // Distance between two points sets' convex hulls by brute force over point/segment/triangle pairs.
 Ld hullDistance(const std::vector<V3>& a, const std::vector<V3>& b);
 // Signed distance of the two hulls: distance when apart, minus the penetration depth when they overlap.

@@ -45,29 +45,6 @@ bool differenceIsSolid(const std::vector<V3>& a, const std::vector<V3>& b) {
   return thickness > kFlatFraction * extent;
 }
 
-void addTriangleNormals(const std::vector<V3>& pts, std::vector<V3>& axes) {
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    for (std::size_t j = i + 1; j < pts.size(); ++j)
-      for (std::size_t k = j + 1; k < pts.size(); ++k) {
-        const V3 e0 = pts[j] - pts[i], e1 = pts[k] - pts[i];
-        const V3 n = e0.cross(e1);
-        if (n.norm() > kAxisFraction * e0.norm() * e1.norm()) axes.push_back(n.normalized());
-      }
-}
-
-void addEdgePairAxes(const std::vector<V3>& a, const std::vector<V3>& b, std::vector<V3>& axes) {
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = i + 1; j < a.size(); ++j) {
-      const V3 ea = a[j] - a[i];
-      for (std::size_t k = 0; k < b.size(); ++k)
-        for (std::size_t l = k + 1; l < b.size(); ++l) {
-          const V3 eb = b[l] - b[k];
-          const V3 n = ea.cross(eb);
-          if (n.norm() > kAxisFraction * ea.norm() * eb.norm()) axes.push_back(n.normalized());
-        }
-    }
-}
-
 // Gap between the projections of the two sets on unit axis n (negative: overlap along n).
 Ld projectionGap(const std::vector<V3>& a, const std::vector<V3>& b, const V3& n) {
   Ld minA = kInf, maxA = -kInf, minB = kInf, maxB = -kInf;
@@ -102,6 +79,29 @@ Ld pointToFeatures(const V3& p, const std::vector<V3>& pts) {
 }
 
 }  // namespace
+
+void addTriangleNormals(const std::vector<V3>& pts, std::vector<V3>& axes) {
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (std::size_t j = i + 1; j < pts.size(); ++j)
+      for (std::size_t k = j + 1; k < pts.size(); ++k) {
+        const V3 e0 = pts[j] - pts[i], e1 = pts[k] - pts[i];
+        const V3 n = e0.cross(e1);
+        if (n.norm() > kAxisFraction * e0.norm() * e1.norm()) axes.push_back(n.normalized());
+      }
+}
+
+void addEdgePairAxes(const std::vector<V3>& a, const std::vector<V3>& b, std::vector<V3>& axes) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = i + 1; j < a.size(); ++j) {
+      const V3 ea = a[j] - a[i];
+      for (std::size_t k = 0; k < b.size(); ++k)
+        for (std::size_t l = k + 1; l < b.size(); ++l) {
+          const V3 eb = b[l] - b[k];
+          const V3 n = ea.cross(eb);
+          if (n.norm() > kAxisFraction * ea.norm() * eb.norm()) axes.push_back(n.normalized());
+        }
+    }
+}
 
 Ld pointTriangleDistance(const V3& p, const V3& a, const V3& b, const V3& c) {
   const V3 n = (b - a).cross(c - a);

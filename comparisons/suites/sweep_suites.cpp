@@ -26,39 +26,16 @@ bool isPolytope(Kind k) { return k == Kind::Box || k == Kind::Convex; }
 
 // ---- polytope pairs: slab clipping over the SAT axes of the Minkowski difference ------------------------------
 
-void addTripleNormals(const std::vector<V3>& pts, std::vector<V3>& axes) {
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    for (std::size_t j = i + 1; j < pts.size(); ++j)
-      for (std::size_t k = j + 1; k < pts.size(); ++k) {
-        const V3 n = (pts[j] - pts[i]).cross(pts[k] - pts[i]);
-        if (n.norm() > 1e-12L * (pts[j] - pts[i]).norm() * (pts[k] - pts[i]).norm()) axes.push_back(n.normalized());
-      }
-}
-
-std::vector<V3> edgeDirections(const std::vector<V3>& pts) {
-  std::vector<V3> out;
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    for (std::size_t j = i + 1; j < pts.size(); ++j) out.push_back(pts[j] - pts[i]);
-  return out;
-}
-
-void addCrossAxes(const std::vector<V3>& u, const std::vector<V3>& v, std::vector<V3>& axes) {
-  for (const V3& a : u)
-    for (const V3& b : v) {
-      const V3 n = a.cross(b);
-      if (n.norm() > 1e-12L * a.norm() * b.norm()) axes.push_back(n.normalized());
-    }
-}
-
 SweepToi polytopeToi(const Core& a, const Core& b, const V3& dir, Ld maxDist) {
-  const std::vector<V3> edgesA = edgeDirections(a.points), edgesB = edgeDirections(b.points);
   std::vector<V3> axes;
-  addTripleNormals(a.points, axes);
-  addTripleNormals(b.points, axes);
-  addCrossAxes(edgesA, edgesB, axes);
-  // Facets of the swept segment against M: M's facets and dir x (edges of M), which are edges of A or B.
-  addCrossAxes(std::vector<V3>{dir}, edgesA, axes);
-  addCrossAxes(std::vector<V3>{dir}, edgesB, axes);
+  addTriangleNormals(a.points, axes);
+  addTriangleNormals(b.points, axes);
+  addEdgePairAxes(a.points, b.points, axes);
+  // Facets of the swept segment against M: M's facets and dir x (edges of M), which are edges of A or B; the
+  // segment {0, dir} has dir as its one edge.
+  const std::vector<V3> path = {V3::Zero(), dir};
+  addEdgePairAxes(path, a.points, axes);
+  addEdgePairAxes(path, b.points, axes);
   Ld enter = 0, exit = maxDist, gap = -kInfinity, depthAtStart = kInfinity, cosine = 1;
   for (const V3& axis : axes)
     for (const V3& n : {axis, V3(-axis)}) {
