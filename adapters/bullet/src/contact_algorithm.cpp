@@ -46,7 +46,14 @@ ContactAlgorithm::~ContactAlgorithm() {
 void ContactAlgorithm::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                         const btDispatcherInfo&, btManifoldResult* result) {
   ShapeView va, vb;
-  if (!makeShapeView(body0->getCollisionShape(), va) || !makeShapeView(body1->getCollisionShape(), vb)) return;
+  const bool answerable = isFinite(body0->getWorldTransform()) && isFinite(body1->getWorldTransform()) &&
+                          viewShape(body0->getCollisionShape(), va) == Support::Gq &&
+                          viewShape(body1->getCollisionShape(), vb) == Support::Gq;
+  if (!answerable) {
+    // Bad input (or a shape edited into one gq does not model): no contact, and none kept from earlier frames.
+    if (manifold_ && ownManifold_) manifold_->clearManifold();
+    return;
+  }
   if (!manifold_) {
     manifold_ = m_dispatcher->getNewManifold(body0->getCollisionObject(), body1->getCollisionObject());
     ownManifold_ = true;
@@ -69,8 +76,12 @@ btCollisionAlgorithm* ContactCreateFunc::CreateCollisionAlgorithm(btCollisionAlg
                                                                   const btCollisionObjectWrapper* body0,
                                                                   const btCollisionObjectWrapper* body1) {
   ShapeView va, vb;
-  if (makeShapeView(body0->getCollisionShape(), va) && makeShapeView(body1->getCollisionShape(), vb) &&
-      pairHasGqPath(va.kind, vb.kind)) {
+  const Support a = viewShape(body0->getCollisionShape(), va), b = viewShape(body1->getCollisionShape(), vb);
+  // Invalid shapes get gq's algorithm too: it reports no contact while they stay invalid (Bullet's own algorithms
+  // would report NaN contacts for some, or crash on a hull without points).
+  const bool gqPath = (a == Support::Gq && b == Support::Gq && pairHasGqPath(va.kind, vb.kind)) ||
+                      a == Support::Invalid || b == Support::Invalid;
+  if (gqPath) {
     void* memory = ci.m_dispatcher1->allocateCollisionAlgorithm(sizeof(ContactAlgorithm));
     return new (memory) ContactAlgorithm(ci.m_manifold, ci, body0, body1);
   }

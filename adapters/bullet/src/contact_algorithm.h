@@ -29,7 +29,8 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
   bool ownManifold_;
 };
 
-// Creates a ContactAlgorithm when both shapes convert to gq, otherwise Bullet's own algorithm for the pair.
+// Creates a ContactAlgorithm when both shapes convert to gq or either is bad input (which gets no contact),
+// otherwise Bullet's own algorithm for the pair.
 class ContactCreateFunc final : public btCollisionAlgorithmCreateFunc {
  public:
   ContactCreateFunc(CollisionConfiguration& config, bool closestPoints) : config_(config), closest_(closestPoints) {}

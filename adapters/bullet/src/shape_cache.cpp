@@ -1,10 +1,12 @@
 #include "shape_cache.h"
 
+#include <cmath>
 #include <cstring>
 #include <mutex>
 #include <unordered_map>
 
 #include "gq/bullet/collision_configuration.h"
+#include "gq/tolerances.h"
 
 namespace gq::bullet {
 namespace {
@@ -74,6 +76,14 @@ struct HeightFieldFields : btHeightfieldTerrainShape {
   }
 };
 
+// Dimensions and axis gq can build a grid from, checked before a single sample is read (Bullet trusts them and
+// reads outside the caller's buffer for absurd sizes).
+bool sizedSensibly(const btHeightfieldTerrainShape& s) {
+  const int width = HeightFieldFields::width(s), length = HeightFieldFields::length(s), u = s.getUpAxis();
+  if (u < 0 || u > 2 || width < 2 || length < 2 || !HeightFieldFields::data(s)) return false;
+  return std::uint64_t(width) * std::uint64_t(length) <= tol::kMaxHeightFieldSamples;
+}
+
 struct MeshPart {
   const unsigned char* vertexBase = nullptr;
   int vertexCount = 0, vertexStride = 0, indexStride = 0, triangleCount = 0;
@@ -86,6 +96,18 @@ MeshPart lockPart(const btStridingMeshInterface& mi, int part) {
   mi.getLockedReadOnlyVertexIndexBase(&p.vertexBase, p.vertexCount, p.vertexType, p.vertexStride, &p.indexBase,
                                       p.indexStride, p.triangleCount, p.indexType, part);
   return p;
+}
+
+// Counts, buffers and types Bullet's mesh interfaces can describe; anything else would be read out of bounds.
+bool wellFormed(const MeshPart& p) {
+  const bool knownVertex = p.vertexType == PHY_FLOAT || p.vertexType == PHY_DOUBLE;
+  const int vertexSize = 3 * (p.vertexType == PHY_DOUBLE ? int(sizeof(double)) : int(sizeof(float)));
+  const int indexSize = 3 * (p.indexType == PHY_SHORT ? int(sizeof(short)) : p.indexType == PHY_UCHAR ? 1 : int(sizeof(int)));
+  const bool knownIndex = p.indexType == PHY_SHORT || p.indexType == PHY_UCHAR || p.indexType == PHY_INTEGER;
+  if (!knownVertex || !knownIndex || p.vertexCount < 0 || p.triangleCount < 0) return false;
+  if (p.vertexCount > 0 && (!p.vertexBase || p.vertexStride < vertexSize)) return false;
+  if (p.triangleCount > 0 && (!p.indexBase || p.indexStride < indexSize)) return false;
+  return true;
 }
 
 V3 partVertex(const MeshPart& p, std::uint32_t i) {
@@ -164,13 +186,19 @@ std::shared_ptr<const void> cookHeightFieldShape(const btHeightfieldTerrainShape
 
 }  // namespace
 
-std::shared_ptr<const ConvexMesh<Real>> cachedHull(const btConvexHullShape& shape) {
+Support cachedHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexMesh<Real>>& out) {
   const int n = shape.getNumPoints();
+  if (n <= 0) return Support::Invalid;  // stock Bullet's GJK reads the empty point array (segfault)
   Fingerprint fingerprint;
   fingerprint.add(n);
   const btVector3* points = shape.getUnscaledPoints();
+  bool finite = true;
   for (int i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k) fingerprint.add(points[i][k]);
+    for (int k = 0; k < 3; ++k) {
+      finite = finite && std::isfinite(points[i][k]);
+      fingerprint.add(points[i][k]);
+    }
+  if (!finite) return Support::Invalid;
   auto data = cache().get(&shape, fingerprint.value(), [&]() -> std::shared_ptr<const void> {
     std::vector<V3> pts;
     for (int i = 0; i < n; ++i) pts.push_back(toGq(points[i]));
@@ -178,53 +206,61 @@ std::shared_ptr<const ConvexMesh<Real>> cachedHull(const btConvexHullShape& shap
     if (!cookConvexMesh(pts, hull)) return nullptr;
     return hull;
   });
-  return std::static_pointer_cast<const ConvexMesh<Real>>(data);
+  if (!data) return Support::Bullet;
+  out = std::static_pointer_cast<const ConvexMesh<Real>>(data);
+  return Support::Gq;
 }
 
-std::shared_ptr<const MultiSphereShape> cachedMultiSphere(const btMultiSphereShape& shape) {
-  const btVector3& s = shape.getLocalScaling();
-  if (!(s.x() > 0 && s.x() == s.y() && s.y() == s.z())) return nullptr;  // Bullet scales radii per axis
+Support cachedMultiSphere(const btMultiSphereShape& shape, std::shared_ptr<const MultiSphereShape>& out) {
   const int n = shape.getSphereCount();
+  if (n <= 0) return Support::Invalid;
+  const btVector3& s = shape.getLocalScaling();
   Fingerprint fingerprint;
   fingerprint.add(n).add(s.x());
   for (int i = 0; i < n; ++i) {
+    const btScalar r = shape.getSphereRadius(i);
+    if (!isFinite(shape.getSpherePosition(i)) || !(r > 0) || !std::isfinite(r)) return Support::Invalid;
     for (int k = 0; k < 3; ++k) fingerprint.add(shape.getSpherePosition(i)[k]);
-    fingerprint.add(shape.getSphereRadius(i));
+    fingerprint.add(r);
   }
+  if (!(s.x() > 0 && s.x() == s.y() && s.y() == s.z())) return Support::Bullet;  // Bullet scales radii per axis
   auto data = cache().get(&shape, fingerprint.value(), [&]() -> std::shared_ptr<const void> {
     std::vector<V3> centres;
     std::vector<Real> radii;
     for (int i = 0; i < n; ++i) {
-      if (!(shape.getSphereRadius(i) > 0)) return nullptr;
       centres.push_back(toGq(shape.getSpherePosition(i) * s.x()));
       radii.push_back(shape.getSphereRadius(i) * s.x());
     }
-    if (centres.empty()) return nullptr;
     return std::make_shared<MultiSphereShape>(std::move(centres), std::move(radii));
   });
-  return std::static_pointer_cast<const MultiSphereShape>(data);
+  out = std::static_pointer_cast<const MultiSphereShape>(data);
+  return Support::Gq;
 }
 
-bool cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
+Support cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
   Fingerprint fingerprint;
   fingerprint.add(mi.getNumSubParts());
+  bool wellFormedParts = mi.getNumSubParts() > 0;
   for (int part = 0; part < mi.getNumSubParts(); ++part) {
     const MeshPart p = lockPart(mi, part);
+    wellFormedParts = wellFormedParts && wellFormed(p);
     fingerprint.add(double(reinterpret_cast<std::uintptr_t>(p.vertexBase)))
         .add(double(reinterpret_cast<std::uintptr_t>(p.indexBase)))
         .add(p.vertexCount)
         .add(p.triangleCount);
     mi.unLockReadOnlyVertexBase(part);
   }
+  if (!wellFormedParts) return Support::Invalid;
   auto data = cache().get(&mi, fingerprint.value(), [&] { return cookMesh(mi); });
-  if (!data) return false;
+  if (!data) return Support::Invalid;
   out = *static_cast<const CookedMesh*>(data.get());
-  return true;
+  return Support::Gq;
 }
 
-bool cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out) {
+Support cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out) {
   const btVector3& s = shape.getLocalScaling();
-  if (!HeightFieldFields::plainQuads(shape) || !(s.x() > 0 && s.y() > 0 && s.z() > 0)) return false;
+  if (!sizedSensibly(shape) || !isUsableScaling(s)) return Support::Invalid;
+  if (!HeightFieldFields::plainQuads(shape) || !(s.x() > 0 && s.y() > 0 && s.z() > 0)) return Support::Bullet;
   Fingerprint fingerprint;
   fingerprint.add(double(reinterpret_cast<std::uintptr_t>(HeightFieldFields::data(shape))))
       .add(HeightFieldFields::width(shape))
@@ -234,9 +270,9 @@ bool cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField
       .add(s.y())
       .add(s.z());
   auto data = cache().get(&shape, fingerprint.value(), [&] { return cookHeightFieldShape(shape); });
-  if (!data) return false;
+  if (!data) return Support::Invalid;  // a non-finite height (cooking checks every sample)
   out = *static_cast<const CookedHeightField*>(data.get());
-  return true;
+  return Support::Gq;
 }
 
 void clearShapeCache() { cache().clear(); }

@@ -12,20 +12,27 @@
 #include "bt_convert.h"
 #include "gq/cooking.h"
 #include "multi_sphere.h"
+#include "support.h"
 
 namespace gq::bullet {
 
-// Hull of the unscaled points (the shape's local scaling becomes the gq MeshScale). Null if qhull refuses them.
-std::shared_ptr<const ConvexMesh<Real>> cachedHull(const btConvexHullShape& shape);
+// Each lookup answers Gq with `out` filled, Bullet (valid data gq does not model) or Invalid (bad input).
 
-// The hull of the spheres at the shape's (uniform) local scaling; null for non-uniform scaling or a radius <= 0.
-std::shared_ptr<const MultiSphereShape> cachedMultiSphere(const btMultiSphereShape& shape);
+// Hull of the unscaled points (the shape's local scaling becomes the gq MeshScale). Invalid for no points or a
+// non-finite one; Bullet when qhull refuses the points (fewer than 4, coplanar: Bullet rounds them by its margin).
+Support cachedHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexMesh<Real>>& out);
+
+// The hull of the spheres at the shape's (uniform) local scaling. Invalid for no spheres, a radius <= 0 or a
+// non-finite number; Bullet for non-uniform or negative scaling.
+Support cachedMultiSphere(const btMultiSphereShape& shape, std::shared_ptr<const MultiSphereShape>& out);
 
 struct CookedMesh {
   std::shared_ptr<const TriangleMesh<Real>> mesh;              // unscaled vertices, all sub-parts concatenated
   std::shared_ptr<const std::vector<std::uint32_t>> partStarts;  // first triangle of each sub-part
 };
-bool cachedMesh(const btStridingMeshInterface& meshInterface, CookedMesh& out);
+// Invalid for a malformed sub-part (negative counts, null buffers, unknown types) and for every mesh gq's cooking
+// refuses: no triangles, all degenerate, an index past the vertex count, a non-finite vertex.
+Support cachedMesh(const btStridingMeshInterface& meshInterface, CookedMesh& out);
 
 struct CookedHeightField {
   std::shared_ptr<const HeightField<Real>> heightField;  // heights already scaled and centred as Bullet does
@@ -33,7 +40,9 @@ struct CookedHeightField {
   Pose localPose;              // gq grid frame in the Bullet shape frame (axis permutation + centring offset)
   bool rowsAreX = true;        // gq rows follow Bullet's first grid index
 };
-// False for layouts gq's grid does not reproduce (flipped, diamond or zigzag quad edges; non-positive scaling).
-bool cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out);
+// Bullet for layouts gq's grid does not reproduce (flipped, diamond or zigzag quad edges; negative scaling).
+// Invalid, checked before any sample is read: fewer than 2 x 2 samples, more than kMaxHeightFieldSamples, an up
+// axis outside 0..2, no height data, a zero or non-finite scaling; and a non-finite height (found at cooking).
+Support cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out);
 
 }  // namespace gq::bullet

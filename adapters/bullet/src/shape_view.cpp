@@ -1,5 +1,8 @@
 #include "shape_view.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
@@ -23,69 +26,108 @@ Quat<Real> xToAxis(int upAxis) {
   return Quat<Real>::FromTwoVectors(V3::UnitX(), axis);
 }
 
-bool viewCapsule(const btCapsuleShape& s, ShapeView& v) {
-  v.geom = CapsuleGeometry<Real>(s.getRadius(), s.getHalfHeight());
-  v.localPose = Pose(V3::Zero(), xToAxis(s.getUpAxis()));
-  v.size = s.getRadius() + s.getHalfHeight();
-  return true;
+bool positive(Real x) { return std::isfinite(x) && x > Real(0); }
+Support supportIf(bool valid) { return valid ? Support::Gq : Support::Invalid; }
+
+Support viewSphere(const btSphereShape& s, ShapeView& v) {
+  const Real r = s.getRadius();  // includes the local scaling
+  if (!positive(r)) return Support::Invalid;
+  v.geom = SphereGeometry<Real>(r);
+  v.size = r;
+  return Support::Gq;
 }
 
-bool viewCylinder(const btCylinderShape& s, ShapeView& v) {
+Support viewCapsule(const btCapsuleShape& s, ShapeView& v) {
+  const Real r = s.getRadius(), h = s.getHalfHeight();
+  if (!positive(r) || !std::isfinite(h) || h < Real(0)) return Support::Invalid;
+  v.geom = CapsuleGeometry<Real>(r, h);
+  v.localPose = Pose(V3::Zero(), xToAxis(s.getUpAxis()));
+  v.size = r + h;
+  return Support::Gq;
+}
+
+Support viewBox(const btBoxShape& s, ShapeView& v) {
+  const V3 he = toGq(s.getHalfExtentsWithMargin());
+  if (!positive(he.x()) || !positive(he.y()) || !positive(he.z())) return Support::Invalid;
+  v.geom = BoxGeometry<Real>(he);
+  v.size = he.maxCoeff();
+  return Support::Gq;
+}
+
+// makeCylinder / makeCone refuse radii and heights that are not finite and positive.
+Support viewCylinder(const btCylinderShape& s, ShapeView& v) {
   const Real halfHeight = s.getHalfExtentsWithMargin()[s.getUpAxis()];
   CustomGeometry<Real> cylinder;
-  if (!makeCylinder(s.getRadius(), halfHeight, cylinder)) return false;
+  if (!makeCylinder(s.getRadius(), halfHeight, cylinder)) return Support::Invalid;
   v.geom = cylinder;
   v.localPose = Pose(V3::Zero(), xToAxis(s.getUpAxis()));
   v.size = std::max(s.getRadius(), halfHeight);
-  return true;
+  return Support::Gq;
 }
 
 // Bullet's cone is centred on its axis midpoint with the apex at +height/2 along the up axis, as gq's (along X).
-bool viewCone(const btConeShape& s, ShapeView& v) {
+Support viewCone(const btConeShape& s, ShapeView& v) {
   CustomGeometry<Real> cone;
-  if (!makeCone(s.getRadius(), s.getHeight() / 2, cone)) return false;
+  if (!makeCone(s.getRadius(), s.getHeight() / 2, cone)) return Support::Invalid;
   v.geom = cone;
   v.localPose = Pose(V3::Zero(), xToAxis(s.getConeUpIndex()));
   v.margin = s.getMargin();
   v.size = std::max(s.getRadius(), s.getHeight() / 2);
-  return true;
+  return Support::Gq;
 }
 
-bool viewHull(const btConvexHullShape& s, ShapeView& v) {
-  auto hull = cachedHull(s);
-  if (!hull) return false;
+Support viewHull(const btConvexHullShape& s, ShapeView& v) {
+  std::shared_ptr<const ConvexMesh<Real>> hull;
+  const Support support = cachedHull(s, hull);
+  if (support != Support::Gq) return support;
   const V3 scale = toGq(s.getLocalScaling());
+  if ((scale.array() < Real(0)).any()) return Support::Bullet;  // a mirrored hull: gq takes positive convex scales
   v.geom = ConvexMeshGeometry<Real>(hull, MeshScale<Real>(scale));
   v.margin = s.getMargin();
   v.size = (hull->localBounds.extents().cwiseProduct(scale.cwiseAbs())).maxCoeff();
-  return true;
+  return Support::Gq;
+}
+
+Support viewMultiSphere(const btMultiSphereShape& s, ShapeView& v) {
+  std::shared_ptr<const MultiSphereShape> spheres;
+  const Support support = cachedMultiSphere(s, spheres);
+  if (support != Support::Gq) return support;
+  v.size = spheres->localBounds().extents().maxCoeff();
+  v.geom = CustomGeometry<Real>(std::move(spheres));
+  return Support::Gq;
 }
 
 // btStaticPlaneShape is the plane dot(n, x) = c; gq's plane is x = 0 with normal +X.
-bool viewPlane(const btStaticPlaneShape& s, ShapeView& v) {
-  const V3 n = toGq(s.getPlaneNormal()).normalized();
+Support viewPlane(const btStaticPlaneShape& s, ShapeView& v) {
+  const V3 normal = toGq(s.getPlaneNormal());
+  const Real length = normal.norm();
+  if (!positive(length) || !std::isfinite(s.getPlaneConstant())) return Support::Invalid;
+  const V3 n = normal / length;
   v.geom = PlaneGeometry<Real>();
   v.localPose = Pose(n * s.getPlaneConstant(), Quat<Real>::FromTwoVectors(V3::UnitX(), n));
   v.kind = ShapeKind::Plane;
   v.margin = s.getMargin();
-  return true;
+  return Support::Gq;
 }
 
-bool viewMesh(const btTriangleMeshShape& s, const btVector3& extraScale, ShapeView& v) {
+Support viewMesh(const btTriangleMeshShape& s, const btVector3& extraScale, ShapeView& v) {
   CookedMesh cooked;
-  if (!cachedMesh(*s.getMeshInterface(), cooked)) return false;
+  if (!isUsableScaling(extraScale) || !s.getMeshInterface()) return Support::Invalid;
+  const Support support = cachedMesh(*s.getMeshInterface(), cooked);
+  if (support != Support::Gq) return support;
   const V3 scale = toGq(s.getLocalScaling()).cwiseProduct(toGq(extraScale));
   v.geom = TriangleMeshGeometry<Real>(cooked.mesh, MeshScale<Real>(scale));
   v.partStarts = cooked.partStarts;
   v.kind = ShapeKind::Mesh;
   v.margin = s.getMargin();
   v.size = (cooked.mesh->localBounds.extents().cwiseProduct(scale.cwiseAbs())).maxCoeff();
-  return true;
+  return Support::Gq;
 }
 
-bool viewHeightField(const btHeightfieldTerrainShape& s, ShapeView& v) {
+Support viewHeightField(const btHeightfieldTerrainShape& s, ShapeView& v) {
   CookedHeightField cooked;
-  if (!cachedHeightField(s, cooked)) return false;
+  const Support support = cachedHeightField(s, cooked);
+  if (support != Support::Gq) return support;
   v.geom = HeightFieldGeometry<Real>(cooked.heightField, Real(1), cooked.rowScale, cooked.columnScale);
   v.localPose = cooked.localPose;
   v.kind = ShapeKind::HeightField;
@@ -93,7 +135,30 @@ bool viewHeightField(const btHeightfieldTerrainShape& s, ShapeView& v) {
   v.heightFieldRowsAreX = cooked.rowsAreX;
   v.margin = s.getMargin();
   v.size = std::max(cooked.rowScale, cooked.columnScale);
-  return true;
+  return Support::Gq;
+}
+
+// The shape's own view, before the checks every view must pass.
+Support viewByType(const btCollisionShape* shape, ShapeView& v) {
+  switch (shape->getShapeType()) {
+    case SPHERE_SHAPE_PROXYTYPE: return viewSphere(*static_cast<const btSphereShape*>(shape), v);
+    case CAPSULE_SHAPE_PROXYTYPE: return viewCapsule(*static_cast<const btCapsuleShape*>(shape), v);
+    case BOX_SHAPE_PROXYTYPE: return viewBox(*static_cast<const btBoxShape*>(shape), v);
+    case CONVEX_HULL_SHAPE_PROXYTYPE: return viewHull(*static_cast<const btConvexHullShape*>(shape), v);
+    case CYLINDER_SHAPE_PROXYTYPE: return viewCylinder(*static_cast<const btCylinderShape*>(shape), v);
+    case CONE_SHAPE_PROXYTYPE: return viewCone(*static_cast<const btConeShape*>(shape), v);
+    case MULTI_SPHERE_SHAPE_PROXYTYPE: return viewMultiSphere(*static_cast<const btMultiSphereShape*>(shape), v);
+    case STATIC_PLANE_PROXYTYPE: return viewPlane(*static_cast<const btStaticPlaneShape*>(shape), v);
+    case TRIANGLE_MESH_SHAPE_PROXYTYPE:
+      return viewMesh(*static_cast<const btTriangleMeshShape*>(shape), btVector3(1, 1, 1), v);
+    case SCALED_TRIANGLE_MESH_SHAPE_PROXYTYPE: {
+      const auto* scaled = static_cast<const btScaledBvhTriangleMeshShape*>(shape);
+      if (!scaled->getChildShape()) return Support::Invalid;
+      return viewMesh(*scaled->getChildShape(), scaled->getLocalScaling(), v);
+    }
+    case TERRAIN_SHAPE_PROXYTYPE: return viewHeightField(*static_cast<const btHeightfieldTerrainShape*>(shape), v);
+    default: return Support::Bullet;
+  }
 }
 
 }  // namespace
@@ -125,55 +190,18 @@ bool isGqShapeType(int t) {
          t == SCALED_TRIANGLE_MESH_SHAPE_PROXYTYPE || t == TERRAIN_SHAPE_PROXYTYPE;
 }
 
-bool makeShapeView(const btCollisionShape* shape, ShapeView& v) {
-  if (!shape) return false;
+Support viewShape(const btCollisionShape* shape, ShapeView& v) {
+  if (!shape) return Support::Invalid;
   v = ShapeView();
-  switch (shape->getShapeType()) {
-    case SPHERE_SHAPE_PROXYTYPE: {
-      const Real r = static_cast<const btSphereShape*>(shape)->getRadius();
-      v.geom = SphereGeometry<Real>(r);
-      v.size = r;
-      break;
-    }
-    case CAPSULE_SHAPE_PROXYTYPE:
-      if (!viewCapsule(*static_cast<const btCapsuleShape*>(shape), v)) return false;
-      break;
-    case BOX_SHAPE_PROXYTYPE: {
-      const V3 he = toGq(static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin());
-      v.geom = BoxGeometry<Real>(he);
-      v.size = he.maxCoeff();
-      break;
-    }
-    case CONVEX_HULL_SHAPE_PROXYTYPE:
-      if (!viewHull(*static_cast<const btConvexHullShape*>(shape), v)) return false;
-      break;
-    case CYLINDER_SHAPE_PROXYTYPE:
-      if (!viewCylinder(*static_cast<const btCylinderShape*>(shape), v)) return false;
-      break;
-    case CONE_SHAPE_PROXYTYPE:
-      if (!viewCone(*static_cast<const btConeShape*>(shape), v)) return false;
-      break;
-    case MULTI_SPHERE_SHAPE_PROXYTYPE: {
-      auto spheres = cachedMultiSphere(*static_cast<const btMultiSphereShape*>(shape));
-      if (!spheres) return false;
-      v.size = spheres->localBounds().extents().maxCoeff();
-      v.geom = CustomGeometry<Real>(std::move(spheres));
-      break;
-    }
-    case STATIC_PLANE_PROXYTYPE:
-      return viewPlane(*static_cast<const btStaticPlaneShape*>(shape), v);
-    case TRIANGLE_MESH_SHAPE_PROXYTYPE:
-      return viewMesh(*static_cast<const btTriangleMeshShape*>(shape), btVector3(1, 1, 1), v);
-    case SCALED_TRIANGLE_MESH_SHAPE_PROXYTYPE: {
-      const auto* scaled = static_cast<const btScaledBvhTriangleMeshShape*>(shape);
-      return viewMesh(*scaled->getChildShape(), scaled->getLocalScaling(), v);
-    }
-    case TERRAIN_SHAPE_PROXYTYPE:
-      return viewHeightField(*static_cast<const btHeightfieldTerrainShape*>(shape), v);
-    default:
-      return false;
-  }
-  return validateGeometry(v.geom).ok() && v.size > Real(0);
+  // A margin that rounds the shape must be a length; every shape's scaling must be finite without a zero factor.
+  if (!isUsableScaling(shape->getLocalScaling()) || !std::isfinite(shape->getMargin()) ||
+      shape->getMargin() < Real(0))
+    return isGqShapeType(shape->getShapeType()) ? Support::Invalid : Support::Bullet;
+  const Support support = viewByType(shape, v);
+  if (support != Support::Gq) return support;
+  // Whatever the checks above missed (e.g. sizes whose products overflow) the core's validation catches.
+  const bool sized = v.kind != ShapeKind::Convex || positive(v.size);
+  return supportIf(sized && validateGeometry(v.geom).ok() && std::isfinite(v.margin));
 }
 
 }  // namespace gq::bullet

@@ -10,6 +10,7 @@
 
 #include "bt_convert.h"
 #include "gq/geometry.h"
+#include "support.h"
 
 namespace gq::bullet {
 
@@ -39,11 +40,14 @@ struct ShapeView {
   }
 };
 
-// Whether gq models this proxy type at all (a given shape may still be refused by makeShapeView).
+// Whether gq models this proxy type at all (a given shape may still be refused by viewShape).
 bool isGqShapeType(int proxyType);
 bool isGqConvexType(int proxyType);
 
-// Fills `view` for a supported shape with supported parameters; false leaves Bullet's algorithms in charge.
-bool makeShapeView(const btCollisionShape* shape, ShapeView& view);
+// Gq: `view` is filled. Bullet: valid parameters gq does not model, Bullet's algorithms stay in charge. Invalid:
+// bad input (a null shape, non-finite numbers, sizes or scaling factors <= 0 or non-finite, a hull without points,
+// an empty or degenerate mesh, an absurd heightfield): nothing is reported for the shape. `view` is unspecified
+// unless Gq.
+Support viewShape(const btCollisionShape* shape, ShapeView& view);
 
 }  // namespace gq::bullet

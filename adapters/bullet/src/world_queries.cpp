@@ -3,6 +3,8 @@
 #include <BulletCollision/CollisionShapes/btConvexShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 
+#include <cmath>
+
 #include "gq/bullet/collision_world.h"
 #include "gq/query.h"
 #include "shape_view.h"
@@ -23,6 +25,48 @@ void prepareRay(btBroadphaseRayCallback& cb, const btVector3& from, const btVect
   }
   cb.m_lambda_max = dir.dot(to - from);
 }
+
+// Bullet's own per-object tests answer for the shapes gq leaves to Bullet; these pass their results on to the
+// host's callback only when finite, so a gq world never hands a NaN fraction, normal or point to a callback.
+class FiniteRayResults final : public RayCallback {
+ public:
+  explicit FiniteRayResults(RayCallback& host) : host_(host) {
+    m_closestHitFraction = host.m_closestHitFraction;
+    m_collisionFilterGroup = host.m_collisionFilterGroup;
+    m_collisionFilterMask = host.m_collisionFilterMask;
+    m_flags = host.m_flags;
+  }
+  bool needsCollision(btBroadphaseProxy* proxy) const override { return host_.needsCollision(proxy); }
+  btScalar addSingleResult(btCollisionWorld::LocalRayResult& r, bool normalInWorldSpace) override {
+    if (!std::isfinite(r.m_hitFraction) || !isFinite(r.m_hitNormalLocal)) return m_closestHitFraction;
+    const btScalar answer = host_.addSingleResult(r, normalInWorldSpace);
+    m_closestHitFraction = host_.m_closestHitFraction;
+    return answer;
+  }
+
+ private:
+  RayCallback& host_;
+};
+
+class FiniteSweepResults final : public SweepCallback {
+ public:
+  explicit FiniteSweepResults(SweepCallback& host) : host_(host) {
+    m_closestHitFraction = host.m_closestHitFraction;
+    m_collisionFilterGroup = host.m_collisionFilterGroup;
+    m_collisionFilterMask = host.m_collisionFilterMask;
+  }
+  bool needsCollision(btBroadphaseProxy* proxy) const override { return host_.needsCollision(proxy); }
+  btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool normalInWorldSpace) override {
+    if (!std::isfinite(r.m_hitFraction) || !isFinite(r.m_hitNormalLocal) || !isFinite(r.m_hitPointLocal))
+      return m_closestHitFraction;
+    const btScalar answer = host_.addSingleResult(r, normalInWorldSpace);
+    m_closestHitFraction = host_.m_closestHitFraction;
+    return answer;
+  }
+
+ private:
+  SweepCallback& host_;
+};
 
 bool isSurface(const ShapeView& v) { return v.kind == ShapeKind::Mesh || v.kind == ShapeKind::HeightField; }
 
@@ -60,16 +104,25 @@ bool castRay(const V3& origin, const V3& dir, Real maxDist, const ShapeView& vie
   return true;
 }
 
+// Whether gq answers for every child of a compound (bad children are answered too: they report nothing).
+bool answeredByGq(const btCompoundShape& compound) {
+  ShapeView view;
+  for (int i = 0; i < compound.getNumChildShapes(); ++i)
+    if (viewShape(compound.getChildShape(i), view) == Support::Bullet) return false;
+  return true;
+}
+
 class RayVisitor final : public btBroadphaseRayCallback {
  public:
   // The ray against one gq shape at `world`; `child` >= 0 names a compound child (reported as Bullet does: part -1,
-  // triangle index = child index). False when the shape has no gq view.
+  // triangle index = child index). False when Bullet answers for the shape; bad input is answered: no hit.
   bool shapeRay(btCollisionObject* object, const btCollisionShape* shape, const btTransform& world, int child) {
     ShapeView view;
-    if (!makeShapeView(shape, view)) return false;
+    const Support support = viewShape(shape, view);
+    if (support != Support::Gq) return support == Support::Invalid;
+    if (!isFinite(world)) return true;
     const V3 delta = toGq(to_ - from_);
     const Real length = delta.norm();
-    if (!(length > Real(0))) return false;
     const bool twoSided = (cb_.m_flags & btTriangleRaycastCallback::kF_FilterBackfaces) == 0;
     const Pose pose = toGq(world) * view.localPose;
     Hit hit;
@@ -86,11 +139,9 @@ class RayVisitor final : public btBroadphaseRayCallback {
     return true;
   }
 
-  // A compound whose children all have gq views (one level; nested compounds go to Bullet).
+  // A compound whose children all have gq views or are bad input (one level; nested compounds go to Bullet).
   bool compoundRay(btCollisionObject* object, const btCompoundShape* compound) {
-    ShapeView view;
-    for (int i = 0; i < compound->getNumChildShapes(); ++i)
-      if (!makeShapeView(compound->getChildShape(i), view)) return false;
+    if (!answeredByGq(*compound)) return false;
     for (int i = 0; i < compound->getNumChildShapes(); ++i)
       shapeRay(object, compound->getChildShape(i), object->getWorldTransform() * compound->getChildTransform(i), i);
     return true;
@@ -110,7 +161,8 @@ class RayVisitor final : public btBroadphaseRayCallback {
     const btCollisionShape* shape = object->getCollisionShape();
     if (shape->isCompound() ? !compoundRay(object, static_cast<const btCompoundShape*>(shape))
                             : !shapeRay(object, shape, object->getWorldTransform(), -1)) {
-      btCollisionWorld::rayTestSingle(fromT_, toT_, object, shape, object->getWorldTransform(), cb_);
+      FiniteRayResults finite(cb_);
+      btCollisionWorld::rayTestSingle(fromT_, toT_, object, shape, object->getWorldTransform(), finite);
     }
     return true;
   }
@@ -127,7 +179,7 @@ class SweepVisitor final : public btBroadphaseRayCallback {
                btScalar allowedPenetration)
       : cast_(cast), from_(from), to_(to), cb_(cb), allowed_(allowedPenetration) {
     // gq sweeps spheres, capsules, boxes and hulls; custom cast shapes (cylinder, cone, multi-sphere) go to Bullet.
-    castOk_ = makeShapeView(cast, castView_) && castView_.kind == ShapeKind::Convex &&
+    castOk_ = viewShape(cast, castView_) == Support::Gq && castView_.kind == ShapeKind::Convex &&
               castView_.geom.type() != GeometryType::Custom;
     prepareRay(*this, from.getOrigin(), to.getOrigin());
   }
@@ -139,18 +191,24 @@ class SweepVisitor final : public btBroadphaseRayCallback {
     const bool handled = castOk_ && (shape->isCompound()
                                          ? compoundSweep(object, static_cast<const btCompoundShape*>(shape))
                                          : shapeSweep(object, shape, object->getWorldTransform(), -1));
-    if (!handled)
-      btCollisionWorld::objectQuerySingle(cast_, from_, to_, object, shape, object->getWorldTransform(), cb_, allowed_);
+    if (!handled) {
+      FiniteSweepResults finite(cb_);
+      btCollisionWorld::objectQuerySingle(cast_, from_, to_, object, shape, object->getWorldTransform(), finite,
+                                          allowed_);
+    }
     return true;
   }
 
   // The cast shape swept against one gq shape at `world` (`child` >= 0: a compound child, reported as Bullet
-  // does). False when the target has no gq view or the sweep has no length.
+  // does). False when Bullet answers for the target or the sweep has no length; a bad target is answered: no hit.
   bool shapeSweep(btCollisionObject* object, const btCollisionShape* shape, const btTransform& world, int child) {
     ShapeView target;
     const V3 delta = toGq(to_.getOrigin() - from_.getOrigin());
     const Real length = delta.norm();
-    if (!(length > Real(0)) || !makeShapeView(shape, target)) return false;
+    if (!(length > Real(0))) return false;
+    const Support support = viewShape(shape, target);
+    if (support != Support::Gq) return support == Support::Invalid;
+    if (!isFinite(world)) return true;
     HitFlags flags = HitFlag::Position | HitFlag::Normal | HitFlag::FaceIndex;
     if (isSurface(target)) flags |= HitFlag::MeshBothSides;
     SweepHit<Real> hit;
@@ -175,11 +233,9 @@ class SweepVisitor final : public btBroadphaseRayCallback {
     return true;
   }
 
-  // A compound whose children all have gq views (one level; others go to Bullet).
+  // A compound whose children all have gq views or are bad input (one level; others go to Bullet).
   bool compoundSweep(btCollisionObject* object, const btCompoundShape* compound) {
-    ShapeView view;
-    for (int i = 0; i < compound->getNumChildShapes(); ++i)
-      if (!makeShapeView(compound->getChildShape(i), view)) return false;
+    if (!answeredByGq(*compound)) return false;
     if ((to_.getOrigin() - from_.getOrigin()).fuzzyZero()) return false;
     for (int i = 0; i < compound->getNumChildShapes(); ++i)
       shapeSweep(object, compound->getChildShape(i), object->getWorldTransform() * compound->getChildTransform(i), i);
@@ -201,14 +257,20 @@ btBroadphaseInterface* broadphaseOf(const btCollisionWorld& world) {
 
 }  // namespace
 
+// Bullet's convention for bad input, kept by gq: a ray with a non-finite end or no length, a sweep with a
+// non-finite pose, no cast shape or a bad one reports no hit and leaves the callback untouched.
 void gqRayTest(const btCollisionWorld& world, const btVector3& from, const btVector3& to, RayCallback& cb) {
+  if (!isFinite(from) || !isFinite(to) || !isFinite(to - from) || from == to) return;
   RayVisitor visitor(from, to, cb);
   broadphaseOf(world)->rayTest(from, to, visitor);
 }
 
 void gqConvexSweepTest(const btCollisionWorld& world, const btConvexShape* castShape, const btTransform& from,
                        const btTransform& to, SweepCallback& cb, btScalar allowedCcdPenetration) {
-  if (!castShape) return;
+  ShapeView castView;
+  if (!castShape || !isFinite(from) || !isFinite(to) || !isFinite(to.getOrigin() - from.getOrigin()) ||
+      viewShape(castShape, castView) == Support::Invalid)
+    return;
   // The broadphase walks the swept box of the cast shape's bounds at the `from` rotation.
   btTransform rotation(from.getBasis(), btVector3(0, 0, 0));
   btVector3 aabbMin, aabbMax;
