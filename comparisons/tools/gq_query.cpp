@@ -1,4 +1,4 @@
-// gq-query [--backend gq|fcl|fcl-indep|libccd|libccd-mpr|embree|bullet] [--repeat N] CASES.jsonl > RESULTS.jsonl  (format: /work/shared/CASES.md)
+// gq-query [--backend gq|fcl|fcl-indep|libccd|libccd-mpr|embree|bullet|gq-fcl|gq-bullet] [--repeat N] CASES.jsonl > RESULTS.jsonl  (format: /work/shared/CASES.md)
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -26,9 +26,10 @@ int main(int argc, char** argv) {
   if (backendName == "fcl" && fclSolver == "indep") backendName = "fcl-indep";
   std::ios::sync_with_stdio(false);
   std::string error;
-  if (backendName == "bullet") {  // Bullet's float and float64 builds run as two helper programs
+  // Bullet's float and float64 builds (and the adapter over each) run as two helper programs.
+  if (backendName == "bullet" || backendName == "gq-bullet") {
     const std::string toolDir = std::filesystem::canonical("/proc/self/exe").parent_path().string();
-    if (!gq::cases::runBulletForwarded(toolDir, casesPath, repeat, std::cout, error)) {
+    if (!gq::cases::runBulletForwarded(toolDir, backendName, casesPath, repeat, std::cout, error)) {
       std::cerr << "gq-query: " << error << '\n';
       return 1;
     }

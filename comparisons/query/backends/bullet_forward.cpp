@@ -52,10 +52,11 @@ bool isOtherPrecision(const std::string& line) {
 
 }  // namespace
 
-bool runBulletForwarded(const std::string& toolDir, const std::string& casesPath, int repeat, std::ostream& out,
-                        std::string& error) {
+bool runBulletForwarded(const std::string& toolDir, const std::string& backend, const std::string& casesPath,
+                        int repeat, std::ostream& out, std::string& error) {
   std::vector<std::string> floatLines, doubleLines;
-  const std::string args = " --repeat " + std::to_string(repeat) + " " + shellQuote(casesPath);
+  const std::string args =
+      " --backend " + shellQuote(backend) + " --repeat " + std::to_string(repeat) + " " + shellQuote(casesPath);
   if (!readLines(shellQuote(toolDir + "/gq-query-bullet") + args, floatLines, error)) return false;
   if (!readLines(shellQuote(toolDir + "/gq-query-bullet64") + args, doubleLines, error)) return false;
   if (floatLines.size() != doubleLines.size()) {
