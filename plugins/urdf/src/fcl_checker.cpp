@@ -9,14 +9,18 @@
 
 #include "gq/cooking.h"
 #include "gq/custom_shapes.h"
+#include "kinematic_chain.h"
 
 namespace gq::urdf {
 
 struct FclSelfCollisionChecker::Impl {
   std::shared_ptr<const RobotModel<double>> model;
+  std::unique_ptr<detail::KinematicChain<double>> chain;        // the same compiled kinematics as gq's checker
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;  // one per shape
-  std::vector<fcl::Transform3d> offsets;                         // gq shape frame -> FCL geometry frame
-  std::vector<Transform<double>> linkPoses;
+  std::vector<std::uint32_t> shapeBody;                         // rigid body carrying each shape
+  std::vector<fcl::Transform3d> inBody;                         // FCL geometry frame in its body's frame
+  std::vector<Mat3<double>> bodyRotations;
+  std::vector<Vec3<double>> bodyPositions;
   std::vector<fcl::AABBd> linkBounds;
 };
 
@@ -79,13 +83,15 @@ Status FclSelfCollisionChecker::create(std::shared_ptr<const RobotModel<double>>
   if (!model) return Status::invalid("FCL checker needs a model");
   auto impl = std::make_unique<Impl>();
   impl->model = model;
+  impl->chain = std::make_unique<detail::KinematicChain<double>>(*model);
   for (const auto& shape : model->shapes) {
     std::shared_ptr<fcl::CollisionGeometryd> geom;
     fcl::Transform3d offset;
     Status s = toFcl(shape, geom, offset);
     if (!s.ok()) return s;
     impl->objects.push_back(std::make_unique<fcl::CollisionObjectd>(geom));
-    impl->offsets.push_back(offset);
+    impl->shapeBody.push_back(impl->chain->bodyOf(shape.link));
+    impl->inBody.push_back(toIsometry(impl->chain->linkInBody(shape.link) * shape.origin) * offset);
   }
   impl->linkBounds.resize(model->links.size());
   out.reset(new FclSelfCollisionChecker(std::move(impl)));
@@ -96,13 +102,17 @@ Status FclSelfCollisionChecker::checkSelfCollision(const std::vector<double>& q,
                                                    const CollisionRequest& request) {
   Impl& m = *impl_;
   const RobotModel<double>& model = *m.model;
-  Status s = forwardKinematics(model, q, m.linkPoses);
+  Status s = m.chain->place(q, m.bodyRotations, m.bodyPositions);
   if (!s.ok()) return s;
   for (std::uint32_t l = 0; l < model.links.size(); ++l) {
     bool first = true;
     for (std::uint32_t i : model.links[l].shapes) {
-      const Shape<double>& shape = model.shapes[i];
-      m.objects[i]->setTransform(toIsometry(m.linkPoses[l] * shape.origin) * m.offsets[i]);
+      fcl::Transform3d pose = fcl::Transform3d::Identity();
+      const std::uint32_t b = m.shapeBody[i];
+      pose.linear().noalias() = m.bodyRotations[b] * m.inBody[i].linear();
+      pose.translation().noalias() = m.bodyRotations[b] * m.inBody[i].translation();
+      pose.translation() += m.bodyPositions[b];
+      m.objects[i]->setTransform(pose);
       m.objects[i]->computeAABB();
       if (first) m.linkBounds[l] = m.objects[i]->getAABB();
       else m.linkBounds[l] += m.objects[i]->getAABB();

@@ -1,6 +1,9 @@
 #pragma once
 // Internal pieces of the URDF plugin shared between its source files.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -55,17 +58,38 @@ template <class T> Mat3<double> principalAxes(const std::vector<Vec3<T>>& v, Vec
 // Extents of the points in frame `r`: lo/hi of R^T v.
 template <class T> void extentsIn(const std::vector<Vec3<T>>& v, const Mat3<double>& r, Vec3<double>& lo, Vec3<double>& hi);
 
+// Capsule along r's first column enclosing every point: radius = largest distance from the axis through the
+// centre of the points' r-box cross-section (at least minRadius), segment ends as short as every point allows.
+struct EnclosingCapsule {
+  Vec3<double> centre = Vec3<double>::Zero(), axis = Vec3<double>::UnitX();
+  double halfHeight = 0, radius = 0;
+};
+template <class T> EnclosingCapsule enclosingCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minRadius);
+
 // ---- Culling volumes (shape_bounds.cpp) ----------------------------------------------------------------------
-// Bounding volumes of a shape in its own frame: an enclosing sphere and an enclosing box (the smaller of the
-// local AABB and, for hulls and meshes, the box along the vertices' principal axes).
+// Bounding volumes of a shape in its own frame: an enclosing sphere, an enclosing box (the smaller of the local
+// AABB and, for hulls and meshes, the box along the vertices' principal axes) and, where one is known, an enclosing
+// capsule (capsules and cylinders themselves; hulls and meshes along their principal axis; boxes along the longest).
 template <class T> struct CullVolume {
   Vec3<T> sphereCentre = Vec3<T>::Zero();
   T radius = T(0);
   Vec3<T> boxCentre = Vec3<T>::Zero();
   Mat3<T> boxAxes = Mat3<T>::Identity();  // columns: box axes in the shape frame
   Vec3<T> halfExtents = Vec3<T>::Zero();
+  bool hasCapsule = false;  // an enclosing capsule tighter than the sphere: segment start + span, radius
+  Vec3<T> capsuleStart = Vec3<T>::Zero(), capsuleSpan = Vec3<T>::Zero();
+  T capsuleRadius = T(0);
 };
 template <class T> Status shapeCullVolume(const Geometry<T>& g, CullVolume<T>& out);
+
+// ---- Configurations (kinematics.cpp) ------------------------------------------------------------------------
+// Joint limits hold with a relative slack of a few ulps of the limit's magnitude (values read back from text or
+// computed in float land exactly on a limit).
+template <class T> T limitSlack(const Joint<T>& j) {
+  return T(8) * std::numeric_limits<T>::epsilon() * std::max({T(1), std::abs(j.lower), std::abs(j.upper)});
+}
+// Size, finiteness and limits of a configuration: InvalidArgument naming the joint on failure.
+template <class T> Status checkConfiguration(const RobotModel<T>& model, const std::vector<T>& q);
 
 // ---- Model semantics (allowed_collisions.cpp) ---------------------------------------------------------------
 // Fills model.allowed/allowedReason (adjacent links across fixed joints and shapeless links, same link, SRDF)

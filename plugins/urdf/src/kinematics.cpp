@@ -7,14 +7,7 @@
 #include "internal.h"
 
 namespace gq::urdf {
-namespace {
-
-// Joint limits are accepted with a relative slack of a few ulps of the limit's magnitude (values read back from
-// text or computed in float land exactly on a limit).
-template <class T> bool withinLimits(T value, const Joint<T>& j) {
-  const T slack = T(8) * std::numeric_limits<T>::epsilon() * std::max({T(1), std::abs(j.lower), std::abs(j.upper)});
-  return value >= j.lower - slack && value <= j.upper + slack;
-}
+namespace detail {
 
 template <class T> Status checkConfiguration(const RobotModel<T>& model, const std::vector<T>& q) {
   if (q.size() != model.variables.size())
@@ -24,12 +17,19 @@ template <class T> Status checkConfiguration(const RobotModel<T>& model, const s
     if (j.variable < 0) continue;
     const T v = q[std::size_t(j.variable)];
     if (!std::isfinite(v)) return Status::invalid("joint '" + j.name + "' value is not finite");
-    if (j.type != JointType::Continuous && !withinLimits(v, j))
+    if (j.type != JointType::Continuous && !(v >= j.lower - limitSlack(j) && v <= j.upper + limitSlack(j)))
       return Status::invalid("joint '" + j.name + "' value " + std::to_string(double(v)) + " is outside its limits [" +
                              std::to_string(double(j.lower)) + ", " + std::to_string(double(j.upper)) + "]");
   }
   return {};
 }
+
+template Status checkConfiguration<float>(const RobotModel<float>&, const std::vector<float>&);
+template Status checkConfiguration<double>(const RobotModel<double>&, const std::vector<double>&);
+
+}  // namespace detail
+
+namespace {
 
 // origin * motion(value): a rotation by `value` about the unit axis is the quaternion (cos v/2, sin v/2 axis), so
 // only the rotation part changes; a prismatic joint moves along the axis expressed in the parent frame.
@@ -51,7 +51,7 @@ template <class T> Transform<T> jointTransform(const Joint<T>& j, T value) {
 
 template <class T>
 Status forwardKinematics(const RobotModel<T>& model, const std::vector<T>& q, std::vector<Transform<T>>& linkPoses) {
-  Status s = checkConfiguration(model, q);
+  Status s = detail::checkConfiguration(model, q);
   if (!s.ok()) return s;
   linkPoses.resize(model.links.size());
   linkPoses[0] = Transform<T>();

@@ -41,6 +41,34 @@ template <class T> void extentsIn(const std::vector<Vec3<T>>& v, const Mat3<doub
   }
 }
 
+template <class T> EnclosingCapsule enclosingCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minRadius) {
+  Vec3<double> lo, hi;
+  extentsIn(v, r, lo, hi);
+  const Vec3<double> c = (lo + hi) * 0.5;  // the axis runs along local x through (c.y, c.z)
+  double radius = minRadius;
+  for (const auto& p : v) {
+    const Vec3<double> l = r.transpose() * p.template cast<double>() - c;
+    radius = std::max(radius, std::hypot(l.y(), l.z()));
+  }
+  double a = std::numeric_limits<double>::max(), b = -std::numeric_limits<double>::max();
+  for (const auto& p : v) {
+    const Vec3<double> l = r.transpose() * p.template cast<double>() - c;
+    const double reach = std::sqrt(std::max(0.0, radius * radius - l.y() * l.y() - l.z() * l.z()));
+    a = std::min(a, l.x() + reach);  // the segment must start at or before t + reach
+    b = std::max(b, l.x() - reach);  // and end at or after t - reach
+  }
+  if (b < a) a = b = 0.5 * (a + b);  // a sphere of `radius` around the middle covers everything
+  EnclosingCapsule out;
+  out.centre = r * Vec3<double>(c.x() + 0.5 * (a + b), c.y(), c.z());
+  out.axis = r.col(0);
+  out.halfHeight = 0.5 * (b - a);
+  out.radius = radius;
+  return out;
+}
+
+template EnclosingCapsule enclosingCapsule<float>(const std::vector<Vec3<float>>&, const Mat3<double>&, double);
+template EnclosingCapsule enclosingCapsule<double>(const std::vector<Vec3<double>>&, const Mat3<double>&, double);
+
 namespace {
 
 template <class T> struct Fit {
@@ -73,27 +101,11 @@ template <class T> Fit<T> fitBox(const std::vector<Vec3<T>>& v, const Mat3<doubl
 }
 
 template <class T> Fit<T> fitCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minHalf) {
-  Vec3<double> lo, hi;
-  extentsIn(v, r, lo, hi);
-  const Vec3<double> c = (lo + hi) * 0.5;  // the axis runs along local x through (c.y, c.z)
-  double radius = minHalf;
-  for (const auto& p : v) {
-    const Vec3<double> l = r.transpose() * p.template cast<double>() - c;
-    radius = std::max(radius, std::hypot(l.y(), l.z()));
-  }
-  double a = std::numeric_limits<double>::max(), b = -std::numeric_limits<double>::max();
-  for (const auto& p : v) {
-    const Vec3<double> l = r.transpose() * p.template cast<double>() - c;
-    const double reach = std::sqrt(std::max(0.0, radius * radius - l.y() * l.y() - l.z() * l.z()));
-    a = std::min(a, l.x() + reach);  // the segment must start at or before t + reach
-    b = std::max(b, l.x() - reach);  // and end at or after t - reach
-  }
-  if (b < a) a = b = 0.5 * (a + b);  // a sphere of `radius` around the middle covers everything
-  const double half = 0.5 * (b - a);
+  const EnclosingCapsule c = enclosingCapsule(v, r, minHalf);
   Fit<T> f;
-  f.geometry = CapsuleGeometry<T>(T(radius), T(half));
-  f.pose = poseOf<T>(r * Vec3<double>(c.x() + 0.5 * (a + b), c.y(), c.z()), r);
-  f.volume = M_PI * radius * radius * (2.0 * half + 4.0 / 3.0 * radius);
+  f.geometry = CapsuleGeometry<T>(T(c.radius), T(c.halfHeight));
+  f.pose = poseOf<T>(c.centre, r);
+  f.volume = M_PI * c.radius * c.radius * (2.0 * c.halfHeight + 4.0 / 3.0 * c.radius);
   f.representation = Representation::Capsule;
   return f;
 }

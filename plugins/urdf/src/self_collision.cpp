@@ -11,9 +11,15 @@
 
 #include "gq/urdf/self_collision.h"
 #include "internal.h"
+#include "cull_tests.h"
+#include "kinematic_chain.h"
 
 namespace gq::urdf {
 namespace {
+
+using detail::capsulesDisjoint;
+using detail::orientedBoxesDisjoint;
+using detail::spheresOverlap;
 
 // Culling compares world placements computed in T: spheres and boxes grow by this many ulps of the robot's size so
 // that rounding never culls a touching pair (touching counts as colliding).
@@ -22,33 +28,6 @@ constexpr double kCullSlackUlps = 64.0;
 // Lower bound of the distance between two shapes from their enclosing spheres (0 when the spheres overlap).
 template <class T> T sphereGap(const Vec3<T>& ca, T ra, const Vec3<T>& cb, T rb) {
   return std::max(T(0), (ca - cb).norm() - ra - rb);
-}
-
-template <class T> bool spheresOverlap(const Vec3<T>& ca, T ra, const Vec3<T>& cb, T rb) {
-  return (ca - cb).squaredNorm() <= (ra + rb) * (ra + rb);
-}
-
-// Oriented boxes (centre c, rotation columns r, half extents e, all world) are disjoint when one of the 15 axes of
-// the separating-axis theorem (3 + 3 face normals, 9 edge cross products) separates their projections. A cheap
-// midphase before GJK: the AABBs of rotated link boxes overlap far more often than the boxes themselves.
-template <class T> bool orientedBoxesDisjoint(const OrientedBox<T>& a, const OrientedBox<T>& b) {
-  const Mat3<T> r = a.axes.transpose() * b.axes;           // b's axes in a's frame
-  // Unitless guard on |R|: near-parallel edges give a near-zero cross product, whose axis must not cull.
-  const T parallelGuard = T(16) * std::numeric_limits<T>::epsilon();
-  const Mat3<T> absR = r.cwiseAbs().array() + parallelGuard;
-  const Vec3<T> t = a.axes.transpose() * (b.centre - a.centre);
-  for (int i = 0; i < 3; ++i)
-    if (std::abs(t[i]) > a.halfExtents[i] + absR.row(i).dot(b.halfExtents)) return true;
-  for (int j = 0; j < 3; ++j)
-    if (std::abs(t.dot(r.col(j))) > absR.col(j).dot(a.halfExtents) + b.halfExtents[j]) return true;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      const T ra = a.halfExtents[i1] * absR(i2, j) + a.halfExtents[i2] * absR(i1, j);
-      const T rb = b.halfExtents[j1] * absR(i, j2) + b.halfExtents[j2] * absR(i, j1);
-      if (std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j)) > ra + rb) return true;
-    }
-  return false;
 }
 
 // Length scale of the robot: the sum of its joint offsets and prismatic travels (bounds any link origin's distance
@@ -65,103 +44,162 @@ template <class T> T robotSize(const RobotModel<T>& model, T largestShape) {
 }  // namespace
 
 template <class T>
-SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model) : model_(std::move(model)) {
+SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model)
+    : model_(std::move(model)), chain_(std::make_shared<detail::KinematicChain<T>>(*model_)) {
   const RobotModel<T>& m = *model_;
   const std::size_t links = m.links.size(), shapes = m.shapes.size();
+  linkBody_.resize(links);
+  for (std::uint32_t l = 0; l < links; ++l) linkBody_[l] = chain_->bodyOf(l);
   shapeBounds_.resize(shapes);
   T largest = T(0);
   for (std::size_t i = 0; i < shapes; ++i) {
+    const Shape<T>& shape = m.shapes[i];
     ShapeBound& b = shapeBounds_[i];
     detail::CullVolume<T> v;  // invalid geometry keeps a point volume: the narrow phase reports it
-    (void)detail::shapeCullVolume(m.shapes[i].geometry, v);
-    b.centreInLink = m.shapes[i].origin.transform(v.sphereCentre);
+    (void)detail::shapeCullVolume(shape.geometry, v);
+    b.body = linkBody_[shape.link];
+    b.poseInBody = chain_->linkInBody(shape.link) * shape.origin;
+    const Mat3<T> r = b.poseInBody.q.toRotationMatrix();
+    b.centreInBody = b.poseInBody.transform(v.sphereCentre);
     b.radius = v.radius;
-    b.boxCentre = v.boxCentre;
-    b.boxAxes = v.boxAxes;
+    b.boxCentre = b.poseInBody.transform(v.boxCentre);
+    b.boxAxes = r * v.boxAxes;
     b.halfExtents = v.halfExtents;
-    if (m.shapes[i].boundingHull) {
-      b.hull = ConvexMeshGeometry<T>(m.shapes[i].boundingHull);
+    // A shape without a capsule takes its sphere as one (zero span).
+    b.hasCapsule = v.hasCapsule;
+    b.capsuleStart = v.hasCapsule ? b.poseInBody.transform(v.capsuleStart) : b.centreInBody;
+    b.capsuleSpan = v.hasCapsule ? Vec3<T>(r * v.capsuleSpan) : Vec3<T>::Zero();
+    b.capsuleRadius = v.hasCapsule ? v.capsuleRadius : v.radius;
+    if (shape.boundingHull) {
+      b.hull = ConvexMeshGeometry<T>(shape.boundingHull);
       b.hasHull = true;
     }
-    largest = std::max(largest, b.centreInLink.norm() + b.radius);
+    largest = std::max(largest, shape.origin.transform(v.sphereCentre).norm() + b.radius);
   }
   slack_ = T(kCullSlackUlps) * std::numeric_limits<T>::epsilon() * robotSize(m, largest);
   for (auto& b : shapeBounds_) {
     b.radius += slack_;
     b.halfExtents.array() += slack_;
+    // The segment distance of near-parallel capsules may land on a non-closest pair: its error is below
+    // sqrt(eps) times the segment lengths (the rounding of the parallelism determinant).
+    b.capsuleRadius += slack_ + T(4) * std::sqrt(std::numeric_limits<T>::epsilon()) * b.capsuleSpan.norm();
   }
-  linkCentreInLink_.assign(links, Vec3<T>::Zero());
+  linkCentreInBody_.assign(links, Vec3<T>::Zero());
   linkRadius_.assign(links, T(0));
   for (std::size_t l = 0; l < links; ++l) {
     const auto& own = m.links[l].shapes;
     if (own.empty()) continue;
     Bounds3<T> centres;
-    for (std::uint32_t s : own) centres.include(shapeBounds_[s].centreInLink);
-    linkCentreInLink_[l] = own.size() == 1 ? shapeBounds_[own[0]].centreInLink : centres.center();
+    for (std::uint32_t s : own) centres.include(shapeBounds_[s].centreInBody);
+    linkCentreInBody_[l] = own.size() == 1 ? shapeBounds_[own[0]].centreInBody : centres.center();
     for (std::uint32_t s : own)
-      linkRadius_[l] = std::max(linkRadius_[l], (shapeBounds_[s].centreInLink - linkCentreInLink_[l]).norm() +
+      linkRadius_[l] = std::max(linkRadius_[l], (shapeBounds_[s].centreInBody - linkCentreInBody_[l]).norm() +
                                                     shapeBounds_[s].radius);
   }
   for (std::uint32_t a = 0; a < links; ++a)
     for (std::uint32_t b = a + 1; b < links; ++b)
-      if (!m.links[a].shapes.empty() && !m.links[b].shapes.empty() && !m.isAllowed(a, b)) checkedPairs_.push_back({a, b});
-  linkPoses_.resize(links);
+      if (!m.links[a].shapes.empty() && !m.links[b].shapes.empty() && !m.isAllowed(a, b))
+        checkedPairs_.push_back({{a, b}, m.links[a].shapes.size() > 1 || m.links[b].shapes.size() > 1});
   for (std::uint32_t l = 0; l < links; ++l)
     if (!m.links[l].shapes.empty()) shapedLinks_.push_back(l);
+  bodyRotations_.assign(chain_->bodyCount(), Mat3<T>::Identity());
+  bodyPositions_.assign(chain_->bodyCount(), Vec3<T>::Zero());
+  bodyQuats_.resize(chain_->bodyCount());
+  quatStamp_.assign(chain_->bodyCount(), 0);
   linkCentres_.resize(links);
   shapeCentres_.resize(shapes);
   shapePoses_.resize(shapes);
   shapeBoxes_.resize(shapes);
-  placedStamp_.assign(shapes, 0);
-  candidates_.reserve(checkedPairs_.size());
+  capsuleStarts_.resize(shapes);
+  capsuleSpans_.resize(shapes);
+  capsuleStamp_.assign(shapes, 0);
+  boxStamp_.assign(shapes, 0);
+  poseStamp_.assign(shapes, 0);
 }
 
-// World sphere centre of every link with shapes; shape sphere centres only where a link has several shapes (a
-// single shape's sphere is its link's).
-template <class T> Status SelfCollisionChecker<T>::placeLinks(const std::vector<T>& q) {
-  Status s = forwardKinematics(*model_, q, linkPoses_);
+template <class T> Status SelfCollisionChecker<T>::placeBodies(const std::vector<T>& q) {
+  Status s = chain_->place(q, bodyRotations_, bodyPositions_);
   if (!s.ok()) return s;
   if (++stamp_ == 0) {  // wrapped: forget every placement
-    std::fill(placedStamp_.begin(), placedStamp_.end(), 0u);
+    std::fill(boxStamp_.begin(), boxStamp_.end(), 0u);
+    std::fill(capsuleStamp_.begin(), capsuleStamp_.end(), 0u);
+    std::fill(poseStamp_.begin(), poseStamp_.end(), 0u);
+    std::fill(quatStamp_.begin(), quatStamp_.end(), 0u);
     stamp_ = 1;
-  }
-  for (const std::uint32_t l : shapedLinks_) {
-    const auto& own = model_->links[l].shapes;
-    linkCentres_[l] = linkPoses_[l].transform(linkCentreInLink_[l]);
-    if (own.size() == 1) {
-      shapeCentres_[own[0]] = linkCentres_[l];
-      continue;
-    }
-    const Mat3<T> r = linkPoses_[l].q.toRotationMatrix();
-    for (std::uint32_t i : own) shapeCentres_[i] = r * shapeBounds_[i].centreInLink + linkPoses_[l].p;
   }
   return {};
 }
 
+template <class T> void SelfCollisionChecker<T>::placeLinkSpheres() {
+  for (const std::uint32_t l : shapedLinks_) {
+    const std::uint32_t b = linkBody_[l];
+    linkCentres_[l].noalias() = bodyRotations_[b] * linkCentreInBody_[l];
+    linkCentres_[l] += bodyPositions_[b];
+  }
+}
+
+template <class T> void SelfCollisionChecker<T>::placeShapeSpheres() {
+  for (std::size_t i = 0; i < shapeBounds_.size(); ++i) {
+    const ShapeBound& sb = shapeBounds_[i];
+    shapeCentres_[i].noalias() = bodyRotations_[sb.body] * sb.centreInBody;
+    shapeCentres_[i] += bodyPositions_[sb.body];
+  }
+}
+
+// The shape's oriented box in the world (for the midphase).
 template <class T> void SelfCollisionChecker<T>::placeShape(std::uint32_t i) {
-  if (placedStamp_[i] == stamp_) return;
-  placedStamp_[i] = stamp_;
-  const Shape<T>& shape = model_->shapes[i];
-  shapePoses_[i] = linkPoses_[shape.link] * shape.origin;
-  const Mat3<T> r = shapePoses_[i].q.toRotationMatrix();
+  if (boxStamp_[i] == stamp_) return;
+  boxStamp_[i] = stamp_;
+  const ShapeBound& sb = shapeBounds_[i];
+  const Mat3<T>& r = bodyRotations_[sb.body];
   OrientedBox<T>& box = shapeBoxes_[i];
-  box.axes = r * shapeBounds_[i].boxAxes;
-  box.centre = shapePoses_[i].p + r * shapeBounds_[i].boxCentre;
-  box.halfExtents = shapeBounds_[i].halfExtents;
+  box.axes.noalias() = r * sb.boxAxes;
+  box.centre.noalias() = r * sb.boxCentre;
+  box.centre += bodyPositions_[sb.body];
+  box.halfExtents = sb.halfExtents;
 }
 
-template <class T> void SelfCollisionChecker<T>::broadphase() {
-  candidates_.clear();
-  for (const LinkPair& p : checkedPairs_)
-    if (spheresOverlap(linkCentres_[p.a], linkRadius_[p.a], linkCentres_[p.b], linkRadius_[p.b])) candidates_.push_back(p);
+template <class T> void SelfCollisionChecker<T>::placeCapsule(std::uint32_t i) {
+  if (capsuleStamp_[i] == stamp_) return;
+  capsuleStamp_[i] = stamp_;
+  const ShapeBound& sb = shapeBounds_[i];
+  const Mat3<T>& r = bodyRotations_[sb.body];
+  capsuleStarts_[i].noalias() = r * sb.capsuleStart;
+  capsuleStarts_[i] += bodyPositions_[sb.body];
+  capsuleSpans_[i].noalias() = r * sb.capsuleSpan;
 }
 
-template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa, std::uint32_t sb) {
-  const bool sameAsLinkSpheres = model_->links[model_->shapes[sa].link].shapes.size() == 1 &&
-                                 model_->links[model_->shapes[sb].link].shapes.size() == 1;
-  if (!sameAsLinkSpheres &&
-      !spheresOverlap(shapeCentres_[sa], shapeBounds_[sa].radius, shapeCentres_[sb], shapeBounds_[sb].radius))
-    return false;
+// The shape's pose for the narrow phase: the body's rotation as a quaternion (once per body and configuration)
+// composed with the shape's constant pose in the body.
+template <class T> const Transform<T>& SelfCollisionChecker<T>::shapePose(std::uint32_t i) {
+  if (poseStamp_[i] == stamp_) return shapePoses_[i];
+  poseStamp_[i] = stamp_;
+  const std::uint32_t b = shapeBounds_[i].body;
+  if (quatStamp_[b] != stamp_) {
+    quatStamp_[b] = stamp_;
+    bodyQuats_[b] = Quat<T>(bodyRotations_[b]).normalized();
+  }
+  shapePoses_[i] = Transform<T>(bodyPositions_[b], bodyQuats_[b]) * shapeBounds_[i].poseInBody;
+  return shapePoses_[i];
+}
+
+// Shape spheres (only when a link has several shapes: a single shape's sphere is its link's), capsules (a sphere
+// stands in for a shape without one), then oriented boxes.
+template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa, std::uint32_t sb, bool shapeSpheres) {
+  if (shapeSpheres) {
+    const ShapeBound& a = shapeBounds_[sa];
+    const ShapeBound& b = shapeBounds_[sb];
+    const Vec3<T> ca = bodyRotations_[a.body] * a.centreInBody + bodyPositions_[a.body];
+    const Vec3<T> cb = bodyRotations_[b.body] * b.centreInBody + bodyPositions_[b.body];
+    if (!spheresOverlap(ca, a.radius, cb, b.radius)) return false;
+  }
+  if (shapeBounds_[sa].hasCapsule || shapeBounds_[sb].hasCapsule) {
+    placeCapsule(sa);
+    placeCapsule(sb);
+    if (capsulesDisjoint(capsuleStarts_[sa], capsuleSpans_[sa], shapeBounds_[sa].capsuleRadius, capsuleStarts_[sb],
+                         capsuleSpans_[sb], shapeBounds_[sb].capsuleRadius))
+      return false;
+  }
   placeShape(sa);
   placeShape(sb);
   return !orientedBoxesDisjoint(shapeBoxes_[sa], shapeBoxes_[sb]);
@@ -171,50 +209,53 @@ template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa
 template <class T> Status SelfCollisionChecker<T>::narrowPhase(std::uint32_t sa, std::uint32_t sb, bool& hit) {
   const Geometry<T>& ga = model_->shapes[sa].geometry;
   const Geometry<T>& gb = model_->shapes[sb].geometry;
+  const Transform<T>& pa = shapePose(sa);
+  const Transform<T>& pb = shapePose(sb);
   if (shapeBounds_[sa].hasHull || shapeBounds_[sb].hasHull) {
     const Geometry<T>& ha = shapeBounds_[sa].hasHull ? shapeBounds_[sa].hull : ga;
     const Geometry<T>& hb = shapeBounds_[sb].hasHull ? shapeBounds_[sb].hull : gb;
     bool hullsTouch = false;
-    if (Status s = overlap(ha, shapePoses_[sa], hb, shapePoses_[sb], hullsTouch); !s.ok()) return s;
+    if (Status s = overlap(ha, pa, hb, pb, hullsTouch); !s.ok()) return s;
     if (!hullsTouch) {
       hit = false;
       return {};
     }
   }
-  return overlap(ga, shapePoses_[sa], gb, shapePoses_[sb], hit);
+  return overlap(ga, pa, gb, pb, hit);
 }
 
-template <class T> Status SelfCollisionChecker<T>::collide(const CollisionRequest& request, CollisionResult& result) {
-  lastNarrow_ = 0;
-  hits_.clear();
-  for (const LinkPair& pair : candidates_) {
-    bool hit = false;
-    for (std::uint32_t sa : model_->links[pair.a].shapes) {
-      for (std::uint32_t sb : model_->links[pair.b].shapes) {
-        if (!shapesMayTouch(sa, sb)) continue;
-        ++lastNarrow_;
-        Status s = narrowPhase(sa, sb, hit);
-        if (!s.ok()) return s;
-        if (hit) break;
-      }
-      if (hit) break;
+template <class T> Status SelfCollisionChecker<T>::linkPairCollides(const CheckedPair& pair, bool& hit) {
+  hit = false;
+  for (std::uint32_t sa : model_->links[pair.links.a].shapes)
+    for (std::uint32_t sb : model_->links[pair.links.b].shapes) {
+      if (!shapesMayTouch(sa, sb, pair.shapeSpheres)) continue;
+      ++lastNarrow_;
+      if (Status s = narrowPhase(sa, sb, hit); !s.ok()) return s;
+      if (hit) return {};
     }
-    if (!hit) continue;
-    hits_.push_back(pair);
-    if (!request.allPairs) break;
-  }
-  result.colliding = !hits_.empty();
-  result.pairs.assign(hits_.begin(), hits_.end());  // reuses the caller's capacity
   return {};
 }
 
 template <class T>
 Status SelfCollisionChecker<T>::checkSelfCollision(const std::vector<T>& q, CollisionResult& result,
                                                    const CollisionRequest& request) {
-  Status s = placeLinks(q);
+  Status s = placeBodies(q);
   if (!s.ok()) return s;
-  broadphase();
-  return collide(request, result);
+  placeLinkSpheres();
+  lastNarrow_ = 0;
+  hits_.clear();
+  for (const CheckedPair& pair : checkedPairs_) {
+    const LinkPair& p = pair.links;
+    if (!spheresOverlap(linkCentres_[p.a], linkRadius_[p.a], linkCentres_[p.b], linkRadius_[p.b])) continue;
+    bool hit = false;
+    if (s = linkPairCollides(pair, hit); !s.ok()) return s;
+    if (!hit) continue;
+    hits_.push_back(p);
+    if (!request.allPairs) break;
+  }
+  result.colliding = !hits_.empty();
+  result.pairs.assign(hits_.begin(), hits_.end());  // reuses the caller's capacity
+  return {};
 }
 
 template <class T>
@@ -235,16 +276,17 @@ Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::v
 
 // Every checked shape pair, nearest enclosing spheres first, so the best distance found early prunes the rest.
 template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result) {
-  Status s = placeLinks(q);
+  Status s = placeBodies(q);
   if (!s.ok()) return s;
+  placeShapeSpheres();
   struct Candidate {
     T bound;
     std::uint32_t sa, sb;
   };
   std::vector<Candidate> pairs;
-  for (const LinkPair& p : checkedPairs_)
-    for (std::uint32_t sa : model_->links[p.a].shapes)
-      for (std::uint32_t sb : model_->links[p.b].shapes)
+  for (const CheckedPair& p : checkedPairs_)
+    for (std::uint32_t sa : model_->links[p.links.a].shapes)
+      for (std::uint32_t sb : model_->links[p.links.b].shapes)
         pairs.push_back({sphereGap(shapeCentres_[sa], shapeBounds_[sa].radius, shapeCentres_[sb], shapeBounds_[sb].radius),
                          sa, sb});
   std::sort(pairs.begin(), pairs.end(), [](const Candidate& x, const Candidate& y) { return x.bound < y.bound; });
@@ -254,10 +296,10 @@ template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vecto
   for (const Candidate& c : pairs) {
     if (c.bound > best.distance) break;
     ++lastNarrow_;
-    placeShape(c.sa);
-    placeShape(c.sb);
     DistanceResult<T> d;
-    s = distance(d, model_->shapes[c.sa].geometry, shapePoses_[c.sa], model_->shapes[c.sb].geometry, shapePoses_[c.sb]);
+    const Transform<T>& pa = shapePose(c.sa);
+    const Transform<T>& pb = shapePose(c.sb);
+    s = distance(d, model_->shapes[c.sa].geometry, pa, model_->shapes[c.sb].geometry, pb);
     if (!s.ok()) return s;
     if (d.distance < best.distance) {
       best.distance = d.distance;

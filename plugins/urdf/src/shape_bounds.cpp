@@ -2,9 +2,12 @@
 // distance from it to a hull or mesh vertex (the solid is their convex hull), closed forms for primitives, the AABB
 // half-diagonal for custom shapes and scaled meshes. Box: the local AABB, or for hulls and meshes the box along the
 // vertices' principal axes when its volume is smaller (robot links are often long and diagonal in their frame).
+// Capsule: capsules and cylinders are their own; hulls and meshes along the vertices' principal axis, boxes along
+// their longest axis (enclosingCapsule, mesh_shape.cpp).
 #include <cmath>
 
 #include "gq/cooking.h"
+#include "gq/custom_shapes.h"
 #include "gq/query.h"
 #include "internal.h"
 
@@ -26,6 +29,35 @@ template <class T> const std::vector<Vec3<T>>* solidVertices(const Geometry<T>& 
   if (const auto* mesh = g.template getIf<TriangleMeshGeometry<T>>(); mesh && unscaled(mesh->scale))
     return &mesh->mesh->vertices;
   return nullptr;
+}
+
+template <class T> void setCapsule(CullVolume<T>& out, const Vec3<double>& centre, const Vec3<double>& axis, double half,
+                                   double radius) {
+  out.hasCapsule = true;
+  out.capsuleStart = (centre - half * axis).cast<T>();
+  out.capsuleSpan = (2.0 * half * axis).cast<T>();
+  // Rounding of the placed ends: a few ulps of the capsule's size.
+  out.capsuleRadius = T(radius + 8.0 * std::numeric_limits<T>::epsilon() * (half + radius + centre.norm()));
+}
+
+// Capsule of a cylinder or capsule along local X; of the corners of a box along its longest axis.
+template <class T> void primitiveCapsule(const Geometry<T>& g, CullVolume<T>& out) {
+  if (const auto* capsule = g.template getIf<CapsuleGeometry<T>>()) {
+    setCapsule(out, Vec3<double>::Zero(), Vec3<double>::UnitX(), double(capsule->halfHeight), double(capsule->radius));
+  } else if (const auto* custom = g.template getIf<CustomGeometry<T>>()) {
+    if (const auto* cyl = dynamic_cast<const CylinderCallbacks<T>*>(custom->callbacks.get()))
+      setCapsule(out, Vec3<double>::Zero(), Vec3<double>::UnitX(), double(cyl->halfHeight()), double(cyl->radius()));
+  } else if (const auto* box = g.template getIf<BoxGeometry<T>>()) {
+    std::vector<Vec3<T>> corners;
+    for (int k = 0; k < 8; ++k)
+      corners.push_back(box->halfExtents.cwiseProduct(Vec3<T>(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1)));
+    int longest = 0;
+    box->halfExtents.maxCoeff(&longest);
+    Mat3<double> r;  // columns: the longest axis first, right-handed
+    r << Vec3<double>::Unit(longest), Vec3<double>::Unit((longest + 1) % 3), Vec3<double>::Unit((longest + 2) % 3);
+    const EnclosingCapsule c = enclosingCapsule(corners, r, 0.0);
+    setCapsule(out, c.centre, c.axis, c.halfHeight, c.radius);
+  }
 }
 
 // Replaces the box by the principal-axes box of the vertices when that one is smaller.
@@ -52,10 +84,16 @@ template <class T> Status shapeCullVolume(const Geometry<T>& g, CullVolume<T>& o
   out.radius = box.extents().norm();
   if (const auto* sphere = g.template getIf<SphereGeometry<T>>()) out.radius = sphere->radius;
   else if (const auto* capsule = g.template getIf<CapsuleGeometry<T>>()) out.radius = capsule->radius + capsule->halfHeight;
+  primitiveCapsule(g, out);
   if (const auto* vertices = solidVertices(g)) {
     out.radius = farthestVertex(*vertices, out.sphereCentre);
     tryPrincipalBox(*vertices, out);
+    Vec3<double> mean;
+    const EnclosingCapsule c = enclosingCapsule(*vertices, principalAxes(*vertices, mean), 0.0);
+    setCapsule(out, c.centre, c.axis, c.halfHeight, c.radius);
   }
+  // A capsule no thinner than the sphere culls nothing the sphere does not.
+  if (out.hasCapsule && !(out.capsuleRadius < out.radius)) out.hasCapsule = false;
   return {};
 }
 

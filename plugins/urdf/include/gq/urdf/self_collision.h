@@ -14,6 +14,10 @@
 
 namespace gq::urdf {
 
+namespace detail {
+template <class T> class KinematicChain;
+}
+
 struct LinkPair {
   std::uint32_t a = 0, b = 0;  // link indices, a < b
   bool operator==(const LinkPair& o) const { return a == o.a && b == o.b; }
@@ -59,40 +63,57 @@ template <class T> class SelfCollisionChecker {
   std::size_t lastNarrowPhasePairs() const { return lastNarrow_; }
 
  private:
-  // Fixed per shape: an enclosing sphere (centre in the link frame) and an enclosing box (shape frame), both
-  // grown by the culling slack; the box is carried to the world as an oriented box.
+  // Fixed per shape, in the frame of its rigid body (the links joined to it by fixed joints): an enclosing sphere
+  // and an enclosing box, both grown by the culling slack; the box is carried to the world as an oriented box.
   struct ShapeBound {
-    Vec3<T> centreInLink = Vec3<T>::Zero();
+    std::uint32_t body = 0;
+    Transform<T> poseInBody;
+    Vec3<T> centreInBody = Vec3<T>::Zero();
     T radius = T(0);
-    Vec3<T> boxCentre = Vec3<T>::Zero();
-    Mat3<T> boxAxes = Mat3<T>::Identity();
+    Vec3<T> boxCentre = Vec3<T>::Zero();   // body frame
+    Mat3<T> boxAxes = Mat3<T>::Identity();  // columns: box axes in the body frame
     Vec3<T> halfExtents = Vec3<T>::Zero();
+    bool hasCapsule = false;  // an enclosing capsule (body frame) tighter than the sphere; else the sphere
+    Vec3<T> capsuleStart = Vec3<T>::Zero(), capsuleSpan = Vec3<T>::Zero();
+    T capsuleRadius = T(0);
     bool hasHull = false;  // mesh shapes: `hull` is their convex hull, tested before the triangles
     Geometry<T> hull;
   };
+  // A link pair the allowed-collision matrix leaves, with what its shape loop needs.
+  struct CheckedPair {
+    LinkPair links;
+    bool shapeSpheres = false;  // a link has several shapes: test shape spheres before the boxes
+  };
 
-  Status placeLinks(const std::vector<T>& q);
+  Status placeBodies(const std::vector<T>& q);
+  void placeLinkSpheres();
+  void placeShapeSpheres();
   void placeShape(std::uint32_t shape);
-  void broadphase();
-  bool shapesMayTouch(std::uint32_t shapeA, std::uint32_t shapeB);
+  void placeCapsule(std::uint32_t shape);
+  const Transform<T>& shapePose(std::uint32_t shape);
+  bool shapesMayTouch(std::uint32_t shapeA, std::uint32_t shapeB, bool shapeSpheres);
   Status narrowPhase(std::uint32_t shapeA, std::uint32_t shapeB, bool& hit);
-  Status collide(const CollisionRequest& request, CollisionResult& result);
+  Status linkPairCollides(const CheckedPair& pair, bool& hit);
 
   std::shared_ptr<const RobotModel<T>> model_;
-  std::vector<LinkPair> checkedPairs_;       // link pairs with shapes that the allowed-collision matrix leaves
+  std::shared_ptr<const detail::KinematicChain<T>> chain_;  // compiled forward kinematics (immutable, shared)
+  std::vector<CheckedPair> checkedPairs_;    // link pairs with shapes that the allowed-collision matrix leaves
   std::vector<std::uint32_t> shapedLinks_;   // links with at least one shape
   std::vector<ShapeBound> shapeBounds_;
-  std::vector<Vec3<T>> linkCentreInLink_;    // per link: sphere enclosing its shapes' spheres
+  std::vector<std::uint32_t> linkBody_;
+  std::vector<Vec3<T>> linkCentreInBody_;    // per link: sphere enclosing its shapes' spheres
   std::vector<T> linkRadius_;
   T slack_ = T(0);                           // absolute culling slack (rounding of world placements)
   // Per configuration.
-  std::vector<Transform<T>> linkPoses_;
+  std::vector<Mat3<T>> bodyRotations_;
+  std::vector<Vec3<T>> bodyPositions_;
+  std::vector<Quat<T>> bodyQuats_;                   // valid when quatStamp_[b] == stamp_
   std::vector<Vec3<T>> linkCentres_, shapeCentres_;  // world sphere centres
-  std::vector<Transform<T>> shapePoses_;             // valid when placedStamp_[s] == stamp_
-  std::vector<OrientedBox<T>> shapeBoxes_;
-  std::vector<std::uint32_t> placedStamp_;
+  std::vector<Transform<T>> shapePoses_;             // valid when poseStamp_[s] == stamp_
+  std::vector<OrientedBox<T>> shapeBoxes_;           // valid when boxStamp_[s] == stamp_
+  std::vector<Vec3<T>> capsuleStarts_, capsuleSpans_;  // world; valid when capsuleStamp_[s] == stamp_
+  std::vector<std::uint32_t> boxStamp_, poseStamp_, quatStamp_, capsuleStamp_;
   std::uint32_t stamp_ = 0;
-  std::vector<LinkPair> candidates_;        // checked link pairs whose spheres overlap
   std::vector<LinkPair> hits_;              // colliding pairs found so far in this call
   std::size_t lastNarrow_ = 0;
 };
