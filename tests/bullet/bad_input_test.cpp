@@ -12,6 +12,7 @@
 #include <string>
 
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
+#include <BulletCollision/CollisionShapes/btUniformScalingShape.h>
 
 #include "bullet_test_scene.h"
 
@@ -416,6 +417,25 @@ TEST(BulletBadInput, ContactTestOnAnObjectOutsideTheWorldReportsItsContacts) {
   ContactCounter badTest;
   w.world().contactTest(&outside, badTest);
   EXPECT_EQ(badTest.calls, 0);
+}
+
+// btUniformScalingShape is a shape gq leaves to Bullet: around an infinite sphere, stock Bullet's sweep reports a
+// NaN hit. The gq world passes Bullet's per-object answers on only when finite.
+TEST(BulletBadInput, NonFiniteAnswersOfShapesBulletKeepsNeverReachTheCallback) {
+  btSphereShape inner(kInf);
+  btUniformScalingShape scaled(&inner, 1);
+  SweepCounter sweeps[2];
+  RayCounter rays[2];
+  for (Backend backend : {Backend::Bullet, Backend::Gq}) {
+    TestWorld w(backend);
+    w.add(&scaled, 0, btVector3(0, 0, 0));
+    btSphereShape small(btScalar(0.1));
+    w.convexSweepTest(&small, at(btVector3(0, 0, 5)), at(btVector3(0, 0, -5)), sweeps[int(backend)]);
+    w.world().rayTest(btVector3(0, 0, 5), btVector3(0, 0, -5), rays[int(backend)]);
+  }
+  EXPECT_GT(sweeps[0].nonFinite, 0);  // the premise: stock Bullet 3.24 hands out a NaN hit here
+  EXPECT_EQ(sweeps[1].nonFinite, 0);
+  EXPECT_EQ(rays[1].nonFinite, 0);
 }
 
 // A shape edited into bad input after it touched something: its old contacts are dropped, none is added.
