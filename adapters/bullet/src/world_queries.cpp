@@ -120,9 +120,9 @@ class RayVisitor final : public btBroadphaseRayCallback {
     ShapeView view;
     const Support support = viewShape(shape, view);
     if (support != Support::Gq) return support == Support::Invalid;
-    if (!isFinite(world)) return true;
     const V3 delta = toGq(to_ - from_);
     const Real length = delta.norm();
+    if (!isFinite(world) || !(length > Real(0))) return true;  // no hit (a length that underflows has no direction)
     const bool twoSided = (cb_.m_flags & btTriangleRaycastCallback::kF_FilterBackfaces) == 0;
     const Pose pose = toGq(world) * view.localPose;
     Hit hit;
