@@ -26,8 +26,12 @@ template <class T> struct Transform {
     const Quat<T> qi = q.conjugate();
     return Transform(-(qi * p), qi);
   }
-  // Re-express this transform relative to `frame`: frame.getInverse() * this.
-  Transform relativeTo(const Transform& frame) const { return frame.getInverse() * *this; }
+  // Re-express this transform relative to `frame`: frame.getInverse() * this, with the translations subtracted
+  // before rotating (one rotation, and no cancellation between two rotated far-away positions).
+  Transform relativeTo(const Transform& frame) const {
+    const Quat<T> qi = frame.q.conjugate();
+    return Transform(qi * (p - frame.p), qi * q);
+  }
 
   Eigen::Transform<T, 3, Eigen::Isometry> toIsometry() const {
     Eigen::Transform<T, 3, Eigen::Isometry> iso = Eigen::Transform<T, 3, Eigen::Isometry>::Identity();

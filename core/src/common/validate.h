@@ -1,8 +1,11 @@
 #pragma once
 // Input checks shared by the query façades. Each returns Ok or an InvalidArgument status naming the field.
+// The success path builds no string: rules answer a Problem (a code and a static reason, none when valid), and the
+// Status with its message is composed only for a rejected input. A primitive query spends ~20 instructions here.
 #include <cmath>
 #include <string>
 
+#include "gq/custom.h"
 #include "gq/geometry.h"
 #include "gq/status.h"
 #include "gq/tolerances.h"
@@ -10,12 +13,41 @@
 
 namespace gq::detail {
 
+// Why an input is rejected; `reason == nullptr` means valid.
+struct Problem {
+  StatusCode code = StatusCode::Ok;
+  const char* reason = nullptr;
+
+  static Problem invalid(const char* r) { return {StatusCode::InvalidArgument, r}; }
+  static Problem degenerate(const char* r) { return {StatusCode::DegenerateMesh, r}; }
+  explicit operator bool() const { return reason != nullptr; }
+  Status status() const { return reason ? Status(code, reason) : Status(); }
+};
+
+// The geometry rules (common/geometry.cpp); validateGeometry() is their Status form.
+template <class T> Problem geometryProblem(const Geometry<T>& geom);
+
+// | |v| - 1 | <= tolerance, tested on |v|^2 against the squared bounds (the same set, no square root; NaN fails).
+inline bool squaredNormIsUnit(double n2, double tolerance) {
+  return n2 >= (1.0 - tolerance) * (1.0 - tolerance) && n2 <= (1.0 + tolerance) * (1.0 + tolerance);
+}
+
+template <class T> bool isUnitQuaternion(const Quat<T>& q) {
+  return squaredNormIsUnit(double(q.squaredNorm()), tol::kUnitQuaternion);
+}
+
+// A NaN or infinite quaternion component fails the norm bounds; x * 0 is exactly 0 only for a finite x.
+template <class T> bool poseIsValid(const Transform<T>& pose) {
+  return T(0) * pose.p.x() + T(0) * pose.p.y() + T(0) * pose.p.z() == T(0) && isUnitQuaternion(pose.q);
+}
+
 template <class T> Status checkFinite(const Vec3<T>& v, const char* what) {
   if (!isFinite(v)) return Status::invalid(std::string(what) + " is not finite");
   return {};
 }
 
 template <class T> Status checkUnitDirection(const Vec3<T>& d, const char* what) {
+  if (isFinite(d) && squaredNormIsUnit(double(d.squaredNorm()), tol::kUnitDirection)) return {};
   if (!isFinite(d)) return Status::invalid(std::string(what) + " is not finite");
   const double len = std::sqrt(double(d.squaredNorm()));
   if (std::abs(len - 1.0) > tol::kUnitDirection)
@@ -24,6 +56,7 @@ template <class T> Status checkUnitDirection(const Vec3<T>& d, const char* what)
 }
 
 template <class T> Status checkPose(const Transform<T>& pose, const char* what) {
+  if (poseIsValid(pose)) return {};
   if (!pose.isFinite()) return Status::invalid(std::string(what) + " is not finite");
   const double n = std::sqrt(double(pose.q.squaredNorm()));
   if (std::abs(n - 1.0) > tol::kUnitQuaternion)
@@ -37,11 +70,24 @@ template <class T> Status checkNonNegative(T x, const char* what) {
   return {};
 }
 
+// Non-convex custom shapes answer only raycast and bounds (gq/custom.h).
+template <class T> bool isNonConvexCustom(const Geometry<T>& g) {
+  const auto* c = g.template getIf<CustomGeometry<T>>();
+  return c && !c->callbacks->isConvex();
+}
+
 // Geometry + pose, the pair every query takes.
 template <class T> Status checkGeometryAndPose(const Geometry<T>& g, const Transform<T>& pose, const char* poseName) {
-  Status s = validateGeometry(g);
-  if (!s.ok()) return s;
+  if (const Problem p = geometryProblem(g)) return p.status();
   return checkPose(pose, poseName);
+}
+
+// Both inputs of a pair query ("pose0", "pose1").
+template <class T>
+Status checkPairInputs(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
+  if (!geometryProblem(g0) && !geometryProblem(g1) && poseIsValid(p0) && poseIsValid(p1)) return {};
+  if (Status s = checkGeometryAndPose(g0, p0, "pose0"); !s.ok()) return s;
+  return checkGeometryAndPose(g1, p1, "pose1");
 }
 
 // Runs `body` (returning Status) and turns any escaping exception into InternalError: nothing throws out.

@@ -118,11 +118,6 @@ template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTab
 static_assert(kDistanceTable<double>.size() == kGeometryTypeCount && kDistanceTable<double>[0].size() == kGeometryTypeCount,
               "one row and one column per GeometryType");
 
-template <class T> bool nonConvexCustom(const Geometry<T>& g) {
-  const auto* c = g.template getIf<CustomGeometry<T>>();
-  return c && !c->callbacks->isConvex();
-}
-
 template <class T> bool finiteResult(const DistanceResult<T>& r) {
   return std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal);
 }
@@ -133,9 +128,8 @@ template <class T>
 Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
                 const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache) {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkGeometryAndPose(geom0, pose0, "pose0"); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(geom1, pose1, "pose1"); !s.ok()) return s;
-    if (nonConvexCustom(geom0) || nonConvexCustom(geom1))
+    if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
+    if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1))
       return Status::unsupported("distance needs a convex custom geometry (isConvex() is false)");
     // Normalise the poses' rotations (validation accepts |q| within 1e-3 of 1).
     const Transform<T> q0(pose0.p, pose0.q.normalized()), q1(pose1.p, pose1.q.normalized());

@@ -56,9 +56,9 @@ Status customFirst(const Geometry<T>& g0, const Transform<T>& p0, const Geometry
   return Fallback(g0, p0, g1, p1, overlapping);
 }
 
-// Non-convex custom shapes answer only raycast and bounds (gq/custom.h).
-template <class T> Status checkConvexCustom(const Geometry<T>& g) {
-  if (g.type() != GeometryType::Custom || callbacksOf(g).isConvex()) return Status();
+// The rejection of a pair in which a custom shape is not convex (only raycast and bounds answer those).
+template <class T> Status nonConvexCustomStatus(const Geometry<T>& g0, const Geometry<T>& g1) {
+  const Geometry<T>& g = detail::isNonConvexCustom(g0) ? g0 : g1;
   return Status::unsupported(std::string("overlap with the non-convex custom geometry '") + callbacksOf(g).name() +
                              "' (only raycast and bounds are available for it)");
 }
@@ -137,10 +137,8 @@ template <class T>
 Status overlap(const Geometry<T>& geom0, const Transform<T>& pose0, const Geometry<T>& geom1,
                const Transform<T>& pose1, bool& overlapping) {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkGeometryAndPose(geom0, pose0, "pose0"); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(geom1, pose1, "pose1"); !s.ok()) return s;
-    if (Status s = checkConvexCustom(geom0); !s.ok()) return s;
-    if (Status s = checkConvexCustom(geom1); !s.ok()) return s;
+    if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
+    if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1)) return nonConvexCustomStatus(geom0, geom1);
     const Transform<T> relative1 = pose1.relativeTo(pose0);
     bool result = false;
     const OverlapFn<T> fn = kOverlapTable<T>[std::size_t(geom0.type())][std::size_t(geom1.type())];

@@ -75,8 +75,7 @@ Status validateSweep(const Vec3<T>& dir, T maxDist, const Geometry<T>& g0, const
   if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
   if (!std::isfinite(inflation) || inflation < T(0)) return Status::invalid("inflation must be finite and >= 0");
   if (flags.has(HitFlag::MeshMultiple)) return Status::invalid("meshMultiple is not supported by sweeps (one hit)");
-  if (Status s = detail::checkGeometryAndPose(g0, p0, "pose0"); !s.ok()) return s;
-  if (Status s = detail::checkGeometryAndPose(g1, p1, "pose1"); !s.ok()) return s;
+  if (Status s = detail::checkPairInputs(g0, p0, g1, p1); !s.ok()) return s;
   if (!isSweepable(g0.type()))
     return Status::unsupported(std::string("sweeping a ") + toString(g0.type()) +
                                " (the swept geometry must be a sphere, capsule, box or convex mesh)");
