@@ -26,12 +26,13 @@
 namespace gq::detail {
 namespace {
 
+// Plain data (no member initializers: arrays of faces are not zeroed per query; makeFace writes every field).
 template <class T> struct EpaFace {
   std::array<std::uint32_t, 3> v;  // outward (counter-clockwise seen from outside)
   Vec3<T> n;                       // outward unit normal
   T dist;                          // n . vertex: signed distance of the plane from the origin
-  bool alive = true;
-  bool final = false;              // cannot be expanded without degenerating: bounds, but is not refined
+  bool alive;
+  bool final;                      // cannot be expanded without degenerating: bounds, but is not refined
 };
 
 // Relative certified error accepted when EPA runs out of iterations on a curved support map (see above).
@@ -65,6 +66,7 @@ template <class T> bool makeFace(const Polytope<T>& poly, std::uint32_t i, std::
   f.n = n / len;
   f.dist = f.n.dot(p0);
   f.alive = true;
+  f.final = false;
   return true;
 }
 
@@ -116,18 +118,19 @@ template <class T>
 bool liftToTetrahedron(SupportMap<T>& a, SupportMap<T>& b, T tolerance, GjkSimplex<T>& s, Vec3<T>& flatNormal) {
   while (s.size < 4) {
     T bestLift = T(-1), flattest = std::numeric_limits<T>::infinity();
-    SupportPoint<T> best{};
+    std::array<SupportPoint<T>, 6> lifted;
+    std::uint32_t best = 0;
     const Directions<T> dirs = liftDirections(s);
     for (std::uint32_t k = 0; k < dirs.count; ++k) {
       const Vec3<T>& d = dirs.d[k];
-      const SupportPoint<T> p = supportOfDifference(a, b, d);
-      const T lift = distanceFromHull(s, p.w);
-      if (lift > bestLift) { bestLift = lift; best = p; }
-      const T extent = d.dot(p.w);
+      lifted[k] = supportOfDifference(a, b, d);
+      const T lift = distanceFromHull(s, lifted[k].w);
+      if (lift > bestLift) { bestLift = lift; best = k; }
+      const T extent = d.dot(lifted[k].w);
       if (extent < flattest) { flattest = extent; flatNormal = d; }
     }
     if (!(bestLift > tolerance)) return false;
-    s.points[s.size++] = best;
+    s.points[s.size++] = lifted[best];
   }
   return true;
 }
@@ -160,7 +163,11 @@ template <class T> std::uint32_t closestFace(const Polytope<T>& poly, T& lowerBo
   return best;
 }
 
-using Edge = std::pair<std::uint32_t, std::uint32_t>;
+// Directed polytope edge (plain data, so the horizon's buffer is not zeroed per expansion).
+struct Edge {
+  std::uint32_t first, second;
+  bool operator==(const Edge& o) const { return first == o.first && second == o.second; }
+};
 
 // Boundary of the removed faces: an edge seen twice (once per orientation) is interior and cancels.
 struct Horizon {
@@ -169,7 +176,7 @@ struct Horizon {
   bool overflow = false;
 
   void toggle(const Edge& e) {
-    const Edge twin(e.second, e.first);
+    const Edge twin{e.second, e.first};
     for (std::uint32_t k = 0; k < count; ++k)
       if (edges[k] == twin) {
         edges[k] = edges[--count];
@@ -200,7 +207,7 @@ bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p, T l
     // bases), so the removed region stays a disk and its boundary one loop.
     if (!f.alive || (i != best && !(f.n.dot(p.w - poly.points[f.v[0]].w) > tolerance))) continue;
     freeSlots[freeCount++] = i;
-    for (int e = 0; e < 3; ++e) horizon.toggle(Edge(f.v[e], f.v[(e + 1) % 3]));
+    for (int e = 0; e < 3; ++e) horizon.toggle(Edge{f.v[e], f.v[(e + 1) % 3]});
   }
   if (horizon.overflow || poly.faceCount + horizon.count > kEpaMaxFaces + freeCount) return false;
   std::array<EpaFace<T>, kEpaMaxHorizon> added;

@@ -23,9 +23,11 @@
 
 namespace gq::detail {
 
-// Convex hulls with more vertices than this use hill-climbing over the hull's edge adjacency; smaller ones are
-// searched exhaustively (cheaper than the climb's bookkeeping).
-inline constexpr std::uint32_t kHillClimbMinVertices = 32;
+// Convex hulls with more vertices than this use hill-climbing over the hull's edge adjacency (warm-started from the
+// previous support vertex); smaller ones are searched exhaustively. Measured (docs/convex_speed.md): the climb is
+// faster in time from 12 vertices up (the exhaustive scan's data-dependent branches mispredict), and a SIMD scan
+// over a per-query structure-of-arrays copy (SSE2) was slower than the climb at 30 vertices.
+inline constexpr std::uint32_t kHillClimbMinVertices = 8;
 // GJK/EPA stopping tolerance = max(Rel<T>::kGjkTolerance, kGjkRoundoffUlps * machine epsilon) * length scale:
 // the floor keeps float from chasing an error bound below its own rounding of the support points.
 inline constexpr double kGjkRoundoffUlps = 16.0;
@@ -33,8 +35,10 @@ inline constexpr std::uint32_t kGjkMaxIterations = 128;
 inline constexpr std::uint32_t kEpaMaxIterations = 128;
 // GJK steps without a strict decrease of |v| tolerated before stopping (rounding stalls near the origin).
 inline constexpr std::uint32_t kGjkMaxStalls = 4;
-// Nesterov momentum on the GJK search direction (gjk.cpp); false gives plain GJK.
-inline constexpr bool kGjkNesterov = true;
+// Nesterov momentum on the GJK search direction (gjk.cpp); false gives plain GJK. Off: on hull pairs of 30/100
+// vertices and cylinder-box it cost 13-25% more instructions in the boolean GJK and ~8% in distance (callgrind,
+// docs/convex_speed.md): the momentum supports seldom pass the gap test and are often retried without momentum.
+inline constexpr bool kGjkNesterov = false;
 // Iterations after which momentum is switched off for good. On curved support maps (cylinders, cones) momentum
 // could keep |v| creeping down without ever passing the duality-gap test and exhaust kGjkMaxIterations (measured:
 // stopped 0.004-0.19 short, where plain GJK converges in ~10 iterations).
@@ -70,11 +74,13 @@ bool isConvexShapeType(GeometryType type);
 template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Transform<T>& pose);
 
 // Support point of the Minkowski difference a - b, with the two points it came from (needed for witnesses).
+// No default member initializers on purpose: EPA keeps ~130 of these in a stack array per query, and zeroing them
+// cost more than EPA's own work on small hulls (a slot is always written before it is read).
 template <class T> struct SupportPoint {
-  Vec3<T> w = Vec3<T>::Zero();  // a - b
-  Vec3<T> a = Vec3<T>::Zero();  // on a's core
-  Vec3<T> b = Vec3<T>::Zero();  // on b's core
-  Vec3<T> d = Vec3<T>::Zero();  // world search direction: a = s_A(d), b = s_B(-d)
+  Vec3<T> w;  // a - b
+  Vec3<T> a;  // on a's core
+  Vec3<T> b;  // on b's core
+  Vec3<T> d;  // world search direction: a = s_A(d), b = s_B(-d)
 };
 
 template <class T> struct GjkSimplex {

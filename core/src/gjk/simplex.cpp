@@ -51,6 +51,23 @@ Candidate<T> bestEdge(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j, 
   return closer(closer(a, b), c);
 }
 
+// Origin projecting outside triangle (i, j, k) with weights l: the closest point lies on an edge whose line
+// separates the projection from the triangle, i.e. an edge opposite a vertex of weight <= 0 (the difference
+// vector lies in the normal cone of the closest point, spanned by such edges' outward normals). Only those
+// edges are tried (Montanari et al. 2017's sign test).
+template <class T>
+Candidate<T> closestEdge(const GjkSimplex<T>& s, const std::array<std::uint32_t, 3>& v, const std::array<T, 3>& l) {
+  Candidate<T> best;
+  bool any = false;
+  for (int m = 0; m < 3; ++m) {
+    if (l[m] > T(0)) continue;
+    const Candidate<T> c = segmentCandidate(s, v[(m + 1) % 3], v[(m + 2) % 3]);
+    if (!any || c.v.squaredNorm() < best.v.squaredNorm()) best = c;
+    any = true;
+  }
+  return any ? best : bestEdge(s, v[0], v[1], v[2]);  // unreachable (some weight is <= 0 or NaN); kept total
+}
+
 // Triangle i-j-k: project the origin on the plane; the weights are the signed areas of the sub-triangles
 // (dotted with the normal n) over |n|^2. Outside the triangle (or degenerate) the closest point is on an edge.
 template <class T>
@@ -64,7 +81,7 @@ Candidate<T> triangleCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uin
   const T l0 = n.dot((p1 - p).cross(p2 - p)) / nn;
   const T l1 = n.dot((p2 - p).cross(p0 - p)) / nn;
   const T l2 = T(1) - l0 - l1;
-  if (!(l0 > T(0) && l1 > T(0) && l2 > T(0))) return bestEdge(s, i, j, k);
+  if (!(l0 > T(0) && l1 > T(0) && l2 > T(0))) return closestEdge(s, {i, j, k}, {l0, l1, l2});
   Candidate<T> c;
   c.index = {i, j, k, 0};
   c.count = 3;
@@ -81,6 +98,22 @@ template <class T> Candidate<T> bestFace(const GjkSimplex<T>& s) {
   return closer(closer(a, b), closer(c, d));
 }
 
+// Origin outside the tetrahedron: the closest point lies on a face the origin sees, i.e. a face opposite a vertex
+// of signed-volume weight <= 0 (same normal-cone argument as closestEdge); only those faces are tried.
+template <class T> Candidate<T> closestFace(const GjkSimplex<T>& s, const std::array<T, 4>& l) {
+  static constexpr std::array<std::array<std::uint32_t, 3>, 4> kOpposite = {{{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
+  Candidate<T> best;
+  bool any = false;
+  for (int m = 0; m < 4; ++m) {
+    if (l[m] > T(0)) continue;
+    const auto& f = kOpposite[m];
+    const Candidate<T> c = triangleCandidate(s, f[0], f[1], f[2]);
+    if (!any || c.v.squaredNorm() < best.v.squaredNorm()) best = c;
+    any = true;
+  }
+  return any ? best : bestFace(s);  // unreachable (some weight is <= 0 or NaN); kept total
+}
+
 template <class T> T tripleProduct(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) { return a.dot(b.cross(c)); }
 
 // Tetrahedron: the origin's barycentric weights are signed volumes with the origin replacing one vertex.
@@ -95,7 +128,7 @@ template <class T> Candidate<T> tetrahedronCandidate(const GjkSimplex<T>& s) {
                               tripleProduct<T>(p0 - o, p3 - o, p2 - o) / det,
                               tripleProduct<T>(p0 - o, p1 - o, p3 - o) / det,
                               tripleProduct<T>(p0 - o, p2 - o, p1 - o) / det};
-  if (!(l[0] > T(0) && l[1] > T(0) && l[2] > T(0) && l[3] > T(0))) return bestFace(s);
+  if (!(l[0] > T(0) && l[1] > T(0) && l[2] > T(0) && l[3] > T(0))) return closestFace(s, l);
   Candidate<T> c;
   c.index = {0, 1, 2, 3};
   c.count = 4;
@@ -115,10 +148,14 @@ template <class T> SimplexClosest<T> closestOnSimplex(GjkSimplex<T>& s) {
     case 3: c = triangleCandidate(s, 0, 1, 2); break;
     default: c = tetrahedronCandidate(s); break;
   }
-  GjkSimplex<T> reduced;
-  for (std::uint32_t k = 0; k < c.count; ++k) reduced.points[k] = s.points[c.index[k]];
-  reduced.size = c.count;
-  s = reduced;
+  bool identity = true;
+  for (std::uint32_t k = 0; k < c.count; ++k) identity = identity && c.index[k] == k;
+  if (!identity) {
+    std::array<SupportPoint<T>, 4> kept;
+    for (std::uint32_t k = 0; k < c.count; ++k) kept[k] = s.points[c.index[k]];
+    for (std::uint32_t k = 0; k < c.count; ++k) s.points[k] = kept[k];
+  }
+  s.size = c.count;
   return SimplexClosest<T>{c.v, c.lambda, c.containsOrigin};
 }
 
