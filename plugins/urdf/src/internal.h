@@ -58,13 +58,16 @@ template <class T> Mat3<double> principalAxes(const std::vector<Vec3<T>>& v, Vec
 // Extents of the points in frame `r`: lo/hi of R^T v.
 template <class T> void extentsIn(const std::vector<Vec3<T>>& v, const Mat3<double>& r, Vec3<double>& lo, Vec3<double>& hi);
 
-// Capsule along r's first column enclosing every point: radius = largest distance from the axis through the
-// centre of the points' r-box cross-section (at least minRadius), segment ends as short as every point allows.
+// Capsule along r's first column enclosing every point (or every ball: point i with radius (*radii)[i]): radius =
+// largest distance from the axis through the centre of the points' r-box cross-section plus the ball's radius (at
+// least minRadius), segment ends as short as every ball allows.
 struct EnclosingCapsule {
   Vec3<double> centre = Vec3<double>::Zero(), axis = Vec3<double>::UnitX();
   double halfHeight = 0, radius = 0;
 };
-template <class T> EnclosingCapsule enclosingCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minRadius);
+template <class T>
+EnclosingCapsule enclosingCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minRadius,
+                                  const std::vector<double>* radii = nullptr);
 
 // ---- Culling volumes (shape_bounds.cpp) ----------------------------------------------------------------------
 // Bounding volumes of a shape in its own frame: an enclosing sphere, an enclosing box (the smaller of the local

@@ -41,19 +41,23 @@ template <class T> void extentsIn(const std::vector<Vec3<T>>& v, const Mat3<doub
   }
 }
 
-template <class T> EnclosingCapsule enclosingCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minRadius) {
+template <class T>
+EnclosingCapsule enclosingCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minRadius,
+                                  const std::vector<double>* radii) {
   Vec3<double> lo, hi;
   extentsIn(v, r, lo, hi);
   const Vec3<double> c = (lo + hi) * 0.5;  // the axis runs along local x through (c.y, c.z)
+  const auto ball = [&](std::size_t i) { return radii ? (*radii)[i] : 0.0; };
   double radius = minRadius;
-  for (const auto& p : v) {
-    const Vec3<double> l = r.transpose() * p.template cast<double>() - c;
-    radius = std::max(radius, std::hypot(l.y(), l.z()));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec3<double> l = r.transpose() * v[i].template cast<double>() - c;
+    radius = std::max(radius, std::hypot(l.y(), l.z()) + ball(i));
   }
   double a = std::numeric_limits<double>::max(), b = -std::numeric_limits<double>::max();
-  for (const auto& p : v) {
-    const Vec3<double> l = r.transpose() * p.template cast<double>() - c;
-    const double reach = std::sqrt(std::max(0.0, radius * radius - l.y() * l.y() - l.z() * l.z()));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec3<double> l = r.transpose() * v[i].template cast<double>() - c;
+    const double room = radius - ball(i);  // the ball fits when its centre is this close to the segment
+    const double reach = std::sqrt(std::max(0.0, room * room - l.y() * l.y() - l.z() * l.z()));
     a = std::min(a, l.x() + reach);  // the segment must start at or before t + reach
     b = std::max(b, l.x() - reach);  // and end at or after t - reach
   }
@@ -66,8 +70,10 @@ template <class T> EnclosingCapsule enclosingCapsule(const std::vector<Vec3<T>>&
   return out;
 }
 
-template EnclosingCapsule enclosingCapsule<float>(const std::vector<Vec3<float>>&, const Mat3<double>&, double);
-template EnclosingCapsule enclosingCapsule<double>(const std::vector<Vec3<double>>&, const Mat3<double>&, double);
+template EnclosingCapsule enclosingCapsule<float>(const std::vector<Vec3<float>>&, const Mat3<double>&, double,
+                                                  const std::vector<double>*);
+template EnclosingCapsule enclosingCapsule<double>(const std::vector<Vec3<double>>&, const Mat3<double>&, double,
+                                                   const std::vector<double>*);
 
 namespace {
 

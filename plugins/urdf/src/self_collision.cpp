@@ -1,10 +1,11 @@
 // Self-collision and self-distance. Everything that does not depend on the configuration is done once: the link
-// pairs the allowed-collision matrix leaves (checkedPairs_), an enclosing sphere per shape and per link (in the link
-// frame) and an enclosing box per shape (shape_bounds.cpp). Per configuration: forward kinematics, world sphere
-// centres (one rotation each), then for each checked link pair the link spheres, the shape spheres, the shapes'
-// oriented boxes (15-axis SAT) and only then the narrow phase, gq::overlap (GJK boolean for hulls and custom
-// cylinders, exact kernels for primitives, convex hulls then dual BVH for meshes). Full shape poses are computed
-// lazily, for shapes that reach the oriented-box test. No allocation per check once the buffers have grown.
+// pairs the allowed-collision matrix leaves (checkedPairs_), the compiled kinematics (kinematic_chain.h) and, in the
+// frame of each rigid body, an enclosing sphere per shape and per link, an enclosing capsule and box per shape
+// (shape_bounds.cpp). Per configuration: the body frames (rotation matrices), world link-sphere centres, then for
+// each checked link pair the link spheres, the shape spheres, the capsules (segment distance), the oriented boxes
+// (15-axis SAT) and only then the narrow phase, gq::overlap (GJK boolean for hulls and custom cylinders, exact
+// kernels for primitives, convex hulls then dual BVH for meshes). Capsules, boxes and poses are placed lazily, the
+// body quaternion only for shapes that reach the narrow phase. No allocation per check once the buffers have grown.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -39,6 +40,36 @@ template <class T> T robotSize(const RobotModel<T>& model, T largestShape) {
     if (j.type == JointType::Prismatic) size += std::max(std::abs(j.lower), std::abs(j.upper));
   }
   return size;
+}
+
+// The capsule enclosing the balls at the ends of every shape's capsule (a shape without one: its sphere); the
+// capsule is kept only when thinner than the link sphere. Its radius grows like the shapes' (slack, near-parallel
+// segment-distance bound).
+template <class T, class ShapeBound, class LinkCapsule>
+LinkCapsule linkCapsuleOf(const std::vector<std::uint32_t>& shapes, const std::vector<ShapeBound>& bounds, T linkRadius,
+                          T slack) {
+  LinkCapsule out;
+  if (shapes.empty()) return out;
+  std::vector<Vec3<double>> centres;
+  std::vector<double> radii;
+  for (std::uint32_t s : shapes) {
+    const ShapeBound& b = bounds[s];
+    for (const Vec3<T>& end : {b.capsuleStart, Vec3<T>(b.capsuleStart + b.capsuleSpan)}) {
+      centres.push_back(end.template cast<double>());
+      radii.push_back(double(b.capsuleRadius));
+    }
+  }
+  Vec3<double> mean;
+  const detail::EnclosingCapsule c = detail::enclosingCapsule(centres, detail::principalAxes(centres, mean), 0.0, &radii);
+  const Vec3<double> span = 2.0 * c.halfHeight * c.axis;
+  const double rounding = 8.0 * double(std::numeric_limits<T>::epsilon()) * (c.halfHeight + c.radius + c.centre.norm());
+  const T radius = T(c.radius + rounding) + slack + T(4) * std::sqrt(std::numeric_limits<T>::epsilon()) * T(span.norm());
+  if (!(radius < linkRadius)) return out;
+  out.used = true;
+  out.start = (c.centre - 0.5 * span).cast<T>();
+  out.span = span.cast<T>();
+  out.radius = radius;
+  return out;
 }
 
 }  // namespace
@@ -96,10 +127,15 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
       linkRadius_[l] = std::max(linkRadius_[l], (shapeBounds_[s].centreInBody - linkCentreInBody_[l]).norm() +
                                                     shapeBounds_[s].radius);
   }
+  linkCapsules_.assign(links, LinkCapsule());
+  for (std::size_t l = 0; l < links; ++l) linkCapsules_[l] = linkCapsuleOf<T, ShapeBound, LinkCapsule>(
+                                                        m.links[l].shapes, shapeBounds_, linkRadius_[l], slack_);
   for (std::uint32_t a = 0; a < links; ++a)
     for (std::uint32_t b = a + 1; b < links; ++b)
       if (!m.links[a].shapes.empty() && !m.links[b].shapes.empty() && !m.isAllowed(a, b))
-        checkedPairs_.push_back({{a, b}, m.links[a].shapes.size() > 1 || m.links[b].shapes.size() > 1});
+        checkedPairs_.push_back({{a, b}, (linkRadius_[a] + linkRadius_[b]) * (linkRadius_[a] + linkRadius_[b]),
+                                 m.links[a].shapes.size() > 1 || m.links[b].shapes.size() > 1,
+                                 linkCapsules_[a].used || linkCapsules_[b].used});
   for (std::uint32_t l = 0; l < links; ++l)
     if (!m.links[l].shapes.empty()) shapedLinks_.push_back(l);
   bodyRotations_.assign(chain_->bodyCount(), Mat3<T>::Identity());
@@ -113,6 +149,9 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
   capsuleStarts_.resize(shapes);
   capsuleSpans_.resize(shapes);
   capsuleStamp_.assign(shapes, 0);
+  linkCapsuleStarts_.resize(links);
+  linkCapsuleSpans_.resize(links);
+  linkCapsuleStamp_.assign(links, 0);
   boxStamp_.assign(shapes, 0);
   poseStamp_.assign(shapes, 0);
 }
@@ -123,6 +162,7 @@ template <class T> Status SelfCollisionChecker<T>::placeBodies(const std::vector
   if (++stamp_ == 0) {  // wrapped: forget every placement
     std::fill(boxStamp_.begin(), boxStamp_.end(), 0u);
     std::fill(capsuleStamp_.begin(), capsuleStamp_.end(), 0u);
+    std::fill(linkCapsuleStamp_.begin(), linkCapsuleStamp_.end(), 0u);
     std::fill(poseStamp_.begin(), poseStamp_.end(), 0u);
     std::fill(quatStamp_.begin(), quatStamp_.end(), 0u);
     stamp_ = 1;
@@ -169,6 +209,30 @@ template <class T> void SelfCollisionChecker<T>::placeCapsule(std::uint32_t i) {
   capsuleSpans_[i].noalias() = r * sb.capsuleSpan;
 }
 
+// A link without a capsule of its own is its sphere: a capsule of zero span.
+template <class T> void SelfCollisionChecker<T>::placeLinkCapsule(std::uint32_t l) {
+  if (linkCapsuleStamp_[l] == stamp_) return;
+  linkCapsuleStamp_[l] = stamp_;
+  const LinkCapsule& c = linkCapsules_[l];
+  if (!c.used) {
+    linkCapsuleStarts_[l] = linkCentres_[l];
+    linkCapsuleSpans_[l].setZero();
+    return;
+  }
+  const Mat3<T>& r = bodyRotations_[linkBody_[l]];
+  linkCapsuleStarts_[l].noalias() = r * c.start;
+  linkCapsuleStarts_[l] += bodyPositions_[linkBody_[l]];
+  linkCapsuleSpans_[l].noalias() = r * c.span;
+}
+
+template <class T> bool SelfCollisionChecker<T>::linkCapsulesDisjoint(std::uint32_t a, std::uint32_t b) {
+  placeLinkCapsule(a);
+  placeLinkCapsule(b);
+  return capsulesDisjoint(linkCapsuleStarts_[a], linkCapsuleSpans_[a],
+                          linkCapsules_[a].used ? linkCapsules_[a].radius : linkRadius_[a], linkCapsuleStarts_[b],
+                          linkCapsuleSpans_[b], linkCapsules_[b].used ? linkCapsules_[b].radius : linkRadius_[b]);
+}
+
 // The shape's pose for the narrow phase: the body's rotation as a quaternion (once per body and configuration)
 // composed with the shape's constant pose in the body.
 template <class T> const Transform<T>& SelfCollisionChecker<T>::shapePose(std::uint32_t i) {
@@ -183,8 +247,8 @@ template <class T> const Transform<T>& SelfCollisionChecker<T>::shapePose(std::u
   return shapePoses_[i];
 }
 
-// Shape spheres (only when a link has several shapes: a single shape's sphere is its link's), capsules (a sphere
-// stands in for a shape without one), then oriented boxes.
+// Shape spheres and capsules (only when a link has several shapes: a single shape's sphere and capsule are its
+// link's, tested already; a sphere stands in for a shape without a capsule), then oriented boxes.
 template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa, std::uint32_t sb, bool shapeSpheres) {
   if (shapeSpheres) {
     const ShapeBound& a = shapeBounds_[sa];
@@ -193,7 +257,7 @@ template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa
     const Vec3<T> cb = bodyRotations_[b.body] * b.centreInBody + bodyPositions_[b.body];
     if (!spheresOverlap(ca, a.radius, cb, b.radius)) return false;
   }
-  if (shapeBounds_[sa].hasCapsule || shapeBounds_[sb].hasCapsule) {
+  if (shapeSpheres && (shapeBounds_[sa].hasCapsule || shapeBounds_[sb].hasCapsule)) {
     placeCapsule(sa);
     placeCapsule(sb);
     if (capsulesDisjoint(capsuleStarts_[sa], capsuleSpans_[sa], shapeBounds_[sa].capsuleRadius, capsuleStarts_[sb],
@@ -246,7 +310,8 @@ Status SelfCollisionChecker<T>::checkSelfCollision(const std::vector<T>& q, Coll
   hits_.clear();
   for (const CheckedPair& pair : checkedPairs_) {
     const LinkPair& p = pair.links;
-    if (!spheresOverlap(linkCentres_[p.a], linkRadius_[p.a], linkCentres_[p.b], linkRadius_[p.b])) continue;
+    if ((linkCentres_[p.a] - linkCentres_[p.b]).squaredNorm() > pair.reach2) continue;  // link spheres apart
+    if (pair.linkCapsules && linkCapsulesDisjoint(p.a, p.b)) continue;
     bool hit = false;
     if (s = linkPairCollides(pair, hit); !s.ok()) return s;
     if (!hit) continue;

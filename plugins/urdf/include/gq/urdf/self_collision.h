@@ -79,10 +79,18 @@ template <class T> class SelfCollisionChecker {
     bool hasHull = false;  // mesh shapes: `hull` is their convex hull, tested before the triangles
     Geometry<T> hull;
   };
+  // Capsule enclosing every shape of a link (body frame), when tighter than the link sphere.
+  struct LinkCapsule {
+    bool used = false;
+    Vec3<T> start = Vec3<T>::Zero(), span = Vec3<T>::Zero();
+    T radius = T(0);
+  };
   // A link pair the allowed-collision matrix leaves, with what its shape loop needs.
   struct CheckedPair {
     LinkPair links;
-    bool shapeSpheres = false;  // a link has several shapes: test shape spheres before the boxes
+    T reach2 = T(0);            // (sum of the link sphere radii)^2: centres farther apart than this cull the pair
+    bool shapeSpheres = false;  // a link has several shapes: test shape spheres and capsules before the boxes
+    bool linkCapsules = false;  // a link has a capsule: test link capsules after the link spheres
   };
 
   Status placeBodies(const std::vector<T>& q);
@@ -90,6 +98,8 @@ template <class T> class SelfCollisionChecker {
   void placeShapeSpheres();
   void placeShape(std::uint32_t shape);
   void placeCapsule(std::uint32_t shape);
+  void placeLinkCapsule(std::uint32_t link);
+  bool linkCapsulesDisjoint(std::uint32_t linkA, std::uint32_t linkB);
   const Transform<T>& shapePose(std::uint32_t shape);
   bool shapesMayTouch(std::uint32_t shapeA, std::uint32_t shapeB, bool shapeSpheres);
   Status narrowPhase(std::uint32_t shapeA, std::uint32_t shapeB, bool& hit);
@@ -103,6 +113,7 @@ template <class T> class SelfCollisionChecker {
   std::vector<std::uint32_t> linkBody_;
   std::vector<Vec3<T>> linkCentreInBody_;    // per link: sphere enclosing its shapes' spheres
   std::vector<T> linkRadius_;
+  std::vector<LinkCapsule> linkCapsules_;
   T slack_ = T(0);                           // absolute culling slack (rounding of world placements)
   // Per configuration.
   std::vector<Mat3<T>> bodyRotations_;
@@ -112,7 +123,8 @@ template <class T> class SelfCollisionChecker {
   std::vector<Transform<T>> shapePoses_;             // valid when poseStamp_[s] == stamp_
   std::vector<OrientedBox<T>> shapeBoxes_;           // valid when boxStamp_[s] == stamp_
   std::vector<Vec3<T>> capsuleStarts_, capsuleSpans_;  // world; valid when capsuleStamp_[s] == stamp_
-  std::vector<std::uint32_t> boxStamp_, poseStamp_, quatStamp_, capsuleStamp_;
+  std::vector<Vec3<T>> linkCapsuleStarts_, linkCapsuleSpans_;  // world; valid when linkCapsuleStamp_[l] == stamp_
+  std::vector<std::uint32_t> boxStamp_, poseStamp_, quatStamp_, capsuleStamp_, linkCapsuleStamp_;
   std::uint32_t stamp_ = 0;
   std::vector<LinkPair> hits_;              // colliding pairs found so far in this call
   std::size_t lastNarrow_ = 0;
