@@ -223,11 +223,16 @@ template <class T> class HeightFieldRaycaster {
   }
 
   // World normal of triangle `tri` facing +Y in shape space; a back-face hit on a double-sided field reports the
-  // reversed normal (the spec).
+  // reversed normal (the spec). Each edge is divided by its largest coordinate before the cross product: with row and
+  // column scales near 1e20 in float (1e160 in double) the plain product overflows and normalizes to NaN (found by
+  // fuzz_raycast). An edge that itself overflows leaves no direction: the normal then faces the ray, as for meshes.
   Vec3<T> worldNormal(const Candidate<T>& c) const {
     const std::array<std::uint32_t, 3> s = heightFieldTriangleSamples(hf_, c.triangle);
     const Vec3<T> a = heightFieldVertex(g_, s[0]);
-    Vec3<T> n = (heightFieldVertex(g_, s[1]) - a).cross(heightFieldVertex(g_, s[2]) - a).normalized();
+    auto unitMax = [](const Vec3<T>& e) -> Vec3<T> { return e / e.cwiseAbs().maxCoeff(); };
+    Vec3<T> n = unitMax(heightFieldVertex(g_, s[1]) - a).cross(unitMax(heightFieldVertex(g_, s[2]) - a));
+    n = n.stableNormalized();
+    if (!n.allFinite() || n.squaredNorm() == T(0)) return -ray_.dir;
     if (!c.front && g_.doubleSided()) n = -n;
     return pose_.rotate(n);
   }
