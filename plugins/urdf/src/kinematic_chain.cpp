@@ -124,6 +124,24 @@ template <class T> Mat3<T> KinematicChain<T>::turnByOrigin(const Mat3<T>& parent
   return m;
 }
 
+// child = R_parent * G * Rz(t): columns c m0 + s m1, c m1 - s m0, m2 of m = R_parent * G; for a signed
+// permutation G the columns of m are signed columns of R_parent, read directly.
+template <class T>
+void KinematicChain<T>::turnAboutZ(const Mat3<T>& parent, const Step& s, T c, T sn, Mat3<T>& child) {
+  if (!s.permutation) {
+    const Mat3<T> m = parent * s.g;
+    child.col(0) = c * m.col(0) + sn * m.col(1);
+    child.col(1) = c * m.col(1) - sn * m.col(0);
+    child.col(2) = m.col(2);
+    return;
+  }
+  const auto m0 = parent.col(s.from[0]), m1 = parent.col(s.from[1]);
+  const T c0 = c * s.sign[0], s1 = sn * s.sign[1], c1 = c * s.sign[1], s0 = sn * s.sign[0];
+  child.col(0) = c0 * m0 + s1 * m1;
+  child.col(1) = c1 * m1 - s0 * m0;
+  child.col(2) = s.sign[2] * parent.col(s.from[2]);
+}
+
 // Bodies that are not needed keep whatever the caller's buffers held.
 template <class T>
 Status KinematicChain<T>::place(const std::vector<T>& q, std::vector<Mat3<T>>& rotations,
@@ -137,18 +155,14 @@ Status KinematicChain<T>::place(const std::vector<T>& q, std::vector<Mat3<T>>& r
   for (const Step& s : steps_) {
     const Mat3<T>& parent = rotations[s.parent];
     const T value = s.multiplier * q[s.variable] + s.offset;
-    const Mat3<T> m = turnByOrigin(parent, s);
     Mat3<T>& child = rotations[s.child];
     if (s.motion == Motion::Revolute) {
       double sine, cosine;
       sinCos(double(value), sine, cosine);
-      const T c = T(cosine), sn = T(sine);
-      child.col(0) = c * m.col(0) + sn * m.col(1);  // m * Rz(t)
-      child.col(1) = c * m.col(1) - sn * m.col(0);
-      child.col(2) = m.col(2);
+      turnAboutZ(parent, s, T(cosine), T(sine), child);
       positions[s.child].noalias() = parent * s.o;
     } else {
-      child = m;
+      child = turnByOrigin(parent, s);
       positions[s.child].noalias() = parent * (s.o + value * s.d);
     }
     positions[s.child] += positions[s.parent];

@@ -46,6 +46,8 @@ template <class T> class KinematicChain {
 
   // R_parent * G.
   static Mat3<T> turnByOrigin(const Mat3<T>& parent, const Step& s);
+  // R_parent * G * Rz(t), written into child (not aliasing parent).
+  static void turnAboutZ(const Mat3<T>& parent, const Step& s, T c, T sn, Mat3<T>& child);
   bool valuesWithinLimits(const std::vector<T>& q) const;
 
   const RobotModel<T>* model_;
