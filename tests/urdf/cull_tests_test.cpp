@@ -35,7 +35,7 @@ LD exactSegmentDistance(const V& p0, const V& d0, const V& p1, const V& d1) {
   return best;
 }
 
-TEST(CullTests, SegmentDistanceMatchesSampledMinimumIncludingParallelAndDegenerateSegments) {
+TEST(CullTests, SegmentDistanceMatchesExactMinimumIncludingParallelAndDegenerateSegments) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int k = 0; k < 300; ++k) {
