@@ -38,10 +38,10 @@ template <class S> Bounds3<S> merged(const Bounds3<S>& a, const Bounds3<S>& b) {
 template <class S> Bounds3<S> worldBounds(::fcl::CollisionObject<S>* obj) {
   detail::Converted<S> c;
   const auto* geometry = obj->collisionGeometry().get();
-  if (detail::convert(geometry, c) && !c.isPlaneLike()) {
+  if (detail::convert(geometry, c) == detail::Conversion::Ok && !c.isPlaneLike()) {
     Bounds3<S> b;
     const Transform<S> pose = detail::shapePose(c, obj->getTransform());
-    if (computeGeomBounds(b, c.geom, pose, S(0), S(1)).ok() && isFinite(b.min) && isFinite(b.max)) return b;
+    if (computeGeomBounds(b, c.geometry(), pose, S(0), S(1)).ok() && isFinite(b.min) && isFinite(b.max)) return b;
   }
   obj->computeAABB();
   const ::fcl::AABB<S>& a = obj->getAABB();

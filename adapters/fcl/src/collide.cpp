@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "convert.h"
+#include "direct_kernels.h"
 #include "fallback.h"
 #include "gq/fcl/collision.h"
 #include "pair_kernels.h"
@@ -39,27 +40,34 @@ bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
   return !fclContactIsClosedForm(a, b);
 }
 
-}  // namespace
+// Two closed solids, the fast path: one kernel call, at most one contact, no buffer. False: no usable answer.
+template <class S>
+bool collideSolids(const ::fcl::CollisionGeometry<S>* o1, const detail::Converted<S>& a, const Transform<S>& pa,
+                   const ::fcl::CollisionGeometry<S>* o2, const detail::Converted<S>& b, const Transform<S>& pb,
+                   bool withContact, ::fcl::CollisionResult<S>& result) {
+  if (!withContact) {  // the boolean only: no contact geometry is computed
+    bool hit = false;
+    if (!detail::directOverlap(a.geometry(), pa, b.geometry(), pb, hit)) return false;
+    if (hit) result.addContact(::fcl::Contact<S>(o1, o2, detail::kNoPrimitive, detail::kNoPrimitive));
+    return true;
+  }
+  DistanceResult<S> d;
+  if (!detail::directDistance(a.geometry(), pa, b.geometry(), pb, d)) return false;
+  if (d.distance <= S(0))
+    result.addContact(::fcl::Contact<S>(o1, o2, detail::kNoPrimitive, detail::kNoPrimitive,
+                                        (d.point0 + d.point1) * S(0.5), d.normal, -d.distance));
+  return true;
+}
 
-template <typename S>
-std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
-                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
-                    const Options& options) {
-  if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
-  if (request.isSatisfied(result)) return result.numContacts();
-  detail::Converted<S> a, b;
-  if (request.enable_cost || !detail::convert(o1, a) || !detail::convert(o2, b) ||
-      (request.enable_contact && contactFromFcl(a.shape, b.shape, options)))
-    return detail::fclCollide(o1, tf1, o2, tf2, request, result);
+// Meshes and two-sided planes: one contact per primitive (pair), gathered in a per-thread buffer.
+template <class S>
+bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const detail::Converted<S>& a, const Transform<S>& pa,
+                    const ::fcl::CollisionGeometry<S>* o2, const detail::Converted<S>& b, const Transform<S>& pb,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
   thread_local std::vector<detail::PairContact<S>> contacts;
   contacts.clear();
   const std::size_t room = request.num_max_contacts - std::min(request.num_max_contacts, result.numContacts());
-  const Status s = detail::pairContacts(a, detail::shapePose(a, tf1), b, detail::shapePose(b, tf2),
-                                        request.enable_contact, room, contacts);
-  if (s.code == StatusCode::InvalidArgument) return result.numContacts();  // NaN pose or size: nothing written
-  if (!s.ok()) return detail::fclCollide(o1, tf1, o2, tf2, request, result);
-  detail::countGq();
+  if (!detail::pairContacts(a, pa, b, pb, request.enable_contact, room, contacts).ok()) return false;
   for (const detail::PairContact<S>& c : contacts) {
     if (result.numContacts() >= request.num_max_contacts) break;
     if (request.enable_contact)
@@ -67,6 +75,34 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
     else
       result.addContact(::fcl::Contact<S>(o1, o2, c.b1, c.b2));
   }
+  return true;
+}
+
+}  // namespace
+
+template <typename S>
+std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                    const Options& options) {
+  using detail::Conversion;
+  if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
+  if (request.isSatisfied(result)) return result.numContacts();
+  // Bad input (docs/fcl.md) writes nothing and returns 0, before anything reaches FCL (which crashes on it).
+  if (!detail::isFiniteTransform(tf1) || !detail::isFiniteTransform(tf2)) return 0;
+  detail::Converted<S> a, b;
+  const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
+  if (ca == Conversion::Invalid || cb == Conversion::Invalid) return 0;
+  const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
+  if (!detail::isRotation(pa) || !detail::isRotation(pb)) return 0;
+  if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost ||
+      (request.enable_contact && contactFromFcl(a.shape, b.shape, options)))
+    return detail::fclCollide(o1, tf1, o2, tf2, request, result);
+  const bool answered = a.isSolid() && b.isSolid()
+                            ? collideSolids(o1, a, pa, o2, b, pb, request.enable_contact, result)
+                            : collideGeneral(o1, a, pa, o2, b, pb, request, result);
+  if (!answered) return detail::fclCollide(o1, tf1, o2, tf2, request, result);
+  detail::countGq();
   return result.numContacts();
 }
 
@@ -80,6 +116,7 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
 template <typename S>
 std::size_t collide(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
                     const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
+  if (!o1 || !o2) return 0;  // bad input: nothing written
   return collide(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
                  o2->getTransform(), request, result, Options());
 }

@@ -1,13 +1,19 @@
 #pragma once
-// FCL geometry -> gq geometry. FCL's capsule, cylinder and cone lie along local Z with full length lz; gq's along
-// local X with halfHeight, so their gq frame is the FCL frame turned by a quarter turn that takes X onto Z.
+// FCL geometry -> gq geometry for one call. FCL's capsule, cylinder and cone lie along local Z with full length lz;
+// gq's along local X with halfHeight, so their gq frame is the FCL frame turned by a quarter turn that takes X onto Z.
 // Halfspace n.x <= d and Plane n.x = d become gq's plane (x = 0, solid x <= 0) in a frame taking +X onto n.
-// Convex -> cookConvexMesh of its vertices; BVHModel (triangles) -> cookTriangleMesh (faceIndex = FCL's triangle
-// id); Ellipsoid and TriangleP -> support-mapped custom shapes. Octrees and point clouds are not converted.
+// Primitives (sphere, box, capsule, cylinder, cone, ellipsoid, triangle, planes) are built in the Converted object
+// itself, without allocating: the support callbacks of the custom shapes live inside it and the gq geometry borrows
+// them. Convex (-> cookConvexMesh of its vertices) and triangle BVHModels (-> cookTriangleMesh, faceIndex = FCL's
+// triangle id) come from the cache (geometry_cache.h). Octrees and point clouds are not converted.
 #include <cstdint>
+#include <variant>
 
+#include "gq/custom_shapes.h"
 #include "gq/geometry.h"
+#include "gq/tolerances.h"
 #include "gq/transform.h"
+#include "support_shapes.h"
 
 namespace fcl {
 template <typename S> class CollisionGeometry;
@@ -19,30 +25,95 @@ enum class FclShape : std::uint8_t {
   Sphere, Box, Capsule, Cylinder, Cone, Ellipsoid, Convex, TriangleP, Halfspace, Plane, Mesh, Unsupported
 };
 
-template <class T> struct Converted {
-  FclShape shape = FclShape::Unsupported;
-  Geometry<T> geom;
-  Transform<T> offset;  // the gq shape frame expressed in the FCL geometry's local frame
-  bool hasOffset = false;    // offset is not the identity
-  bool rotationFree = false; // a sphere: the pose's rotation does not matter
-  bool isPlaneLike() const { return shape == FclShape::Halfspace || shape == FclShape::Plane; }
+// What a conversion found: a gq geometry, input gq (and FCL) cannot answer (null, NaN or non-positive sizes, an
+// empty or unfinished BVHModel: the call writes nothing), or a type gq does not model (FCL answers it).
+enum class Conversion : std::uint8_t { Ok, Invalid, NotModelled };
+
+// How the gq shape frame sits in the FCL geometry's frame.
+enum class Frame : std::uint8_t {
+  Same,             // box, convex, mesh, ellipsoid, triangle
+  TranslationOnly,  // sphere: the rotation does not matter
+  XOntoZ,           // capsule, cylinder, cone: gq's axis X along FCL's Z (R_y(-90 deg))
+  Offset,           // planes: `offset`
 };
 
-// False when gq has no counterpart (octree, point cloud, unfinished or empty model, invalid sizes).
-template <class T> bool convert(const ::fcl::CollisionGeometry<T>* geometry, Converted<T>& out);
+template <class T> class Converted {
+ public:
+  Converted() = default;
+  Converted(const Converted&) = delete;  // the geometry may borrow this object's callbacks
+  Converted& operator=(const Converted&) = delete;
+
+  FclShape shape = FclShape::Unsupported;
+  Frame frame = Frame::Same;
+  Transform<T> offset;  // Frame::Offset: the gq shape frame expressed in the FCL geometry's local frame
+
+  const Geometry<T>& geometry() const { return *geometry_; }
+  bool isPlaneLike() const { return shape == FclShape::Halfspace || shape == FclShape::Plane; }
+  bool isMesh() const { return shape == FclShape::Mesh; }
+  // A closed convex solid (or a half-space): gq's pair kernels answer it directly.
+  bool isSolid() const { return shape != FclShape::Mesh && shape != FclShape::Plane && shape != FclShape::Unsupported; }
+
+  void setLocal(const Geometry<T>& g) {
+    local_ = g;
+    geometry_ = &local_;
+  }
+  // Custom shape whose callbacks live here (no allocation); the geometry holds a non-owning pointer to them.
+  template <class Callbacks, class... Args> void setCallbacks(const Args&... args) {
+    const Callbacks& c = callbacks_.template emplace<Callbacks>(args...);
+    local_ = CustomGeometry<T>(std::shared_ptr<const CustomGeometryCallbacks<T>>(std::shared_ptr<const void>(), &c));
+    geometry_ = &local_;
+  }
+  // Cached geometry, kept alive by the cache for the duration of the call (see geometry_cache.h).
+  void setCached(const Geometry<T>* cached) { geometry_ = cached; }
+
+ private:
+  Geometry<T> local_;
+  const Geometry<T>* geometry_ = &local_;
+  std::variant<std::monostate, CylinderCallbacks<T>, ConeCallbacks<T>, EllipsoidCallbacks<T>, TriangleCallbacks<T>>
+      callbacks_;
+};
+
+template <class T> Conversion convert(const ::fcl::CollisionGeometry<T>* geometry, Converted<T>& out);
 template <class T> void forget(const ::fcl::CollisionGeometry<T>* geometry);
 void clearCache();
 
-// FCL's Transform3 (an isometry) as a gq pose; the linear part is taken as a rotation (gq validates |q| = 1 within
-// 1e-3, which an FCL rotation meets without re-normalising).
+// FCL's Transform3 as a gq pose. The quaternion of a rotation matrix is unit up to round-off; a linear part that
+// is not a rotation (scaled, NaN) gives a non-unit quaternion, which poseUsable rejects.
 template <class T> Transform<T> toGq(const Eigen::Transform<T, 3, Eigen::Isometry>& tf) {
   return Transform<T>(tf.translation(), Quat<T>(tf.linear()));
 }
 
+// All twelve entries finite: x * 0 is 0 for a finite x and NaN otherwise, so the sum is 0 exactly when all are
+// (a plain loop: Eigen's boolean reduction over the strided 3x4 block cost ~60 instructions per transform).
+template <class T> bool isFiniteTransform(const Eigen::Transform<T, 3, Eigen::Isometry>& tf) {
+  const auto& m = tf.matrix();
+  T sum = T(0);
+  for (int c = 0; c < 4; ++c) sum += m(0, c) * T(0) + m(1, c) * T(0) + m(2, c) * T(0);
+  return sum == T(0);
+}
+
 // The world pose of the converted gq shape.
 template <class T> Transform<T> shapePose(const Converted<T>& c, const Eigen::Transform<T, 3, Eigen::Isometry>& tf) {
-  if (c.rotationFree) return Transform<T>(Vec3<T>(tf.translation()));
-  return c.hasOffset ? toGq(tf) * c.offset : toGq(tf);
+  switch (c.frame) {
+    case Frame::TranslationOnly: return Transform<T>(Vec3<T>(tf.translation()));
+    case Frame::XOntoZ: {  // R R_y(-90 deg) = [R e_z, R e_y, -R e_x]
+      Mat3<T> r;
+      r << tf.linear().col(2), tf.linear().col(1), -tf.linear().col(0);
+      return Transform<T>(tf.translation(), Quat<T>(r));
+    }
+    case Frame::Offset: return toGq(tf) * c.offset;
+    case Frame::Same: break;
+  }
+  return toGq(tf);
+}
+
+// The pose's rotation is unit within the façade's tolerance (tol::kUnitQuaternion): false when FCL's linear part
+// was not a rotation (scaled, sheared) or not finite.
+template <class T> bool isRotation(const Transform<T>& pose) {
+  constexpr T lo = T((1 - tol::kUnitQuaternion) * (1 - tol::kUnitQuaternion));
+  constexpr T hi = T((1 + tol::kUnitQuaternion) * (1 + tol::kUnitQuaternion));
+  const T n2 = pose.q.squaredNorm();
+  return n2 >= lo && n2 <= hi;
 }
 
 }  // namespace gq::fcl::detail

@@ -40,18 +40,25 @@ template <typename S>
 S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
            const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
            const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  using detail::Conversion;
+  // Bad input writes nothing and returns what FCL returns for a pair it cannot answer (docs/fcl.md).
+  constexpr S kNothing = std::numeric_limits<S>::max();
   if (request.isSatisfied(result)) return result.min_distance;
+  if (!detail::isFiniteTransform(tf1) || !detail::isFiniteTransform(tf2)) return kNothing;
   detail::Converted<S> a, b;
-  if (!detail::convert(o1, a) || !detail::convert(o2, b))
-    return detail::fclDistance(o1, tf1, o2, tf2, request, result);
+  const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
+  if (ca == Conversion::Invalid || cb == Conversion::Invalid) return kNothing;
   const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
+  if (!detail::isRotation(pa) || !detail::isRotation(pb)) return kNothing;
+  if (ca == Conversion::NotModelled || cb == Conversion::NotModelled)
+    return detail::fclDistance(o1, tf1, o2, tf2, request, result);
   detail::PairDistance<S> d;
   Status s = detail::pairDistance(a, pa, b, pb, d);
-  const bool meshPair = a.shape == detail::FclShape::Mesh || b.shape == detail::FclShape::Mesh;
-  if (s.ok() && meshPair && d.distance <= S(0) && request.enable_signed_distance) s = deepestContact(a, pa, b, pb, d);
-  if (s.code == StatusCode::InvalidArgument) return result.min_distance;  // NaN pose or size: nothing written
+  if (s.ok() && (a.isMesh() || b.isMesh()) && d.distance <= S(0) && request.enable_signed_distance)
+    s = deepestContact(a, pa, b, pb, d);
+  if (s.code == StatusCode::InvalidArgument) return kNothing;
   // FCL 0.7 crashes on these (libccd's GJK calls a null support function for Halfspace/Plane): nothing written.
-  if (!s.ok() && (a.isPlaneLike() || b.isPlaneLike())) return result.min_distance;
+  if (!s.ok() && (a.isPlaneLike() || b.isPlaneLike())) return kNothing;
   if (!s.ok()) return detail::fclDistance(o1, tf1, o2, tf2, request, result);
   detail::countGq();
   result.update(d.distance, o1, o2, d.b1, d.b2, d.point1, d.point2);
@@ -61,6 +68,7 @@ S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf
 template <typename S>
 S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
            const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  if (!o1 || !o2) return std::numeric_limits<S>::max();  // bad input: nothing written
   return distance(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
                   o2->getTransform(), request, result);
 }

@@ -1,5 +1,6 @@
-// Contacts and distances of converted pairs through gq's public queries.
-//  - Solids: overlap() for booleans; distance() (signed, exact MTD for convex pairs) for contacts.
+// Contacts and distances of converted pairs: core's pair kernels for solids, gq's public mesh queries for the rest.
+//  - Solids: core's pair kernels directly (direct_kernels.h): overlap for booleans, signed distance (exact MTD for
+//    convex pairs) for contacts.
 //  - FCL's two-sided Plane n.x = d: the shape's signed distances to the solid half-spaces below (n.x <= d) and
 //    above (n.x >= d) are lo - d and d - hi (lo/hi = the shape's extent along n). The plane answer is the larger
 //    one: the gap when the shape lies on one side, else minus the smaller push-out depth (FCL's rule
@@ -18,6 +19,7 @@
 #include "gq/cooking.h"
 #include "gq/mesh_query.h"
 #include "gq/query.h"
+#include "direct_kernels.h"
 #include "support_shapes.h"
 
 namespace gq::fcl::detail {
@@ -49,19 +51,21 @@ template <class T> PairContact<T> contactFrom(const DistanceResult<T>& d) {
   return c;
 }
 
+// Two closed solids through core's kernels (direct_kernels.h). A pair without a usable answer (half-space against
+// half-space, GJK/EPA not converged) is reported as NotConverged: the caller hands it to FCL.
 template <class T>
 Status solidContacts(const Geometry<T>& a, const Transform<T>& pa, const Geometry<T>& b, const Transform<T>& pb,
                      bool withGeometry, std::vector<PairContact<T>>& out) {
   if (!withGeometry) {
     bool hit = false;
-    const Status s = overlap(a, pa, b, pb, hit);
-    if (s.ok() && hit) out.push_back(PairContact<T>());
-    return s;
+    if (!directOverlap(a, pa, b, pb, hit)) return Status::notConverged("no direct overlap kernel for this pair");
+    if (hit) out.push_back(PairContact<T>());
+    return {};
   }
   DistanceResult<T> d;
-  const Status s = distance(d, a, pa, b, pb);
-  if (s.ok() && d.distance <= T(0)) out.push_back(contactFrom(d));
-  return s;
+  if (!directDistance(a, pa, b, pb, d)) return Status::notConverged("no usable distance for this pair");
+  if (d.distance <= T(0)) out.push_back(contactFrom(d));
+  return {};
 }
 
 // Signed distance from `shape` to FCL's two-sided plane (see the file comment); normal from the shape to the plane.
@@ -266,7 +270,7 @@ Status meshPlaneDistance(const TriangleMeshGeometry<T>& mesh, const Transform<T>
 }
 
 template <class T> const TriangleMeshGeometry<T>* meshOf(const Converted<T>& c) {
-  return c.shape == FclShape::Mesh ? c.geom.template getIf<TriangleMeshGeometry<T>>() : nullptr;
+  return c.shape == FclShape::Mesh ? c.geometry().template getIf<TriangleMeshGeometry<T>>() : nullptr;
 }
 
 // Triangle of `mesh` nearest to the world point `p` (a witness of the mesh distance).
@@ -295,8 +299,8 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
   }
   if (ma || mb) {
     const std::size_t first = out.size();
-    const Status s = ma ? meshShapeContacts(*ma, pa, b.geom, pb, withGeometry, room, out)
-                        : meshShapeContacts(*mb, pb, a.geom, pa, withGeometry, room, out);
+    const Status s = ma ? meshShapeContacts(*ma, pa, b.geometry(), pb, withGeometry, room, out)
+                        : meshShapeContacts(*mb, pb, a.geometry(), pa, withGeometry, room, out);
     if (mb)
       for (std::size_t i = first; i < out.size(); ++i) flip(out[i]);
     return s;
@@ -305,14 +309,14 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
     if (a.isPlaneLike() && b.isPlaneLike()) return Status::unsupported("plane against plane");
     const bool planeFirst = a.shape == FclShape::Plane;
     DistanceResult<T> d;
-    const Status s = planeFirst ? twoSidedPlaneDistance(b.geom, pb, pa, d) : twoSidedPlaneDistance(a.geom, pa, pb, d);
+    const Status s = planeFirst ? twoSidedPlaneDistance(b.geometry(), pb, pa, d) : twoSidedPlaneDistance(a.geometry(), pa, pb, d);
     if (!s.ok() || d.distance > T(0)) return s;
     PairContact<T> c = contactFrom(d);
     if (planeFirst) flip(c);
     out.push_back(c);
     return s;
   }
-  return solidContacts(a.geom, pa, b.geom, pb, withGeometry, out);
+  return solidContacts(a.geometry(), pa, b.geometry(), pb, withGeometry, out);
 }
 
 template <class T>
@@ -330,14 +334,18 @@ Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Convert
   if (a.shape == FclShape::Plane || b.shape == FclShape::Plane) {
     if (a.isPlaneLike() && b.isPlaneLike()) return Status::unsupported("plane against plane");
     const bool planeFirst = a.shape == FclShape::Plane;
-    s = planeFirst ? twoSidedPlaneDistance(b.geom, pb, pa, d) : twoSidedPlaneDistance(a.geom, pa, pb, d);
+    s = planeFirst ? twoSidedPlaneDistance(b.geometry(), pb, pa, d) : twoSidedPlaneDistance(a.geometry(), pa, pb, d);
     if (!s.ok()) return s;
     out = PairDistance<T>{d.distance, d.point0, d.point1, kNoPrimitive, kNoPrimitive};
     if (planeFirst) flip(out);
     return s;
   }
-  s = distance(d, a.geom, pa, b.geom, pb);
-  if (!s.ok()) return s;
+  if (a.isSolid() && b.isSolid()) {
+    if (!directDistance(a.geometry(), pa, b.geometry(), pb, d)) return Status::notConverged("no usable distance for this pair");
+  } else {
+    s = distance(d, a.geometry(), pa, b.geometry(), pb);
+    if (!s.ok()) return s;
+  }
   out = PairDistance<T>{d.distance, d.point0, d.point1, kNoPrimitive, kNoPrimitive};
   if (ma) out.b1 = nearestTriangle(*ma, pa, d.point0);
   if (mb) out.b2 = nearestTriangle(*mb, pb, d.point1);

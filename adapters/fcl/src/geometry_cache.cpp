@@ -1,0 +1,256 @@
+// The per-CollisionGeometry* cache of cooked Convex hulls and BVHModel meshes (rules in geometry_cache.h).
+#include "geometry_cache.h"
+
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/convex.h>
+#include <fcl/math/bv/AABB.h>
+#include <fcl/math/bv/OBB.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/math/bv/RSS.h>
+#include <fcl/math/bv/kDOP.h>
+#include <fcl/math/bv/kIOS.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <shared_mutex>
+#include <unordered_map>
+#include <vector>
+
+#include "gq/cooking.h"
+
+namespace gq::fcl::detail {
+namespace {
+
+constexpr int kFingerprintSamples = 16;
+constexpr std::size_t kThreadSlots = 16;  // per-thread table in front of the shared map (a power of two)
+
+// FNV-1a over 64-bit words: equal inputs give equal fingerprints; a change is caught unless it collides.
+struct Fingerprint {
+  std::uint64_t h = 1469598103934665603ull;
+  void mix(std::uint64_t word) { h = (h ^ word) * 1099511628211ull; }
+  template <class V> void addWord(V v) {
+    static_assert(sizeof(V) <= 8, "one word");
+    std::uint64_t word = 0;
+    std::memcpy(&word, &v, sizeof(V));
+    mix(word);
+  }
+  template <class T> void add(const ::fcl::Vector3<T>& v) { addWord(v[0]), addWord(v[1]), addWord(v[2]); }
+  void add(const ::fcl::Triangle& t) { addWord(t[0]), addWord(t[1]), addWord(t[2]); }
+};
+
+template <class V> void sampleArray(Fingerprint& f, const V* data, int count) {
+  if (count <= 0 || !data) return;
+  const int step = std::max(1, count / kFingerprintSamples);
+  for (int i = 0; i < count; i += step) f.add(data[i]);
+  f.add(data[count - 1]);
+}
+
+// The vertex and triangle arrays of a BVHModel of any BV type.
+template <class T> struct MeshView {
+  const ::fcl::Vector3<T>* vertices = nullptr;
+  const ::fcl::Triangle* triangles = nullptr;
+  int vertexCount = 0, triangleCount = 0;
+  bool triangleModel = false, built = false;
+};
+template <class BV> MeshView<typename BV::S> viewOf(const ::fcl::CollisionGeometry<typename BV::S>* g) {
+  const auto* m = static_cast<const ::fcl::BVHModel<BV>*>(g);
+  MeshView<typename BV::S> v;
+  v.vertices = m->vertices;
+  v.triangles = m->tri_indices;
+  v.vertexCount = m->num_vertices;
+  v.triangleCount = m->num_tris;
+  v.triangleModel = m->getModelType() == ::fcl::BVH_MODEL_TRIANGLES;
+  v.built = m->build_state == ::fcl::BVH_BUILD_STATE_PROCESSED || m->build_state == ::fcl::BVH_BUILD_STATE_UPDATED;
+  return v;
+}
+template <class T> bool meshView(const ::fcl::CollisionGeometry<T>* g, MeshView<T>& v) {
+  switch (g->getNodeType()) {
+    case ::fcl::BV_AABB: v = viewOf<::fcl::AABB<T>>(g); return true;
+    case ::fcl::BV_OBB: v = viewOf<::fcl::OBB<T>>(g); return true;
+    case ::fcl::BV_RSS: v = viewOf<::fcl::RSS<T>>(g); return true;
+    case ::fcl::BV_kIOS: v = viewOf<::fcl::kIOS<T>>(g); return true;
+    case ::fcl::BV_OBBRSS: v = viewOf<::fcl::OBBRSS<T>>(g); return true;
+    case ::fcl::BV_KDOP16: v = viewOf<::fcl::KDOP<T, 16>>(g); return true;
+    case ::fcl::BV_KDOP18: v = viewOf<::fcl::KDOP<T, 18>>(g); return true;
+    case ::fcl::BV_KDOP24: v = viewOf<::fcl::KDOP<T, 24>>(g); return true;
+    default: return false;
+  }
+}
+
+// Whether a BVHModel is a finished triangle model gq can cook. FCL 0.7 itself crashes (SIGSEGV) on empty and
+// unfinished models, so those are invalid input; point clouds are FCL's to answer.
+template <class T> Conversion classifyMesh(const MeshView<T>& v) {
+  if (!v.built || v.vertexCount <= 0 || !v.vertices) return Conversion::Invalid;
+  if (!v.triangleModel) return Conversion::NotModelled;
+  return v.triangleCount > 0 && v.triangles ? Conversion::Ok : Conversion::Invalid;
+}
+
+template <class T> std::uint64_t meshFingerprint(const MeshView<T>& v) {
+  Fingerprint f;
+  f.addWord(v.vertexCount), f.addWord(v.triangleCount), f.addWord(v.vertices), f.addWord(v.triangles);
+  sampleArray(f, v.vertices, v.vertexCount);
+  sampleArray(f, v.triangles, v.triangleCount);
+  return f.h;
+}
+
+template <class T> struct Entry {
+  FclShape shape = FclShape::Unsupported;
+  Conversion conversion = Conversion::Invalid;
+  Geometry<T> geometry;
+  const void* vertexArray = nullptr;            // Convex: its vertex vector (identity)
+  std::optional<::fcl::Convex<T>> convexAlive;  // Convex: a copy sharing that vector keeps it alive
+  std::uint64_t fingerprint = 0;                // BVHModel
+};
+
+// The lookup key of one geometry for one call: its identity data.
+template <class T> struct Key {
+  const ::fcl::CollisionGeometry<T>* geometry;
+  bool convex;
+  const void* vertexArray;   // Convex
+  MeshView<T> mesh;          // BVHModel
+  std::uint64_t fingerprint;  // BVHModel
+  bool matches(const Entry<T>& e) const {
+    return convex ? e.vertexArray == vertexArray : e.vertexArray == nullptr && e.fingerprint == fingerprint;
+  }
+};
+
+template <class T> std::shared_ptr<const Entry<T>> cookConvex(const ::fcl::Convex<T>& convex) {
+  auto e = std::make_shared<Entry<T>>();
+  const auto& vertices = convex.getVertices();
+  e->vertexArray = &vertices;
+  e->convexAlive.emplace(convex);
+  std::shared_ptr<const ConvexMesh<T>> hull;
+  if (cookConvexMesh(std::vector<Vec3<T>>(vertices.begin(), vertices.end()), hull).ok()) {
+    e->shape = FclShape::Convex;
+    e->conversion = Conversion::Ok;
+    e->geometry = ConvexMeshGeometry<T>(hull);
+  }
+  return e;
+}
+
+template <class T> std::shared_ptr<const Entry<T>> cookMesh(const MeshView<T>& v, std::uint64_t fingerprint) {
+  auto e = std::make_shared<Entry<T>>();
+  e->fingerprint = fingerprint;
+  std::vector<Vec3<T>> vertices(v.vertices, v.vertices + v.vertexCount);
+  std::vector<TriangleIndices> triangles(std::size_t(v.triangleCount));
+  for (int i = 0; i < v.triangleCount; ++i)
+    triangles[std::size_t(i)] = {std::uint32_t(v.triangles[i][0]), std::uint32_t(v.triangles[i][1]),
+                                 std::uint32_t(v.triangles[i][2])};
+  std::shared_ptr<const TriangleMesh<T>> mesh;
+  if (cookTriangleMesh(vertices, triangles, mesh).ok()) {
+    e->shape = FclShape::Mesh;
+    e->conversion = Conversion::Ok;
+    e->geometry = TriangleMeshGeometry<T>(mesh);
+  }
+  return e;
+}
+
+template <class T> struct SharedCache {
+  std::shared_mutex mutex;
+  std::unordered_map<const void*, std::shared_ptr<const Entry<T>>> entries;
+  std::atomic<std::uint64_t> generation{1};
+};
+template <class T> SharedCache<T>& shared() {
+  static SharedCache<T> c;
+  return c;
+}
+
+// The shared entry for `key`, cooked (outside the lock: cooking may take milliseconds) when absent or stale.
+template <class T> std::shared_ptr<const Entry<T>> sharedLookup(const Key<T>& key) {
+  SharedCache<T>& c = shared<T>();
+  {
+    std::shared_lock<std::shared_mutex> lock(c.mutex);
+    auto it = c.entries.find(key.geometry);
+    if (it != c.entries.end() && key.matches(*it->second)) return it->second;
+  }
+  std::shared_ptr<const Entry<T>> fresh =
+      key.convex ? cookConvex(*static_cast<const ::fcl::Convex<T>*>(key.geometry)) : cookMesh(key.mesh, key.fingerprint);
+  std::unique_lock<std::shared_mutex> lock(c.mutex);
+  c.entries[key.geometry] = fresh;
+  return fresh;
+}
+
+template <class T> struct Slot {
+  const void* geometry = nullptr;
+  std::uint64_t generation = 0;
+  std::shared_ptr<const Entry<T>> entry;
+};
+// Evicted entries are parked in a two-place ring, so that an entry returned earlier in the same call (a call looks
+// up two geometries) stays alive when the second lookup takes its slot.
+template <class T> struct ThreadSlots {
+  std::array<Slot<T>, kThreadSlots> slots;
+  std::array<std::shared_ptr<const Entry<T>>, 2> evicted;
+  unsigned nextEvicted = 0;
+};
+template <class T> ThreadSlots<T>& threadSlots() {
+  thread_local ThreadSlots<T> t;
+  return t;
+}
+
+template <class T> const Entry<T>* lookup(const Key<T>& key) {
+  ThreadSlots<T>& t = threadSlots<T>();
+  const std::uint64_t generation = shared<T>().generation.load(std::memory_order_acquire);
+  Slot<T>& slot = t.slots[(reinterpret_cast<std::uintptr_t>(key.geometry) >> 4) & (kThreadSlots - 1)];
+  if (slot.geometry == key.geometry && slot.generation == generation && key.matches(*slot.entry)) return slot.entry.get();
+  std::shared_ptr<const Entry<T>> entry = sharedLookup(key);
+  t.evicted[t.nextEvicted++ & 1u] = std::move(slot.entry);
+  slot.geometry = key.geometry;
+  slot.generation = generation;
+  slot.entry = std::move(entry);
+  return slot.entry.get();
+}
+
+template <class T> void clearShared() {
+  SharedCache<T>& c = shared<T>();
+  std::unique_lock<std::shared_mutex> lock(c.mutex);
+  c.entries.clear();
+  c.generation.fetch_add(1, std::memory_order_acq_rel);
+}
+
+}  // namespace
+
+template <class T>
+const Geometry<T>* cachedGeometry(const ::fcl::CollisionGeometry<T>* g, FclShape& shape, Conversion& conversion) {
+  Key<T> key{g, g->getNodeType() == ::fcl::GEOM_CONVEX, nullptr, {}, 0};
+  if (key.convex) {
+    key.vertexArray = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
+  } else {
+    if (!meshView(g, key.mesh)) {
+      conversion = Conversion::NotModelled;
+      return nullptr;
+    }
+    conversion = classifyMesh(key.mesh);
+    if (conversion != Conversion::Ok) return nullptr;
+    key.fingerprint = meshFingerprint(key.mesh);
+  }
+  const Entry<T>* e = lookup(key);
+  conversion = e->conversion;
+  if (conversion != Conversion::Ok) return nullptr;
+  shape = e->shape;
+  return &e->geometry;
+}
+
+template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* g) {
+  SharedCache<T>& c = shared<T>();
+  std::unique_lock<std::shared_mutex> lock(c.mutex);
+  c.entries.erase(g);
+  c.generation.fetch_add(1, std::memory_order_acq_rel);
+}
+
+void clearCached() {
+  clearShared<float>();
+  clearShared<double>();
+}
+
+template const Geometry<float>* cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, FclShape&, Conversion&);
+template const Geometry<double>* cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, FclShape&,
+                                                        Conversion&);
+template void forgetCached<float>(const ::fcl::CollisionGeometry<float>*);
+template void forgetCached<double>(const ::fcl::CollisionGeometry<double>*);
+
+}  // namespace gq::fcl::detail

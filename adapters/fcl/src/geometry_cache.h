@@ -1,0 +1,26 @@
+#pragma once
+// The cache of cooked geometry per CollisionGeometry*: Convex -> cooked hull, triangle BVHModel -> cooked mesh.
+//
+// Identity rules (when an entry is reused):
+//  - Convex: FCL 0.7 holds its vertices in a `shared_ptr<const std::vector>` fixed at construction. The entry keeps
+//    a copy of the Convex (sharing that vector), so the vector cannot be freed while the entry lives and its address
+//    identifies the vertex set: an entry is reused while the geometry's vertex vector is the same object.
+//  - BVHModel: vertices and triangles can be edited in place (beginReplaceModel / beginUpdateModel). An entry is
+//    reused while a fingerprint matches: counts, array addresses and up to kFingerprintSamples vertices and
+//    triangles sampled evenly. An edit that changes none of them needs forgetGeometry().
+// Lookups go through a small per-thread table in front of the shared map (no lock, no reference counting on a hit);
+// forget/clear bump a generation that turns every per-thread slot stale.
+#include "convert.h"
+
+namespace gq::fcl::detail {
+
+// The cooked geometry of a Convex or a triangle BVHModel, or nullptr: `conversion` tells why (Invalid for an empty,
+// unfinished or uncookable model; NotModelled for point clouds and octrees). The pointer stays valid until this
+// thread's next lookup of two more geometries (a call looks up at most two).
+template <class T>
+const Geometry<T>* cachedGeometry(const ::fcl::CollisionGeometry<T>* geometry, FclShape& shape, Conversion& conversion);
+
+template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* geometry);
+void clearCached();
+
+}  // namespace gq::fcl::detail

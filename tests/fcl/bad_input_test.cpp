@@ -1,0 +1,212 @@
+// gq::fcl on invalid input, one test per row of the bad-input table (docs/fcl.md). FCL 0.7 validates almost nothing:
+// it returns NaN contacts, aborts on libccd/Eigen assertions (NaN poses) or crashes (null objects, empty or
+// unfinished BVHModels). gq::fcl follows FCL's own convention for a pair it cannot answer (an unsupported pair):
+// collide adds no contact and returns 0, distance writes nothing and returns std::numeric_limits<S>::max(). Results
+// already holding answers stay bit for bit as they were; nothing throws and no NaN is written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "gq/fcl/fcl.h"
+
+namespace {
+
+using ::fcl::Vector3d;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNothing = std::numeric_limits<double>::max();  // FCL's distance for a pair it does not answer
+
+::fcl::Transform3d at(double x, double y, double z) {
+  ::fcl::Transform3d tf = ::fcl::Transform3d::Identity();
+  tf.translation() = Vector3d(x, y, z);
+  return tf;
+}
+
+using Geom = std::shared_ptr<::fcl::CollisionGeometryd>;
+Geom sphere(double r) { return std::make_shared<::fcl::Sphered>(r); }
+Geom box(double x, double y, double z) { return std::make_shared<::fcl::Boxd>(x, y, z); }
+
+// A collision result holding one contact and a distance result pre-seeded as a host (MoveIt) does.
+struct Seeded {
+  ::fcl::CollisionResultd collision;
+  ::fcl::DistanceResultd distance;
+  ::fcl::Sphered other{1.0};
+  Seeded() {
+    collision.addContact(::fcl::Contactd(&other, &other, 3, 4, Vector3d(1, 2, 3), Vector3d(0, 0, 1), 0.25));
+    distance.update(5.0, &other, &other, 7, 8, Vector3d(1, 1, 1), Vector3d(2, 2, 2));
+  }
+};
+
+// Collide (boolean and with contacts) and distance (with nearest points and signed distance) on one input, checking
+// FCL's "not answered" convention and that the seeded results are untouched.
+void expectNothingWritten(const ::fcl::CollisionGeometryd* g1, const ::fcl::Transform3d& tf1,
+                          const ::fcl::CollisionGeometryd* g2, const ::fcl::Transform3d& tf2) {
+  for (const bool contact : {false, true}) {
+    Seeded s;
+    EXPECT_EQ(gq::fcl::collide(g1, tf1, g2, tf2, ::fcl::CollisionRequestd(4, contact), s.collision), 0u);
+    ASSERT_EQ(s.collision.numContacts(), 1u);
+    const ::fcl::Contactd& c = s.collision.getContact(0);
+    EXPECT_EQ(c.b1, 3);
+    EXPECT_EQ(c.b2, 4);
+    EXPECT_EQ(c.penetration_depth, 0.25);
+    EXPECT_EQ(c.pos, Vector3d(1, 2, 3));
+  }
+  Seeded s;
+  ::fcl::DistanceRequestd request(true);
+  request.enable_signed_distance = true;
+  EXPECT_EQ(gq::fcl::distance(g1, tf1, g2, tf2, request, s.distance), kNothing);
+  EXPECT_EQ(s.distance.min_distance, 5.0);
+  EXPECT_EQ(s.distance.b1, 7);
+  EXPECT_EQ(s.distance.b2, 8);
+  EXPECT_EQ(s.distance.nearest_points[0], Vector3d(1, 1, 1));
+  EXPECT_EQ(s.distance.nearest_points[1], Vector3d(2, 2, 2));
+}
+
+// Both argument orders, so that either side being bad is covered.
+void expectNothingWrittenEitherOrder(const Geom& bad, const ::fcl::Transform3d& badPose, const Geom& good,
+                                     const ::fcl::Transform3d& goodPose) {
+  expectNothingWritten(bad.get(), badPose, good.get(), goodPose);
+  expectNothingWritten(good.get(), goodPose, bad.get(), badPose);
+}
+
+std::shared_ptr<::fcl::BVHModel<::fcl::OBBRSSd>> oneTriangleModel(bool finish) {
+  auto model = std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>();
+  model->beginModel();
+  model->addTriangle(Vector3d(-1, -1, 0), Vector3d(1, -1, 0), Vector3d(0, 1, 0));
+  if (finish) model->endModel();
+  return model;
+}
+
+TEST(FclBadInput, NaNTranslationWritesNothing) {
+  // FCL: sphere-sphere adds a contact with NaN depth and normal; box-box, sphere-box, capsule-box abort (assertions
+  // in libccd / Eigen); distance returns -1.
+  expectNothingWrittenEitherOrder(sphere(0.5), at(kNaN, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(box(1, 1, 1), at(0, kNaN, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Capsuled>(0.3, 1), at(0, 0, kNaN), box(1, 1, 1), at(0, 0, 0));
+}
+
+TEST(FclBadInput, NaNRotationWritesNothing) {
+  // FCL: sphere-box answers with a NaN normal and position; box-box aborts.
+  ::fcl::Transform3d nanRotation = at(0.3, 0, 0);
+  nanRotation.linear()(1, 2) = kNaN;
+  expectNothingWrittenEitherOrder(box(1, 1, 1), nanRotation, box(1, 1, 1), at(0, 0, 0));
+  expectNothingWrittenEitherOrder(sphere(0.5), nanRotation, box(1, 1, 1), at(0, 0, 0));  // even for a sphere
+}
+
+TEST(FclBadInput, InfiniteTranslationWritesNothing) {
+  // FCL: sphere-box adds a contact with depth -inf and a NaN position.
+  expectNothingWrittenEitherOrder(sphere(0.5), at(kInf, 0, 0), box(1, 1, 1), at(0, 0, 0));
+  expectNothingWrittenEitherOrder(box(1, 1, 1), at(0, -kInf, 0), box(1, 1, 1), at(0, 0, 0));
+}
+
+TEST(FclBadInput, LinearPartThatIsNotARotationWritesNothing) {
+  // A scaled or sheared "rotation" (FCL would silently scale the shape in some pairs and not in others).
+  ::fcl::Transform3d scaled = at(0.3, 0, 0);
+  scaled.linear() *= 2.0;
+  expectNothingWrittenEitherOrder(box(1, 1, 1), scaled, box(1, 1, 1), at(0, 0, 0));
+}
+
+TEST(FclBadInput, ZeroSizeWritesNothing) {
+  // FCL answers a zero-radius sphere as a point and a zero box as a point; gq has no point geometry (sizes must be
+  // > 0), so the pair is not answered rather than answered with a made-up thickness.
+  expectNothingWrittenEitherOrder(sphere(0.0), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(box(0, 0, 0), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(box(1, 0, 1), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Cylinderd>(0.3, 0.0), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+}
+
+TEST(FclBadInput, NegativeSizeWritesNothing) {
+  // FCL: no collision for a negative radius or side, and a positive distance measured as if the sign were absent.
+  expectNothingWrittenEitherOrder(sphere(-0.5), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(box(-1, 1, 1), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Capsuled>(-0.3, 1), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Capsuled>(0.3, -1), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Cylinderd>(-0.3, 1), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Coned>(0.3, -1), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Ellipsoidd>(0.3, -0.2, 0.4), at(0, 0, 0), box(1, 1, 1),
+                                  at(0.3, 0, 0));
+}
+
+TEST(FclBadInput, NaNSizeWritesNothing) {
+  // FCL: a NaN-radius sphere collides with NaN depth and position.
+  expectNothingWrittenEitherOrder(sphere(kNaN), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(box(1, kNaN, 1), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::TrianglePd>(Vector3d(0, 0, 0), Vector3d(kNaN, 0, 0), Vector3d(0, 1, 0)),
+                                  at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+}
+
+TEST(FclBadInput, EmptyBvhModelWritesNothing) {
+  // FCL: endModel() prints "BVH Error! endModel() called on model with no triangles and vertices."; collide and
+  // distance then crash (SIGSEGV).
+  auto model = std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>();
+  model->beginModel();
+  model->endModel();
+  expectNothingWrittenEitherOrder(model, at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+}
+
+TEST(FclBadInput, UnfinishedBvhModelWritesNothing) {
+  // beginModel() + addTriangle() without endModel(): FCL crashes (SIGSEGV; the BV tree does not exist yet).
+  expectNothingWrittenEitherOrder(oneTriangleModel(false), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  // A model never begun.
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>(), at(0, 0, 0), sphere(0.5),
+                                  at(0.3, 0, 0));
+  // Mesh against mesh with one side unfinished.
+  expectNothingWrittenEitherOrder(oneTriangleModel(false), at(0, 0, 0), oneTriangleModel(true), at(0, 0, 0));
+}
+
+TEST(FclBadInput, DegenerateConvexWritesNothing) {
+  // Four coplanar vertices: gq cannot cook a hull from them (cookConvexMesh: DegenerateMesh).
+  auto vertices = std::make_shared<std::vector<Vector3d>>(
+      std::vector<Vector3d>{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, 0)});
+  auto faces = std::make_shared<std::vector<int>>(std::vector<int>{4, 0, 1, 2, 3, 4, 0, 3, 2, 1});
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Convexd>(vertices, 2, faces), at(0, 0, 0), sphere(0.5),
+                                  at(0.3, 0, 0));
+}
+
+TEST(FclBadInput, NumMaxContactsZeroComputesNothing) {
+  // FCL: prints "Warning: should stop early as num_max_contact is 0 !" and returns 0 without touching the result.
+  ::fcl::Sphered a(0.5), b(0.5);
+  for (const bool contact : {false, true}) {
+    Seeded s;
+    EXPECT_EQ(gq::fcl::collide<double>(&a, at(0, 0, 0), &b, at(0.3, 0, 0), ::fcl::CollisionRequestd(0, contact),
+                                       s.collision), 0u);
+    EXPECT_EQ(s.collision.numContacts(), 1u);
+  }
+}
+
+TEST(FclBadInput, NullGeometryWritesNothing) {
+  // FCL dereferences it (SIGSEGV).
+  ::fcl::Sphered b(0.5);
+  expectNothingWritten(nullptr, at(0, 0, 0), &b, at(0.3, 0, 0));
+  expectNothingWritten(&b, at(0, 0, 0), nullptr, at(0.3, 0, 0));
+  expectNothingWritten(nullptr, at(0, 0, 0), nullptr, at(0.3, 0, 0));
+}
+
+TEST(FclBadInput, NullCollisionObjectWritesNothing) {
+  // FCL dereferences it (SIGSEGV). (A CollisionObject cannot hold a null geometry: its constructor dereferences it.)
+  ::fcl::CollisionObjectd o(sphere(0.5), at(0.3, 0, 0));
+  for (const auto& [o1, o2] : {std::pair<const ::fcl::CollisionObjectd*, const ::fcl::CollisionObjectd*>{nullptr, &o},
+                               {&o, nullptr}, {nullptr, nullptr}}) {
+    Seeded s;
+    EXPECT_EQ(gq::fcl::collide(o1, o2, ::fcl::CollisionRequestd(4, true), s.collision), 0u);
+    EXPECT_EQ(s.collision.numContacts(), 1u);
+    EXPECT_EQ(gq::fcl::distance(o1, o2, ::fcl::DistanceRequestd(true), s.distance), kNothing);
+    EXPECT_EQ(s.distance.min_distance, 5.0);
+  }
+}
+
+TEST(FclBadInput, FloatNaNPoseWritesNothing) {
+  ::fcl::Spheref a(0.5f), b(0.5f);
+  ::fcl::Transform3f ta = ::fcl::Transform3f::Identity(), tb = ta;
+  tb.translation() = ::fcl::Vector3f(std::numeric_limits<float>::quiet_NaN(), 0, 0);
+  ::fcl::CollisionResultf c;
+  EXPECT_EQ(gq::fcl::collide<float>(&a, ta, &b, tb, ::fcl::CollisionRequestf(1, true), c), 0u);
+  EXPECT_EQ(c.numContacts(), 0u);
+  ::fcl::DistanceResultf d;
+  EXPECT_EQ(gq::fcl::distance<float>(&a, ta, &b, tb, ::fcl::DistanceRequestf(true), d), std::numeric_limits<float>::max());
+  EXPECT_EQ(d.min_distance, std::numeric_limits<float>::max());
+}
+
+}  // namespace
