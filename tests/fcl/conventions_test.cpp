@@ -203,6 +203,35 @@ TEST(FclCache, AnEditedBvhModelIsReconverted) {
   EXPECT_EQ(gq::fcl::collide<double>(mesh.get(), at(0, 0, 0), &sphere, at(0, 0, 5.3), request, after), 1u);
 }
 
+// A Convex destroyed and another built at the same address (placement new into one buffer) with different
+// vertices: the cache keeps the first one's vertex vector alive, so the second has a different vector and is
+// re-cooked without forgetGeometry (docs/fcl.md, re-conversion rule).
+TEST(FclCache, ANewConvexAtAReusedAddressIsReconverted) {
+  const auto cube = [](double h) {
+    auto v = std::make_shared<std::vector<Vector3d>>();
+    for (int i = 0; i < 8; ++i) v->emplace_back(i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h);
+    auto f = std::make_shared<std::vector<int>>(std::vector<int>{
+        4, 0, 2, 3, 1, 4, 4, 5, 7, 6, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 4, 6, 2, 4, 1, 3, 7, 5});
+    return std::make_pair(v, f);
+  };
+  alignas(::fcl::Convexd) unsigned char storage[sizeof(::fcl::Convexd)];
+  ::fcl::Sphered sphere(0.5);
+  const auto distanceTo = [&](const ::fcl::Convexd* convex) {
+    ::fcl::DistanceResultd result;
+    return gq::fcl::distance<double>(convex, at(0, 0, 0), &sphere, at(3, 0, 0), ::fcl::DistanceRequestd(true), result);
+  };
+  auto [v1, f1] = cube(0.5);
+  auto* first = new (storage) ::fcl::Convexd(v1, 6, f1);
+  EXPECT_NEAR(distanceTo(first), 2.0, 1e-9);  // 3 - 0.5 - 0.5
+  first->~Convex();
+  v1.reset();
+  auto [v2, f2] = cube(1.0);
+  auto* second = new (storage) ::fcl::Convexd(v2, 6, f2);
+  ASSERT_EQ(static_cast<void*>(first), static_cast<void*>(second));
+  EXPECT_NEAR(distanceTo(second), 1.5, 1e-9);  // 3 - 1 - 0.5
+  second->~Convex();
+}
+
 TEST(FclFallback, PlanePairsRunThroughFclAndMeshPlaneIsAnsweredByGq) {
   ::fcl::Halfspaced h1(Vector3d::UnitZ(), 0), h2(-Vector3d::UnitZ(), -1);
   ::fcl::Planed plane(Vector3d::UnitX(), 0);  // crosses triangle 0
