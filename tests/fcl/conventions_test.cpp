@@ -2,9 +2,12 @@
 // re-conversion rule and the fallback to FCL. Expected values are closed forms.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <thread>
+#include <vector>
 
 #include "gq/fcl/fcl.h"
 
@@ -285,6 +288,53 @@ TEST(FclConventions, FloatOverloadsAnswerInFloat) {
   ::fcl::CollisionObjectf oa(std::make_shared<::fcl::Spheref>(1), ta), ob(std::make_shared<::fcl::Spheref>(0.5f), tb);
   EXPECT_EQ(gq::fcl::collide<float>(&oa, &ob, ::fcl::CollisionRequestf(1, true), c), 1u);
   EXPECT_NEAR(c.getContact(0).penetration_depth, 0.1f, 1e-6f);
+}
+
+}  // namespace
+
+namespace {
+
+// Threads querying shared Convex and BVHModel geometry while another thread forgets and clears the cache: every
+// answer equals the single-threaded one (the per-thread tables hold their entries alive; a forget only makes them
+// look the geometry up again).
+TEST(FclCache, ConcurrentQueriesAndForgetsGiveTheSingleThreadedAnswers) {
+  auto vertices = std::make_shared<std::vector<Vector3d>>();
+  for (int i = 0; i < 8; ++i) vertices->emplace_back(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5);
+  auto faces = std::make_shared<std::vector<int>>(std::vector<int>{
+      4, 0, 2, 3, 1, 4, 4, 5, 7, 6, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 4, 6, 2, 4, 1, 3, 7, 5});
+  const ::fcl::Convexd convex(vertices, 6, faces);
+  const auto mesh = twoTriangles();
+  ::fcl::Sphered sphere(0.5);
+  const auto query = [&](int k) {
+    ::fcl::DistanceResultd a, b;
+    const double x = 2.0 + 0.01 * (k % 50);
+    gq::fcl::distance<double>(&convex, at(0, 0, 0), &sphere, at(x, 0, 0), ::fcl::DistanceRequestd(true), a);
+    gq::fcl::distance<double>(mesh.get(), at(0, 0, 0), &sphere, at(0, 0, x), ::fcl::DistanceRequestd(true), b);
+    return std::make_pair(a.min_distance, b.min_distance);
+  };
+  std::vector<std::pair<double, double>> expected;
+  for (int k = 0; k < 50; ++k) expected.push_back(query(k));
+  EXPECT_NEAR(expected[0].first, 1.0, 1e-9);   // 2 - 0.5 - 0.5
+  EXPECT_NEAR(expected[0].second, 1.5, 1e-9);  // 2 - 0.5
+  std::atomic<bool> stop{false};
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 3; ++t)
+    threads.emplace_back([&, t] {
+      for (int k = 0; k < 3000; ++k)
+        if (query(k + t) != expected[std::size_t((k + t) % 50)]) ++wrong;
+    });
+  std::thread forgetter([&] {
+    for (int k = 0; !stop; ++k) {
+      if (k % 2) gq::fcl::forgetGeometry<double>(&convex);
+      else gq::fcl::clearGeometryCache();
+      std::this_thread::yield();
+    }
+  });
+  for (auto& t : threads) t.join();
+  stop = true;
+  forgetter.join();
+  EXPECT_EQ(wrong.load(), 0);
 }
 
 }  // namespace
