@@ -2,6 +2,7 @@
 // affine map, so the ray parameter t is unchanged and stays the world distance), then is clipped against every
 // polygon plane n.x + d <= 0 (Cyrus-Beck): entering planes raise tNear, leaving planes lower tFar. The hit normal
 // returns to shape space with the inverse-transpose S^-T (= S^-1, S is symmetric), then to world.
+#include <cmath>
 #include <limits>
 
 #include "gq/cooking.h"
@@ -44,7 +45,10 @@ std::uint32_t raycastConvex(const ConvexMeshGeometry<T>& g, const Transform<T>& 
     writeInsideHit(ray, hits[0]);
     return 1;
   }
-  if (face == kInvalidFaceIndex || tNear > tFar || tNear < T(0) || tNear > ray.maxDist) return 0;
+  // An entry parameter that overflowed (a ray all but parallel to a face, far away in the hull's frame) is no hit:
+  // with maxDist = inf it passed every other test and came out as a hit at infinity (found by fuzz_raycast, float).
+  if (face == kInvalidFaceIndex || !std::isfinite(tNear) || tNear > tFar || tNear < T(0) || tNear > ray.maxDist)
+    return 0;
   const auto normal = [&] { return pose.rotate(scale.normalToShape(hull.polygons[face].normal)); };
   writeSurfaceHit(ray, tNear, face, normal, hits[0]);
   return 1;

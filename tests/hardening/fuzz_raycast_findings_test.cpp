@@ -1,0 +1,75 @@
+// fuzz_raycast's findings of 2026-11-22, replayed byte for byte through the fuzzer's own decoder (the inputs are also
+// in tests/fuzz/known_crashes/ and replayed by scripts/sanitize's smoke). Both were float raycasts that answered Ok
+// with a non-finite field after millions of executions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "../fuzz/fuzz_decode.h"
+
+namespace {
+
+struct Replay {
+  gq::GeometryType type = gq::GeometryType::Sphere;
+  gq::HitFlags flags;
+  gq::Status status;
+  std::vector<gq::RaycastHit<float>> hits;
+};
+
+// The decoding steps of fuzz_raycast.cpp, in its order, for a float input.
+Replay replayRaycast(const std::vector<std::uint8_t>& input) {
+  gq::fuzz::Bytes in(input.data(), input.size());
+  Replay r;
+  EXPECT_TRUE(in.flag());  // float
+  const gq::Geometry<float> geom = gq::fuzz::geometry<float>(in);
+  r.type = geom.type();
+  const gq::Transform<float> pose = in.pose<float>();
+  const gq::Vec3<float> origin = in.vec<float>();
+  const gq::Vec3<float> dir = in.direction<float>();
+  const float maxDist = in.scalar<float>();
+  r.flags = gq::fuzz::hitFlags(in);
+  const std::uint32_t maxHits = std::uint32_t(in.small(9));
+  gq::RaycastHit<float> hits[8];
+  std::uint32_t count = 0;
+  r.status = gq::raycast(origin, dir, geom, pose, maxDist, r.flags, maxHits, hits, count);
+  if (r.status.ok()) r.hits.assign(hits, hits + count);
+  return r;
+}
+
+// Heights and row/column scales whose edge cross product overflows float: the normal was normalize(inf) = NaN.
+TEST(FuzzRaycastFindings, HeightFieldNormalWithOverflowingEdgeCrossProductIsAFiniteUnitVector) {
+  const Replay r = replayRaycast({0xdd, 0x06, 0x14, 0x92, 0x75, 0xfa, 0xeb, 0x54, 0xd3, 0x51, 0xe0, 0x31, 0xc1,
+                                  0x51, 0xa7, 0xe6, 0x9a, 0xa5, 0xef, 0xf2, 0x0a, 0xb4, 0xaf, 0x3b, 0x9a, 0x5a,
+                                  0x7e, 0x8e, 0x25, 0xff, 0xff, 0xff, 0x09, 0x00, 0x00, 0x00, 0x97, 0x7e, 0xa0,
+                                  0x35, 0x3f, 0xd7, 0xc2, 0xc2, 0xc0, 0x91, 0xb4, 0xaf, 0x3b, 0x9a, 0x5a, 0x7e,
+                                  0x8e, 0x25, 0x00, 0x00, 0x3f, 0x26, 0x0a, 0x6a, 0x18, 0x98, 0xa5});
+  ASSERT_EQ(r.type, gq::GeometryType::HeightField);
+  ASSERT_TRUE(r.status.ok()) << r.status.toString();
+  ASSERT_TRUE(r.flags.has(gq::HitFlag::Normal));
+  ASSERT_GE(r.hits.size(), 1u);  // the hit whose normal was NaN
+  for (const auto& h : r.hits) {
+    EXPECT_TRUE(gq::isFinite(h.normal));
+    EXPECT_NEAR(h.normal.norm(), 1.0f, 1e-5f);
+    EXPECT_TRUE(std::isfinite(h.distance));
+  }
+}
+
+// maxDist = inf and a ray all but parallel to a hull face far away in the hull's frame: the entry parameter
+// overflowed to inf, passed every test and came out as a hit at distance inf. Such a ray never enters: no hit.
+TEST(FuzzRaycastFindings, ConvexEntryParameterThatOverflowsIsNoHit) {
+  const Replay r = replayRaycast({0xff, 0xfc, 0x02, 0x8f, 0xeb, 0x06, 0x76, 0x32, 0x41, 0x66, 0xde, 0x9d, 0x41,
+                                  0xc1, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41,
+                                  0x41, 0x41, 0x41, 0x41, 0xde, 0xc7, 0x2a, 0x7c, 0x79, 0xf8, 0x35, 0x46, 0x6a,
+                                  0xf7, 0x9f, 0x11, 0x79, 0x61, 0x82, 0x10, 0x57, 0x32, 0x37, 0x1d, 0x6b, 0x8d,
+                                  0x95, 0x22, 0x01, 0x61, 0x37, 0x80, 0x01, 0x00, 0x00, 0x11, 0x63, 0x48, 0xea,
+                                  0xec, 0xa2, 0xe5, 0xfd, 0x72, 0x64, 0x34, 0x46, 0xc7, 0x00, 0x00, 0x7f, 0xed,
+                                  0x2a, 0xa4, 0xad, 0x87});
+  ASSERT_EQ(r.type, gq::GeometryType::ConvexMesh);
+  ASSERT_TRUE(r.status.ok()) << r.status.toString();
+  EXPECT_TRUE(r.hits.empty());
+  for (const auto& h : r.hits) EXPECT_TRUE(std::isfinite(h.distance));
+}
+
+}  // namespace
