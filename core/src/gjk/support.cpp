@@ -12,7 +12,8 @@ template <class T> Vec3<T> supportHull(const ConvexShape<T>& s, const Vec3<T>& d
   const ConvexMesh<T>& hull = *s.hull;
   const Vec3<T> dm = s.hullScaled ? Vec3<T>(s.hullScale * d) : d;
   const bool climb = hull.vertices.size() > kHillClimbMinVertices && hasAdjacency(hull);
-  const std::uint32_t v = hullVertex(hull, climb, dm, s.climbStart);
+  bool cold = false;  // single calls keep the shape's running hint
+  const std::uint32_t v = hullVertex(hull, climb, dm, s.climbStart, cold);
   return s.hullScaled ? Vec3<T>(s.hullScale * hull.vertices[v]) : hull.vertices[v];
 }
 
