@@ -111,8 +111,7 @@ template <class T> struct MeshData {
   std::vector<TriangleIndices> triangles;
 };
 
-// Loads OBJ (gq's reader: positions and faces, polygons triangulated, coordinates rounded to float like the other
-// formats), STL (ASCII and binary) and DAE (both through assimp); all meshes of the file are merged in world frame of
+// Loads OBJ, STL (ASCII and binary) and DAE through assimp; all meshes of the file are merged in world frame of
 // the file's node hierarchy, except that a DAE root-node transform (its up-axis) is ignored when
 // `ignoreRootTransform` is set (what ROS tools do). Missing file: FileError; malformed: ParseError.
 template <class T>

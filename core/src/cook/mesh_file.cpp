@@ -1,17 +1,12 @@
-// Mesh files: OBJ through gq's own reader (cook/obj_reader.cpp); STL (ascii/binary) and DAE through assimp:
-// triangulated, identical vertices joined, and all meshes merged into one vertex/triangle list in the frame of the
-// file's root, applying every node's transform.
+// Mesh files through assimp (OBJ, STL ascii/binary, DAE): triangulated, identical vertices joined, and all meshes
+// merged into one vertex/triangle list in the frame of the file's root, applying every node's transform.
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include <algorithm>
-#include <cctype>
 #include <fstream>
-#include <iterator>
 
 #include "common/validate.h"
-#include "cook/obj_reader.h"
 #include "gq/cooking.h"
 
 namespace gq {
@@ -46,32 +41,11 @@ template <class T> void appendNode(const aiScene& scene, const aiNode& node, con
   for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(scene, *node.mChildren[c], world, true, out);
 }
 
-bool hasObjExtension(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string ext = path.substr(path.size() - 4);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".obj";
-}
-
-template <class T> Status loadObj(const std::string& path, MeshData<T>& out) {
-  std::ifstream file(path, std::ios::binary);
-  const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-  MeshData<double> data;
-  if (Status s = detail::readObj(text, path, data); !s.ok()) return s;
-  MeshData<T> converted;
-  converted.vertices.reserve(data.vertices.size());
-  for (const auto& v : data.vertices) converted.vertices.push_back(v.template cast<T>());
-  converted.triangles = std::move(data.triangles);
-  out = std::move(converted);
-  return Status();
-}
-
 }  // namespace
 
 template <class T> Status loadMeshFile(const std::string& path, MeshData<T>& out, bool ignoreRootTransform) {
   return detail::guarded([&]() -> Status {
     if (!std::ifstream(path).good()) return Status::fileError("cannot open mesh file '" + path + "'");
-    if (hasObjExtension(path)) return loadObj(path, out);
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (scene == nullptr || scene->mRootNode == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
