@@ -1,4 +1,4 @@
-// libFuzzer target: gq::loadMeshFile on arbitrary bytes saved as .obj (gq's reader) or .stl (assimp; first byte
+// libFuzzer target: gq::loadMeshFile on arbitrary bytes saved as .obj or .stl (both through assimp; first byte
 // picks), then cooking of what loaded. Contract: ok -> every index in range; error -> `out` untouched; nothing crashes
 // or throws. DAE is not mutated here: assimp 5.2's Collada loader segfaults on malformed files
 // (known_crashes/fuzz_mesh_file_assimp_collada_segv.bin, third-party); the DAE tests of tests/core cover that format.

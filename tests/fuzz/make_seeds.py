@@ -63,7 +63,7 @@ def mesh_file_seeds():
     binary_stl = b" " * 80 + struct.pack("<I", 2) + tri + tri
     concave_obj = ("v 4 0 0\nv 1 1 0\nv 0 4 0\nv 0 0 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3//1 4\n"
                    "v 0 0 1\nf -1 -2 -3\nl 1 2\n")
-    # First byte: even = .obj (gq's reader), odd = .stl (assimp). DAE is not mutated (assimp's Collada loader
+    # First byte: even = .obj, odd = .stl. DAE is not mutated (assimp's Collada loader
     # segfaults on malformed files: known_crashes/); tests/core covers DAE loading.
     seeds = {"tetra.obj": b"\0" + obj.encode(), "quad.obj": b"\0" + quad_obj.encode(),
              "concave.obj": b"\0" + concave_obj.encode(),
