@@ -1,5 +1,5 @@
 // fuzz_raycast's findings of 2026-11-22, replayed byte for byte through the fuzzer's own decoder (the inputs are also
-// in tests/fuzz/known_crashes/ and replayed by scripts/sanitize's smoke). Both were float raycasts that answered Ok
+// in tests/fuzz/known_crashes/ and replayed by scripts/sanitize's smoke). All were float raycasts that answered Ok
 // with a non-finite field after millions of executions.
 #include <gtest/gtest.h>
 
@@ -70,6 +70,30 @@ TEST(FuzzRaycastFindings, ConvexEntryParameterThatOverflowsIsNoHit) {
   ASSERT_TRUE(r.status.ok()) << r.status.toString();
   EXPECT_TRUE(r.hits.empty());
   for (const auto& h : r.hits) EXPECT_TRUE(std::isfinite(h.distance));
+}
+
+// A sphere at x = FLT_MAX and a ray from x = -FLT_MAX (found after 26.5M executions): origin - centre overflowed to
+// -inf and the hit distance came out NaN. Such an origin has no position in the shape's frame: InvalidArgument.
+TEST(FuzzRaycastFindings, OriginWhoseOffsetFromThePoseOverflowsIsInvalidArgument) {
+  const Replay r = replayRaycast({0x09, 0x00, 0x63, 0xec, 0x0c, 0x43, 0xe5, 0xa2, 0x0b, 0x8f, 0x1f, 0x00, 0xfc, 0x00, 0xff, 0x64, 0x3b, 0x00,
+                                  0x00, 0x00, 0x05, 0x0d, 0x3c, 0x15, 0x07, 0x66, 0x05, 0x0d, 0x79, 0x4d, 0x08, 0x58, 0x24, 0xff, 0xff, 0x66});
+  ASSERT_EQ(r.type, gq::GeometryType::Sphere);
+  EXPECT_EQ(r.status.code, gq::StatusCode::InvalidArgument) << r.status.toString();
+  EXPECT_TRUE(r.hits.empty());
+}
+
+TEST(FuzzRaycastFindings, OriginOffsetCheckKeepsFarButRepresentableRays) {
+  // The check rejects only overflow: a ray 2e18 away (its quadratic, ~4e36, still fits float) hits at 2e18 - 1.
+  const gq::Geometry<float> sphere = gq::SphereGeometry<float>(1.0f);
+  const gq::Transform<float> pose(gq::Vec3<float>(1e18f, 0, 0));
+  gq::RaycastHit<float> hit;
+  std::uint32_t count = 0;
+  const gq::Status s = gq::raycast(gq::Vec3<float>(-1e18f, 0, 0), gq::Vec3<float>(1, 0, 0), sphere, pose, 3e18f,
+                                   gq::kDefaultHitFlags, 1, &hit, count);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  ASSERT_EQ(count, 1u);
+  EXPECT_TRUE(std::isfinite(hit.distance));
+  EXPECT_NEAR(hit.distance, 2e18f, 1e12f);
 }
 
 }  // namespace

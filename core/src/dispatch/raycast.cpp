@@ -39,7 +39,11 @@ Status validateRaycast(const Vec3<T>& origin, const Vec3<T>& dir, const Geometry
   if (hits == nullptr) return Status::invalid("hit buffer is null");
   if (flags.has(HitFlag::Mtd) || flags.has(HitFlag::PreciseSweep) || flags.has(HitFlag::AssumeNoInitialOverlap))
     return Status::invalid("mtd, preciseSweep and assumeNoInitialOverlap are sweep flags, not raycast flags");
-  return detail::checkGeometryAndPose(geom, pose, "geometry pose");
+  if (Status s = detail::checkGeometryAndPose(geom, pose, "geometry pose"); !s.ok()) return s;
+  // Kernels work in the geometry's frame; an origin whose offset from the pose overflows T has no local position.
+  if (!isFinite(Vec3<T>(origin - pose.p)))
+    return Status::invalid("ray origin is too far from the geometry pose: their difference overflows the precision");
+  return Status();
 }
 
 }  // namespace
