@@ -30,15 +30,6 @@ constexpr double kFclWrongDistance = 1e-6;   // FCL's distance counts as wrong b
 
 using Pair = std::pair<Kind, Kind>;
 
-std::vector<Pair> allPairs() {
-  std::vector<Pair> pairs;
-  const auto kinds = allKinds();
-  for (std::size_t i = 0; i < kinds.size(); ++i)
-    for (std::size_t j = i; j < kinds.size(); ++j)
-      if (!(isPlaneLike(kinds[i]) && isPlaneLike(kinds[j]))) pairs.emplace_back(kinds[i], kinds[j]);
-  return pairs;
-}
-
 std::string pairName(const ::testing::TestParamInfo<Pair>& info) {
   return std::string(name(info.param.first)) + "_" + name(info.param.second);
 }

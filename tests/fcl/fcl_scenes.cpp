@@ -17,6 +17,15 @@ std::vector<Kind> allKinds() {
 
 bool isPlaneLike(Kind k) { return k == Kind::Halfspace || k == Kind::Plane; }
 
+std::vector<std::pair<Kind, Kind>> allPairs() {
+  std::vector<std::pair<Kind, Kind>> pairs;
+  const auto kinds = allKinds();
+  for (std::size_t i = 0; i < kinds.size(); ++i)
+    for (std::size_t j = i; j < kinds.size(); ++j)
+      if (!(isPlaneLike(kinds[i]) && isPlaneLike(kinds[j]))) pairs.emplace_back(kinds[i], kinds[j]);
+  return pairs;
+}
+
 ::fcl::Transform3d randomPose(std::mt19937& rng, double extent) {
   std::normal_distribution<double> g(0, 1);
   std::uniform_real_distribution<double> u(-extent, extent);

@@ -3,6 +3,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fcl/fcl.h>
@@ -13,6 +14,8 @@ enum class Kind { Sphere, Box, Capsule, Cylinder, Cone, Ellipsoid, Convex, Trian
 const char* name(Kind k);
 std::vector<Kind> allKinds();
 bool isPlaneLike(Kind k);
+// Every unordered pair of kinds, except pairs of two plane-like kinds (Halfspace, Plane).
+std::vector<std::pair<Kind, Kind>> allPairs();
 
 // A geometry with the data the exact references need (polytope vertices/faces, sizes).
 struct TestShape {

@@ -114,15 +114,6 @@ TestShape roundedToFloat(const TestShape& s) {
   return d;
 }
 
-std::vector<Pair> allPairs() {
-  std::vector<Pair> pairs;
-  const auto kinds = allKinds();
-  for (std::size_t i = 0; i < kinds.size(); ++i)
-    for (std::size_t j = i; j < kinds.size(); ++j)
-      if (!(isPlaneLike(kinds[i]) && isPlaneLike(kinds[j]))) pairs.emplace_back(kinds[i], kinds[j]);
-  return pairs;
-}
-
 std::string pairName(const ::testing::TestParamInfo<Pair>& info) {
   return std::string(name(info.param.first)) + "_" + name(info.param.second);
 }
