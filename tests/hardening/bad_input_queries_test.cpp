@@ -8,6 +8,9 @@ namespace gq::hardening {
 namespace {
 
 template <class T> class BadInputQueries : public ::testing::Test {};
+
+// The documented bound on sizes and pair offsets (README, bad-input table).
+template <class T> T supportedMagnitude() { return std::is_same_v<T, float> ? T(1e9) : T(1e75); }
 TYPED_TEST_SUITE(BadInputQueries, Scalars);
 
 TYPED_TEST(BadInputQueries, ValidBaselineIsAcceptedByEveryFamily) {
@@ -36,6 +39,21 @@ TYPED_TEST(BadInputQueries, NonUnitQuaternionIsInvalidArgumentInEveryFamily) {
     FamilyInputs<T> in;
     in.pose0.q = in.pose1.q = Quat<T>(w, T(0), T(0), T(0));
     expectEveryFamilyReturns(in, StatusCode::InvalidArgument);
+  }
+}
+
+TYPED_TEST(BadInputQueries, PosesWhoseOffsetOverflowsIsInvalidArgumentInEveryPairFamily) {
+  // Pair kernels work in pose0's frame: pose1.p - pose0.p must be representable (opposite poses near the scalar's
+  // limit overflow it to Inf). Rays, point distance and bounds take one pose each and stay valid.
+  using T = TypeParam;
+  const T far = std::numeric_limits<T>::max() * T(0.75);
+  for (const Geometry<T>& g : everyGeometry<T>()) {
+    FamilyInputs<T> in;
+    in.geom0 = SphereGeometry<T>(T(0.5));
+    in.geom1 = g;
+    in.pose0.p.x() = -far;
+    in.pose1.p.x() = far;
+    expectEveryFamilyReturns(in, StatusCode::InvalidArgument, {"raycast", "pointDistance", "bounds"});
   }
 }
 
@@ -131,6 +149,49 @@ TYPED_TEST(BadInputQueries, NonPositiveOrNonFiniteSizesAreInvalidArgumentInEvery
     FamilyInputs<T> in;
     in.geom0 = in.geom1 = g;
     expectEveryFamilyReturns(in, StatusCode::InvalidArgument);
+  }
+}
+
+TYPED_TEST(BadInputQueries, SizesBeyondTheSupportedMagnitudeAreInvalidArgumentInPairFamilies) {
+  // Pair kernels square products of two lengths; sizes above 1e9 (float) / 1e75 (double) would overflow them.
+  // Single-geometry families (ray, point distance, bounds) still answer, with finite outputs.
+  using T = TypeParam;
+  const T over = supportedMagnitude<T>() * T(2);
+  const auto& c = Cooked<T>::get();  // unit cube hull and mesh (|coordinate| <= 1), 0.25-spaced heightfield
+  const std::vector<Geometry<T>> tooLarge = {
+      SphereGeometry<T>(over),
+      CapsuleGeometry<T>(over, T(1)),
+      CapsuleGeometry<T>(T(1), over),
+      BoxGeometry<T>(T(1), over, T(1)),
+      ConvexMeshGeometry<T>(c.hull, MeshScale<T>(Vec3<T>(T(1), T(1), over))),
+      TriangleMeshGeometry<T>(c.mesh, MeshScale<T>(Vec3<T>(-over, T(1), T(1)))),
+      HeightFieldGeometry<T>(c.heightField, T(1), over, T(0.25))};
+  for (const Geometry<T>& g : tooLarge) {
+    FamilyInputs<T> in;
+    in.geom0 = in.geom1 = g;
+    for (const FamilyOutcome& o : runEveryFamily(in)) {  // runEveryFamily flags any non-finite accepted output
+      if (o.family == "raycast" || o.family == "pointDistance" || o.family == "bounds") {
+        EXPECT_NE(o.status.code, StatusCode::InvalidArgument) << toString(g.type()) << " " << o.family;
+        continue;
+      }
+      EXPECT_EQ(o.status.code, StatusCode::InvalidArgument) << toString(g.type()) << " " << o.family;
+      EXPECT_NE(o.status.message.find("supported magnitude"), std::string::npos) << o.status.message;
+    }
+  }
+}
+
+TYPED_TEST(BadInputQueries, SizesAtTheSupportedMagnitudeAreAcceptedWithFiniteAnswers) {
+  using T = TypeParam;
+  const T limit = supportedMagnitude<T>();
+  const auto& c = Cooked<T>::get();
+  for (const Geometry<T>& g : std::vector<Geometry<T>>{SphereGeometry<T>(limit), CapsuleGeometry<T>(T(1), limit),
+                                                     BoxGeometry<T>(limit, T(1), T(1)),
+                                                     ConvexMeshGeometry<T>(c.hull, MeshScale<T>(Vec3<T>::Constant(limit)))}) {
+    FamilyInputs<T> in;
+    in.geom0 = in.geom1 = g;
+    in.pose1.p.x() = limit;  // the largest supported offset too
+    for (const FamilyOutcome& o : runEveryFamily(in))  // runEveryFamily flags any non-finite accepted output
+      EXPECT_TRUE(o.status.ok()) << toString(g.type()) << " " << o.family << ": " << o.status.toString();
   }
 }
 

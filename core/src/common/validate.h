@@ -4,6 +4,7 @@
 // Status with its message is composed only for a rejected input. A primitive query spends ~20 instructions here.
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "gq/custom.h"
 #include "gq/geometry.h"
@@ -24,8 +25,17 @@ struct Problem {
   Status status() const { return reason ? Status(code, reason) : Status(); }
 };
 
-// The geometry rules (common/geometry.cpp); validateGeometry() is their Status form.
+// The largest size or pose offset a pair query (overlap, penetration, distance, sweep) accepts. Kernels form products of up to four lengths (the squared
+// norm of a cross product of two edges), so kMaxMagnitude^4 stays inside T's range: float 1e36 < 3.4e38, double
+// 1e300 < 1.8e308. Beyond it a product overflows and an answer would be garbage (fuzz_pair_queries: a double sphere
+// of radius 1.8e308 gave a penetration direction of length 2e-33).
+template <class T> constexpr T kMaxMagnitude = std::is_same_v<T, float> ? T(1e9) : T(1e75);
+constexpr const char* kMaxMagnitudeText = "1e9 in float, 1e75 in double";
+
+// The geometry rules (common/geometry.cpp); validateGeometry() is their Status form. pairGeometryProblem adds the
+// size bound kMaxMagnitude of pair queries.
 template <class T> Problem geometryProblem(const Geometry<T>& geom);
+template <class T> Problem pairGeometryProblem(const Geometry<T>& geom);
 
 // | |v| - 1 | <= tolerance, tested on |v|^2 against the squared bounds (the same set, no square root; NaN fails).
 inline bool squaredNormIsUnit(double n2, double tolerance) {
@@ -83,11 +93,22 @@ template <class T> Status checkGeometryAndPose(const Geometry<T>& g, const Trans
 }
 
 // Both inputs of a pair query ("pose0", "pose1").
+// Pair kernels work in pose0's frame: the offset p1 - p0 must be a length they can square (see kMaxMagnitude).
+template <class T> bool pairOffsetIsSupported(const Transform<T>& p0, const Transform<T>& p1) {
+  return ((p1.p - p0.p).array().abs() <= kMaxMagnitude<T>).all();
+}
+
 template <class T>
 Status checkPairInputs(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
-  if (!geometryProblem(g0) && !geometryProblem(g1) && poseIsValid(p0) && poseIsValid(p1)) return {};
-  if (Status s = checkGeometryAndPose(g0, p0, "pose0"); !s.ok()) return s;
-  return checkGeometryAndPose(g1, p1, "pose1");
+  if (!pairGeometryProblem(g0) && !pairGeometryProblem(g1) && poseIsValid(p0) && poseIsValid(p1) &&
+      pairOffsetIsSupported(p0, p1))
+    return {};
+  if (const Problem p = pairGeometryProblem(g0)) return p.status();
+  if (Status s = checkPose(p0, "pose0"); !s.ok()) return s;
+  if (const Problem p = pairGeometryProblem(g1)) return p.status();
+  if (Status s = checkPose(p1, "pose1"); !s.ok()) return s;
+  return Status::invalid(std::string("pose1 is too far from pose0: a pair query takes offsets up to ") +
+                         kMaxMagnitudeText);
 }
 
 // Runs `body` (returning Status) and turns any escaping exception into InternalError: nothing throws out.
