@@ -44,6 +44,8 @@ inline constexpr bool kGjkNesterov = false;
 // stopped 0.004-0.19 short, where plain GJK converges in ~10 iterations).
 inline constexpr std::uint32_t kGjkMomentumIterations = 24;
 
+template <class T> class SupportStartTable;  // gjk/support_table.h
+
 // A support mapping for one convex Geometry<T> at a pose. Holds raw pointers into the geometry's cooked data or
 // callbacks: it must not outlive the Geometry it was made from.
 template <class T> struct ConvexShape {
@@ -54,6 +56,7 @@ template <class T> struct ConvexShape {
   T margin = T(0);                              // radius of the rounded shell (sphere, capsule), else 0
   Vec3<T> halfExtents = Vec3<T>::Zero();        // box half extents; segment: (halfHeight, 0, 0)
   const ConvexMesh<T>* hull = nullptr;          // Kind::Hull
+  const SupportStartTable<T>* startTable = nullptr;  // Kind::Hull with a cooked start table (else climbs warm)
   Mat3<T> hullScale = Mat3<T>::Identity();      // symmetric MeshScale matrix (Kind::Hull)
   bool hullScaled = false;                      // false: hullScale is the identity
   const CustomGeometryCallbacks<T>* custom = nullptr;  // Kind::Custom

@@ -13,7 +13,7 @@ template <class T> Vec3<T> supportHull(const ConvexShape<T>& s, const Vec3<T>& d
   const Vec3<T> dm = s.hullScaled ? Vec3<T>(s.hullScale * d) : d;
   const bool climb = hull.vertices.size() > kHillClimbMinVertices && hasAdjacency(hull);
   bool cold = false;  // single calls keep the shape's running hint
-  const std::uint32_t v = hullVertex(hull, climb, dm, s.climbStart, cold);
+  const std::uint32_t v = hullVertex(hull, s.startTable, climb, dm, s.climbStart, cold);
   return s.hullScaled ? Vec3<T>(s.hullScale * hull.vertices[v]) : hull.vertices[v];
 }
 
@@ -71,6 +71,7 @@ template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const
   } else if (const auto* g = geom.template getIf<ConvexMeshGeometry<T>>()) {
     s.kind = Kind::Hull;
     s.hull = g->mesh.get();
+    s.startTable = supportStartTable(g->mesh);
     s.hullScaled = !g->scale.isIdentity();
     if (s.hullScaled) s.hullScale = g->scale.toMatrix();
     s.size = boundsRadius(s.hull->localBounds) * g->scale.scale.cwiseAbs().maxCoeff();

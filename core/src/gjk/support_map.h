@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "gjk/gjk.h"
+#include "gjk/support_table.h"
 
 namespace gq::detail {
 
@@ -80,12 +81,15 @@ template <class T> inline std::uint32_t sampledStart(const ConvexMesh<T>& hull, 
   return best;
 }
 
-// Hull vertex extreme along the (scaled, local) direction: climb on large hulls with adjacency (from `hint`, or from
-// a sampled start when `cold`), else scan.
+// Hull vertex extreme along the (scaled, local) direction: climb on large hulls with adjacency (from the start table's
+// vertex for d when there is a table, else from `hint`, or from a sampled start when `cold`), else scan.
 template <class T>
-inline std::uint32_t hullVertex(const ConvexMesh<T>& hull, bool climb, const Vec3<T>& d, std::uint32_t& hint, bool& cold) {
+inline std::uint32_t hullVertex(const ConvexMesh<T>& hull, const SupportStartTable<T>* table, bool climb, const Vec3<T>& d,
+                                std::uint32_t& hint, bool& cold) {
   if (!climb) return bruteForceVertex(hull, d);
-  if (cold) hint = sampledStart(hull, d);
+  if (table && table->hasClimbGraph()) return hint = table->climb(hull, d, table->lookup(d));
+  if (table) hint = table->lookup(d);
+  else if (cold) hint = sampledStart(hull, d);
   cold = false;
   hint = climbVertex(hull, d, hint);
   return hint;
@@ -96,7 +100,7 @@ template <class T> class SupportMap {
   using Kind = typename ConvexShape<T>::Kind;
 
   explicit SupportMap(const ConvexShape<T>& s)
-      : kind_(s.kind), origin_(s.pose.p), halfExtents_(s.halfExtents), hull_(s.hull), custom_(s.custom), hint_(s.climbStart), cold_(s.climbStart == 0) {
+      : kind_(s.kind), origin_(s.pose.p), halfExtents_(s.halfExtents), hull_(s.hull), table_(s.startTable), custom_(s.custom), hint_(s.climbStart), cold_(s.climbStart == 0) {
     const Mat3<T> r = s.pose.q.toRotationMatrix();
     if (kind_ == Kind::Hull && s.hullScaled) {
       toWorld_ = r * s.hullScale;
@@ -118,7 +122,7 @@ template <class T> class SupportMap {
       }
       case Kind::Box: return origin_ + toWorld_ * supportBox(halfExtents_, Vec3<T>(toLocal_ * d));
       case Kind::Hull: {
-        const std::uint32_t v = hullVertex(*hull_, climb_, Vec3<T>(toLocal_ * d), hint_, cold_);
+        const std::uint32_t v = hullVertex(*hull_, table_, climb_, Vec3<T>(toLocal_ * d), hint_, cold_);
         return origin_ + toWorld_ * hull_->vertices[v];
       }
       case Kind::Custom: return origin_ + toWorld_ * custom_->support(Vec3<T>(toLocal_ * d));
@@ -137,6 +141,7 @@ template <class T> class SupportMap {
   Mat3<T> toWorld_;
   Mat3<T> toLocal_;
   const ConvexMesh<T>* hull_;
+  const SupportStartTable<T>* table_;
   const CustomGeometryCallbacks<T>* custom_;
   std::uint32_t hint_;
   bool cold_;  // no warm start given (ConvexShape::climbStart == 0): the first climb starts from sampledStart

@@ -1,0 +1,175 @@
+#pragma once
+// Support start tables: for a cooked convex hull, the extreme vertex along the centre direction of every cell of a
+// cube map over the sphere of directions. A hill climb started from the cell's vertex is one step or none from the
+// answer (it stays exact: the climb itself decides), where a climb warm-started from the previous GJK direction
+// walks several steps (successive GJK directions often point to opposite sides of a shape).
+//
+// Cube map: a direction d falls on the face of its largest |component| (6 faces: +X, -X, +Y, -Y, +Z, -Z); the other
+// two components divided by that one lie in [-1, 1] and are cut into k x k cells.
+//
+// Tables live in a process-wide registry keyed by the mesh's address (ConvexMesh is public and has no room for
+// them): built once per mesh under a lock, immutable afterwards, and an entry is never replaced while its mesh is
+// alive (a weak reference tells a live mesh from a dead one at a reused address). A small per-thread table in front
+// of the registry makes the usual lookup lock-free. Like every cooked-data cache in core, it assumes a mesh is not
+// modified after its first query.
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "gq/cooking.h"
+
+namespace gq::detail {
+
+// Hulls with at most this many vertices get no table (they are scanned, or climbed from a few samples).
+inline constexpr std::uint32_t kStartTableMinVertices = 8;
+
+// Neighbour runs of the packed climbing graph are padded to a multiple of this many slots (one SSE register of T).
+template <class T> inline constexpr std::uint32_t kClimbLanes = std::uint32_t(16 / sizeof(T));
+
+template <class T> class SupportStartTable {
+ public:
+  // Builds the table of `hull` (which needs vertex adjacency or is scanned exhaustively per cell).
+  explicit SupportStartTable(const ConvexMesh<T>& hull);
+
+  // Start vertex for direction d (need not be unit); 0 for a zero or non-finite direction.
+  std::uint32_t lookup(const Vec3<T>& d) const {
+    const T ax = d.x() < T(0) ? -d.x() : d.x(), ay = d.y() < T(0) ? -d.y() : d.y(), az = d.z() < T(0) ? -d.z() : d.z();
+    const T sum = ax + ay + az;  // NaN or inf when any component is
+    if (!(sum > T(0)) || !(sum < std::numeric_limits<T>::infinity())) return 0;
+    // Face f = 2 * axis + (component < 0); (u, v) = the two other components.
+    std::uint32_t face;
+    T major, u, v;
+    if (ax >= ay && ax >= az) {
+      face = d.x() < T(0) ? 1u : 0u; major = ax; u = d.y(); v = d.z();
+    } else if (ay >= az) {
+      face = d.y() < T(0) ? 3u : 2u; major = ay; u = d.x(); v = d.z();
+    } else {
+      face = d.z() < T(0) ? 5u : 4u; major = az; u = d.x(); v = d.y();
+    }
+    const T scale = halfCells_ / major;  // maps u / major in [-1, 1] to [0, k]
+    return start_[(face * cells_ + cellIndex(u * scale)) * cells_ + cellIndex(v * scale)];
+  }
+
+  // Steepest-ascent hill climb from `start` to the vertex of `hull` (the mesh the table was built from) extreme along
+  // d; exact like climbVertex. The table keeps the hull's edge graph with every vertex's neighbour coordinates
+  // stored contiguously (x, y, z arrays in CSR order), each run padded to kClimbLanes<T> slots by repeating its last
+  // neighbour (a repeated candidate cannot change a maximum), so a step is a few packed multiply-adds with no index
+  // indirection. Dot products are formed as in dot3, so values (and ties) match the scalar climb.
+  std::uint32_t climb(const ConvexMesh<T>& hull, const Vec3<T>& d, std::uint32_t current) const {
+    T currentDot = dot(hull.vertices[current], d);
+    for (;;) {
+      T bestDot;
+      const std::uint32_t slot = bestNeighbourSlot(current, d, bestDot);
+      if (!(bestDot > currentDot)) return current;
+      current = neighbour_[slot];
+      currentDot = bestDot;
+    }
+  }
+  bool hasClimbGraph() const { return !neighbour_.empty(); }
+
+  std::uint32_t cellsPerSide() const { return cells_; }
+  // Unit centre direction of cell (face, i, j) (what the stored vertex is extreme along).
+  Vec3<T> cellDirection(std::uint32_t face, std::uint32_t i, std::uint32_t j) const;
+  std::uint32_t startOfCell(std::uint32_t face, std::uint32_t i, std::uint32_t j) const {
+    return start_[(face * cells_ + i) * cells_ + j];
+  }
+
+ private:
+  // Cell of a coordinate c in [0, k] (k itself, from a component equal to the major one, is the last cell).
+  std::uint32_t cellIndex(T c) const {
+    const T clamped = c + halfCells_;
+    const std::uint32_t i = clamped > T(0) ? static_cast<std::uint32_t>(clamped) : 0u;
+    return i < cells_ ? i : cells_ - 1;
+  }
+
+  static T dot(const Vec3<T>& v, const Vec3<T>& d) { return v.x() * d.x() + v.y() * d.y() + v.z() * d.z(); }
+
+  // Slot of the neighbour of `vertex` with the largest d.v (its value in `best`; -inf for a vertex without any).
+  std::uint32_t bestNeighbourSlot(std::uint32_t vertex, const Vec3<T>& d, T& best) const;
+
+  void buildClimbGraph(const ConvexMesh<T>& hull);
+
+  std::uint32_t cells_;
+  T halfCells_;
+  std::vector<std::uint32_t> start_;
+  std::vector<std::uint32_t> offsets_;    // padded CSR offsets, one run per vertex
+  std::vector<T> x_, y_, z_;              // neighbour coordinates per slot
+  std::vector<std::uint32_t> neighbour_;  // neighbour vertex per slot
+};
+
+#if defined(__SSE2__)
+// Packed scans: the running maximum and the slot it came from are kept per lane (slots as floating-point values,
+// exact below 2^24 slots, which buildClimbGraph guarantees), then reduced across lanes (first slot on ties).
+template <> inline std::uint32_t SupportStartTable<double>::bestNeighbourSlot(std::uint32_t vertex, const Vec3<double>& d,
+                                                                              double& best) const {
+  const __m128d dx = _mm_set1_pd(d.x()), dy = _mm_set1_pd(d.y()), dz = _mm_set1_pd(d.z());
+  __m128d bestValue = _mm_set1_pd(-std::numeric_limits<double>::infinity()), bestSlot = _mm_setzero_pd();
+  const std::uint32_t begin = offsets_[vertex], end = offsets_[vertex + 1];
+  __m128d slot = _mm_set_pd(double(begin + 1), double(begin));
+  const __m128d step = _mm_set1_pd(2.0);
+  for (std::uint32_t k = begin; k < end; k += 2) {
+    const __m128d s = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_loadu_pd(&x_[k]), dx), _mm_mul_pd(_mm_loadu_pd(&y_[k]), dy)),
+                                 _mm_mul_pd(_mm_loadu_pd(&z_[k]), dz));
+    const __m128d better = _mm_cmpgt_pd(s, bestValue);
+    bestValue = _mm_or_pd(_mm_and_pd(better, s), _mm_andnot_pd(better, bestValue));
+    bestSlot = _mm_or_pd(_mm_and_pd(better, slot), _mm_andnot_pd(better, bestSlot));
+    slot = _mm_add_pd(slot, step);
+  }
+  const double v0 = _mm_cvtsd_f64(bestValue), v1 = _mm_cvtsd_f64(_mm_unpackhi_pd(bestValue, bestValue));
+  const double s0 = _mm_cvtsd_f64(bestSlot), s1 = _mm_cvtsd_f64(_mm_unpackhi_pd(bestSlot, bestSlot));
+  const bool second = v1 > v0 || (v1 == v0 && s1 < s0);
+  best = second ? v1 : v0;
+  return static_cast<std::uint32_t>(second ? s1 : s0);
+}
+
+template <> inline std::uint32_t SupportStartTable<float>::bestNeighbourSlot(std::uint32_t vertex, const Vec3<float>& d,
+                                                                             float& best) const {
+  const __m128 dx = _mm_set1_ps(d.x()), dy = _mm_set1_ps(d.y()), dz = _mm_set1_ps(d.z());
+  __m128 bestValue = _mm_set1_ps(-std::numeric_limits<float>::infinity()), bestSlot = _mm_setzero_ps();
+  const std::uint32_t begin = offsets_[vertex], end = offsets_[vertex + 1];
+  const float b = float(begin);
+  __m128 slot = _mm_set_ps(b + 3, b + 2, b + 1, b);
+  const __m128 step = _mm_set1_ps(4.0f);
+  for (std::uint32_t k = begin; k < end; k += 4) {
+    const __m128 s = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&x_[k]), dx), _mm_mul_ps(_mm_loadu_ps(&y_[k]), dy)),
+                                _mm_mul_ps(_mm_loadu_ps(&z_[k]), dz));
+    const __m128 better = _mm_cmpgt_ps(s, bestValue);
+    bestValue = _mm_or_ps(_mm_and_ps(better, s), _mm_andnot_ps(better, bestValue));
+    bestSlot = _mm_or_ps(_mm_and_ps(better, slot), _mm_andnot_ps(better, bestSlot));
+    slot = _mm_add_ps(slot, step);
+  }
+  alignas(16) float values[4], slots[4];
+  _mm_store_ps(values, bestValue);
+  _mm_store_ps(slots, bestSlot);
+  std::uint32_t lane = 0;
+  for (std::uint32_t l = 1; l < 4; ++l)
+    if (values[l] > values[lane] || (values[l] == values[lane] && slots[l] < slots[lane])) lane = l;
+  best = values[lane];
+  return static_cast<std::uint32_t>(slots[lane]);
+}
+#else
+template <class T>
+inline std::uint32_t SupportStartTable<T>::bestNeighbourSlot(std::uint32_t vertex, const Vec3<T>& d, T& best) const {
+  best = -std::numeric_limits<T>::infinity();
+  std::uint32_t slot = offsets_[vertex];
+  for (std::uint32_t k = offsets_[vertex], end = offsets_[vertex + 1]; k < end; ++k) {
+    const T s = x_[k] * d.x() + y_[k] * d.y() + z_[k] * d.z();
+    if (s > best) { best = s; slot = k; }
+  }
+  return slot;
+}
+#endif
+
+// Cells per cube face for a hull of n vertices: a few cells per vertex on every face, 4 x 4 up to 8 x 8.
+std::uint32_t startTableCells(std::size_t vertexCount);
+
+// The shared table of `mesh`, built on first use; nullptr for hulls of <= kStartTableMinVertices vertices.
+// The pointer stays valid as long as the mesh is alive.
+template <class T> const SupportStartTable<T>* supportStartTable(const std::shared_ptr<const ConvexMesh<T>>& mesh);
+
+}  // namespace gq::detail
