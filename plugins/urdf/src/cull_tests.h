@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "gq/urdf/self_collision.h"
+#include "overlap/closest_points.h"  // core/src (private include path)
 
 namespace gq::urdf::detail {
 
@@ -14,33 +15,14 @@ template <class T> bool spheresOverlap(const Vec3<T>& ca, T ra, const Vec3<T>& c
   return (ca - cb).squaredNorm() <= (ra + rb) * (ra + rb);
 }
 
-// Squared distance between segments p0 + s d0 and p1 + t d1, s, t in [0, 1]: minimise over s for the clamped
-// t(s), the standard two-clamp solution (a parallel pair takes s = 0).
+// Squared distance between segments p0 + s d0 and p1 + t d1, s, t in [0, 1], from core's closest points (the
+// cross-product form: for nearly parallel segments its error stays at rounding of |p0 - p1|, where the two-clamp
+// form with a e - b^2 lost up to sqrt(eps) |d|; tests/urdf/cull_tests_test.cpp).
 template <class T>
 T segmentSquaredDistance(const Vec3<T>& p0, const Vec3<T>& d0, const Vec3<T>& p1, const Vec3<T>& d1) {
-  const Vec3<T> r = p0 - p1;
-  const T a = d0.squaredNorm(), e = d1.squaredNorm(), f = d1.dot(r);
-  T s = T(0), t = T(0);
-  if (a <= std::numeric_limits<T>::min()) {
-    t = e > std::numeric_limits<T>::min() ? std::clamp(f / e, T(0), T(1)) : T(0);
-  } else {
-    const T c = d0.dot(r);
-    if (e <= std::numeric_limits<T>::min()) {
-      s = std::clamp(-c / a, T(0), T(1));
-    } else {
-      const T b = d0.dot(d1), denom = a * e - b * b;
-      s = denom > T(0) ? std::clamp((b * f - c * e) / denom, T(0), T(1)) : T(0);
-      t = (b * s + f) / e;
-      if (t < T(0)) {
-        t = T(0);
-        s = std::clamp(-c / a, T(0), T(1));
-      } else if (t > T(1)) {
-        t = T(1);
-        s = std::clamp((b - c) / a, T(0), T(1));
-      }
-    }
-  }
-  return (p0 + s * d0 - p1 - t * d1).squaredNorm();
+  const gq::detail::SegmentPair<T> c =
+      gq::detail::closestPointsSegmentSegment(gq::detail::Segment<T>{p0, p0 + d0}, gq::detail::Segment<T>{p1, p1 + d1});
+  return (c.p0 - c.p1).squaredNorm();
 }
 
 // Capsules (segment from `start` along `span`, radius) are disjoint when their segments are farther apart than the

@@ -78,6 +78,8 @@ template <class T> class SelfCollisionChecker {
     T capsuleRadius = T(0);
     bool hasHull = false;  // mesh shapes: `hull` is their convex hull, tested before the triangles
     Geometry<T> hull;
+    bool valid = false;     // validateGeometry passed (shape and hull): core's kernels may be called directly
+    bool exactBox = false;  // a box whose culling box is itself: the oriented-box SAT decides box-box pairs
   };
   // Capsule enclosing every shape of a link (body frame), when tighter than the link sphere.
   struct LinkCapsule {
@@ -102,6 +104,8 @@ template <class T> class SelfCollisionChecker {
   bool linkCapsulesDisjoint(std::uint32_t linkA, std::uint32_t linkB);
   const Transform<T>& shapePose(std::uint32_t shape);
   bool shapesMayTouch(std::uint32_t shapeA, std::uint32_t shapeB, bool shapeSpheres);
+  Status overlapShapes(const Geometry<T>& a, const Transform<T>& poseA, const Geometry<T>& b, const Transform<T>& poseB,
+                       bool valid, bool& hit);
   Status narrowPhase(std::uint32_t shapeA, std::uint32_t shapeB, bool& hit);
   Status linkPairCollides(const CheckedPair& pair, bool& hit);
 
