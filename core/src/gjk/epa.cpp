@@ -187,11 +187,23 @@ struct Horizon {
   }
 };
 
-// Removes the faces that see `w` (farther than `tolerance` in front of them) and closes the hole with faces fanning from w to the horizon edges, reusing the
-// removed faces' slots. Transactional: when a buffer is full, w is already a vertex, or a new face degenerates or
-// comes closer to the origin than `lower` (the closest face), returns false and leaves the polytope as it was.
+// Running closestFace over the faces an expansion keeps and adds (saves a second pass over all faces).
+template <class T> struct ClosestTracker {
+  std::uint32_t best = std::numeric_limits<std::uint32_t>::max();
+  T bestDist = std::numeric_limits<T>::infinity();
+  T lower = std::numeric_limits<T>::infinity();
+  void offer(const EpaFace<T>& f, std::uint32_t i) {
+    lower = std::min(lower, f.dist);
+    if (!f.final && f.dist < bestDist) { bestDist = f.dist; best = i; }
+  }
+};
+
+// Removes the faces that see `w` (farther than `tolerance` in front of them) and closes the hole with faces fanning
+// from w to the horizon edges, reusing the removed faces' slots; `next` receives closestFace of the result.
+// Transactional: when a buffer is full, w is already a vertex, or a new face degenerates or comes closer to the
+// origin than `lower` (the closest face), returns false and leaves the polytope (and `next`) as it was.
 template <class T>
-bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p, T lower, T tolerance) {
+bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p, T lower, T tolerance, ClosestTracker<T>& next) {
   if (poly.pointCount == kEpaMaxPoints) return false;
   // A support point already in the polytope (a cone's apex, a box corner reached again) would fold the polytope.
   for (std::uint32_t i = 0; i < poly.pointCount; ++i)
@@ -201,11 +213,16 @@ bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p, T l
   Horizon horizon;
   std::array<std::uint32_t, kEpaMaxFaces> freeSlots;
   std::uint32_t freeCount = 0;
+  ClosestTracker<T> kept;
   for (std::uint32_t i = 0; i < poly.faceCount; ++i) {
     const EpaFace<T>& f = poly.faces[i];
+    if (!f.alive) continue;
     // Faces coplanar with w within tolerance stay (a consistent verdict on flat patches: cylinder caps, cone
     // bases), so the removed region stays a disk and its boundary one loop.
-    if (!f.alive || (i != best && !(f.n.dot(p.w - poly.points[f.v[0]].w) > tolerance))) continue;
+    if (i != best && !(f.n.dot(p.w - poly.points[f.v[0]].w) > tolerance)) {
+      kept.offer(f, i);
+      continue;
+    }
     freeSlots[freeCount++] = i;
     for (int e = 0; e < 3; ++e) horizon.toggle(Edge{f.v[e], f.v[(e + 1) % 3]});
   }
@@ -219,7 +236,13 @@ bool expand(Polytope<T>& poly, std::uint32_t best, const SupportPoint<T>& p, T l
       return false;
   ++poly.pointCount;
   for (std::uint32_t k = 0; k < freeCount; ++k) poly.faces[freeSlots[k]].alive = false;
-  for (std::uint32_t k = 0; k < horizon.count; ++k) poly.faces[k < freeCount ? freeSlots[k] : poly.faceCount++] = added[k];
+  for (std::uint32_t k = 0; k < horizon.count; ++k) {
+    const std::uint32_t slot = k < freeCount ? freeSlots[k] : poly.faceCount++;
+    poly.faces[slot] = added[k];
+    kept.offer(added[k], slot);
+  }
+  if (kept.best == std::numeric_limits<std::uint32_t>::max()) kept.best = poly.faceCount;
+  next = kept;
   return true;
 }
 
@@ -351,8 +374,8 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
   T gap = std::numeric_limits<T>::infinity(), lower = T(0), upper = std::numeric_limits<T>::infinity();
   SupportPoint<T> upperPoint{};
   std::uint32_t it = 0;
+  std::uint32_t best = closestFace(poly, lower);
   while (it < kEpaMaxIterations) {
-    const std::uint32_t best = closestFace(poly, lower);
     if (best == poly.faceCount) break;  // every face is final
     ++it;
     f = poly.faces[best];
@@ -361,7 +384,14 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
     gap = h - f.dist;  // h_D(n) - face distance >= 0: the error bound of this face
     if (h < upper) { upper = h; upperPoint = p; }
     if (gap <= tolerance || upper - lower <= tolerance) break;
-    if (!expand(poly, best, p, lower, tolerance)) poly.faces[best].final = true;
+    ClosestTracker<T> next;
+    if (expand(poly, best, p, lower, tolerance, next)) {
+      best = next.best;
+      lower = next.lower;
+    } else {
+      poly.faces[best].final = true;
+      best = closestFace(poly, lower);
+    }
   }
   r.iterations = it;
   if (gap <= tolerance) {
