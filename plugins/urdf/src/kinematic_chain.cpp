@@ -76,6 +76,7 @@ template <class T> KinematicChain<T>::KinematicChain(const RobotModel<T>& model)
     }
     const Mat3<T> r = origin.q.toRotationMatrix();
     s.o = origin.p;
+    if ((s.o.array() != T(0)).count() == 1) s.o.cwiseAbs().maxCoeff(&s.originAxis);
     if (j.type == JointType::Prismatic) {
       s.motion = Motion::Prismatic;
       s.g = r;
@@ -117,7 +118,7 @@ template <class T> bool KinematicChain<T>::valuesWithinLimits(const std::vector<
   return ok;
 }
 
-template <class T> Mat3<T> KinematicChain<T>::turnByOrigin(const Mat3<T>& parent, const Step& s) {
+template <class T> inline Mat3<T> KinematicChain<T>::turnByOrigin(const Mat3<T>& parent, const Step& s) {
   if (!s.permutation) return parent * s.g;
   Mat3<T> m;
   for (int c = 0; c < 3; ++c) m.col(c) = s.sign[c] * parent.col(s.from[std::size_t(c)]);
@@ -127,7 +128,7 @@ template <class T> Mat3<T> KinematicChain<T>::turnByOrigin(const Mat3<T>& parent
 // child = R_parent * G * Rz(t): columns c m0 + s m1, c m1 - s m0, m2 of m = R_parent * G; for a signed
 // permutation G the columns of m are signed columns of R_parent, read directly.
 template <class T>
-void KinematicChain<T>::turnAboutZ(const Mat3<T>& parent, const Step& s, T c, T sn, Mat3<T>& child) {
+inline void KinematicChain<T>::turnAboutZ(const Mat3<T>& parent, const Step& s, T c, T sn, Mat3<T>& child) {
   if (!s.permutation) {
     const Mat3<T> m = parent * s.g;
     child.col(0) = c * m.col(0) + sn * m.col(1);
@@ -160,7 +161,8 @@ Status KinematicChain<T>::place(const std::vector<T>& q, std::vector<Mat3<T>>& r
       double sine, cosine;
       sinCos(double(value), sine, cosine);
       turnAboutZ(parent, s, T(cosine), T(sine), child);
-      positions[s.child].noalias() = parent * s.o;
+      if (s.originAxis >= 0) positions[s.child].noalias() = s.o[s.originAxis] * parent.col(s.originAxis);
+      else positions[s.child].noalias() = parent * s.o;
     } else {
       child = turnByOrigin(parent, s);
       positions[s.child].noalias() = parent * (s.o + value * s.d);

@@ -41,6 +41,7 @@ template <class T> class KinematicChain {
     Vec3<T> sign = Vec3<T>::Ones();
     Mat3<T> g = Mat3<T>::Identity();
     Vec3<T> o = Vec3<T>::Zero();  // joint origin in the parent body frame
+    int originAxis = -1;          // o = o[k] e_k (one nonzero coordinate, most URDF origins): R_parent o is a column
     Vec3<T> d = Vec3<T>::Zero();  // prismatic: the axis in the parent body frame
   };
 
