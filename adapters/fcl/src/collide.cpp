@@ -3,10 +3,10 @@
 #include <vector>
 
 #include "convert.h"
-#include "direct_kernels.h"
 #include "fallback.h"
 #include "gq/fcl/collision.h"
 #include "pair_kernels.h"
+#include "solid_pairs.h"
 
 namespace gq::fcl {
 namespace {
@@ -40,23 +40,24 @@ bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
   return !fclContactIsClosedForm(a, b);
 }
 
-// Two closed solids, the fast path: one kernel call, at most one contact, no buffer. False: no usable answer.
+// Two closed solids, the fast path (solid_pairs.h): at most one contact, no buffer; contact geometry only when
+// asked for.
 template <class S>
-bool collideSolids(const ::fcl::CollisionGeometry<S>* o1, const detail::Converted<S>& a, const Transform<S>& pa,
-                   const ::fcl::CollisionGeometry<S>* o2, const detail::Converted<S>& b, const Transform<S>& pb,
-                   bool withContact, ::fcl::CollisionResult<S>& result) {
-  if (!withContact) {  // the boolean only: no contact geometry is computed
+detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact,
+                             ::fcl::CollisionResult<S>& result) {
+  if (!withContact) {
     bool hit = false;
-    if (!detail::directOverlap(a.geometry(), pa, b.geometry(), pb, hit)) return false;
-    if (hit) result.addContact(::fcl::Contact<S>(o1, o2, detail::kNoPrimitive, detail::kNoPrimitive));
-    return true;
+    const detail::Answer answer = detail::solidOverlap(a, b, hit);
+    if (answer == detail::Answer::Done && hit)
+      result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive));
+    return answer;
   }
   DistanceResult<S> d;
-  if (!detail::directDistance(a.geometry(), pa, b.geometry(), pb, d)) return false;
-  if (d.distance <= S(0))
-    result.addContact(::fcl::Contact<S>(o1, o2, detail::kNoPrimitive, detail::kNoPrimitive,
+  const detail::Answer answer = detail::solidDistance(a, b, true, d);
+  if (answer == detail::Answer::Done && d.distance <= S(0))
+    result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive,
                                         (d.point0 + d.point1) * S(0.5), d.normal, -d.distance));
-  return true;
+  return answer;
 }
 
 // Meshes and two-sided planes: one contact per primitive (pair), gathered in a per-thread buffer.
@@ -88,20 +89,27 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
   using detail::Conversion;
   if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
   if (request.isSatisfied(result)) return result.numContacts();
-  // Bad input (docs/fcl.md) writes nothing and returns 0, before anything reaches FCL (which crashes on it).
-  if (!detail::isFiniteTransform(tf1) || !detail::isFiniteTransform(tf2)) return 0;
+  // Bad input (docs/fcl.md) writes nothing and returns 0, before anything reaches FCL (which crashes on it); the
+  // solid path validates the numbers it reads (solid_pairs.h), the others check the transforms here.
+  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
+  const bool fclContact = request.enable_contact && contactFromFcl(s1, s2, options);
+  if (detail::isSolid(s1) && detail::isSolid(s2) && !request.enable_cost && !fclContact) {
+    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact, result)) {
+      case detail::Answer::Done: detail::countGq(); return result.numContacts();
+      case detail::Answer::Invalid: return 0;
+      case detail::Answer::Unanswered: break;
+    }
+  }
+  if (!detail::isFiniteTransforms(tf1, tf2)) return 0;
   detail::Converted<S> a, b;
   const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
   if (ca == Conversion::Invalid || cb == Conversion::Invalid) return 0;
   const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
   if (!detail::isRotation(pa) || !detail::isRotation(pb)) return 0;
-  if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost ||
-      (request.enable_contact && contactFromFcl(a.shape, b.shape, options)))
+  if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost || fclContact ||
+      (a.isSolid() && b.isSolid()))
     return detail::fclCollide(o1, tf1, o2, tf2, request, result);
-  const bool answered = a.isSolid() && b.isSolid()
-                            ? collideSolids(o1, a, pa, o2, b, pb, request.enable_contact, result)
-                            : collideGeneral(o1, a, pa, o2, b, pb, request, result);
-  if (!answered) return detail::fclCollide(o1, tf1, o2, tf2, request, result);
+  if (!collideGeneral(o1, a, pa, o2, b, pb, request, result)) return detail::fclCollide(o1, tf1, o2, tf2, request, result);
   detail::countGq();
   return result.numContacts();
 }

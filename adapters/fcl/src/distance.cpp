@@ -2,7 +2,8 @@
 //  - DistanceResult::update keeps the smaller distance (pre-seeded results stay when the pair is farther);
 //  - a result already at min_distance <= 0 is satisfied: nothing is computed (as FCL's isSatisfied);
 //  - shapes: signed distance whether or not enable_signed_distance is set (FCL leaves the penetrating value
-//    "implementation defined", mostly -1); nearest points are always filled, in world frame;
+//    "implementation defined", mostly -1); nearest points (world frame) are written when enable_nearest_points is
+//    set, and always for BVHModel and plane pairs;
 //  - BVHModel sides are thin surfaces: 0 when touching or crossing; with enable_signed_distance the deepest
 //    triangle contact's depth is reported negated, with both nearest points at its position (FCL's workaround).
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include "fallback.h"
 #include "gq/fcl/collision.h"
 #include "pair_kernels.h"
+#include "solid_pairs.h"
 
 namespace gq::fcl {
 namespace {
@@ -34,6 +36,29 @@ Status deepestContact(const detail::Converted<S>& a, const Transform<S>& pa, con
   return s;
 }
 
+// Two closed solids, the fast path (solid_pairs.h).
+template <class S>
+S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                detail::FclShape s2, const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  DistanceResult<S> d;
+  const bool withPoints = request.enable_nearest_points;
+  switch (detail::solidDistance(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, withPoints, d)) {
+    case detail::Answer::Done: break;
+    case detail::Answer::Invalid: return std::numeric_limits<S>::max();
+    case detail::Answer::Unanswered:
+      // FCL 0.7 crashes on these (libccd's GJK calls a null support function for a Halfspace): nothing written.
+      if (s1 == detail::FclShape::Halfspace || s2 == detail::FclShape::Halfspace) return std::numeric_limits<S>::max();
+      return detail::fclDistance(o1, tf1, o2, tf2, request, result);
+  }
+  detail::countGq();
+  if (withPoints)
+    result.update(d.distance, o1, o2, detail::kNoPrimitive, detail::kNoPrimitive, d.point0, d.point1);
+  else
+    result.update(d.distance, o1, o2, detail::kNoPrimitive, detail::kNoPrimitive);
+  return result.min_distance;
+}
+
 }  // namespace
 
 template <typename S>
@@ -44,7 +69,9 @@ S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf
   // Bad input writes nothing and returns what FCL returns for a pair it cannot answer (docs/fcl.md).
   constexpr S kNothing = std::numeric_limits<S>::max();
   if (request.isSatisfied(result)) return result.min_distance;
-  if (!detail::isFiniteTransform(tf1) || !detail::isFiniteTransform(tf2)) return kNothing;
+  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
+  if (detail::isSolid(s1) && detail::isSolid(s2)) return solidDistance(s1, o1, tf1, s2, o2, tf2, request, result);
+  if (!detail::isFiniteTransforms(tf1, tf2)) return kNothing;
   detail::Converted<S> a, b;
   const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
   if (ca == Conversion::Invalid || cb == Conversion::Invalid) return kNothing;

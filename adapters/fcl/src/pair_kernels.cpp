@@ -1,6 +1,5 @@
-// Contacts and distances of converted pairs: core's pair kernels for solids, gq's public mesh queries for the rest.
-//  - Solids: core's pair kernels directly (direct_kernels.h): overlap for booleans, signed distance (exact MTD for
-//    convex pairs) for contacts.
+// Contacts and distances of converted pairs with a mesh or a two-sided plane side, through gq's public queries.
+//  - Two solids are not answered here: solid_pairs.h (the fast path) answers them before.
 //  - FCL's two-sided Plane n.x = d: the shape's signed distances to the solid half-spaces below (n.x <= d) and
 //    above (n.x >= d) are lo - d and d - hi (lo/hi = the shape's extent along n). The plane answer is the larger
 //    one: the gap when the shape lies on one side, else minus the smaller push-out depth (FCL's rule
@@ -19,7 +18,6 @@
 #include "gq/cooking.h"
 #include "gq/mesh_query.h"
 #include "gq/query.h"
-#include "direct_kernels.h"
 #include "support_shapes.h"
 
 namespace gq::fcl::detail {
@@ -49,23 +47,6 @@ template <class T> PairContact<T> contactFrom(const DistanceResult<T>& d) {
   c.normal = d.normal;
   c.depth = std::max(T(0), -d.distance);
   return c;
-}
-
-// Two closed solids through core's kernels (direct_kernels.h). A pair without a usable answer (half-space against
-// half-space, GJK/EPA not converged) is reported as NotConverged: the caller hands it to FCL.
-template <class T>
-Status solidContacts(const Geometry<T>& a, const Transform<T>& pa, const Geometry<T>& b, const Transform<T>& pb,
-                     bool withGeometry, std::vector<PairContact<T>>& out) {
-  if (!withGeometry) {
-    bool hit = false;
-    if (!directOverlap(a, pa, b, pb, hit)) return Status::notConverged("no direct overlap kernel for this pair");
-    if (hit) out.push_back(PairContact<T>());
-    return {};
-  }
-  DistanceResult<T> d;
-  if (!directDistance(a, pa, b, pb, d)) return Status::notConverged("no usable distance for this pair");
-  if (d.distance <= T(0)) out.push_back(contactFrom(d));
-  return {};
 }
 
 // Signed distance from `shape` to FCL's two-sided plane (see the file comment); normal from the shape to the plane.
@@ -316,7 +297,7 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
     out.push_back(c);
     return s;
   }
-  return solidContacts(a.geometry(), pa, b.geometry(), pb, withGeometry, out);
+  return Status::unsupported("two solids: solid_pairs.h answers them");
 }
 
 template <class T>
@@ -340,12 +321,9 @@ Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Convert
     if (planeFirst) flip(out);
     return s;
   }
-  if (a.isSolid() && b.isSolid()) {
-    if (!directDistance(a.geometry(), pa, b.geometry(), pb, d)) return Status::notConverged("no usable distance for this pair");
-  } else {
-    s = distance(d, a.geometry(), pa, b.geometry(), pb);
-    if (!s.ok()) return s;
-  }
+  if (a.isSolid() && b.isSolid()) return Status::unsupported("two solids: solid_pairs.h answers them");
+  s = distance(d, a.geometry(), pa, b.geometry(), pb);
+  if (!s.ok()) return s;
   out = PairDistance<T>{d.distance, d.point0, d.point1, kNoPrimitive, kNoPrimitive};
   if (ma) out.b1 = nearestTriangle(*ma, pa, d.point0);
   if (mb) out.b2 = nearestTriangle(*mb, pb, d.point1);

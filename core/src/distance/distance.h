@@ -37,6 +37,21 @@ template <class T>
 void distanceCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>& pose0, const CapsuleGeometry<T>& g1,
                             const Transform<T>& pose1, DistanceResult<T>& out);
 
+// Frame forms of the primitive pairs (the FCL adapter's matrix-pose fast path; the Transform kernels above call
+// them). A capsule is its centre, unit axis, half height and radius, given in the same frame as the other shape;
+// sphere/box and capsule/box work in the box's frame (box [-h, h]) and write `local` in that frame.
+template <class T> struct CapsuleAxis {
+  Vec3<T> centre, axis;
+  T halfHeight, radius;
+};
+template <class T>
+void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
+template <class T> void distanceSphereBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
+template <class T> void distanceCapsuleCapsule(const CapsuleAxis<T>& capsule0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
+// Capsule (segment c + s d, s in [-1, 1], radius r0) against the box [-h, h], exact (distance/capsule_box.cpp).
+template <class T>
+void distanceCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& dInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
+
 // Any two of sphere, capsule, box, convex mesh, convex custom: GJK on the cores, EPA when they overlap. Returns Ok,
 // or Warning when GJK/EPA stopped with an error bound above tolerance (the best answer is still written).
 template <class T>

@@ -23,18 +23,20 @@ template <class T> void insideBox(const Vec3<T>& c, const Vec3<T>& h, T r, Dista
 
 }  // namespace
 
+template <class T> void distanceSphereBox(const Vec3<T>& c, T r0, const Vec3<T>& h, DistanceResult<T>& local) {
+  const Vec3<T> q = c.cwiseMax(-h).cwiseMin(h);
+  if (q != c) {
+    ballsDistance(c, r0, q, T(0), Vec3<T>(Vec3<T>::UnitX()), local);
+  } else {
+    insideBox(c, h, r0, local);
+  }
+}
+
 template <class T>
 void distanceSphereBox(const SphereGeometry<T>& g0, const Transform<T>& pose0, const BoxGeometry<T>& g1,
                        const Transform<T>& pose1, DistanceResult<T>& out) {
-  const Vec3<T>& h = g1.halfExtents;
-  const Vec3<T> c = pose1.transformInv(pose0.p);
-  const Vec3<T> q = c.cwiseMax(-h).cwiseMin(h);
   DistanceResult<T> local;
-  if (q != c) {
-    ballsDistance(c, g0.radius, q, T(0), Vec3<T>(Vec3<T>::UnitX()), local);
-  } else {
-    insideBox(c, h, g0.radius, local);
-  }
+  distanceSphereBox(pose1.transformInv(pose0.p), g0.radius, g1.halfExtents, local);
   out.distance = local.distance;
   out.normal = pose1.rotate(local.normal);
   out.point0 = pose1.transform(local.point0);
@@ -43,5 +45,7 @@ void distanceSphereBox(const SphereGeometry<T>& g0, const Transform<T>& pose0, c
 
 template void distanceSphereBox<float>(const SphereGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distanceSphereBox<double>(const SphereGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
+template void distanceSphereBox<float>(const Vec3<float>&, float, const Vec3<float>&, DistanceResult<float>&);
+template void distanceSphereBox<double>(const Vec3<double>&, double, const Vec3<double>&, DistanceResult<double>&);
 
 }  // namespace gq::detail

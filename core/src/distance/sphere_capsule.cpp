@@ -5,14 +5,24 @@
 namespace gq::detail {
 
 template <class T>
+void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out) {
+  const Vec3<T> a = capsule1.halfHeight * capsule1.axis;
+  const Vec3<T> c1 = closestOnSegment<T>(capsule1.centre - a, capsule1.centre + a, c0);
+  // The fallback normal is used only when the centre lies on the segment (ballsDistance's |c1 - c0| = 0).
+  const bool onSegment = !((c1 - c0).squaredNorm() > T(0));
+  ballsDistance(c0, r0, c1, capsule1.radius, onSegment ? anyOrthogonal<T>(capsule1.axis) : Vec3<T>(Vec3<T>::UnitX()), out);
+}
+
+template <class T>
 void distanceSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& pose0, const CapsuleGeometry<T>& g1,
                            const Transform<T>& pose1, DistanceResult<T>& out) {
-  const Vec3<T> axis = pose1.rotate(Vec3<T>(g1.halfHeight, T(0), T(0)));
-  const Vec3<T> c1 = closestOnSegment<T>(pose1.p - axis, pose1.p + axis, pose0.p);
-  ballsDistance(pose0.p, g0.radius, c1, g1.radius, anyOrthogonal<T>(pose1.rotate(Vec3<T>(Vec3<T>::UnitX()))), out);
+  const CapsuleAxis<T> capsule{pose1.p, pose1.rotate(Vec3<T>(Vec3<T>::UnitX())), g1.halfHeight, g1.radius};
+  distanceSphereCapsule(pose0.p, g0.radius, capsule, out);
 }
 
 template void distanceSphereCapsule<float>(const SphereGeometry<float>&, const Transform<float>&, const CapsuleGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distanceSphereCapsule<double>(const SphereGeometry<double>&, const Transform<double>&, const CapsuleGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
+template void distanceSphereCapsule<float>(const Vec3<float>&, float, const CapsuleAxis<float>&, DistanceResult<float>&);
+template void distanceSphereCapsule<double>(const Vec3<double>&, double, const CapsuleAxis<double>&, DistanceResult<double>&);
 
 }  // namespace gq::detail

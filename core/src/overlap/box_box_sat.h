@@ -21,15 +21,20 @@ template <class T> struct BoxPair {
   Vec3<T> a, b;  // half extents
 };
 
+// Box 1 given by its axes r (columns) and centre t in box 0's frame (a matrix pose).
+template <class T> BoxPair<T> boxPair(const Vec3<T>& a, const Vec3<T>& b, const Mat3<T>& r, const Vec3<T>& t) {
+  BoxPair<T> s;
+  s.r = r;
+  s.absR = r.cwiseAbs();
+  s.t = t;
+  s.a = a;
+  s.b = b;
+  return s;
+}
+
 template <class T>
 BoxPair<T> boxPair(const BoxGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1) {
-  BoxPair<T> s;
-  s.r = (p0.q.conjugate() * p1.q).toRotationMatrix();
-  s.absR = s.r.cwiseAbs();
-  s.t = p0.transformInv(p1.p);
-  s.a = g0.halfExtents;
-  s.b = g1.halfExtents;
-  return s;
+  return boxPair<T>(g0.halfExtents, g1.halfExtents, (p0.q.conjugate() * p1.q).toRotationMatrix(), p0.transformInv(p1.p));
 }
 
 // One candidate axis (in box 0's frame, not normalised): overlap of the projections (scaled by |axis|) and the

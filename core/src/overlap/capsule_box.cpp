@@ -6,17 +6,23 @@
 
 namespace gq::detail {
 
+template <class T> bool overlapCapsuleBox(const Vec3<T>& c, const Vec3<T>& d, T r0, const Vec3<T>& h) {
+  const SegmentBoxSat<T> sat = satSegmentBox(c, d, h);
+  if (sat.overlap >= T(0)) return true;
+  if (-sat.overlap > r0) return false;  // a separating gap bounds the distance from below
+  return closestSegmentBox(c, d, h).distSq <= r0 * r0;
+}
+
 template <class T>
 bool overlapCapsuleBox(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1) {
   const Vec3<T> c = p1.transformInv(p0.p);
   const Vec3<T> d = p1.rotateInv(p0.rotate(Vec3<T>(g0.halfHeight, T(0), T(0))));
-  const SegmentBoxSat<T> sat = satSegmentBox(c, d, g1.halfExtents);
-  if (sat.overlap >= T(0)) return true;
-  if (-sat.overlap > g0.radius) return false;  // a separating gap bounds the distance from below
-  return closestSegmentBox(c, d, g1.halfExtents).distSq <= g0.radius * g0.radius;
+  return overlapCapsuleBox<T>(c, d, g0.radius, g1.halfExtents);
 }
 
 template bool overlapCapsuleBox<float>(const CapsuleGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&);
 template bool overlapCapsuleBox<double>(const CapsuleGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&);
+template bool overlapCapsuleBox<float>(const Vec3<float>&, const Vec3<float>&, float, const Vec3<float>&);
+template bool overlapCapsuleBox<double>(const Vec3<double>&, const Vec3<double>&, double, const Vec3<double>&);
 
 }  // namespace gq::detail

@@ -3,23 +3,23 @@
 #include "overlap/closest_points.h"
 
 namespace gq::detail {
-namespace {
 
-template <class T> Segment<T> capsuleSegment(const CapsuleGeometry<T>& g, const Transform<T>& pose) {
-  const Vec3<T> axis = pose.rotate(Vec3<T>(g.halfHeight, T(0), T(0)));
-  return {pose.p - axis, pose.p + axis};
+template <class T>
+bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& a0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1) {
+  const SegmentPair<T> cp = closestPointsSegmentSegment(Segment<T>{c0 - a0, c0 + a0}, Segment<T>{c1 - a1, c1 + a1});
+  const T r = r0 + r1;
+  return (cp.p0 - cp.p1).squaredNorm() <= r * r;
 }
-
-}  // namespace
 
 template <class T>
 bool overlapCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1) {
-  const SegmentPair<T> cp = closestPointsSegmentSegment(capsuleSegment(g0, p0), capsuleSegment(g1, p1));
-  const T r = g0.radius + g1.radius;
-  return (cp.p0 - cp.p1).squaredNorm() <= r * r;
+  return overlapCapsuleCapsule<T>(p0.p, p0.rotate(Vec3<T>(g0.halfHeight, T(0), T(0))), g0.radius, p1.p,
+                                  p1.rotate(Vec3<T>(g1.halfHeight, T(0), T(0))), g1.radius);
 }
 
 template bool overlapCapsuleCapsule<float>(const CapsuleGeometry<float>&, const Transform<float>&, const CapsuleGeometry<float>&, const Transform<float>&);
 template bool overlapCapsuleCapsule<double>(const CapsuleGeometry<double>&, const Transform<double>&, const CapsuleGeometry<double>&, const Transform<double>&);
+template bool overlapCapsuleCapsule<float>(const Vec3<float>&, const Vec3<float>&, float, const Vec3<float>&, const Vec3<float>&, float);
+template bool overlapCapsuleCapsule<double>(const Vec3<double>&, const Vec3<double>&, double, const Vec3<double>&, const Vec3<double>&, double);
 
 }  // namespace gq::detail

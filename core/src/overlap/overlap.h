@@ -25,6 +25,16 @@ template <class T> bool overlapConvexConvex(const ConvexMeshGeometry<T>& g0, con
 }  // namespace gq::detail
 
 namespace gq::detail {
+// Frame forms of the primitive pairs (the FCL adapter's matrix-pose fast path; the Transform kernels above call
+// them). A capsule is its centre c, half-axis vector a (segment [c - a, c + a]) and radius; a box is centred at the
+// origin of the frame the other shape is given in, with half extents h. Box/box: box 1 has axes r01 (columns) and
+// centre t01 in box 0's frame.
+template <class T> bool overlapSphereSphere(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1);
+template <class T> bool overlapSphereCapsule(const Vec3<T>& c0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1);
+template <class T> bool overlapSphereBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h);
+template <class T> bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& a0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1);
+template <class T> bool overlapCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& aInBox, T r0, const Vec3<T>& h);
+template <class T> bool overlapBoxBox(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01);
 template <class T> bool overlapPlaneCustom(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CustomGeometry<T>& g1, const Transform<T>& p1);
 // Convex custom geometry (either side) against sphere, capsule, box, convex or custom: GJK.
 template <class T> bool overlapCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);

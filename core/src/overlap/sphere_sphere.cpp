@@ -3,13 +3,19 @@
 
 namespace gq::detail {
 
+template <class T> bool overlapSphereSphere(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1) {
+  const T r = r0 + r1;
+  return (c0 - c1).squaredNorm() <= r * r;
+}
+
 template <class T>
 bool overlapSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0, const SphereGeometry<T>& g1, const Transform<T>& p1) {
-  const T r = g0.radius + g1.radius;
-  return (p0.p - p1.p).squaredNorm() <= r * r;
+  return overlapSphereSphere<T>(p0.p, g0.radius, p1.p, g1.radius);
 }
 
 template bool overlapSphereSphere<float>(const SphereGeometry<float>&, const Transform<float>&, const SphereGeometry<float>&, const Transform<float>&);
 template bool overlapSphereSphere<double>(const SphereGeometry<double>&, const Transform<double>&, const SphereGeometry<double>&, const Transform<double>&);
+template bool overlapSphereSphere<float>(const Vec3<float>&, float, const Vec3<float>&, float);
+template bool overlapSphereSphere<double>(const Vec3<double>&, double, const Vec3<double>&, double);
 
 }  // namespace gq::detail

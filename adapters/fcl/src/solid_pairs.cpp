@@ -1,0 +1,429 @@
+// The solid-pair table (see solid_pairs.h). Entries are generated per ordered pair of FCL shapes: a pair out of
+// core's order (its GeometryType order, a <= b) swaps its inputs; a swapped distance exchanges the witnesses and
+// negates the normal, as the façade's `swapped` wrapper does.
+#include "solid_pairs.h"
+
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/sphere.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "custom/callback_queries.h"
+#include "distance/distance.h"
+#include "overlap/overlap.h"
+
+namespace gq::fcl::detail {
+namespace {
+
+namespace k = gq::detail;
+using GT = GeometryType;
+using FS = FclShape;
+
+// ---- FCL primitives read in place ----
+
+// Each reader validates what the query depends on, which covers FCL's whole Transform3 (bad input writes nothing):
+// the translation is finite; a sphere's rotation is only checked finite (it does not move the sphere); other
+// linear parts must be orthonormal, which also rejects a non-finite entry (any NaN or inf makes the test false).
+
+// x * 0 is 0 for a finite x and NaN otherwise.
+template <class S> bool finiteTranslation(const Isometry<S>& tf) {
+  const S* m = tf.data();  // column-major 4x4: the translation starts at 12
+  return m[12] * S(0) + m[13] * S(0) + m[14] * S(0) == S(0);
+}
+
+// All sixteen entries, in SIMD packets (the 4x4 matrix is contiguous; a scalar loop over the 3x4 block cost twice as
+// much).
+template <class S> bool finiteMatrix(const Isometry<S>& tf) { return (tf.matrix().array() * S(0)).sum() == S(0); }
+
+// The linear part's columns are orthonormal: the Gram matrix R^T R = I within the façade's unit-quaternion tolerance
+// carried over to the matrix. A rotation scaled by 1 + e has Gram (1 + e)^2 I, about 2e on each diagonal entry, so
+// the Frobenius norm of R^T R - I may reach 2 sqrt(3) kUnitQuaternion. A reflection passes: sphere, box and capsule
+// are symmetric under flips of their local axes, so R and R diag(1, 1, -1) place the same set (no determinant).
+constexpr double kGramDeviationSq = 12 * tol::kUnitQuaternion * tol::kUnitQuaternion;
+
+template <class S> bool isOrthonormal(const Isometry<S>& tf) {
+  const S* m = tf.data();  // column-major 4x4: the columns start at 0, 4, 8
+  const S xx = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] - S(1);
+  const S yy = m[4] * m[4] + m[5] * m[5] + m[6] * m[6] - S(1);
+  const S zz = m[8] * m[8] + m[9] * m[9] + m[10] * m[10] - S(1);
+  const S xy = m[0] * m[4] + m[1] * m[5] + m[2] * m[6];
+  const S xz = m[0] * m[8] + m[1] * m[9] + m[2] * m[10];
+  const S yz = m[4] * m[8] + m[5] * m[9] + m[6] * m[10];
+  return xx * xx + yy * yy + zz * zz + S(2) * (xy * xy + xz * xz + yz * yz) <= S(kGramDeviationSq);
+}
+
+template <class S> bool positive(S v) { return v > S(0) && v <= std::numeric_limits<S>::max(); }
+
+template <class S> bool readSphere(const Solid<S>& s, S& radius) {
+  radius = static_cast<const ::fcl::Sphere<S>*>(s.geometry)->radius;
+  return positive(radius) && finiteMatrix(*s.tf);
+}
+
+template <class S> bool readBox(const Solid<S>& s, Vec3<S>& half) {
+  half = static_cast<const ::fcl::Box<S>*>(s.geometry)->side * S(0.5);
+  return positive(half.x()) && positive(half.y()) && positive(half.z()) && finiteTranslation(*s.tf) &&
+         isOrthonormal(*s.tf);
+}
+
+// FCL's capsule: radius and full length lz along local Z; its centre is taken relative to `origin`.
+template <class S> bool readCapsule(const Solid<S>& s, const Vec3<S>& origin, k::CapsuleAxis<S>& capsule) {
+  const auto* c = static_cast<const ::fcl::Capsule<S>*>(s.geometry);
+  capsule = k::CapsuleAxis<S>{s.tf->translation() - origin, s.tf->linear().col(2), c->lz * S(0.5), c->radius};
+  return positive(c->radius) && c->lz >= S(0) && c->lz <= std::numeric_limits<S>::max() &&
+         finiteTranslation(*s.tf) && isOrthonormal(*s.tf);
+}
+
+// x (world) in the frame of the pose tf: R^T (x - t).
+template <class S> Vec3<S> inFrame(const Isometry<S>& tf, const Vec3<S>& x) {
+  return tf.linear().transpose() * (x - tf.translation());
+}
+
+// ---- results back to world ----
+
+template <class S> void frameToWorld(const Isometry<S>& tf, bool withPoints, const DistanceResult<S>& local,
+                                     DistanceResult<S>& out) {
+  out.distance = local.distance;
+  out.normal = tf.linear() * local.normal;
+  if (!withPoints) return;
+  out.point0 = tf * local.point0;
+  out.point1 = tf * local.point1;
+}
+
+template <class S> void shiftPoints(const Vec3<S>& origin, bool withPoints, DistanceResult<S>& out) {
+  if (!withPoints) return;
+  out.point0 += origin;
+  out.point1 += origin;
+}
+
+template <class S> void flip(DistanceResult<S>& d) {
+  std::swap(d.point0, d.point1);
+  d.normal = -d.normal;
+}
+
+template <class S> bool finiteResult(const DistanceResult<S>& r) {
+  return std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal);
+}
+
+// ---- primitive pairs, in core's order ----
+
+template <class S> Answer sphereSphereOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  S ra, rb;
+  if (!readSphere(a, ra) || !readSphere(b, rb)) return Answer::Invalid;
+  hit = k::overlapSphereSphere<S>(Vec3<S>::Zero(), ra, b.tf->translation() - a.tf->translation(), rb);
+  return Answer::Done;
+}
+
+template <class S> Answer sphereSphereDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  S ra, rb;
+  if (!readSphere(a, ra) || !readSphere(b, rb)) return Answer::Invalid;
+  const Vec3<S> origin = a.tf->translation();
+  k::ballsDistance<S>(Vec3<S>::Zero(), ra, b.tf->translation() - origin, rb, Vec3<S>::UnitX(), out);
+  shiftPoints(origin, withPoints, out);
+  return Answer::Done;
+}
+
+template <class S> Answer sphereCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  S ra;
+  k::CapsuleAxis<S> cb;
+  if (!readSphere(a, ra) || !readCapsule(b, Vec3<S>(a.tf->translation()), cb)) return Answer::Invalid;
+  hit = k::overlapSphereCapsule<S>(Vec3<S>::Zero(), ra, cb.centre, cb.halfHeight * cb.axis, cb.radius);
+  return Answer::Done;
+}
+
+template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  S ra;
+  k::CapsuleAxis<S> cb;
+  const Vec3<S> origin = a.tf->translation();
+  if (!readSphere(a, ra) || !readCapsule(b, origin, cb)) return Answer::Invalid;
+  k::distanceSphereCapsule<S>(Vec3<S>::Zero(), ra, cb, out);
+  shiftPoints(origin, withPoints, out);
+  return Answer::Done;
+}
+
+template <class S> Answer sphereBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  S ra;
+  Vec3<S> hb;
+  if (!readSphere(a, ra) || !readBox(b, hb)) return Answer::Invalid;
+  hit = k::overlapSphereBox<S>(inFrame(*b.tf, Vec3<S>(a.tf->translation())), ra, hb);
+  return Answer::Done;
+}
+
+template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  S ra;
+  Vec3<S> hb;
+  if (!readSphere(a, ra) || !readBox(b, hb)) return Answer::Invalid;
+  DistanceResult<S> local;
+  k::distanceSphereBox<S>(inFrame(*b.tf, Vec3<S>(a.tf->translation())), ra, hb, local);
+  frameToWorld(*b.tf, withPoints, local, out);
+  return Answer::Done;
+}
+
+template <class S> Answer capsuleCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  k::CapsuleAxis<S> ca, cb;
+  const Vec3<S> origin = a.tf->translation();
+  if (!readCapsule(a, origin, ca) || !readCapsule(b, origin, cb)) return Answer::Invalid;
+  hit = k::overlapCapsuleCapsule<S>(ca.centre, ca.halfHeight * ca.axis, ca.radius, cb.centre, cb.halfHeight * cb.axis,
+                                    cb.radius);
+  return Answer::Done;
+}
+
+template <class S>
+Answer capsuleCapsuleDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  k::CapsuleAxis<S> ca, cb;
+  const Vec3<S> origin = a.tf->translation();
+  if (!readCapsule(a, origin, ca) || !readCapsule(b, origin, cb)) return Answer::Invalid;
+  k::distanceCapsuleCapsule<S>(ca, cb, out);
+  shiftPoints(origin, withPoints, out);
+  return Answer::Done;
+}
+
+// The capsule's segment in the box's frame: centre c and half-axis d.
+template <class S> Answer capsuleInBox(const Solid<S>& capsule, const Solid<S>& box, k::CapsuleAxis<S>& c, Vec3<S>& d,
+                                       Vec3<S>& h) {
+  const Vec3<S> origin = box.tf->translation();
+  if (!readCapsule(capsule, origin, c) || !readBox(box, h)) return Answer::Invalid;
+  const auto rt = box.tf->linear().transpose();
+  c.centre = rt * c.centre;
+  d = rt * (c.halfHeight * c.axis);
+  return Answer::Done;
+}
+
+template <class S> Answer capsuleBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  k::CapsuleAxis<S> c;
+  Vec3<S> d, h;
+  if (capsuleInBox(a, b, c, d, h) != Answer::Done) return Answer::Invalid;
+  hit = k::overlapCapsuleBox<S>(c.centre, d, c.radius, h);
+  return Answer::Done;
+}
+
+template <class S> Answer capsuleBoxDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  k::CapsuleAxis<S> c;
+  Vec3<S> d, h;
+  if (capsuleInBox(a, b, c, d, h) != Answer::Done) return Answer::Invalid;
+  DistanceResult<S> local;
+  k::distanceCapsuleBox<S>(c.centre, d, c.radius, h, local);
+  frameToWorld(*b.tf, withPoints, local, out);
+  return finiteResult(local) ? Answer::Done : Answer::Unanswered;
+}
+
+// Box b in box a's frame: axes R_a^T R_b, centre R_a^T (t_b - t_a).
+template <class S> Answer boxInBox(const Solid<S>& a, const Solid<S>& b, Vec3<S>& ha, Vec3<S>& hb, Mat3<S>& r, Vec3<S>& t) {
+  if (!readBox(a, ha) || !readBox(b, hb)) return Answer::Invalid;
+  r.noalias() = a.tf->linear().transpose() * b.tf->linear();
+  t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
+  return Answer::Done;
+}
+
+template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  Vec3<S> ha, hb, t;
+  Mat3<S> r;
+  if (boxInBox(a, b, ha, hb, r, t) != Answer::Done) return Answer::Invalid;
+  hit = k::overlapBoxBox<S>(ha, hb, r, t);
+  return Answer::Done;
+}
+
+// Core has no closed form for box/box distance: GJK (EPA when they overlap) in box a's frame.
+template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  Vec3<S> ha, hb, t;
+  Mat3<S> r;
+  if (boxInBox(a, b, ha, hb, r, t) != Answer::Done) return Answer::Invalid;
+  DistanceResult<S> local;
+  const Geometry<S> ga = BoxGeometry<S>(ha), gb = BoxGeometry<S>(hb);
+  if (!k::distanceGjk(ga, Transform<S>(), gb, Transform<S>(t, Quat<S>(r)), static_cast<GjkCache<S>*>(nullptr), local).ok())
+    return Answer::Unanswered;
+  frameToWorld(*a.tf, withPoints, local, out);
+  return finiteResult(local) ? Answer::Done : Answer::Unanswered;
+}
+
+// ---- pairs with a converted side: core's kernel for the gq types, chosen at compile time ----
+
+constexpr GT gqType(FS s) {
+  switch (s) {
+    case FS::Sphere: return GT::Sphere;
+    case FS::Box: return GT::Box;
+    case FS::Capsule: return GT::Capsule;
+    case FS::Convex: return GT::ConvexMesh;
+    case FS::Halfspace: return GT::Plane;
+    default: return GT::Custom;  // cylinder, cone, ellipsoid, triangle: support-mapped custom shapes
+  }
+}
+
+template <GT G, class S> const auto& as(const Geometry<S>& g) {
+  if constexpr (G == GT::Sphere) return g.template get<SphereGeometry<S>>();
+  else if constexpr (G == GT::Plane) return g.template get<PlaneGeometry<S>>();
+  else if constexpr (G == GT::Capsule) return g.template get<CapsuleGeometry<S>>();
+  else if constexpr (G == GT::Box) return g.template get<BoxGeometry<S>>();
+  else if constexpr (G == GT::ConvexMesh) return g.template get<ConvexMeshGeometry<S>>();
+  else return g.template get<CustomGeometry<S>>();
+}
+
+template <class S> Answer convertBoth(const Solid<S>& a, const Solid<S>& b, Converted<S>& ca, Converted<S>& cb,
+                                      Transform<S>& pa, Transform<S>& pb) {
+  if (!isFiniteTransforms(*a.tf, *b.tf)) return Answer::Invalid;
+  if (convert(a.geometry, ca) != Conversion::Ok || convert(b.geometry, cb) != Conversion::Ok) return Answer::Invalid;
+  pa = shapePose(ca, *a.tf);
+  pb = shapePose(cb, *b.tf);
+  return isRotation(pa) && isRotation(pb) ? Answer::Done : Answer::Invalid;
+}
+
+// Overlap kernels run with a at the origin (b relative to it), as the façade does for precision far from it.
+template <class S, GT A, GT B>
+Answer overlapGq(const Geometry<S>& a, const Geometry<S>& b, const Transform<S>& pb, bool& hit) {
+  const Transform<S> pa;
+  if constexpr (A == GT::Plane && B == GT::Plane) {
+    return Answer::Unanswered;
+  } else if constexpr (B == GT::Custom) {  // its own overlap callback first (as the façade), else the plane form or GJK
+    if (k::customOverlap(a, pa, b, pb, hit)) return Answer::Done;
+    if constexpr (A == GT::Plane) hit = k::overlapPlaneCustom(as<A>(a), pa, as<B>(b), pb);
+    else hit = k::overlapCustomAny(a, pa, b, pb);
+  } else if constexpr (A == GT::Sphere && B == GT::Plane) {
+    hit = k::overlapSpherePlane(as<A>(a), pa, as<B>(b), pb);
+  } else if constexpr (A == GT::Sphere) {
+    hit = k::overlapSphereConvex(as<A>(a), pa, as<B>(b), pb);
+  } else if constexpr (A == GT::Plane && B == GT::Capsule) {
+    hit = k::overlapPlaneCapsule(as<A>(a), pa, as<B>(b), pb);
+  } else if constexpr (A == GT::Plane && B == GT::Box) {
+    hit = k::overlapPlaneBox(as<A>(a), pa, as<B>(b), pb);
+  } else if constexpr (A == GT::Plane) {
+    hit = k::overlapPlaneConvex(as<A>(a), pa, as<B>(b), pb);
+  } else if constexpr (A == GT::Capsule) {
+    hit = k::overlapCapsuleConvex(as<A>(a), pa, as<B>(b), pb);
+  } else if constexpr (A == GT::Box) {
+    hit = k::overlapBoxConvex(as<A>(a), pa, as<B>(b), pb);
+  } else {
+    hit = k::overlapConvexConvex(as<A>(a), pa, as<B>(b), pb);
+  }
+  return Answer::Done;
+}
+
+template <class S, GT A, GT B>
+Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S>& b, const Transform<S>& pb,
+                  DistanceResult<S>& out) {
+  if constexpr (A == GT::Plane && B == GT::Plane) {
+    return Answer::Unanswered;
+  } else if constexpr (A == GT::Sphere && B == GT::Plane) {
+    k::distanceSpherePlane(as<A>(a), pa, as<B>(b), pb, out);
+  } else if constexpr (A == GT::Plane && B == GT::Capsule) {
+    k::distancePlaneCapsule(as<A>(a), pa, as<B>(b), pb, out);
+  } else if constexpr (A == GT::Plane && B == GT::Box) {
+    k::distancePlaneBox(as<A>(a), pa, as<B>(b), pb, out);
+  } else if constexpr (A == GT::Plane) {  // convex mesh or custom: through its support mapping
+    k::distancePlaneConvex(as<A>(a), pa, b, pb, out);
+  } else {
+    if (!k::distanceGjk(a, pa, b, pb, static_cast<GjkCache<S>*>(nullptr), out).ok()) return Answer::Unanswered;
+  }
+  return finiteResult(out) ? Answer::Done : Answer::Unanswered;
+}
+
+template <class S, FS A, FS B> Answer convertedOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  Converted<S> ca, cb;
+  Transform<S> pa, pb;
+  const Answer r = convertBoth(a, b, ca, cb, pa, pb);
+  if (r != Answer::Done) return r;
+  return overlapGq<S, gqType(A), gqType(B)>(ca.geometry(), cb.geometry(), pb.relativeTo(pa), hit);
+}
+
+template <class S, FS A, FS B>
+Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, bool, DistanceResult<S>& out) {
+  Converted<S> ca, cb;
+  Transform<S> pa, pb;
+  const Answer r = convertBoth(a, b, ca, cb, pa, pb);
+  if (r != Answer::Done) return r;
+  return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, out);
+}
+
+// ---- the table ----
+
+template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  if constexpr (gqType(A) > gqType(B)) return overlapEntry<S, B, A>(b, a, hit);
+  else if constexpr (A == FS::Sphere && B == FS::Sphere) return sphereSphereOverlap(a, b, hit);
+  else if constexpr (A == FS::Sphere && B == FS::Capsule) return sphereCapsuleOverlap(a, b, hit);
+  else if constexpr (A == FS::Sphere && B == FS::Box) return sphereBoxOverlap(a, b, hit);
+  else if constexpr (A == FS::Capsule && B == FS::Capsule) return capsuleCapsuleOverlap(a, b, hit);
+  else if constexpr (A == FS::Capsule && B == FS::Box) return capsuleBoxOverlap(a, b, hit);
+  else if constexpr (A == FS::Box && B == FS::Box) return boxBoxOverlap(a, b, hit);
+  else return convertedOverlap<S, A, B>(a, b, hit);
+}
+
+template <class S, FS A, FS B>
+Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  if constexpr (gqType(A) > gqType(B)) {
+    const Answer r = distanceEntry<S, B, A>(b, a, withPoints, out);
+    if (r == Answer::Done) flip(out);
+    return r;
+  } else if constexpr (A == FS::Sphere && B == FS::Sphere) {
+    return sphereSphereDistance(a, b, withPoints, out);
+  } else if constexpr (A == FS::Sphere && B == FS::Capsule) {
+    return sphereCapsuleDistance(a, b, withPoints, out);
+  } else if constexpr (A == FS::Sphere && B == FS::Box) {
+    return sphereBoxDistance(a, b, withPoints, out);
+  } else if constexpr (A == FS::Capsule && B == FS::Capsule) {
+    return capsuleCapsuleDistance(a, b, withPoints, out);
+  } else if constexpr (A == FS::Capsule && B == FS::Box) {
+    return capsuleBoxDistance(a, b, withPoints, out);
+  } else if constexpr (A == FS::Box && B == FS::Box) {
+    return boxBoxDistance(a, b, withPoints, out);
+  } else {
+    return convertedDistance<S, A, B>(a, b, withPoints, out);
+  }
+}
+
+template <class S> struct PairEntry {
+  Answer (*overlap)(const Solid<S>&, const Solid<S>&, bool&);
+  Answer (*distance)(const Solid<S>&, const Solid<S>&, bool, DistanceResult<S>&);
+};
+
+constexpr std::size_t kSolids = std::size_t(FS::Halfspace) + 1;
+
+template <class S, std::size_t... I> constexpr std::array<PairEntry<S>, sizeof...(I)> makeTable(std::index_sequence<I...>) {
+  return {{PairEntry<S>{&overlapEntry<S, FS(I / kSolids), FS(I % kSolids)>,
+                        &distanceEntry<S, FS(I / kSolids), FS(I % kSolids)>}...}};
+}
+
+template <class S> constexpr std::array<PairEntry<S>, kSolids * kSolids> kTable =
+    makeTable<S>(std::make_index_sequence<kSolids * kSolids>());
+
+template <class S> const PairEntry<S>& entry(FS a, FS b) { return kTable<S>[std::size_t(a) * kSolids + std::size_t(b)]; }
+
+}  // namespace
+
+template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* g) {
+  if (!g) return FS::Unsupported;
+  switch (g->getNodeType()) {
+    case ::fcl::GEOM_SPHERE: return FS::Sphere;
+    case ::fcl::GEOM_BOX: return FS::Box;
+    case ::fcl::GEOM_CAPSULE: return FS::Capsule;
+    case ::fcl::GEOM_CYLINDER: return FS::Cylinder;
+    case ::fcl::GEOM_CONE: return FS::Cone;
+    case ::fcl::GEOM_ELLIPSOID: return FS::Ellipsoid;
+    case ::fcl::GEOM_CONVEX: return FS::Convex;
+    case ::fcl::GEOM_TRIANGLE: return FS::TriangleP;
+    case ::fcl::GEOM_HALFSPACE: return FS::Halfspace;
+    case ::fcl::GEOM_PLANE: return FS::Plane;
+    case ::fcl::BV_AABB: case ::fcl::BV_OBB: case ::fcl::BV_RSS: case ::fcl::BV_kIOS: case ::fcl::BV_OBBRSS:
+    case ::fcl::BV_KDOP16: case ::fcl::BV_KDOP18: case ::fcl::BV_KDOP24: return FS::Mesh;
+    default: return FS::Unsupported;
+  }
+}
+
+template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  return entry<S>(a.shape, b.shape).overlap(a, b, hit);
+}
+
+template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+  return entry<S>(a.shape, b.shape).distance(a, b, withPoints, out);
+}
+
+template FclShape shapeOf<float>(const ::fcl::CollisionGeometry<float>*);
+template FclShape shapeOf<double>(const ::fcl::CollisionGeometry<double>*);
+template Answer solidOverlap<float>(const Solid<float>&, const Solid<float>&, bool&);
+template Answer solidOverlap<double>(const Solid<double>&, const Solid<double>&, bool&);
+template Answer solidDistance<float>(const Solid<float>&, const Solid<float>&, bool, DistanceResult<float>&);
+template Answer solidDistance<double>(const Solid<double>&, const Solid<double>&, bool, DistanceResult<double>&);
+
+}  // namespace gq::fcl::detail

@@ -1,0 +1,46 @@
+#pragma once
+// The adapter's fast path for two closed convex solids: FCL Sphere, Box, Capsule, Cylinder, Cone, Ellipsoid, Convex,
+// TriangleP and Halfspace. One table keyed on the two FCL shapes (solid_pairs.cpp) picks, per ordered pair, a
+// function calling core's kernel for that pair directly, without the public façade's re-validation and dispatch:
+//  - sphere, box and capsule pairs read the FCL parameters and the Transform3 matrices as they are (no gq::Geometry,
+//    no quaternion, no cache): the second shape is expressed in the first's frame (R_a^T R_b, R_a^T (t_b - t_a)), or
+//    in the box's frame, or relative to the first translation, and core's frame-form kernels answer;
+//  - pairs with another solid convert both sides (convert.h; a Convex comes from the cache) and call core's kernel
+//    for their gq geometry types, chosen at compile time.
+// Semantics are the façade's: touching overlaps; distance is signed with the normal from a to b, in world space.
+#include <cstdint>
+
+#include "convert.h"
+#include "gq/query.h"
+
+namespace fcl {
+template <typename S> class CollisionGeometry;
+}
+
+namespace gq::fcl::detail {
+
+template <class S> using Isometry = Eigen::Transform<S, 3, Eigen::Isometry>;
+
+// Done: answered. Invalid: bad input (a size or a linear part that is not a rotation): the call writes nothing.
+// Unanswered: gq has no usable answer (half-space against half-space, GJK/EPA not converged): FCL answers.
+enum class Answer : std::uint8_t { Done, Invalid, Unanswered };
+
+// The FclShape of an FCL geometry from its node type alone (null: Unsupported).
+template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* geometry);
+inline bool isSolid(FclShape s) { return s <= FclShape::Halfspace && s != FclShape::Unsupported; }
+
+// One side of a query: an FCL geometry, its shapeOf and its pose.
+template <class S> struct Solid {
+  FclShape shape;
+  const ::fcl::CollisionGeometry<S>* geometry;
+  const Isometry<S>* tf;
+};
+
+// Both sides solid (isSolid) is a precondition; the transforms are validated here (Invalid: not finite, or a
+// linear part that is not a rotation).
+template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit);
+
+// Signed distance, normal from a to b; the world witnesses point0 (on a) and point1 (on b) only `withPoints`.
+template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out);
+
+}  // namespace gq::fcl::detail

@@ -1,0 +1,159 @@
+// The solid-pair fast path (adapters/fcl/src/solid_pairs.h): FCL parameters and matrices read in place.
+//  - Capsule/box distance (core's closed form, new with the fast path) against an independent long-double
+//    reference: the distance from the capsule's segment to the box is convex along the segment, so a ternary search
+//    of |p(s) - clamp(p(s))| over s converges to the exact minimum.
+//  - Penetrating capsule/box: the reported depth is the exact minimum translation along the reported normal (moving
+//    o2 by depth +- 1e-7 along it separates / does not), checked with the same reference.
+//  - What the fast path validates (reflections of symmetric shapes, scaled linear parts) and computes (no nearest
+//    points unless asked).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "fcl_scenes.h"
+#include "gq/fcl/fcl.h"
+
+namespace {
+
+using ::fcl::Vector3d;
+using gq::fcltest::randomPose;
+using Vec3L = Eigen::Matrix<long double, 3, 1>;
+
+constexpr int kPoses = 1000;
+constexpr double kExactTolerance = 1e-9;
+
+// Exact distance from the capsule's segment (FCL: local Z, full length lz) to the box (sides `side`), long double.
+long double segmentBoxDistance(double lz, const ::fcl::Transform3d& capsulePose, const Vector3d& side,
+                               const ::fcl::Transform3d& boxPose) {
+  const Eigen::Matrix<long double, 3, 3> rb = boxPose.linear().cast<long double>();
+  const Vec3L tb = boxPose.translation().cast<long double>();
+  const Vec3L centre = rb.transpose() * (capsulePose.translation().cast<long double>() - tb);
+  const Vec3L half = rb.transpose() * (capsulePose.linear().col(2).cast<long double>() * (lz / 2.0L));
+  const Vec3L h = side.cast<long double>() / 2.0L;
+  const auto at = [&](long double s) {
+    const Vec3L p = centre + s * half;
+    return (p - p.cwiseMax(-h).cwiseMin(h)).norm();
+  };
+  long double lo = -1, hi = 1;
+  for (int i = 0; i < 300; ++i) {
+    const long double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    if (at(m1) <= at(m2)) hi = m2; else lo = m1;
+  }
+  return std::min({at(-1), at(1), at((lo + hi) / 2)});
+}
+
+struct CapsuleBox {
+  ::fcl::Capsuled capsule{0.3, 0.9};
+  ::fcl::Boxd box{1.0, 0.6, 0.8};
+  long double exactSigned(const ::fcl::Transform3d& pc, const ::fcl::Transform3d& pb) const {
+    return segmentBoxDistance(capsule.lz, pc, box.side, pb) - capsule.radius;
+  }
+};
+
+TEST(FclSolidPairs, CapsuleBoxDistanceEqualsTheExactSegmentBoxDistance) {
+  const CapsuleBox s;
+  std::mt19937 rng(17);
+  int separated = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const ::fcl::Transform3d pc = randomPose(rng, 1.0), pb = randomPose(rng, 1.0);
+    const long double exact = s.exactSigned(pc, pb);
+    if (exact <= 1e-7L) continue;
+    for (bool capsuleFirst : {true, false}) {
+      ::fcl::DistanceResultd r;
+      const double d = capsuleFirst ? gq::fcl::distance<double>(&s.capsule, pc, &s.box, pb, ::fcl::DistanceRequestd(true), r)
+                                    : gq::fcl::distance<double>(&s.box, pb, &s.capsule, pc, ::fcl::DistanceRequestd(true), r);
+      EXPECT_NEAR(d, double(exact), kExactTolerance) << "pose " << i;
+      // The witnesses realise the distance and lie on the shapes: on the box surface and at the capsule radius.
+      const Vector3d onCapsule = r.nearest_points[capsuleFirst ? 0 : 1], onBox = r.nearest_points[capsuleFirst ? 1 : 0];
+      EXPECT_NEAR((onCapsule - onBox).norm(), double(exact), 1e-9) << "pose " << i;
+      const Vector3d local = pb.inverse() * onBox;
+      EXPECT_NEAR((local.cwiseAbs() - s.box.side / 2).maxCoeff(), 0.0, 1e-12) << "pose " << i;
+    }
+    ++separated;
+  }
+  EXPECT_GT(separated, 100);
+}
+
+TEST(FclSolidPairs, CapsuleBoxPenetrationDepthIsTheExactTranslationAlongItsNormal) {
+  const CapsuleBox s;
+  std::mt19937 rng(18);
+  int penetrating = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const ::fcl::Transform3d pc = randomPose(rng, 0.8), pb = randomPose(rng, 0.8);
+    if (s.exactSigned(pc, pb) >= -1e-6L) continue;
+    ::fcl::DistanceRequestd request(true);
+    request.enable_signed_distance = true;
+    ::fcl::CollisionRequestd contactRequest(1, true);
+    gq::fcl::Options minimumTranslation;
+    minimumTranslation.minimumTranslation = true;
+    ::fcl::CollisionResultd c;
+    gq::fcl::collide<double>(&s.capsule, pc, &s.box, pb, contactRequest, c, minimumTranslation);
+    ASSERT_EQ(c.numContacts(), 1u) << "pose " << i;
+    const ::fcl::Contactd& contact = c.getContact(0);
+    ::fcl::DistanceResultd r;
+    EXPECT_NEAR(gq::fcl::distance<double>(&s.capsule, pc, &s.box, pb, request, r), -contact.penetration_depth, 1e-12);
+    ::fcl::Transform3d apart = pb, still = pb;
+    apart.translation() += contact.normal * (contact.penetration_depth + 1e-7);
+    still.translation() += contact.normal * (contact.penetration_depth - 1e-7);
+    EXPECT_GT(s.exactSigned(pc, apart), 0.0L) << "pose " << i << ": moving o2 by the depth does not separate";
+    EXPECT_LT(s.exactSigned(pc, still), 0.0L) << "pose " << i << ": the depth is more than needed";
+    ++penetrating;
+  }
+  EXPECT_GT(penetrating, 100);
+}
+
+TEST(FclSolidPairs, AReflectedLinearPartPlacesTheSameSymmetricShape) {
+  ::fcl::Boxd box(1.0, 0.6, 0.8);
+  ::fcl::Capsuled capsule(0.3, 0.9);
+  std::mt19937 rng(19);
+  for (int i = 0; i < 100; ++i) {
+    const ::fcl::Transform3d pc = randomPose(rng, 1.0), pb = randomPose(rng, 1.0);
+    ::fcl::Transform3d mirrored = pb;
+    mirrored.linear() = pb.linear() * Eigen::Vector3d(1, 1, -1).asDiagonal();
+    ::fcl::DistanceResultd d1, d2;
+    const double a = gq::fcl::distance<double>(&capsule, pc, &box, pb, ::fcl::DistanceRequestd(true), d1);
+    const double b = gq::fcl::distance<double>(&capsule, pc, &box, mirrored, ::fcl::DistanceRequestd(true), d2);
+    EXPECT_NEAR(a, b, 1e-12) << "pose " << i;
+  }
+}
+
+TEST(FclSolidPairs, AScaledLinearPartIsRejectedForBoxAndCapsule) {
+  ::fcl::Boxd box(1.0, 0.6, 0.8);
+  ::fcl::Capsuled capsule(0.3, 0.9);
+  ::fcl::Transform3d scaled = ::fcl::Transform3d::Identity();
+  scaled.linear() *= 1.01;  // beyond the tolerance of a rotation (|q| = 1 +- 1e-3)
+  ::fcl::Transform3d nearlyRotation = ::fcl::Transform3d::Identity();
+  nearlyRotation.linear() *= 1.0001;  // within it
+  const ::fcl::Transform3d origin = ::fcl::Transform3d::Identity();
+  for (const ::fcl::CollisionGeometryd* g : {static_cast<const ::fcl::CollisionGeometryd*>(&box),
+                                             static_cast<const ::fcl::CollisionGeometryd*>(&capsule)}) {
+    ::fcl::CollisionResultd c;
+    EXPECT_EQ(gq::fcl::collide<double>(g, scaled, &box, origin, ::fcl::CollisionRequestd(), c), 0u);
+    EXPECT_EQ(c.numContacts(), 0u);
+    ::fcl::DistanceResultd d;
+    EXPECT_EQ(gq::fcl::distance<double>(&box, origin, g, scaled, ::fcl::DistanceRequestd(true), d),
+              std::numeric_limits<double>::max());
+    EXPECT_EQ(d.o1, nullptr);
+    ::fcl::CollisionResultd ok;
+    EXPECT_EQ(gq::fcl::collide<double>(g, nearlyRotation, &box, origin, ::fcl::CollisionRequestd(), ok), 1u);
+  }
+}
+
+TEST(FclSolidPairs, NearestPointsAreWrittenOnlyWhenRequested) {
+  ::fcl::Sphered sphere(0.5);
+  ::fcl::Boxd box(1.0, 1.0, 1.0);
+  ::fcl::Transform3d far = ::fcl::Transform3d::Identity();
+  far.translation() = Vector3d(3, 0, 0);
+  ::fcl::DistanceResultd without, with;
+  without.nearest_points[0] = without.nearest_points[1] = Vector3d(7, 7, 7);
+  EXPECT_NEAR(gq::fcl::distance<double>(&sphere, ::fcl::Transform3d::Identity(), &box, far, ::fcl::DistanceRequestd(false), without), 2.0, 1e-12);
+  EXPECT_EQ(without.nearest_points[0], Vector3d(7, 7, 7));
+  EXPECT_EQ(without.nearest_points[1], Vector3d(7, 7, 7));
+  gq::fcl::distance<double>(&sphere, ::fcl::Transform3d::Identity(), &box, far, ::fcl::DistanceRequestd(true), with);
+  EXPECT_NEAR((with.nearest_points[0] - Vector3d(0.5, 0, 0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((with.nearest_points[1] - Vector3d(2.5, 0, 0)).norm(), 0.0, 1e-12);
+}
+
+}  // namespace
