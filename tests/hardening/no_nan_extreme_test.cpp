@@ -132,12 +132,6 @@ TYPED_TEST(NoNaN, MeshQueriesOverExtremeSizesAnswerFiniteOrAnError) {
     }
 }
 
-}  // namespace
-}  // namespace gq::hardening
-
-namespace gq::hardening {
-namespace {
-
 // Regression (found by fuzz_raycast): a double ray whose mesh-space origin lies beyond the float range made the float
 // BVH slab test accept empty node lanes (inf - inf = NaN) and read nodes[0xffffffff].
 TEST(NoNaNDouble, RaysFromBeyondTheFloatRangeAnswerFiniteForEveryGeometry) {
@@ -158,12 +152,6 @@ TEST(NoNaNDouble, RaysFromBeyondTheFloatRangeAnswerFiniteForEveryGeometry) {
       }
     }
 }
-
-}  // namespace
-}  // namespace gq::hardening
-
-namespace gq::hardening {
-namespace {
 
 // Regression (found by fuzz_raycast): origin near -1.4e307 against a mirrored, rotated, double-sided mesh gave hits
 // with NaN distance and position (the watertight test's products overflow; NaN passed t <= maxDist).
@@ -186,12 +174,6 @@ TEST(NoNaNDouble, RayOriginNearTheDoubleLimitGivesNoNaNHits) {
   }
 }
 
-}  // namespace
-}  // namespace gq::hardening
-
-namespace gq::hardening {
-namespace {
-
 // Regression (found by fuzz_mesh_queries): a capsule of radius 1.8e180 and half height 1.7e278 against a
 // double-sided cube mesh made computeTriangleMeshPenetration return Ok with a non-finite direction/depth.
 TEST(NoNaNDouble, HugeCapsuleMeshPenetrationIsFiniteOrAnError) {
@@ -212,12 +194,6 @@ TEST(NoNaNDouble, HugeCapsuleMeshPenetrationIsFiniteOrAnError) {
   }
 }
 
-}  // namespace
-}  // namespace gq::hardening
-
-namespace gq::hardening {
-namespace {
-
 // Regression (found by fuzz_pair_queries): in float, a heightfield with columnScale 8.3e27 and a shape 8.3e27 away
 // made distance()'s growing search radius loop forever (its bound overflowed to +inf).
 TEST(NoNaNFloat, DistanceToAHeightFieldBeyondTheFloatRangeTerminates) {
@@ -237,12 +213,6 @@ TEST(NoNaNFloat, DistanceToAHeightFieldBeyondTheFloatRangeTerminates) {
   }
 }
 
-}  // namespace
-}  // namespace gq::hardening
-
-namespace gq::hardening {
-namespace {
-
 // Regression (found by fuzz_raycast under UBSan): a heightfield ray whose cell range lies entirely beyond the grid
 // (origin ~1e161 cells away) converted the floor of that position to int64 (undefined behaviour).
 TEST(NoNaNDouble, HeightFieldRayFarBeyondTheGridMissesWithoutOverflow) {
@@ -257,12 +227,6 @@ TEST(NoNaNDouble, HeightFieldRayFarBeyondTheGridMissesWithoutOverflow) {
       EXPECT_EQ(count, 0u);
     }
 }
-
-}  // namespace
-}  // namespace gq::hardening
-
-namespace gq::hardening {
-namespace {
 
 // Regression (found by fuzz_raycast; exact input in tests/fuzz/known_crashes/fuzz_raycast_heightfield_float_nan.bin):
 // a float ray from y = 1e6 going up past a heightfield returned Ok with a NaN distance.

@@ -26,14 +26,19 @@ void prepareRay(btBroadphaseRayCallback& cb, const btVector3& from, const btVect
   cb.m_lambda_max = dir.dot(to - from);
 }
 
+// What Bullet's per-object tests read from the callback they are given: the host's filter and closest fraction.
+template <class Callback> void copyFilter(const Callback& host, Callback& to) {
+  to.m_closestHitFraction = host.m_closestHitFraction;
+  to.m_collisionFilterGroup = host.m_collisionFilterGroup;
+  to.m_collisionFilterMask = host.m_collisionFilterMask;
+}
+
 // Bullet's own per-object tests answer for the shapes gq leaves to Bullet; these pass their results on to the
 // host's callback only when finite, so a gq world never hands a NaN fraction, normal or point to a callback.
 class FiniteRayResults final : public RayCallback {
  public:
   explicit FiniteRayResults(RayCallback& host) : host_(host) {
-    m_closestHitFraction = host.m_closestHitFraction;
-    m_collisionFilterGroup = host.m_collisionFilterGroup;
-    m_collisionFilterMask = host.m_collisionFilterMask;
+    copyFilter<RayCallback>(host, *this);
     m_flags = host.m_flags;
   }
   bool needsCollision(btBroadphaseProxy* proxy) const override { return host_.needsCollision(proxy); }
@@ -50,11 +55,7 @@ class FiniteRayResults final : public RayCallback {
 
 class FiniteSweepResults final : public SweepCallback {
  public:
-  explicit FiniteSweepResults(SweepCallback& host) : host_(host) {
-    m_closestHitFraction = host.m_closestHitFraction;
-    m_collisionFilterGroup = host.m_collisionFilterGroup;
-    m_collisionFilterMask = host.m_collisionFilterMask;
-  }
+  explicit FiniteSweepResults(SweepCallback& host) : host_(host) { copyFilter<SweepCallback>(host, *this); }
   bool needsCollision(btBroadphaseProxy* proxy) const override { return host_.needsCollision(proxy); }
   btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool normalInWorldSpace) override {
     if (!std::isfinite(r.m_hitFraction) || !isFinite(r.m_hitNormalLocal) || !isFinite(r.m_hitPointLocal))
