@@ -4,6 +4,8 @@
 //    of |p(s) - clamp(p(s))| over s converges to the exact minimum.
 //  - Penetrating capsule/box: the reported depth is the exact minimum translation along the reported normal (moving
 //    o2 by depth +- 1e-7 along it separates / does not), checked with the same reference.
+//  - Overlapping boxes (core's SAT with witnesses from the touching configuration): the exact SAT depth
+//    (exact_reference.h), and witnesses on both box surfaces, point1 = point0 - depth * normal.
 //  - What the fast path validates (reflections of symmetric shapes, scaled linear parts) and computes (no nearest
 //    points unless asked).
 #include <gtest/gtest.h>
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <random>
 
+#include "exact_reference.h"
 #include "fcl_scenes.h"
 #include "gq/fcl/fcl.h"
 
@@ -99,6 +102,33 @@ TEST(FclSolidPairs, CapsuleBoxPenetrationDepthIsTheExactTranslationAlongItsNorma
     still.translation() += contact.normal * (contact.penetration_depth - 1e-7);
     EXPECT_GT(s.exactSigned(pc, apart), 0.0L) << "pose " << i << ": moving o2 by the depth does not separate";
     EXPECT_LT(s.exactSigned(pc, still), 0.0L) << "pose " << i << ": the depth is more than needed";
+    ++penetrating;
+  }
+  EXPECT_GT(penetrating, 100);
+}
+
+// Largest |local coordinate| - half side: 0 on the box surface.
+double surfaceOffset(const Vector3d& world, const ::fcl::Transform3d& pose, const Vector3d& side) {
+  return ((pose.inverse() * world).cwiseAbs() - side / 2).maxCoeff();
+}
+
+TEST(FclSolidPairs, OverlappingBoxesGetTheExactDepthWithWitnessesOnBothSurfaces) {
+  std::mt19937 rng(20);
+  const gq::fcltest::TestShape a = gq::fcltest::makeShape(gq::fcltest::Kind::Box, rng);
+  const gq::fcltest::TestShape b = gq::fcltest::makeShape(gq::fcltest::Kind::Box, rng);
+  int penetrating = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const ::fcl::Transform3d pa = randomPose(rng, 0.8), pb = randomPose(rng, 0.8);
+    long double exact = 0;
+    if (!gq::fcltest::exactDepth(a, pa, b, pb, exact) || exact < 1e-7L) continue;
+    ::fcl::DistanceRequestd request(true);
+    request.enable_signed_distance = true;
+    ::fcl::DistanceResultd r;
+    const double d = gq::fcl::distance<double>(a.geometry.get(), pa, b.geometry.get(), pb, request, r);
+    EXPECT_NEAR(d, -double(exact), kExactTolerance) << "pose " << i;
+    EXPECT_NEAR(surfaceOffset(r.nearest_points[0], pa, a.size), 0.0, 1e-9) << "pose " << i;
+    EXPECT_NEAR(surfaceOffset(r.nearest_points[1], pb, b.size), 0.0, 1e-9) << "pose " << i;
+    EXPECT_NEAR((r.nearest_points[1] - r.nearest_points[0]).norm(), double(exact), 1e-9) << "pose " << i;
     ++penetrating;
   }
   EXPECT_GT(penetrating, 100);

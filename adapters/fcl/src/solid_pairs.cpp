@@ -227,15 +227,19 @@ template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bo
   return Answer::Done;
 }
 
-// Core has no closed form for box/box distance: GJK (EPA when they overlap) in box a's frame.
+// In box a's frame: overlapping boxes by the SAT (core's distanceBoxBoxOverlapping); separated ones by GJK (core
+// has no closed form for them).
 template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
   Vec3<S> ha, hb, t;
   Mat3<S> r;
   if (boxInBox(a, b, ha, hb, r, t) != Answer::Done) return Answer::Invalid;
   DistanceResult<S> local;
-  const Geometry<S> ga = BoxGeometry<S>(ha), gb = BoxGeometry<S>(hb);
-  if (!k::distanceGjk(ga, Transform<S>(), gb, Transform<S>(t, Quat<S>(r)), static_cast<GjkCache<S>*>(nullptr), local).ok())
-    return Answer::Unanswered;
+  // (Starting GJK along the SAT's first separating axis instead of the centre difference cost 12% more.)
+  if (!k::distanceBoxBoxOverlapping<S>(ha, hb, r, t, local)) {
+    const Geometry<S> ga = BoxGeometry<S>(ha), gb = BoxGeometry<S>(hb);
+    const Transform<S> pb(t, Quat<S>(r));
+    if (!k::distanceGjk(ga, Transform<S>(), gb, pb, static_cast<GjkCache<S>*>(nullptr), local).ok()) return Answer::Unanswered;
+  }
   frameToWorld(*a.tf, withPoints, local, out);
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
 }
