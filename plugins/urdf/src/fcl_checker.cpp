@@ -4,12 +4,14 @@
 
 #include <fcl/fcl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "gq/cooking.h"
 #include "gq/custom_shapes.h"
 #include "kinematic_chain.h"
+#include "pair_order.h"
 
 namespace gq::urdf {
 
@@ -22,6 +24,7 @@ struct FclSelfCollisionChecker::Impl {
   std::vector<Mat3<double>> bodyRotations;
   std::vector<Vec3<double>> bodyPositions;
   std::vector<fcl::AABBd> linkBounds;
+  std::vector<LinkPair> checkedPairs;  // not allowed, both with shapes; most often touching first (pair_order.h)
 };
 
 namespace {
@@ -94,7 +97,14 @@ Status FclSelfCollisionChecker::create(std::shared_ptr<const RobotModel<double>>
     impl->inBody.push_back(toIsometry(impl->chain->linkInBody(shape.link) * shape.origin) * offset);
   }
   impl->linkBounds.resize(model->links.size());
+  for (std::uint32_t a = 0; a < model->links.size(); ++a)
+    for (std::uint32_t b = a + 1; b < model->links.size(); ++b)
+      if (!model->isAllowed(a, b) && !model->links[a].shapes.empty() && !model->links[b].shapes.empty())
+        impl->checkedPairs.push_back({a, b});
   out.reset(new FclSelfCollisionChecker(std::move(impl)));
+  detail::orderByContactFrequency(
+      *model, out->impl_->checkedPairs, [](const LinkPair& p) { return p; },
+      [&](const std::vector<double>& q, CollisionResult& r) { return out->checkSelfCollision(q, r); });
   return {};
 }
 
@@ -121,30 +131,27 @@ Status FclSelfCollisionChecker::checkSelfCollision(const std::vector<double>& q,
   }
   CollisionResult out;
   fcl::CollisionRequestd fclRequest;  // one contact, boolean answer
-  for (std::uint32_t a = 0; a < model.links.size(); ++a)
-    for (std::uint32_t b = a + 1; b < model.links.size(); ++b) {
-      if (model.isAllowed(a, b) || model.links[a].shapes.empty() || model.links[b].shapes.empty()) continue;
-      if (!m.linkBounds[a].overlap(m.linkBounds[b])) continue;
-      bool hit = false;
-      for (std::uint32_t sa : model.links[a].shapes) {
-        for (std::uint32_t sb : model.links[b].shapes) {
-          if (!m.objects[sa]->getAABB().overlap(m.objects[sb]->getAABB())) continue;
-          fcl::CollisionResultd fclResult;
-          if (fcl::collide(m.objects[sa].get(), m.objects[sb].get(), fclRequest, fclResult) > 0) {
-            hit = true;
-            break;
-          }
+  for (const LinkPair& p : m.checkedPairs) {
+    const std::uint32_t a = p.a, b = p.b;
+    if (!m.linkBounds[a].overlap(m.linkBounds[b])) continue;
+    bool hit = false;
+    for (std::uint32_t sa : model.links[a].shapes) {
+      for (std::uint32_t sb : model.links[b].shapes) {
+        if (!m.objects[sa]->getAABB().overlap(m.objects[sb]->getAABB())) continue;
+        fcl::CollisionResultd fclResult;
+        if (fcl::collide(m.objects[sa].get(), m.objects[sb].get(), fclRequest, fclResult) > 0) {
+          hit = true;
+          break;
         }
-        if (hit) break;
       }
-      if (!hit) continue;
-      out.colliding = true;
-      out.pairs.push_back({a, b});
-      if (!request.allPairs) {
-        result = std::move(out);
-        return {};
-      }
+      if (hit) break;
     }
+    if (!hit) continue;
+    out.colliding = true;
+    out.pairs.push_back(p);
+    if (!request.allPairs) break;
+  }
+  std::sort(out.pairs.begin(), out.pairs.end());  // the pair order is by contact frequency, the result is sorted
   result = std::move(out);
   return {};
 }

@@ -15,6 +15,7 @@
 #include "internal.h"
 #include "cull_tests.h"
 #include "kinematic_chain.h"
+#include "pair_order.h"
 #include "gjk/support_table.h"  // core/src (private include path): supportStartTable
 #include "overlap/polytope.h"      // overlapConvexShapes
 
@@ -181,6 +182,16 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
   linkCapsuleStamp_.assign(links, 0);
   boxStamp_.assign(shapes, 0);
   poseStamp_.assign(shapes, 0);
+  orderPairsByContactFrequency();
+}
+
+// Pairs that touch often go first (pair_order.h); checks in the constructor's sampling see the link order.
+template <class T> void SelfCollisionChecker<T>::orderPairsByContactFrequency() {
+  CollisionRequest all;
+  all.allPairs = true;
+  detail::orderByContactFrequency(
+      *model_, checkedPairs_, [](const CheckedPair& p) { return p.links; },
+      [&](const std::vector<T>& q, CollisionResult& r) { return checkSelfCollision(q, r, all); });
 }
 
 template <class T> Status SelfCollisionChecker<T>::placeBodies(const std::vector<T>& q) {
@@ -370,6 +381,7 @@ Status SelfCollisionChecker<T>::checkSelfCollision(const std::vector<T>& q, Coll
     if (!request.allPairs) break;
   }
   result.colliding = !hits_.empty();
+  std::sort(hits_.begin(), hits_.end());  // the pair order is by contact frequency, the result is sorted
   result.pairs.assign(hits_.begin(), hits_.end());  // reuses the caller's capacity
   return {};
 }

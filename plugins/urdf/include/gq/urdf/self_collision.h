@@ -95,6 +95,7 @@ template <class T> class SelfCollisionChecker {
     bool linkCapsules = false;  // a link has a capsule: test link capsules after the link spheres
   };
 
+  void orderPairsByContactFrequency();
   Status placeBodies(const std::vector<T>& q);
   void placeLinkSpheres();
   void placeShapeSpheres();
@@ -111,7 +112,8 @@ template <class T> class SelfCollisionChecker {
 
   std::shared_ptr<const RobotModel<T>> model_;
   std::shared_ptr<const detail::KinematicChain<T>> chain_;  // compiled forward kinematics (immutable, shared)
-  std::vector<CheckedPair> checkedPairs_;    // link pairs with shapes that the allowed-collision matrix leaves
+  std::vector<CheckedPair> checkedPairs_;    // link pairs with shapes that the allowed-collision matrix leaves,
+                                             // most often touching first (orderPairsByContactFrequency)
   std::vector<std::uint32_t> shapedLinks_;   // links with at least one shape
   std::vector<ShapeBound> shapeBounds_;
   std::vector<std::uint32_t> linkBody_;
