@@ -2,6 +2,8 @@
 // pair in every mode (exact meshes included), distance and collision agree, batches match single checks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "robot_paths.h"
 
 namespace gq::urdf::test {
@@ -117,6 +119,51 @@ TYPED_TEST(SelfCollision, BatchMatchesSingleChecks) {
     colliding += r.colliding;
   }
   EXPECT_GT(colliding, 0u);
+}
+
+// The checker visits link pairs most-often-touching first and culls before the narrow phase; neither may change
+// the answer. Reference: every link pair the allowed-collision matrix leaves, every shape pair, gq::overlap at the
+// forward-kinematics poses (no culling, link order). A first-hit check reports one pair of that set.
+TYPED_TEST(SelfCollision, PairsFoundAreEveryShapePairOverlapSortedAndFirstHitIsOneOfThem) {
+  using T = TypeParam;
+  for (const RobotFiles* robot : {&kPanda, &kUr5}) {
+    const auto m = loadCached<T>(*robot, Representation::Hull);
+    SelfCollisionChecker<T> checker(m);
+    std::uint64_t rng = 11;
+    std::size_t colliding = 0;
+    for (int k = 0; k < 300; ++k) {
+      const std::vector<T> q = randomConfiguration(*m, rng);
+      std::vector<Transform<T>> links;
+      ASSERT_TRUE(forwardKinematics(*m, q, links).ok());
+      std::vector<LinkPair> expected;
+      for (std::uint32_t a = 0; a < m->links.size(); ++a)
+        for (std::uint32_t b = a + 1; b < m->links.size(); ++b) {
+          if (m->isAllowed(a, b)) continue;
+          bool hit = false;
+          for (std::uint32_t sa : m->links[a].shapes)
+            for (std::uint32_t sb : m->links[b].shapes) {
+              bool touch = false;
+              ASSERT_TRUE(overlap(m->shapes[sa].geometry, links[a] * m->shapes[sa].origin, m->shapes[sb].geometry,
+                                  links[b] * m->shapes[sb].origin, touch).ok());
+              hit = hit || touch;
+            }
+          if (hit) expected.push_back({a, b});
+        }
+      CollisionResult all, first;
+      ASSERT_TRUE(checker.checkSelfCollision(q, all).ok());
+      CollisionRequest firstOnly;
+      firstOnly.allPairs = false;
+      ASSERT_TRUE(checker.checkSelfCollision(q, first, firstOnly).ok());
+      EXPECT_EQ(all.pairs, expected) << robot->name << " configuration " << k;
+      EXPECT_EQ(first.colliding, !expected.empty()) << robot->name << " configuration " << k;
+      if (first.colliding) {
+        ASSERT_EQ(first.pairs.size(), 1u);
+        EXPECT_TRUE(std::count(expected.begin(), expected.end(), first.pairs[0]) == 1) << robot->name << " " << k;
+      }
+      colliding += !expected.empty();
+    }
+    EXPECT_GT(colliding, 10u) << robot->name;  // the pair order matters only when something collides
+  }
 }
 
 TYPED_TEST(SelfCollision, InvalidConfigurationReturnsInvalidArgumentAndKeepsTheResult) {
