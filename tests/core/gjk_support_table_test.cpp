@@ -121,6 +121,10 @@ TYPED_TEST(GjkSupportTable, LookupOfZeroOrNonFiniteDirectionIsVertexZero) {
   for (const gq::Vec3<T>& d : {gq::Vec3<T>(0, 0, 0), gq::Vec3<T>(nan, 1, 0), gq::Vec3<T>(1, nan, 0), gq::Vec3<T>(0, 0, nan),
                                gq::Vec3<T>(inf, 1, 0), gq::Vec3<T>(1, -inf, 2), gq::Vec3<T>(nan, nan, nan)})
     EXPECT_EQ(table.lookup(d), 0u) << d.transpose();
+  // A major component so small that k/2 over it overflows: still a cell of the right face, no overflowing conversion.
+  const T tiny = std::numeric_limits<T>::denorm_min();
+  for (const gq::Vec3<T>& d : {gq::Vec3<T>(tiny, 0, 0), gq::Vec3<T>(-tiny, tiny, 0), gq::Vec3<T>(0, 0, -tiny)})
+    EXPECT_LT(table.lookup(d), hull->vertices.size()) << d.transpose();
 }
 
 TYPED_TEST(GjkSupportTable, HullSupportThroughTheTableIsExactUnderScaleAndPose) {

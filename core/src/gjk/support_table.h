@@ -80,11 +80,13 @@ template <class T> class SupportStartTable {
   }
 
  private:
-  // Cell of a coordinate c in [0, k] (k itself, from a component equal to the major one, is the last cell).
+  // Cell of a scaled coordinate c in [-k/2, k/2] (k/2 itself, from a component equal to the major one, is the last
+  // cell). Clamped before the conversion: c is NaN or infinite when the major component underflows the scale.
   std::uint32_t cellIndex(T c) const {
-    const T clamped = c + halfCells_;
-    const std::uint32_t i = clamped > T(0) ? static_cast<std::uint32_t>(clamped) : 0u;
-    return i < cells_ ? i : cells_ - 1;
+    const T x = c + halfCells_;
+    if (!(x > T(0))) return 0;
+    if (!(x < T(cells_))) return cells_ - 1;
+    return static_cast<std::uint32_t>(x);
   }
 
   static T dot(const Vec3<T>& v, const Vec3<T>& d) { return v.x() * d.x() + v.y() * d.y() + v.z() * d.z(); }
