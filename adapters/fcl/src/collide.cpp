@@ -43,18 +43,18 @@ bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
 // Two closed solids, the fast path (solid_pairs.h): at most one contact, no buffer; contact geometry only when
 // asked for.
 template <class S>
-detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact,
+detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact, bool& added,
                              ::fcl::CollisionResult<S>& result) {
   if (!withContact) {
-    bool hit = false;
-    const detail::Answer answer = detail::solidOverlap(a, b, hit);
-    if (answer == detail::Answer::Done && hit)
+    const detail::Answer answer = detail::solidOverlap(a, b, added);
+    if (answer == detail::Answer::Done && added)
       result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive));
     return answer;
   }
   DistanceResult<S> d;
   const detail::Answer answer = detail::solidDistance(a, b, true, d);
-  if (answer == detail::Answer::Done && d.distance <= S(0))
+  added = answer == detail::Answer::Done && d.distance <= S(0);
+  if (added)
     result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive,
                                         (d.point0 + d.point1) * S(0.5), d.normal, -d.distance));
   return answer;
@@ -88,14 +88,18 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
                     const Options& options) {
   using detail::Conversion;
   if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
-  if (request.isSatisfied(result)) return result.numContacts();
+  // FCL's CollisionRequest::isSatisfied (no cost sources, a collision, num_max_contacts reached) on one count.
+  const std::size_t before = result.numContacts();
+  if (!request.enable_cost && before > 0 && request.num_max_contacts <= before) return before;
   // Bad input (docs/fcl.md) writes nothing and returns 0, before anything reaches FCL (which crashes on it); the
   // solid path validates the numbers it reads (solid_pairs.h), the others check the transforms here.
   const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
   const bool fclContact = request.enable_contact && contactFromFcl(s1, s2, options);
   if (detail::isSolid(s1) && detail::isSolid(s2) && !request.enable_cost && !fclContact) {
-    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact, result)) {
-      case detail::Answer::Done: detail::countGq(); return result.numContacts();
+    bool added = false;
+    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact, added,
+                          result)) {
+      case detail::Answer::Done: detail::countGq(); return before + added;
       case detail::Answer::Invalid: return 0;
       case detail::Answer::Unanswered: break;
     }

@@ -397,22 +397,15 @@ template <class S> const PairEntry<S>& entry(FS a, FS b) { return kTable<S>[std:
 }  // namespace
 
 template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* g) {
+  // Indexed by FCL's NODE_TYPE: BV_UNKNOWN, the eight BVHModel bounding volumes, then the shapes in FCL's order.
+  static constexpr FS kShapeOf[::fcl::NODE_COUNT] = {
+      FS::Unsupported, FS::Mesh,      FS::Mesh,   FS::Mesh,     FS::Mesh,  FS::Mesh,     FS::Mesh,
+      FS::Mesh,        FS::Mesh,      FS::Box,    FS::Sphere,   FS::Ellipsoid, FS::Capsule, FS::Cone,
+      FS::Cylinder,    FS::Convex,    FS::Plane,  FS::Halfspace, FS::TriangleP, FS::Unsupported};
+  static_assert(::fcl::GEOM_BOX == 9 && ::fcl::GEOM_TRIANGLE == 18 && ::fcl::NODE_COUNT == 20, "FCL 0.7's NODE_TYPE");
   if (!g) return FS::Unsupported;
-  switch (g->getNodeType()) {
-    case ::fcl::GEOM_SPHERE: return FS::Sphere;
-    case ::fcl::GEOM_BOX: return FS::Box;
-    case ::fcl::GEOM_CAPSULE: return FS::Capsule;
-    case ::fcl::GEOM_CYLINDER: return FS::Cylinder;
-    case ::fcl::GEOM_CONE: return FS::Cone;
-    case ::fcl::GEOM_ELLIPSOID: return FS::Ellipsoid;
-    case ::fcl::GEOM_CONVEX: return FS::Convex;
-    case ::fcl::GEOM_TRIANGLE: return FS::TriangleP;
-    case ::fcl::GEOM_HALFSPACE: return FS::Halfspace;
-    case ::fcl::GEOM_PLANE: return FS::Plane;
-    case ::fcl::BV_AABB: case ::fcl::BV_OBB: case ::fcl::BV_RSS: case ::fcl::BV_kIOS: case ::fcl::BV_OBBRSS:
-    case ::fcl::BV_KDOP16: case ::fcl::BV_KDOP18: case ::fcl::BV_KDOP24: return FS::Mesh;
-    default: return FS::Unsupported;
-  }
+  const int type = g->getNodeType();
+  return type >= 0 && type < ::fcl::NODE_COUNT ? kShapeOf[type] : FS::Unsupported;
 }
 
 template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
