@@ -11,7 +11,7 @@
 namespace gq::urdf::detail {
 
 // Configurations sampled once per checker, and the sampler's seed (fixed: the order is a function of the model).
-inline constexpr std::uint64_t kOrderingSamples = 64;
+inline constexpr std::uint64_t kOrderingSamples = 256;
 inline constexpr std::uint64_t kOrderingSeed = 0x6f72646572ull;
 
 // Stable sort of `pairs` by decreasing contact count over kOrderingSamples random configurations; `linksOf(pair)`
