@@ -13,6 +13,7 @@
 // repeats a simplex point, when |v| fails to decrease, or after kGjkMomentumIterations iterations.
 #include <cmath>
 
+#include "gjk/boolean_simplex.h"
 #include "gjk/gjk.h"
 #include "gjk/simplex.h"
 #include "gjk/support_map.h"
@@ -38,6 +39,12 @@ template <class T> Vec3<T> initialDirection(const ConvexShape<T>& a, const Conve
   if (cache && cache->direction.squaredNorm() > T(0) && isFinite(cache->direction)) return a.pose.rotate(cache->direction);
   const Vec3<T> d = a.center() - b.center();
   return d.squaredNorm() > T(0) ? d : Vec3<T>(Vec3<T>::UnitX());
+}
+
+// Cores without a rounded shell of their own (their margin is at most a caller's band).
+template <class T> bool hasSharpCore(const ConvexShape<T>& s) {
+  using Kind = typename ConvexShape<T>::Kind;
+  return s.kind == Kind::Box || s.kind == Kind::Hull || s.kind == Kind::Custom;
 }
 
 template <class T> bool alreadyInSimplex(const GjkSimplex<T>& s, const Vec3<T>& w) {
@@ -182,6 +189,23 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
   SupportMap<T> sa(a), sb(b);
   GjkSimplex<T> s;
   Vec3<T> v = initialDirection<T>(a, b, nullptr);
+  // Polytope-like cores (no rounded shell of their own): the direction-only loop decides almost every pair; what it
+  // cannot decide (cores within the margins, degenerate simplices) goes to the full loop below, from scratch.
+  if (hasSharpCore(a) && hasSharpCore(b)) {
+    Vec3<T> dir = -v;  // towards the origin from the centre difference
+    for (std::uint32_t it = 0; it < kGjkBooleanFastIterations; ++it) {
+      const SupportPoint<T> p = supportOfDifference(sa, sb, dir);
+      // Separating axis: h_D(dir) = dir.w below -(margins + tolerance) |dir|.
+      if (dir.dot(p.w) < -(margins + tolerance) * dir.norm()) return false;
+      if (alreadyInSimplex(s, p.w)) break;
+      s.points[s.size++] = p;
+      const BooleanStep<T> step = s.size == 1 ? BooleanStep<T>{Vec3<T>(-p.w), false} : booleanStep(s);
+      if (step.enclosed) return overlapping(s, true, T(0));
+      if (!(step.dir.squaredNorm() > T(0)) || !isFinite(step.dir)) break;
+      dir = step.dir;
+    }
+    s.size = 0;
+  }
   T bestSquared = std::numeric_limits<T>::infinity();
   Momentum<T> momentum;
   std::uint32_t stalls = 0;
