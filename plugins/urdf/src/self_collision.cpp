@@ -1,11 +1,13 @@
 // Self-collision and self-distance. Everything that does not depend on the configuration is done once: the link
-// pairs the allowed-collision matrix leaves (checkedPairs_), the compiled kinematics (kinematic_chain.h) and, in the
-// frame of each rigid body, an enclosing sphere per shape and per link, an enclosing capsule and box per shape
-// (shape_bounds.cpp). Per configuration: the body frames (rotation matrices), world link-sphere centres, then for
-// each checked link pair the link spheres, the shape spheres, the capsules (segment distance), the oriented boxes
-// (15-axis SAT) and only then the narrow phase, gq::overlap (GJK boolean for hulls and custom cylinders, exact
-// kernels for primitives, convex hulls then dual BVH for meshes). Capsules, boxes and poses are placed lazily, the
-// body quaternion only for shapes that reach the narrow phase. No allocation per check once the buffers have grown.
+// pairs the allowed-collision matrix leaves (checkedPairs_, most often touching first: pair_order.h), the compiled
+// kinematics (kinematic_chain.h), each shape's validation and hull start table and, in the frame of each rigid
+// body, an enclosing sphere per shape and per link, an enclosing capsule and box per shape (shape_bounds.cpp).
+// Per configuration: the body frames (rotation matrices), world link-sphere centres, then for each checked link
+// pair the link spheres, the shape spheres, the capsules (segment distance), the oriented boxes (15-axis SAT) and
+// only then the narrow phase: core's convex kernel for hull pairs, gq::overlap for the rest (exact kernels for
+// primitives, GJK for custom cylinders, convex hulls then dual BVH for meshes). Capsules, boxes and poses are
+// placed lazily, the body quaternion only for shapes that reach the narrow phase. No allocation per check once the
+// buffers have grown.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,8 +18,9 @@
 #include "cull_tests.h"
 #include "kinematic_chain.h"
 #include "pair_order.h"
-#include "gjk/support_table.h"  // core/src (private include path): supportStartTable
-#include "overlap/polytope.h"      // overlapConvexShapes
+// core/src (the plugin's private include path): hull start tables, the convex overlap kernel.
+#include "gjk/support_table.h"
+#include "overlap/polytope.h"
 
 namespace gq::urdf {
 namespace {
