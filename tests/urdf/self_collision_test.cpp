@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "../../plugins/urdf/src/pair_order.h"
 #include "robot_paths.h"
 
 namespace gq::urdf::test {
@@ -164,6 +165,32 @@ TYPED_TEST(SelfCollision, PairsFoundAreEveryShapePairOverlapSortedAndFirstHitIsO
     }
     EXPECT_GT(colliding, 10u) << robot->name;  // the pair order matters only when something collides
   }
+}
+
+// The order helper: pairs by decreasing contact count over its samples, ties in their given order, and a failing
+// check leaves the order as it was.
+TYPED_TEST(SelfCollision, PairOrderIsByDecreasingContactCountAndStableOnTies) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kPanda, Representation::Hull);
+  const std::vector<LinkPair> given = {{0, 2}, {1, 3}, {2, 4}, {3, 5}};
+  std::vector<LinkPair> pairs = given;
+  std::uint64_t call = 0;
+  detail::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
+                                  [&](const std::vector<T>&, CollisionResult& r) {
+                                    r.pairs.clear();
+                                    r.pairs.push_back({2, 4});                   // every sample
+                                    if (call++ % 2 == 0) r.pairs.push_back({3, 5});  // every other sample
+                                    return Status();
+                                  });
+  EXPECT_EQ(pairs, (std::vector<LinkPair>{{2, 4}, {3, 5}, {0, 2}, {1, 3}}));
+  EXPECT_EQ(call, detail::kOrderingSamples);
+  pairs = given;
+  detail::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
+                                  [&](const std::vector<T>&, CollisionResult& r) {
+                                    r.pairs = {{3, 5}};
+                                    return Status::invalid("refused");
+                                  });
+  EXPECT_EQ(pairs, given);
 }
 
 TYPED_TEST(SelfCollision, InvalidConfigurationReturnsInvalidArgumentAndKeepsTheResult) {
