@@ -234,6 +234,43 @@ TYPED_TEST(GjkSupportTable, ConcurrentFirstUseOfOneMeshSharesOneTable) {
   }
 }
 
+// Threads meeting a freshly cooked hull at once (the table is built under the registry's lock by one of them) get
+// the bits a single thread gets afterwards, for gq::overlap and gq::distance on the same poses.
+TYPED_TEST(GjkSupportTable, ConcurrentQueriesOnAFreshHullMatchTheSingleThreadedBits) {
+  using T = TypeParam;
+  Rng rng(409);
+  const auto hull = cookedHull<T>(rng, 100);
+  ASSERT_TRUE(hull);
+  const gq::Geometry<T> g{gq::ConvexMeshGeometry<T>(hull)};
+  std::vector<gq::Transform<T>> p0, p1;
+  for (int i = 0; i < 100; ++i) {
+    p0.push_back(randomPose<T>(rng, 1));
+    p1.push_back(randomPose<T>(rng, 1));
+  }
+  const auto run = [&](std::vector<T>& out) {
+    for (std::size_t i = 0; i < p0.size(); ++i) {
+      bool hit = false;
+      gq::DistanceResult<T> d;
+      out.push_back(gq::overlap(g, p0[i], g, p1[i], hit).ok() && hit ? T(1) : T(0));
+      out.push_back(gq::distance(d, g, p0[i], g, p1[i]).ok() ? d.distance : T(-1000));
+    }
+  };
+  constexpr int kThreads = 8;
+  std::vector<std::vector<T>> results(kThreads);
+  std::atomic<int> ready{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      ++ready;
+      while (ready.load() < kThreads) {}
+      run(results[t]);
+    });
+  for (auto& th : threads) th.join();
+  std::vector<T> single;
+  run(single);
+  for (int t = 0; t < kThreads; ++t) EXPECT_EQ(results[t], single) << "thread " << t;
+}
+
 TYPED_TEST(GjkSupportTable, NewMeshAtAFreedMeshAddressGetsItsOwnTable) {
   using T = TypeParam;
   Rng rng(406);
