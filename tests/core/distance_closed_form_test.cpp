@@ -134,6 +134,28 @@ TYPED_TEST(DistanceClosedForm, SphereBoxMatchesSignedDistanceToBox) {
   }
 }
 
+// Capsule-box is a closed form in both orders (exact against brute force: DistanceGjk.CapsuleBoxMatchesBruteForce...).
+TYPED_TEST(DistanceClosedForm, CapsuleBoxInEitherOrderIsTheMirroredAnswerAndAZeroLengthCapsuleIsASphere) {
+  using T = TypeParam;
+  Rng rng(17);
+  for (int i = 0; i < kPoses; ++i) {
+    const double rad = rng.uniform(0.05, 0.6);
+    const gq::CapsuleGeometry<T> cap(T(rad), T(i % 4 == 0 ? 0 : rng.uniform(0.1, 1.2)));
+    const Eigen::Vector3d h = rng.vec(0.2, 1.2);
+    const auto p0 = randomPose<T>(rng, 1.8), p1 = randomPose<T>(rng, 0.5);
+    const auto r = run<T>(cap, p0, box<T>(h), p1);
+    const auto m = run<T>(box<T>(h), p1, cap, p0);
+    ASSERT_NEAR(double(r.distance), double(m.distance), kClosedFormTol<T>) << "pose " << i;
+    EXPECT_NEAR(double((r.point0 - m.point1).norm()), 0.0, kClosedFormTol<T>);
+    EXPECT_NEAR(double((r.normal + m.normal).norm()), 0.0, kClosedFormTol<T>);
+    expectConsistent(r, kClosedFormTol<T>);
+    if (cap.halfHeight == T(0)) {
+      const Polytope P = boxPolytope<T>(h.cast<T>(), p1);
+      EXPECT_NEAR(double(r.distance), double(signedDistanceToPolytope(toL(p0.p), P) - L(T(rad))), kClosedFormTol<T>);
+    }
+  }
+}
+
 TYPED_TEST(DistanceClosedForm, SpherePlaneIsHeightMinusRadius) {
   using T = TypeParam;
   Rng rng(17);

@@ -92,6 +92,7 @@ template <class T> constexpr DistanceFn<T> kSphereBox = closedForm<T, S<T>, B<T>
 template <class T> constexpr DistanceFn<T> kPlaneCapsule = closedForm<T, P<T>, C<T>, detail::distancePlaneCapsule<T>>;
 template <class T> constexpr DistanceFn<T> kPlaneBox = closedForm<T, P<T>, B<T>, detail::distancePlaneBox<T>>;
 template <class T> constexpr DistanceFn<T> kCapsuleCapsule = closedForm<T, C<T>, C<T>, detail::distanceCapsuleCapsule<T>>;
+template <class T> constexpr DistanceFn<T> kCapsuleBox = closedForm<T, C<T>, B<T>, detail::distanceCapsuleBox<T>>;
 
 // Convex shapes vs triangle meshes and heightfields (distance/convex_surface.cpp), mesh vs mesh (BVH vs BVH).
 template <class T> constexpr DistanceFn<T> kConvexSurface = detail::distanceConvexSurface<T>;
@@ -104,10 +105,10 @@ template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTab
      gjk<T>},
     {swapped<T, kSpherePlane<T>>, unsupported<T>, kPlaneCapsule<T>, kPlaneBox<T>, planeConvex<T>, unsupported<T>,
      unsupported<T>, planeConvex<T>},
-    {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, gjk<T>, gjk<T>, kConvexSurface<T>,
+    {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, kCapsuleBox<T>, gjk<T>,
+     kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
+    {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, swapped<T, kCapsuleBox<T>>, gjk<T>, gjk<T>, kConvexSurface<T>,
      kConvexSurface<T>, gjk<T>},
-    {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>,
-     gjk<T>},
     {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
     {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kMeshMesh<T>,
      unsupported<T>, kSurfaceConvex<T>},

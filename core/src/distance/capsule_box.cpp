@@ -5,7 +5,7 @@
 //  - Segment entering the box: the Minkowski difference is box - segment grown by r0, so the depth is the SAT
 //    overlap plus r0 along the SAT axis L. Moving the segment out by the overlap along L makes it touch the box;
 //    the closest points there are the touching point, which gives witnesses on both surfaces.
-// Not in the façade's table (which answers capsule/box distance with GJK): used by the FCL adapter's fast path.
+// The façade's capsule/box cells and the FCL adapter's fast path both call it.
 #include <cmath>
 
 #include "distance/distance.h"
@@ -55,6 +55,22 @@ void distanceCapsuleBox(const Vec3<T>& c, const Vec3<T>& d, T r0, const Vec3<T>&
   local.point1 = closest.onBox;
 }
 
+// The capsule's segment (local X axis, half length halfHeight) in the box frame; results back in world space.
+template <class T>
+void distanceCapsuleBox(const CapsuleGeometry<T>& g0, const Transform<T>& pose0, const BoxGeometry<T>& g1,
+                        const Transform<T>& pose1, DistanceResult<T>& out) {
+  const Transform<T> inBox = pose0.relativeTo(pose1);
+  const Vec3<T> d = inBox.rotate(Vec3<T>(g0.halfHeight * Vec3<T>::UnitX()));
+  DistanceResult<T> local;
+  distanceCapsuleBox(inBox.p, d, g0.radius, g1.halfExtents, local);
+  out.distance = local.distance;
+  out.normal = pose1.rotate(local.normal);
+  out.point0 = pose1.transform(local.point0);
+  out.point1 = pose1.transform(local.point1);
+}
+
+template void distanceCapsuleBox<float>(const CapsuleGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
+template void distanceCapsuleBox<double>(const CapsuleGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
 template void distanceCapsuleBox<float>(const Vec3<float>&, const Vec3<float>&, float, const Vec3<float>&, DistanceResult<float>&);
 template void distanceCapsuleBox<double>(const Vec3<double>&, const Vec3<double>&, double, const Vec3<double>&, DistanceResult<double>&);
 

@@ -36,6 +36,9 @@ void distancePlaneConvex(const PlaneGeometry<T>& g0, const Transform<T>& pose0, 
 template <class T>
 void distanceCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>& pose0, const CapsuleGeometry<T>& g1,
                             const Transform<T>& pose1, DistanceResult<T>& out);
+template <class T>
+void distanceCapsuleBox(const CapsuleGeometry<T>& g0, const Transform<T>& pose0, const BoxGeometry<T>& g1,
+                        const Transform<T>& pose1, DistanceResult<T>& out);
 
 // Frame forms of the primitive pairs (the FCL adapter's matrix-pose fast path; the Transform kernels above call
 // them). A capsule is its centre, unit axis, half height and radius, given in the same frame as the other shape;
