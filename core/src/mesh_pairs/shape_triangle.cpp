@@ -49,8 +49,10 @@ template <class T> Bounds3<T> shapeBounds(const Geometry<T>& g, const Transform<
 }
 
 // Unit normal of the triangle (its winding's side).
+// Scaled before squaring: a tiny triangle's cross product squares to 0 in float (1e-25^2 underflows), and Eigen's
+// normalized() then returns it unscaled, a push direction of length 0.97 (found by fuzz_pair_queries).
 template <class T> Vec3<T> unitNormal(const Triangle<T>& tri) {
-  return (tri.verts[1] - tri.verts[0]).cross(tri.verts[2] - tri.verts[0]).normalized();
+  return (tri.verts[1] - tri.verts[0]).cross(tri.verts[2] - tri.verts[0]).stableNormalized();
 }
 
 }  // namespace
