@@ -2,6 +2,7 @@
 // opened), SRDF pairs and group states, then the allowed-collision matrix. urdfdom reports parse errors through
 // console_bridge; they are captured into the returned Status instead of being printed.
 #include <console_bridge/console.h>
+#include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <vector>
 
 #include "internal.h"
 
@@ -40,7 +42,45 @@ Status readFile(const std::string& path, const char* what, std::string& out) {
   return {};
 }
 
+// A link on a cycle of joints (parent -> child edges), or "" for a forest. urdfdom puts each child link into its
+// parent's child list by shared pointer, so a cyclic joint graph (e.g. a joint whose parent is its child) is never
+// freed when urdfdom then rejects the model (found by fuzz_urdf under LeakSanitizer): such input is refused first.
+// Kahn's algorithm: links left with a parent after peeling off every root are on or below a cycle.
+std::string linkOnJointCycle(const std::string& xml) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) return {};  // urdfdom reports syntax errors
+  const tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
+  if (!robot) return {};
+  std::multimap<std::string, std::string> children;  // parent -> child
+  std::map<std::string, int> parents;                 // link -> number of parent joints
+  for (const auto* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+    const auto* p = j->FirstChildElement("parent");
+    const auto* c = j->FirstChildElement("child");
+    const char* parent = p ? p->Attribute("link") : nullptr;
+    const char* child = c ? c->Attribute("link") : nullptr;
+    if (!parent || !child) continue;  // urdfdom rejects the joint
+    children.emplace(parent, child);
+    parents[parent] += 0;
+    ++parents[child];
+  }
+  std::vector<std::string> roots;
+  for (const auto& [link, count] : parents)
+    if (count == 0) roots.push_back(link);
+  while (!roots.empty()) {
+    const std::string link = roots.back();
+    roots.pop_back();
+    const auto [first, last] = children.equal_range(link);
+    for (auto it = first; it != last; ++it)
+      if (--parents[it->second] == 0) roots.push_back(it->second);
+  }
+  for (const auto& [link, count] : parents)
+    if (count > 0) return link;
+  return {};
+}
+
 Status parseUrdfModel(const std::string& xml, ::urdf::ModelInterfaceSharedPtr& model) {
+  if (const std::string link = linkOnJointCycle(xml); !link.empty())
+    return Status::parseError("URDF joints form a cycle through link '" + link + "' (the kinematic graph must be a tree)");
   std::lock_guard<std::mutex> lock(parserMutex());
   CapturedLog log;
   console_bridge::useOutputHandler(&log);
