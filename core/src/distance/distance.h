@@ -80,6 +80,8 @@ template <class T> Vec3<T> closestOnSegment(const Vec3<T>& p, const Vec3<T>& q, 
 // Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide.
 template <class T>
 void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback, DistanceResult<T>& out);
+// d / |d| at full precision also when |d|^2 is subnormal or overflows; `fallback` for d = 0 (or non-finite d).
+template <class T> Vec3<T> unitOr(const Vec3<T>& d, const Vec3<T>& fallback);
 // A unit vector orthogonal to d (d non-zero), or +X for d = 0.
 template <class T> Vec3<T> anyOrthogonal(const Vec3<T>& d);
 

@@ -1,4 +1,5 @@
 // Sphere/sphere MTD: depth r0 + r1 - |c0 - c1| along c0 - c1; coincident centres push along +X.
+#include "distance/distance.h"
 #include "penetration/penetration.h"
 #include "overlap/closest_points.h"
 
@@ -11,7 +12,7 @@ bool penetrationSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0
   const T len = d.norm();
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;
-  direction = len > T(0) ? Vec3<T>(d / len) : Vec3<T>::UnitX();
+  direction = unitOr(d, Vec3<T>(Vec3<T>::UnitX()));
   depth = pen;
   return true;
 }
