@@ -277,6 +277,27 @@ TYPED_TEST(MeshQueryPairs, MeshPenetrationPushesASphereOutAlongTheTriangleNormal
   EXPECT_EQ(iterations, 1u);
 }
 
+// A capsule lying on the face (its axis in the plane, across the quad's diagonal edge) leaves along the normal by
+// exactly its radius; one whose axis dips through the face leaves by r + the depth of its lower end. Both have the
+// segment touching the triangles, where "away from the closest point" is undefined (EPA answered 0.35 for r = 0.25).
+TYPED_TEST(MeshQueryPairs, MeshPenetrationOfACapsuleTouchingTheFaceIsItsRadiusAlongTheNormal) {
+  using T = TypeParam;
+  const Geometry<T> capsule = CapsuleGeometry<T>(T(0.25), T(0.5));
+  PenetrationResult<T> r;
+  ASSERT_TRUE(computeTriangleMeshPenetration(r, capsule, Transform<T>(Vec3<T>(T(0.1), T(0.2), T(0))), floorMesh<T>(false),
+                                             Transform<T>(), 4u).ok());
+  ASSERT_TRUE(r.penetrating);
+  EXPECT_NEAR(r.depth, T(0.25), tolOf<T>());
+  EXPECT_NEAR(r.direction.z(), T(1), tolOf<T>());
+  // Tilted 30 degrees about y through the face: the lower end is 0.5 sin 30 = 0.25 below it.
+  const Quat<T> tilt(Eigen::AngleAxis<T>(T(M_PI / 6), Vec3<T>::UnitY()));
+  ASSERT_TRUE(computeTriangleMeshPenetration(r, capsule, Transform<T>(Vec3<T>(T(0.1), T(0.2), T(0)), tilt), floorMesh<T>(false),
+                                             Transform<T>(), 4u).ok());
+  ASSERT_TRUE(r.penetrating);
+  EXPECT_NEAR(r.depth, T(0.5), tolOf<T>());
+  EXPECT_NEAR(r.direction.z(), T(1), tolOf<T>());
+}
+
 TYPED_TEST(MeshQueryPairs, MeshPenetrationIgnoresTrianglesWithTheCentreBehindThem) {
   using T = TypeParam;
   PenetrationResult<T> r;

@@ -1,6 +1,5 @@
 // Distance between two balls: the building block of sphere/sphere, sphere/capsule and capsule/capsule.
 #include <cmath>
-#include <limits>
 
 #include "distance/distance.h"
 
@@ -14,16 +13,6 @@ template <class T> Vec3<T> anyOrthogonal(const Vec3<T>& d) {
   return d.cross(Vec3<T>::Unit(i)).normalized();
 }
 
-template <class T> Vec3<T> unitOr(const Vec3<T>& d, const Vec3<T>& fallback) {
-  const T len2 = d.squaredNorm();
-  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) return d / std::sqrt(len2);
-  // |d|^2 subnormal (a float difference of ~1e-20 keeps only a few bits: n came out 2% long) or overflowing.
-  const T scale = d.cwiseAbs().maxCoeff();
-  if (!(scale > T(0)) || !std::isfinite(scale)) return fallback;
-  const Vec3<T> unitScale = d / scale;
-  return unitScale / unitScale.norm();
-}
-
 // d = |c1 - c0| - r0 - r1 along n = (c1 - c0) / |c1 - c0|; witnesses c0 + r0 n and c1 - r1 n.
 template <class T>
 void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback, DistanceResult<T>& out) {
@@ -35,8 +24,6 @@ void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<
   out.point1 = c1 - r1 * out.normal;
 }
 
-template Vec3<float> unitOr<float>(const Vec3<float>&, const Vec3<float>&);
-template Vec3<double> unitOr<double>(const Vec3<double>&, const Vec3<double>&);
 template Vec3<float> anyOrthogonal<float>(const Vec3<float>&);
 template Vec3<double> anyOrthogonal<double>(const Vec3<double>&);
 template void ballsDistance<float>(const Vec3<float>&, float, const Vec3<float>&, float, const Vec3<float>&, DistanceResult<float>&);

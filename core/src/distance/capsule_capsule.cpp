@@ -8,7 +8,8 @@ namespace {
 
 template <class T> Vec3<T> intersectingAxesNormal(const Vec3<T>& d0, const Vec3<T>& d1, const Vec3<T>& towards) {
   const Vec3<T> c = d0.cross(d1);
-  Vec3<T> n = c.squaredNorm() > T(0) ? Vec3<T>(c.normalized()) : anyOrthogonal<T>(d0.squaredNorm() > T(0) ? d0 : d1);
+  Vec3<T> n;
+  if (!tryUnit(c, n)) n = anyOrthogonal<T>(d0.squaredNorm() > T(0) ? d0 : d1);
   return n.dot(towards) < T(0) ? Vec3<T>(-n) : n;
 }
 

@@ -4,6 +4,7 @@
 // Conventions (as gq::DistanceResult): normal is unit from geom0 towards geom1, point0 on geom0, point1 on geom1,
 // point1 = point0 + distance * normal; when penetrating, translating geom1 by -distance * normal separates them.
 // When the normal is undefined (coincident centres, intersecting axes) the kernels pick a documented direction.
+#include "common/unit_vector.h"
 #include "gq/geometry.h"
 #include "gq/query.h"
 #include "gq/transform.h"
@@ -80,8 +81,6 @@ template <class T> Vec3<T> closestOnSegment(const Vec3<T>& p, const Vec3<T>& q, 
 // Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide.
 template <class T>
 void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback, DistanceResult<T>& out);
-// d / |d| at full precision also when |d|^2 is subnormal or overflows; `fallback` for d = 0 (or non-finite d).
-template <class T> Vec3<T> unitOr(const Vec3<T>& d, const Vec3<T>& fallback);
 // A unit vector orthogonal to d (d non-zero), or +X for d = 0.
 template <class T> Vec3<T> anyOrthogonal(const Vec3<T>& d);
 

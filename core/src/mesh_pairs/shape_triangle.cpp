@@ -6,6 +6,7 @@
 #include "bounds/bounds.h"
 #include "mesh_pairs/triangle_tests.h"
 #include "mesh/triangle.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 
@@ -98,14 +99,12 @@ template <class T> void TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri
     const SegmentTriangleClosest<T> c = closestSegmentTriangle(segA_, segB_, tri);
     const T len = std::sqrt(c.distSq);
     if (len > radius_) {
-      out.normal = (c.onTriangle - c.onSegment) / len;
+      if (!tryUnit(Vec3<T>(c.onTriangle - c.onSegment), out.normal)) out.normal = unitNormal(tri);
       out.distance = len - radius_;
       out.point0 = c.onSegment + radius_ * out.normal;
     } else {
       // Contact: the normal is the segment-to-triangle direction, or the face normal facing away from the centre.
-      if (len > T(0)) {
-        out.normal = (c.onTriangle - c.onSegment) / len;
-      } else {
+      if (!tryUnit(Vec3<T>(c.onTriangle - c.onSegment), out.normal)) {
         const Vec3<T> n = unitNormal(tri);
         out.normal = n.dot(pose_.p - tri.verts[0]) >= T(0) ? Vec3<T>(-n) : n;
       }
@@ -133,17 +132,16 @@ template <class T> void TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri
 
 template <class T> TrianglePush<T> TriangleQueryShape<T>::pushOut(const Triangle<T>& tri, bool oneSided) const {
   TrianglePush<T> push;
-  bool solved = false;
   if (type_ == GeometryType::Sphere || type_ == GeometryType::Capsule) {
+    // Away from the closest triangle point is exact for a disjoint segment but undefined once it touches (a capsule
+    // lying on a face went to EPA, which answered 0.35 instead of r = 0.25): the exact exit covers both.
     const SegmentTriangleClosest<T> c = closestSegmentTriangle(segA_, segB_, tri);
-    const T len = std::sqrt(c.distSq);
-    if (len > T(0)) {  // closed form: away from the closest triangle point
-      push.direction = (c.onSegment - c.onTriangle) / len;
-      push.depth = std::max(T(0), radius_ - len);
-      solved = true;
-    }
-  }
-  if (!solved) {
+    Vec3<T> away;
+    const bool disjoint = tryUnit(Vec3<T>(c.onSegment - c.onTriangle), away);
+    const SegmentTriangleExit<T> e = segmentTriangleExit(segA_, segB_, tri, disjoint ? &away : nullptr);
+    push.direction = e.direction;
+    push.depth = std::max(T(0), radius_ + e.exit);
+  } else {
     const SurfaceTriangleSupport<T> support(tri);
     const EpaResult<T> epa = epaPenetration(convex_, support.shape());
     push.direction = -epa.normal;  // EPA's normal points from the shape to the triangle

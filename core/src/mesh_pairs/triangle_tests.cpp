@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "common/unit_vector.h"
 #include "mesh/triangle.h"
 
 namespace gq::detail {
@@ -104,6 +106,29 @@ SegmentTriangleClosest<T> closestSegmentTriangle(const Vec3<T>& p, const Vec3<T>
   return best;
 }
 
+template <class T>
+SegmentTriangleExit<T> segmentTriangleExit(const Vec3<T>& p, const Vec3<T>& q, const Triangle<T>& tri, const Vec3<T>* hint) {
+  SegmentTriangleExit<T> best;
+  best.exit = std::numeric_limits<T>::infinity();
+  // Moving the segment by t along u clears the triangle once t >= max(tri . u) - min(seg . u).
+  const auto consider = [&](const Vec3<T>& u) {
+    T lo, hi;
+    project(tri, u, lo, hi);
+    const T pu = p.dot(u), qu = q.dot(u);
+    const T alongPlus = hi - std::min(pu, qu), alongMinus = std::max(pu, qu) - lo;
+    if (alongPlus < best.exit) best = {u, alongPlus};
+    if (alongMinus < best.exit) best = {Vec3<T>(-u), alongMinus};
+  };
+  Vec3<T> u;
+  if (hint) consider(*hint);
+  const Vec3<T> e[3] = {tri.verts[1] - tri.verts[0], tri.verts[2] - tri.verts[1], tri.verts[0] - tri.verts[2]};
+  if (tryUnit(Vec3<T>(e[0].cross(e[1])), u)) consider(u);
+  const Vec3<T> s = q - p;
+  for (const Vec3<T>& edge : e)
+    if (tryUnit(Vec3<T>(s.cross(edge)), u)) consider(u);
+  return best;
+}
+
 template <class T> bool overlapSphereTriangle(const Vec3<T>& center, T radius, const Triangle<T>& tri) {
   const Vec3<T> c = closestPointOnTriangle(center, tri.verts[0], tri.verts[1], tri.verts[2]);
   return (c - center).squaredNorm() <= radius * radius;
@@ -166,6 +191,8 @@ template <class T> TrianglePairClosest<T> closestTriangleTriangle(const Triangle
 template SegmentPairClosest<float> closestSegmentPair(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&,
                                                     const Vec3<float>&);
 template SegmentTriangleClosest<float> closestSegmentTriangle(const Vec3<float>&, const Vec3<float>&, const Triangle<float>&);
+template SegmentTriangleExit<float> segmentTriangleExit(const Vec3<float>&, const Vec3<float>&, const Triangle<float>&,
+                                                         const Vec3<float>*);
 template bool overlapSphereTriangle(const Vec3<float>&, float, const Triangle<float>&);
 template bool overlapCapsuleTriangle(const Vec3<float>&, const Vec3<float>&, float, const Triangle<float>&);
 template bool overlapBoxTriangle(const Vec3<float>&, const Triangle<float>&);
@@ -175,6 +202,8 @@ template TrianglePairClosest<float> closestTriangleTriangle(const Triangle<float
 template SegmentPairClosest<double> closestSegmentPair(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&,
                                                     const Vec3<double>&);
 template SegmentTriangleClosest<double> closestSegmentTriangle(const Vec3<double>&, const Vec3<double>&, const Triangle<double>&);
+template SegmentTriangleExit<double> segmentTriangleExit(const Vec3<double>&, const Vec3<double>&, const Triangle<double>&,
+                                                          const Vec3<double>*);
 template bool overlapSphereTriangle(const Vec3<double>&, double, const Triangle<double>&);
 template bool overlapCapsuleTriangle(const Vec3<double>&, const Vec3<double>&, double, const Triangle<double>&);
 template bool overlapBoxTriangle(const Vec3<double>&, const Triangle<double>&);

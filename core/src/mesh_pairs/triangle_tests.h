@@ -25,6 +25,18 @@ SegmentPairClosest<T> closestSegmentPair(const Vec3<T>& p0, const Vec3<T>& q0, c
 // edge-edge pair on it).
 template <class T> SegmentTriangleClosest<T> closestSegmentTriangle(const Vec3<T>& p, const Vec3<T>& q, const Triangle<T>& tri);
 
+// Shortest translation of a segment [p, q] along which it leaves a triangle it touches or crosses: `exit` along the
+// unit `direction` (negative: already apart by -exit along it). The set segment - triangle is a polytope whose face
+// normals are the triangle normal n and s x e_i (segment x each edge), so the least exit over those axes, both signs,
+// is the exact minimum translation. `hint` (the closest-point direction of a disjoint pair, exact there but
+// ill-conditioned near contact) joins the candidates. A capsule of radius r leaves with depth r + exit.
+template <class T> struct SegmentTriangleExit {
+  Vec3<T> direction = Vec3<T>::UnitX();
+  T exit = T(0);
+};
+template <class T>
+SegmentTriangleExit<T> segmentTriangleExit(const Vec3<T>& p, const Vec3<T>& q, const Triangle<T>& tri, const Vec3<T>* hint);
+
 // Sphere (centre, radius) touches or intersects the triangle: |c - closest(c)|^2 <= r^2.
 template <class T> bool overlapSphereTriangle(const Vec3<T>& center, T radius, const Triangle<T>& tri);
 

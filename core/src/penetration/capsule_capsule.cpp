@@ -3,6 +3,7 @@
 #include "penetration/penetration.h"
 #include "overlap/closest_points.h"
 #include "gq/tolerances.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 namespace {
@@ -30,7 +31,7 @@ bool penetrationCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>&
   const T len = d.norm();
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;
-  direction = len > T(0) ? Vec3<T>(d / len) : crossingDirection(p0, p1);
+  if (!tryUnit(d, direction)) direction = crossingDirection(p0, p1);
   depth = pen;
   return true;
 }

@@ -1,6 +1,7 @@
 // Sphere/box MTD in the box frame: a centre outside pushes away from the clamped closest point by
 // r - distance; a centre inside (or on the surface) pushes out through the nearest face by r + face distance.
 #include "penetration/penetration.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 namespace {
@@ -24,7 +25,7 @@ bool penetrationSphereBox(const SphereGeometry<T>& g0, const Transform<T>& p0, c
   if (dist2 > T(0)) {
     const T len = std::sqrt(dist2);
     if (len > g0.radius) return false;
-    direction = p1.rotate(Vec3<T>(d / len));
+    direction = p1.rotate(unitOr(d, Vec3<T>(Vec3<T>::UnitX())));
     depth = g0.radius - len;
     return true;
   }

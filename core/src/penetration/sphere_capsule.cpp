@@ -2,6 +2,7 @@
 // perpendicular to it (every perpendicular gives the same depth r0 + r1).
 #include "penetration/penetration.h"
 #include "overlap/closest_points.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 
@@ -14,7 +15,7 @@ bool penetrationSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& p
   const T len = d.norm();
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;
-  direction = len > T(0) ? Vec3<T>(d / len) : anyPerpendicular(p1.rotate(Vec3<T>::UnitX()));
+  if (!tryUnit(d, direction)) direction = anyPerpendicular(p1.rotate(Vec3<T>::UnitX()));
   depth = pen;
   return true;
 }

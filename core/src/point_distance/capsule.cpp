@@ -1,6 +1,7 @@
 // Point vs capsule: the sphere answer around the closest point of the core segment (local X axis).
 #include "point_distance/point_distance.h"
 #include "shapes/segment.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 
@@ -18,7 +19,7 @@ void pointDistanceCapsule(const CapsuleGeometry<T>& g, const Transform<T>& pose,
     return;
   }
   out.distance = len - g.radius;
-  out.closestPoint = pose.transform(Vec3<T>(onAxis + m * (g.radius / len)));
+  out.closestPoint = pose.transform(Vec3<T>(onAxis + g.radius * unitOr(m, Vec3<T>(Vec3<T>::UnitY()))));
 }
 
 template void pointDistanceCapsule<float>(const CapsuleGeometry<float>&, const Transform<float>&, const Vec3<float>&, PointDistanceResult<float>&);

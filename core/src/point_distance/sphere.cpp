@@ -1,5 +1,6 @@
 // Point vs sphere: |p - c| - r, closest point c + r (p - c)/|p - c|; the point itself when inside.
 #include "point_distance/point_distance.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 
@@ -15,7 +16,7 @@ void pointDistanceSphere(const SphereGeometry<T>& g, const Transform<T>& pose, c
     return;
   }
   out.distance = len - g.radius;
-  out.closestPoint = pose.p + m * (g.radius / len);
+  out.closestPoint = pose.p + g.radius * unitOr(m, Vec3<T>(Vec3<T>::UnitX()));
 }
 
 template void pointDistanceSphere<float>(const SphereGeometry<float>&, const Transform<float>&, const Vec3<float>&, PointDistanceResult<float>&);

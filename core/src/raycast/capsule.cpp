@@ -7,6 +7,7 @@
 #include "shapes/ray_hit.h"
 #include "shapes/ray_sphere.h"
 #include "shapes/segment.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 namespace {
@@ -48,7 +49,7 @@ std::uint32_t raycastCapsule(const CapsuleGeometry<T>& g, const Transform<T>& po
   if (best == std::numeric_limits<T>::infinity() || best > ray.maxDist) return 0;
   const auto normal = [&] {
     const Vec3<T> p = o + best * d;
-    return pose.rotate(Vec3<T>((p - closestPointOnCapsuleAxis(hh, p)).normalized()));
+    return pose.rotate(unitOr(Vec3<T>(p - closestPointOnCapsuleAxis(hh, p)), Vec3<T>(-d)));
   };
   writeSurfaceHit(ray, best, kInvalidFaceIndex, normal, hits[0]);
   return 1;

@@ -2,6 +2,7 @@
 #include "raycast/raycast.h"
 #include "shapes/ray_hit.h"
 #include "shapes/ray_sphere.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 
@@ -15,7 +16,7 @@ std::uint32_t raycastSphere(const SphereGeometry<T>& g, const Transform<T>& pose
   }
   T t;
   if (!raySphereEntry(m, ray.dir, g.radius, t) || t > ray.maxDist) return 0;
-  const auto normal = [&] { return Vec3<T>((m + t * ray.dir).normalized()); };
+  const auto normal = [&] { return unitOr(Vec3<T>(m + t * ray.dir), Vec3<T>(-ray.dir)); };
   writeSurfaceHit(ray, t, kInvalidFaceIndex, normal, hits[0]);
   return 1;
 }

@@ -12,6 +12,7 @@
 #include "mesh/mesh_instance.h"
 #include "mesh/triangle.h"
 #include "raycast/raycast.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 namespace {
@@ -140,8 +141,7 @@ RaycastHit<T> makeHit(const TriangleMesh<T>& mesh, const Transform<T>& pose, con
     const Vec3<T>* v = &mesh.triangleVertices[3 * std::size_t(raw.cooked)];
     const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
     Vec3<T> n = pose.rotate(frame.toMesh(meshNormal));  // S^-1 = S^-T is also the normal transform
-    const T len = n.norm();
-    n = len > T(0) ? Vec3<T>(n / len) : Vec3<T>(-ray.dir);
+    n = unitOr(n, Vec3<T>(-ray.dir));
     if (doubleSided && !raw.tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
     hit.normal = n;
     flags |= HitFlag::Normal;

@@ -2,6 +2,7 @@
 // sweeps): the triangle is a support mapping (argmax of its three vertices), culling follows the raycast rules, and
 // the time of impact comes from conservative advancement (sweep/convex_convex.cpp).
 #include "sweep/sweep.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 
@@ -27,8 +28,7 @@ template <class T> ConvexShape<T> TriangleSupport<T>::shape() const {
 
 template <class T> Vec3<T> faceNormal(const Triangle<T>& tri) {
   const Vec3<T> n = (tri.verts[1] - tri.verts[0]).cross(tri.verts[2] - tri.verts[0]);
-  const T len = n.norm();
-  return len > T(0) ? Vec3<T>(n / len) : Vec3<T>::Zero();
+  return unitOr(n, Vec3<T>(Vec3<T>::Zero()));
 }
 
 template <class T>

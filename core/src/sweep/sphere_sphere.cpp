@@ -2,6 +2,7 @@
 // c1 at the smaller root of |m + t dir|^2 = R^2 (m = c0 - c1): t = -b - sqrt(b^2 - c) with b = m.dir, c = m.m - R^2,
 // evaluated as c / (-b + sqrt(b^2 - c)) to avoid cancellation. c <= 0 is an initial overlap of depth R - |m|.
 #include "sweep/sweep.h"
+#include "common/unit_vector.h"
 
 namespace gq::detail {
 
@@ -16,7 +17,7 @@ void sweepSphereSphere(const Geometry<T>& g0, const Transform<T>& p0, const Geom
   const T c = m.squaredNorm() - radius * radius;
   if (c <= T(0)) {
     const T len = m.norm();
-    const Vec3<T> n = len > T(0) ? Vec3<T>(m / len) : Vec3<T>(-q.dir);  // coincident centres: push back along -dir
+    const Vec3<T> n = unitOr(m, Vec3<T>(-q.dir));  // coincident centres: push back along -dir
     out.hit = true;
     out.initialOverlap = q.testInitialOverlap;
     out.normal = n;
