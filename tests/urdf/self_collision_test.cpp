@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "../../plugins/urdf/src/pair_order.h"
 #include "robot_paths.h"
@@ -191,6 +192,74 @@ TYPED_TEST(SelfCollision, PairOrderIsByDecreasingContactCountAndStableOnTies) {
                                     return Status::invalid("refused");
                                   });
   EXPECT_EQ(pairs, given);
+  call = 0;  // no samples: no check, the given order
+  detail::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
+                                  [&](const std::vector<T>&, CollisionResult& r) {
+                                    ++call;
+                                    r.pairs = {{3, 5}};
+                                    return Status();
+                                  }, 0);
+  EXPECT_EQ(call, 0u);
+  EXPECT_EQ(pairs, given);
+}
+
+// selfDistance is the minimum signed distance over every shape pair the allowed-collision matrix leaves: the deepest
+// penetration in colliding configurations (each pair evaluated here with gq::distance on forwardKinematics poses).
+TYPED_TEST(SelfCollision, SelfDistanceIsTheDeepestOverAllCheckedShapePairs) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kPanda, Representation::Hull);
+  SelfCollisionChecker<T> checker(m);
+  std::uint64_t rng = 7;
+  int colliding = 0;
+  for (int i = 0; i < 200; ++i) {
+    const std::vector<T> q = randomConfiguration(*m, rng);
+    std::vector<Transform<T>> links;
+    ASSERT_TRUE(forwardKinematics(*m, q, links).ok());
+    T deepest = std::numeric_limits<T>::infinity();
+    for (std::uint32_t a = 0; a < m->links.size(); ++a)
+      for (std::uint32_t b = a + 1; b < m->links.size(); ++b) {
+        if (m->isAllowed(a, b)) continue;
+        for (std::uint32_t sa : m->links[a].shapes)
+          for (std::uint32_t sb : m->links[b].shapes) {
+            DistanceResult<T> d;
+            ASSERT_TRUE(distance(d, m->shapes[sa].geometry, links[a] * m->shapes[sa].origin, m->shapes[sb].geometry,
+                                 links[b] * m->shapes[sb].origin).ok());
+            deepest = std::min(deepest, d.distance);
+          }
+      }
+    SelfDistanceResult<T> r;
+    ASSERT_TRUE(checker.selfDistance(q, r).ok());
+    EXPECT_NEAR(r.distance, deepest, T(1e-4)) << "configuration " << i;
+    colliding += deepest < T(0);
+  }
+  EXPECT_GT(colliding, 10);
+}
+
+// CheckerOptions::orderingSamples changes only the order pairs are tried in: every colliding pair and the minimum
+// distance stay the same, also with no ordering at all.
+TYPED_TEST(SelfCollision, OrderingSamplesChangeNoAnswer) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kPanda, Representation::Hull);
+  SelfCollisionChecker<T> ordered(m);
+  CheckerOptions none;
+  none.orderingSamples = 0;
+  SelfCollisionChecker<T> unordered(m, none);
+  std::uint64_t rng = 7;
+  int colliding = 0;
+  for (int i = 0; i < 200; ++i) {
+    const std::vector<T> q = randomConfiguration(*m, rng);
+    CollisionResult a, b;
+    ASSERT_TRUE(ordered.checkSelfCollision(q, a).ok());
+    ASSERT_TRUE(unordered.checkSelfCollision(q, b).ok());
+    EXPECT_EQ(a.colliding, b.colliding);
+    EXPECT_EQ(a.pairs, b.pairs);
+    colliding += a.colliding;
+    SelfDistanceResult<T> da, db;
+    ASSERT_TRUE(ordered.selfDistance(q, da).ok());
+    ASSERT_TRUE(unordered.selfDistance(q, db).ok());
+    EXPECT_EQ(da.distance, db.distance);
+  }
+  EXPECT_GT(colliding, 0);  // the sample has colliding configurations
 }
 
 TYPED_TEST(SelfCollision, InvalidConfigurationReturnsInvalidArgumentAndKeepsTheResult) {

@@ -46,9 +46,16 @@ template <class T> struct OrientedBox {
   Vec3<T> halfExtents = Vec3<T>::Zero();
 };
 
+struct CheckerOptions {
+  // At construction the checked link pairs are ordered by how often they touch over this many seeded random
+  // configurations, so checks that stop at their first colliding pair end sooner (pair_order.h). 0 keeps the
+  // model's order and makes construction cheaper (hosts that build a checker per short-lived model).
+  std::uint32_t orderingSamples = 256;
+};
+
 template <class T> class SelfCollisionChecker {
  public:
-  explicit SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model);
+  explicit SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model, const CheckerOptions& options = CheckerOptions());
 
   const RobotModel<T>& model() const { return *model_; }
 
@@ -95,7 +102,7 @@ template <class T> class SelfCollisionChecker {
     bool linkCapsules = false;  // a link has a capsule: test link capsules after the link spheres
   };
 
-  void orderPairsByContactFrequency();
+  void orderPairsByContactFrequency(std::uint32_t samples);
   Status placeBodies(const std::vector<T>& q);
   void placeLinkSpheres();
   void placeShapeSpheres();
