@@ -30,10 +30,6 @@ constexpr double kFclWrongDistance = 1e-6;   // FCL's distance counts as wrong b
 
 using Pair = std::pair<Kind, Kind>;
 
-std::string pairName(const ::testing::TestParamInfo<Pair>& info) {
-  return std::string(name(info.param.first)) + "_" + name(info.param.second);
-}
-
 std::uint32_t seedOf(const Pair& p) { return 1000u * std::uint32_t(p.first) + std::uint32_t(p.second) + 7u; }
 
 double gqSignedDistance(const TestShape& a, const ::fcl::Transform3d& pa, const TestShape& b, const ::fcl::Transform3d& pb) {
@@ -255,9 +251,9 @@ INSTANTIATE_TEST_SUITE_P(ExactDepthPairs, FclContacts,
                          ::testing::Values(Pair{Kind::Sphere, Kind::Sphere}, Pair{Kind::Sphere, Kind::Capsule},
                                            Pair{Kind::Capsule, Kind::Capsule}, Pair{Kind::Box, Kind::Box},
                                            Pair{Kind::Box, Kind::Convex}, Pair{Kind::Convex, Kind::Convex}),
-                         pairName);
+                         PairName());
 
-INSTANTIATE_TEST_SUITE_P(AllPairs, FclEquivalence, ::testing::ValuesIn(allPairs()), pairName);
+INSTANTIATE_TEST_SUITE_P(AllPairs, FclEquivalence, ::testing::ValuesIn(allPairs()), PairName());
 
 }  // namespace
 }  // namespace gq::fcltest

@@ -16,6 +16,12 @@ std::vector<Kind> allKinds();
 bool isPlaneLike(Kind k);
 // Every unordered pair of kinds, except pairs of two plane-like kinds (Halfspace, Plane).
 std::vector<std::pair<Kind, Kind>> allPairs();
+// Name generator of INSTANTIATE_TEST_SUITE_P over allPairs(): "Sphere_Box".
+struct PairName {
+  template <class ParamInfo> std::string operator()(const ParamInfo& info) const {
+    return std::string(name(info.param.first)) + "_" + name(info.param.second);
+  }
+};
 
 // A geometry with the data the exact references need (polytope vertices/faces, sizes).
 struct TestShape {

@@ -114,10 +114,6 @@ TestShape roundedToFloat(const TestShape& s) {
   return d;
 }
 
-std::string pairName(const ::testing::TestParamInfo<Pair>& info) {
-  return std::string(name(info.param.first)) + "_" + name(info.param.second);
-}
-
 // FCL 0.7's float tables, with the pairs it crashes on left out (as in the double test: libccd's MPR/GJK on a
 // Plane or Halfspace, Convex-Plane collide).
 template <class Table> bool fclHas(const Table& table, const ::fcl::CollisionGeometryf& a, const ::fcl::CollisionGeometryf& b) {
@@ -216,7 +212,7 @@ TEST_P(FclFloatEquivalence, FloatCollideAndDistanceMatchTheExactAnswerAndFcl) {
   EXPECT_LT(colliding, kPoses) << "the pose range must produce separations";
 }
 
-INSTANTIATE_TEST_SUITE_P(AllPairs, FclFloatEquivalence, ::testing::ValuesIn(allPairs()), pairName);
+INSTANTIATE_TEST_SUITE_P(AllPairs, FclFloatEquivalence, ::testing::ValuesIn(allPairs()), PairName());
 
 }  // namespace
 }  // namespace gq::fcltest
