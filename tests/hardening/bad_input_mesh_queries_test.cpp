@@ -199,5 +199,47 @@ TYPED_TEST(BadInputMeshQueries, TriangleContactsRejectBadDistancesAndDegenerateO
   EXPECT_TRUE(hasContacts);
 }
 
+// A raw triangle is a pair query's second geometry: vertices more than 1e9 (float) / 1e75 (double) from the shape's
+// pose are InvalidArgument, as pair offsets are (fuzz_mesh_queries: a float triangle reaching z = +-4e28 gave four
+// contacts at -inf, Ok). The same holds for sweepTriangles; sizes beyond the bound are rejected by both.
+TYPED_TEST(BadInputMeshQueries, RawTrianglesBeyondThePairMagnitudeAreInvalidArgument) {
+  using T = TypeParam;
+  const T far = std::is_same_v<T, float> ? T(4.0886929e28) : T(1e76);
+  Triangle<T> tri;
+  tri.verts[0] = Vec3<T>(T(-5.0625), T(-5.0625), -far);
+  tri.verts[1] = Vec3<T>(T(0.5), T(0.5), T(0.5));
+  tri.verts[2] = Vec3<T>(T(-5.0625), T(-5.0625), far);
+  const Transform<T> pose(Vec3<T>(T(3.1875), T(-1.125), T(1.39797e+10)),
+                          Quat<T>(T(-0.767184), T(0.422382), T(0.482723), T(0)).normalized());
+  ContactBuffer<T> contacts;
+  contacts.count = 4242;
+  bool hasContacts = true;
+  const Geometry<T> box = BoxGeometry<T>(T(1), T(1), T(1));
+  const Status s = generateTriangleContacts(box, pose, tri, 0u, T(0.5), T(0.5), T(0.5), contacts, hasContacts);
+  EXPECT_EQ(s.code, StatusCode::InvalidArgument) << s.toString();
+  EXPECT_NE(s.message.find("too far"), std::string::npos) << s.message;
+  EXPECT_EQ(contacts.count, 4242u);
+  EXPECT_TRUE(hasContacts);
+  SweepHit<T> hit = sentinelSweepHit<T>();
+  bool hasHit = true;
+  EXPECT_EQ(sweepTriangles<T>(Vec3<T>::UnitZ(), T(1), Geometry<T>(SphereGeometry<T>(T(1))), pose, &tri, 1u, hit, hasHit).code,
+            StatusCode::InvalidArgument);
+  EXPECT_TRUE(hasHit && sameBits(hit, sentinelSweepHit<T>()));
+  const Geometry<T> hugeBox = BoxGeometry<T>(far, T(1), T(1));
+  EXPECT_EQ(generateTriangleContacts(hugeBox, Transform<T>(), unitTriangle<T>(), 0u, T(0.5), T(0.5), T(0.5), contacts,
+                                     hasContacts).code, StatusCode::InvalidArgument);
+  // At the bound: accepted, finite contacts.
+  const T bound = std::is_same_v<T, float> ? T(1e9) : T(1e75);
+  Triangle<T> wide;
+  wide.verts[0] = Vec3<T>(-bound, -bound, T(0));
+  wide.verts[1] = Vec3<T>(bound, -bound, T(0));
+  wide.verts[2] = Vec3<T>(T(0), bound, T(0));
+  ASSERT_TRUE(generateTriangleContacts(box, Transform<T>(Vec3<T>(T(0), T(0), T(0.9))), wide, 0u, T(0.5), T(0.5), T(0.5),
+                                       contacts, hasContacts).ok());
+  for (std::uint32_t i = 0; hasContacts && i < contacts.count; ++i)
+    EXPECT_TRUE(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&
+                std::isfinite(contacts.contacts[i].separation));
+}
+
 }  // namespace
 }  // namespace gq::hardening

@@ -8,6 +8,7 @@
 
 #include "gq/custom.h"
 #include "gq/geometry.h"
+#include "gq/mesh_query.h"
 #include "gq/status.h"
 #include "gq/tolerances.h"
 #include "gq/transform.h"
@@ -109,6 +110,17 @@ Status checkPairInputs(const Geometry<T>& g0, const Transform<T>& p0, const Geom
   if (Status s = checkPose(p1, "pose1"); !s.ok()) return s;
   return Status::invalid(std::string("pose1 is too far from pose0: a pair query takes offsets up to ") +
                          kMaxMagnitudeText);
+}
+
+// A raw triangle given with a shape (generateTriangleContacts, sweepTriangles) is the second geometry of a pair
+// query: finite vertices within kMaxMagnitude of the shape's pose. nullptr when valid.
+template <class T> const char* rawTriangleProblem(const Triangle<T>& tri, const Transform<T>& pose) {
+  for (const Vec3<T>& v : tri.verts) {
+    if (!isFinite(v)) return "has a non-finite vertex";
+    if (!((v - pose.p).array().abs() <= kMaxMagnitude<T>).all())
+      return "has a vertex too far from the pose (offsets up to 1e9 in float, 1e75 in double)";
+  }
+  return nullptr;
 }
 
 // Runs `body` (returning Status) and turns any escaping exception into InternalError: nothing throws out.

@@ -123,13 +123,15 @@ template <class T> std::vector<Candidate<T>> reduceContacts(std::vector<Candidat
 template <class T>
 Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& tri, T contactDistance,
                         T meshContactMargin, T toleranceLength) {
-  if (Status s = detail::checkGeometryAndPose(geom, pose, "pose"); !s.ok()) return s;
+  // Shape and triangle are a pair query's two geometries: sizes and offsets within kMaxMagnitude (a float triangle
+  // 4e28 from the shape gave contact positions of -inf: fuzz_mesh_queries).
+  if (const detail::Problem p = detail::pairGeometryProblem(geom)) return p.status();
+  if (Status s = detail::checkPose(pose, "pose"); !s.ok()) return s;
   const GeometryType t = geom.type();
   if (t != GeometryType::Capsule && t != GeometryType::Box && t != GeometryType::ConvexMesh)
     return Status::unsupported(std::string("generateTriangleContacts with a ") + toString(t) +
                                " (capsule, box or convex mesh only)");
-  for (const Vec3<T>& v : tri.verts)
-    if (!isFinite(v)) return Status::invalid("triangle vertex is not finite");
+  if (const char* problem = detail::rawTriangleProblem(tri, pose)) return Status::invalid(std::string("the triangle ") + problem);
   if (!(std::isfinite(contactDistance) && contactDistance >= T(0))) return Status::invalid("contactDistance must be finite and >= 0");
   if (!(std::isfinite(meshContactMargin) && meshContactMargin >= T(0))) return Status::invalid("meshContactMargin must be finite and >= 0");
   if (!(std::isfinite(toleranceLength) && toleranceLength > T(0))) return Status::invalid("toleranceLength must be finite and > 0");

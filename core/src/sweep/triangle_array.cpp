@@ -29,15 +29,16 @@ Status validateTriangleSweep(const Vec3<T>& dir, T maxDist, const Geometry<T>& g
   if (!std::isfinite(inflation) || inflation < T(0)) return Status::invalid("inflation must be finite and >= 0");
   if (flags.has(HitFlag::MeshMultiple)) return Status::invalid("meshMultiple is not supported by sweepTriangles (one hit)");
   if (flags.has(HitFlag::Mtd)) return Status::invalid("mtd is not supported by sweepTriangles");
-  if (Status s = detail::checkGeometryAndPose(geom, pose, "pose"); !s.ok()) return s;
+  if (const detail::Problem p = detail::pairGeometryProblem(geom)) return p.status();  // a pair query's sizes
+  if (Status s = detail::checkPose(pose, "pose"); !s.ok()) return s;
   const GeometryType t = geom.type();
   if (t != GeometryType::Sphere && t != GeometryType::Capsule && t != GeometryType::Box)
     return Status::unsupported(std::string("sweepTriangles with a ") + toString(t) +
                                " (the swept geometry must be a sphere, capsule or box)");
   if (count > 0 && triangles == nullptr) return Status::invalid("triangles is null with a non-zero count");
   for (std::uint32_t i = 0; i < count; ++i)
-    for (const Vec3<T>& v : triangles[i].verts)
-      if (!isFinite(v)) return Status::invalid("triangle " + std::to_string(i) + " has a non-finite vertex");
+    if (const char* problem = detail::rawTriangleProblem(triangles[i], pose))
+      return Status::invalid("triangle " + std::to_string(i) + " " + problem);
   if (cachedIndex && *cachedIndex >= count)
     return Status::invalid("cachedIndex " + std::to_string(*cachedIndex) + " is out of range");
   return {};
