@@ -31,6 +31,17 @@ FloatPair knownFloatPair(const std::string& name) {
   return pair;
 }
 
+// The pair penetrates with a unit push direction, and its distance normal is unit too.
+void expectUnitPushAndDistanceNormal(const FloatPair& f) {
+  gq::PenetrationResult<float> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  ASSERT_TRUE(pen.penetrating);
+  EXPECT_NEAR(pen.direction.norm(), 1.0f, 1e-5f);
+  gq::DistanceResult<float> d;
+  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_NEAR(d.normal.norm(), 1.0f, 1e-5f);
+}
+
 // Float convex hull against a triangle mesh with a tiny triangle: its normal's squared norm underflowed, the push
 // direction came out with length 0.97.
 TEST(FuzzPairFindings, PenetrationAgainstATinyTriangleGivesAUnitDirection) {
@@ -49,13 +60,7 @@ TEST(FuzzPairFindings, SpheresWithASubnormalSquaredOffsetGetUnitNormals) {
   const FloatPair f = knownFloatPair("fuzz_pair_queries_float_sphere_subnormal_offset_normal.bin");
   ASSERT_EQ(f.g0.type(), gq::GeometryType::Sphere);
   ASSERT_EQ(f.g1.type(), gq::GeometryType::Sphere);
-  gq::PenetrationResult<float> pen;
-  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
-  ASSERT_TRUE(pen.penetrating);
-  EXPECT_NEAR(pen.direction.norm(), 1.0f, 1e-5f);
-  gq::DistanceResult<float> d;
-  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
-  EXPECT_NEAR(d.normal.norm(), 1.0f, 1e-5f);
+  expectUnitPushAndDistanceNormal(f);
 }
 
 // Float sphere centre ~1e-22 off a capsule's axis: the offset's square is subnormal, and the push direction came out
@@ -64,13 +69,7 @@ TEST(FuzzPairFindings, SphereNextToACapsuleAxisGetsAUnitPushDirection) {
   const FloatPair f = knownFloatPair("fuzz_pair_queries_float_capsule_sphere_on_axis_direction.bin");
   ASSERT_EQ(f.g0.type(), gq::GeometryType::Capsule);
   ASSERT_EQ(f.g1.type(), gq::GeometryType::Sphere);
-  gq::PenetrationResult<float> pen;
-  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
-  ASSERT_TRUE(pen.penetrating);
-  EXPECT_NEAR(pen.direction.norm(), 1.0f, 1e-5f);
-  gq::DistanceResult<float> d;
-  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
-  EXPECT_NEAR(d.normal.norm(), 1.0f, 1e-5f);
+  expectUnitPushAndDistanceNormal(f);
 }
 
 }  // namespace
