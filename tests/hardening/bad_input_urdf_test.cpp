@@ -53,7 +53,10 @@ TYPED_TEST(BadInputUrdf, JointGraphWithACycleIsParseErrorNamingALinkOnIt) {
   const std::string loop = "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>"
                            "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
                            "<joint name=\"k\" type=\"fixed\"><parent link=\"b\"/><child link=\"a\"/></joint></robot>";
-  for (const std::string& xml : {selfLoop, loop}) {
+  // `<"b"/>` is an error to tinyxml2 but not to TinyXML 1, urdfdom's parser (fuzz_urdf, session 5).
+  std::string damaged = selfLoop;
+  damaged.insert(damaged.rfind("</joint>"), "<\"b\"/>");
+  for (const std::string& xml : {selfLoop, loop, damaged}) {
     RobotModel<TypeParam> m;
     const Status s = urdf::loadRobotFromStrings(xml, "", "/tmp", quickOptions(), m);
     EXPECT_EQ(s.code, StatusCode::ParseError) << s.toString();

@@ -2,7 +2,7 @@
 // opened), SRDF pairs and group states, then the allowed-collision matrix. urdfdom reports parse errors through
 // console_bridge; they are captured into the returned Status instead of being printed.
 #include <console_bridge/console.h>
-#include <tinyxml2.h>
+#include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
@@ -45,15 +45,18 @@ Status readFile(const std::string& path, const char* what, std::string& out) {
 // A link on a cycle of joints (parent -> child edges), or "" for a forest. urdfdom puts each child link into its
 // parent's child list by shared pointer, so a cyclic joint graph (e.g. a joint whose parent is its child) is never
 // freed when urdfdom then rejects the model (found by fuzz_urdf under LeakSanitizer): such input is refused first.
+// The document is read with TinyXML 1, urdfdom's own parser, as urdfdom reads it (up to the first NUL): TinyXML 1
+// accepts damaged XML that tinyxml2 rejects, so a stricter parser here let a cycle through (fuzz_urdf, session 5).
 // Kahn's algorithm: links left with a parent after peeling off every root are on or below a cycle.
 std::string linkOnJointCycle(const std::string& xml) {
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) return {};  // urdfdom reports syntax errors
-  const tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
+  TiXmlDocument doc;
+  doc.Parse(xml.c_str());
+  if (doc.Error()) return {};  // urdfdom fails on the same error before building any link
+  const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) return {};
   std::multimap<std::string, std::string> children;  // parent -> child
   std::map<std::string, int> parents;                 // link -> number of parent joints
-  for (const auto* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+  for (const TiXmlElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
     const auto* p = j->FirstChildElement("parent");
     const auto* c = j->FirstChildElement("child");
     const char* parent = p ? p->Attribute("link") : nullptr;
