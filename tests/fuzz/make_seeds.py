@@ -91,9 +91,9 @@ def urdf_seeds():
     seeds = [
         (1, robot('<sphere radius="0.5"/>'), None),
         (1, robot('<cylinder radius="0.3" length="1"/>', "continuous"), srdf),
-        (0, robot('<mesh filename="cube.obj" scale="1 2 -1"/>'), None),
-        (1, robot('<mesh filename="package://cube.obj"/>', "fixed"), None),
-        (6, robot('<mesh filename="cube.obj"/>', "revolute", mimic), srdf),
+        (0, robot('<mesh filename="cube.stl" scale="1 2 -1"/>'), None),
+        (1, robot('<mesh filename="package://cube.stl"/>', "fixed"), None),
+        (6, robot('<mesh filename="cube.stl"/>', "revolute", mimic), srdf),
         (2, robot('<box size="0.2 0.3 0.4"/>', "prismatic"), srdf),
         (3, robot('<sphere radius="nan"/>'), None),
         (4, robot('<box size="1 0 1"/>'), "<robot><disable_collisions link1=\"a\"/></robot>"),
