@@ -106,6 +106,36 @@ TEST(FclConventions, SignedDistanceIsMinusThePenetrationDepth) {
   EXPECT_NEAR(gq::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), request, result), -0.3, 1e-12);
 }
 
+// Without enable_signed_distance FCL answers a penetrating GJK pair with -1 and nearest points at the origin (its
+// GJK path stops at the overlap); gq::fcl does the same instead of running EPA. A cylinder (radius 1, length 2)
+// 0.25 into a box face: the exact depth is 0.25 (signed request).
+TEST(FclConventions, WithoutSignedDistanceAPenetratingGjkPairIsMinusOneAsFcl) {
+  ::fcl::Cylinderd cylinder(1, 2);
+  ::fcl::Boxd box(2, 2, 2);
+  ::fcl::DistanceRequestd unsignedRequest(true);
+  ::fcl::DistanceResultd gqResult, fclResult;
+  EXPECT_EQ(gq::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 1.75), unsignedRequest, gqResult), -1.0);
+  ::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 1.75), unsignedRequest, fclResult);
+  EXPECT_EQ(fclResult.min_distance, -1.0);
+  for (int i : {0, 1}) {
+    EXPECT_EQ(gqResult.nearest_points[i], fclResult.nearest_points[i]);
+    EXPECT_EQ(gqResult.nearest_points[i], Vector3d::Zero());
+  }
+  ::fcl::DistanceRequestd signedRequest(true);
+  signedRequest.enable_signed_distance = true;
+  ::fcl::DistanceResultd withDepth;
+  EXPECT_NEAR(gq::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 1.75), signedRequest, withDepth), -0.25, 1e-6);
+  ::fcl::DistanceResultd apart;  // separated: the distance, signed request or not
+  EXPECT_NEAR(gq::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 2.5), unsignedRequest, apart), 0.5, 1e-6);
+}
+
+// Closed-form pairs give their exact signed distance without the request: it costs them nothing more.
+TEST(FclConventions, WithoutSignedDistanceClosedFormPairsStillGiveTheDepth) {
+  ::fcl::Sphered a(1), b(1);
+  ::fcl::DistanceResultd result;
+  EXPECT_NEAR(gq::fcl::distance(&a, at(0, 0, 0), &b, at(1.5, 0, 0), ::fcl::DistanceRequestd(true), result), -0.5, 1e-12);
+}
+
 TEST(FclConventions, MeshContactsCarryTriangleIdsOnTheMeshSide) {
   auto mesh = twoTriangles();
   ::fcl::Sphered sphere(0.5);

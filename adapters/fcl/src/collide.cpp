@@ -52,7 +52,7 @@ detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& 
     return answer;
   }
   DistanceResult<S> d;
-  const detail::Answer answer = detail::solidDistance(a, b, true, d);
+  const detail::Answer answer = detail::solidDistance(a, b, detail::DistanceAsk{true, true}, d);
   added = answer == detail::Answer::Done && d.distance <= S(0);
   if (added)
     result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive,

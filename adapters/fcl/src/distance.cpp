@@ -1,9 +1,11 @@
 // gq::fcl::distance: FCL's distance semantics answered by gq (see gq/fcl/collision.h).
 //  - DistanceResult::update keeps the smaller distance (pre-seeded results stay when the pair is farther);
 //  - a result already at min_distance <= 0 is satisfied: nothing is computed (as FCL's isSatisfied);
-//  - shapes: signed distance whether or not enable_signed_distance is set (FCL leaves the penetrating value
-//    "implementation defined", mostly -1); nearest points (world frame) are written when enable_nearest_points is
-//    set, and always for BVHModel and plane pairs;
+//  - shapes: the signed distance with enable_signed_distance. Without it (FCL: the penetrating value is
+//    "implementation defined", mostly -1) closed-form pairs (sphere, capsule, box among themselves and against a
+//    plane or half-space) still give the exact signed distance, which costs them nothing more, and GJK pairs answer
+//    FCL's -1 with nearest points at the origin when they overlap (no EPA); nearest points (world frame) are written
+//    when enable_nearest_points is set, and always for BVHModel and plane pairs;
 //  - BVHModel sides are thin surfaces: 0 when touching or crossing; with enable_signed_distance the deepest
 //    triangle contact's depth is reported negated, with both nearest points at its position (FCL's workaround).
 #include <algorithm>
@@ -43,7 +45,8 @@ S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1, cons
                 const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
   DistanceResult<S> d;
   const bool withPoints = request.enable_nearest_points;
-  switch (detail::solidDistance(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, withPoints, d)) {
+  const detail::DistanceAsk ask{withPoints, request.enable_signed_distance};
+  switch (detail::solidDistance(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, ask, d)) {
     case detail::Answer::Done: break;
     case detail::Answer::Invalid: return std::numeric_limits<S>::max();
     case detail::Answer::Unanswered:

@@ -15,6 +15,7 @@
 
 #include "custom/callback_queries.h"
 #include "distance/distance.h"
+#include "gjk/gjk.h"
 #include "overlap/overlap.h"
 
 namespace gq::fcl::detail {
@@ -118,12 +119,12 @@ template <class S> Answer sphereSphereOverlap(const Solid<S>& a, const Solid<S>&
   return Answer::Done;
 }
 
-template <class S> Answer sphereSphereDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+template <class S> Answer sphereSphereDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   S ra, rb;
   if (!readSphere(a, ra) || !readSphere(b, rb)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
   k::ballsDistance<S>(Vec3<S>::Zero(), ra, b.tf->translation() - origin, rb, Vec3<S>::UnitX(), out);
-  shiftPoints(origin, withPoints, out);
+  shiftPoints(origin, ask.points, out);
   return Answer::Done;
 }
 
@@ -135,13 +136,13 @@ template <class S> Answer sphereCapsuleOverlap(const Solid<S>& a, const Solid<S>
   return Answer::Done;
 }
 
-template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   S ra;
   k::CapsuleAxis<S> cb;
   const Vec3<S> origin = a.tf->translation();
   if (!readSphere(a, ra) || !readCapsule(b, origin, cb)) return Answer::Invalid;
   k::distanceSphereCapsule<S>(Vec3<S>::Zero(), ra, cb, out);
-  shiftPoints(origin, withPoints, out);
+  shiftPoints(origin, ask.points, out);
   return Answer::Done;
 }
 
@@ -153,13 +154,13 @@ template <class S> Answer sphereBoxOverlap(const Solid<S>& a, const Solid<S>& b,
   return Answer::Done;
 }
 
-template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   S ra;
   Vec3<S> hb;
   if (!readSphere(a, ra) || !readBox(b, hb)) return Answer::Invalid;
   DistanceResult<S> local;
   k::distanceSphereBox<S>(inFrame(*b.tf, Vec3<S>(a.tf->translation())), ra, hb, local);
-  frameToWorld(*b.tf, withPoints, local, out);
+  frameToWorld(*b.tf, ask.points, local, out);
   return Answer::Done;
 }
 
@@ -173,12 +174,12 @@ template <class S> Answer capsuleCapsuleOverlap(const Solid<S>& a, const Solid<S
 }
 
 template <class S>
-Answer capsuleCapsuleDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+Answer capsuleCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   k::CapsuleAxis<S> ca, cb;
   const Vec3<S> origin = a.tf->translation();
   if (!readCapsule(a, origin, ca) || !readCapsule(b, origin, cb)) return Answer::Invalid;
   k::distanceCapsuleCapsule<S>(ca, cb, out);
-  shiftPoints(origin, withPoints, out);
+  shiftPoints(origin, ask.points, out);
   return Answer::Done;
 }
 
@@ -201,13 +202,13 @@ template <class S> Answer capsuleBoxOverlap(const Solid<S>& a, const Solid<S>& b
   return Answer::Done;
 }
 
-template <class S> Answer capsuleBoxDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+template <class S> Answer capsuleBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   k::CapsuleAxis<S> c;
   Vec3<S> d, h;
   if (capsuleInBox(a, b, c, d, h) != Answer::Done) return Answer::Invalid;
   DistanceResult<S> local;
   k::distanceCapsuleBox<S>(c.centre, d, c.radius, h, local);
-  frameToWorld(*b.tf, withPoints, local, out);
+  frameToWorld(*b.tf, ask.points, local, out);
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
 }
 
@@ -229,7 +230,7 @@ template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bo
 
 // In box a's frame: overlapping boxes by the SAT (core's distanceBoxBoxOverlapping); separated ones by GJK (core
 // has no closed form for them).
-template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> ha, hb, t;
   Mat3<S> r;
   if (boxInBox(a, b, ha, hb, r, t) != Answer::Done) return Answer::Invalid;
@@ -240,7 +241,7 @@ template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, b
     const Transform<S> pb(t, Quat<S>(r));
     if (!k::distanceGjk(ga, Transform<S>(), gb, pb, static_cast<GjkCache<S>*>(nullptr), local).ok()) return Answer::Unanswered;
   }
-  frameToWorld(*a.tf, withPoints, local, out);
+  frameToWorld(*a.tf, ask.points, local, out);
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
 }
 
@@ -305,9 +306,27 @@ Answer overlapGq(const Geometry<S>& a, const Geometry<S>& b, const Transform<S>&
   return Answer::Done;
 }
 
+// FCL's distance without enable_signed_distance on a GJK pair: GJK alone. Separated (or only the margins overlap):
+// the exact signed distance. Overlapping cores: FCL's answer, -1 with both nearest points at the origin (its GJK
+// path writes those); the depth would need EPA, which the request did not ask for.
+// A GJK stop above tolerance still writes its best answer (as core's distanceGjk, which reports it as a warning).
+template <class S> void distanceWithoutDepth(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S>& b,
+                                             const Transform<S>& pb, DistanceResult<S>& out) {
+  const k::GjkResult<S> g = k::gjkDistance(k::makeConvexShape(a, pa), k::makeConvexShape(b, pb));
+  if (g.coresOverlap) {
+    out.distance = S(-1);
+    out.normal = out.point0 = out.point1 = Vec3<S>::Zero();
+    return;
+  }
+  out.distance = g.distance;
+  out.normal = g.normal;
+  out.point0 = g.point0;
+  out.point1 = g.point1;
+}
+
 template <class S, GT A, GT B>
 Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S>& b, const Transform<S>& pb,
-                  DistanceResult<S>& out) {
+                  bool depth, DistanceResult<S>& out) {
   if constexpr (A == GT::Plane && B == GT::Plane) {
     return Answer::Unanswered;
   } else if constexpr (A == GT::Sphere && B == GT::Plane) {
@@ -318,6 +337,8 @@ Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S
     k::distancePlaneBox(as<A>(a), pa, as<B>(b), pb, out);
   } else if constexpr (A == GT::Plane) {  // convex mesh or custom: through its support mapping
     k::distancePlaneConvex(as<A>(a), pa, b, pb, out);
+  } else if (!depth) {
+    distanceWithoutDepth(a, pa, b, pb, out);
   } else {
     if (!k::distanceGjk(a, pa, b, pb, static_cast<GjkCache<S>*>(nullptr), out).ok()) return Answer::Unanswered;
   }
@@ -333,12 +354,12 @@ template <class S, FS A, FS B> Answer convertedOverlap(const Solid<S>& a, const 
 }
 
 template <class S, FS A, FS B>
-Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, bool, DistanceResult<S>& out) {
+Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
   Transform<S> pa, pb;
   const Answer r = convertBoth(a, b, ca, cb, pa, pb);
   if (r != Answer::Done) return r;
-  return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, out);
+  return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, ask.depth, out);
 }
 
 // ---- the table ----
@@ -355,31 +376,31 @@ template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Soli
 }
 
 template <class S, FS A, FS B>
-Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
+Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   if constexpr (gqType(A) > gqType(B)) {
-    const Answer r = distanceEntry<S, B, A>(b, a, withPoints, out);
+    const Answer r = distanceEntry<S, B, A>(b, a, ask, out);
     if (r == Answer::Done) flip(out);
     return r;
   } else if constexpr (A == FS::Sphere && B == FS::Sphere) {
-    return sphereSphereDistance(a, b, withPoints, out);
+    return sphereSphereDistance(a, b, ask, out);
   } else if constexpr (A == FS::Sphere && B == FS::Capsule) {
-    return sphereCapsuleDistance(a, b, withPoints, out);
+    return sphereCapsuleDistance(a, b, ask, out);
   } else if constexpr (A == FS::Sphere && B == FS::Box) {
-    return sphereBoxDistance(a, b, withPoints, out);
+    return sphereBoxDistance(a, b, ask, out);
   } else if constexpr (A == FS::Capsule && B == FS::Capsule) {
-    return capsuleCapsuleDistance(a, b, withPoints, out);
+    return capsuleCapsuleDistance(a, b, ask, out);
   } else if constexpr (A == FS::Capsule && B == FS::Box) {
-    return capsuleBoxDistance(a, b, withPoints, out);
+    return capsuleBoxDistance(a, b, ask, out);
   } else if constexpr (A == FS::Box && B == FS::Box) {
-    return boxBoxDistance(a, b, withPoints, out);
+    return boxBoxDistance(a, b, ask, out);
   } else {
-    return convertedDistance<S, A, B>(a, b, withPoints, out);
+    return convertedDistance<S, A, B>(a, b, ask, out);
   }
 }
 
 template <class S> struct PairEntry {
   Answer (*overlap)(const Solid<S>&, const Solid<S>&, bool&);
-  Answer (*distance)(const Solid<S>&, const Solid<S>&, bool, DistanceResult<S>&);
+  Answer (*distance)(const Solid<S>&, const Solid<S>&, DistanceAsk, DistanceResult<S>&);
 };
 
 constexpr std::size_t kSolids = std::size_t(FS::Halfspace) + 1;
@@ -412,15 +433,15 @@ template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, boo
   return entry<S>(a.shape, b.shape).overlap(a, b, hit);
 }
 
-template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out) {
-  return entry<S>(a.shape, b.shape).distance(a, b, withPoints, out);
+template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+  return entry<S>(a.shape, b.shape).distance(a, b, ask, out);
 }
 
 template FclShape shapeOf<float>(const ::fcl::CollisionGeometry<float>*);
 template FclShape shapeOf<double>(const ::fcl::CollisionGeometry<double>*);
 template Answer solidOverlap<float>(const Solid<float>&, const Solid<float>&, bool&);
 template Answer solidOverlap<double>(const Solid<double>&, const Solid<double>&, bool&);
-template Answer solidDistance<float>(const Solid<float>&, const Solid<float>&, bool, DistanceResult<float>&);
-template Answer solidDistance<double>(const Solid<double>&, const Solid<double>&, bool, DistanceResult<double>&);
+template Answer solidDistance<float>(const Solid<float>&, const Solid<float>&, DistanceAsk, DistanceResult<float>&);
+template Answer solidDistance<double>(const Solid<double>&, const Solid<double>&, DistanceAsk, DistanceResult<double>&);
 
 }  // namespace gq::fcl::detail

@@ -7,7 +7,8 @@
 //    in the box's frame, or relative to the first translation, and core's frame-form kernels answer;
 //  - pairs with another solid convert both sides (convert.h; a Convex comes from the cache) and call core's kernel
 //    for their gq geometry types, chosen at compile time.
-// Semantics are the façade's: touching overlaps; distance is signed with the normal from a to b, in world space.
+// Semantics are the façade's: touching overlaps; distance is signed with the normal from a to b, in world space
+// (without a requested depth, GJK pairs answer FCL's -1 when overlapping: solidDistance).
 #include <cstdint>
 
 #include "convert.h"
@@ -40,7 +41,16 @@ template <class S> struct Solid {
 // linear part that is not a rotation).
 template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit);
 
-// Signed distance, normal from a to b; the world witnesses point0 (on a) and point1 (on b) only `withPoints`.
-template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, bool withPoints, DistanceResult<S>& out);
+// What a distance request asks for: the world witnesses (enable_nearest_points) and the penetration depth
+// (enable_signed_distance).
+struct DistanceAsk {
+  bool points;
+  bool depth;
+};
+
+// Signed distance, normal from a to b; the world witnesses point0 (on a) and point1 (on b) only `ask.points`.
+// Without `ask.depth`, a pair whose depth needs EPA (a converted side other than a plane) answers FCL's -1 when the
+// shapes overlap; closed-form pairs keep their exact signed distance, which costs nothing more.
+template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out);
 
 }  // namespace gq::fcl::detail
