@@ -72,6 +72,8 @@ def mesh_file_seeds():
              "empty.obj": b"\0"}
     for name, data in seeds.items():
         write("fuzz_mesh_file", name, data)
+        if name.endswith(".stl"):
+            write("fuzz_mesh_file_stl", name, data)  # the STL-only build (every input saved as .stl)
 
 
 def urdf_seeds():
