@@ -64,6 +64,23 @@ TYPED_TEST(BadInputUrdf, JointGraphWithACycleIsParseErrorNamingALinkOnIt) {
   }
 }
 
+// A URDF is a tree: a link that is the child of two joints is refused. urdfdom accepts it (the last parent read
+// wins) but lists the link under both parents; with the joints read in name order, j1 (a -> c) then j3 (b -> c), the
+// breadth-first walk met c before b and the loader indexed link -1 (fuzz_urdf, session 6: SEGV).
+TYPED_TEST(BadInputUrdf, LinkThatIsTheChildOfTwoJointsIsParseError) {
+  const std::string xml =
+      "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>"
+      "<link name=\"c\"><collision><geometry><sphere radius=\"0.2\"/></geometry></collision></link>"
+      "<joint name=\"j1\" type=\"fixed\"><parent link=\"a\"/><child link=\"c\"/></joint>"
+      "<joint name=\"j2\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
+      "<joint name=\"j3\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint></robot>";
+  RobotModel<TypeParam> m;
+  const Status s = urdf::loadRobotFromStrings(xml, "", "/tmp", quickOptions(), m);
+  EXPECT_EQ(s.code, StatusCode::ParseError) << s.toString();
+  EXPECT_NE(s.message.find("link 'c' is the child of more than one joint"), std::string::npos) << s.message;
+  EXPECT_TRUE(m.links.empty());
+}
+
 TYPED_TEST(BadInputUrdf, ValidTwoLinkRobotLoads) {
   RobotModel<TypeParam> m;
   const Status s = urdf::loadRobotFromStrings(twoLinkUrdf("<sphere radius=\"0.5\"/>"), "", "/tmp", quickOptions(), m);

@@ -42,13 +42,16 @@ Status readFile(const std::string& path, const char* what, std::string& out) {
   return {};
 }
 
-// A link on a cycle of joints (parent -> child edges), or "" for a forest. urdfdom puts each child link into its
+// What keeps the joint graph (parent -> child edges) from being a tree, or "" for none. urdfdom puts each child link into its
 // parent's child list by shared pointer, so a cyclic joint graph (e.g. a joint whose parent is its child) is never
 // freed when urdfdom then rejects the model (found by fuzz_urdf under LeakSanitizer): such input is refused first.
 // The document is read with TinyXML 1, urdfdom's own parser, as urdfdom reads it (up to the first NUL): TinyXML 1
 // accepts damaged XML that tinyxml2 rejects, so a stricter parser here let a cycle through (fuzz_urdf, session 5).
 // Kahn's algorithm: links left with a parent after peeling off every root are on or below a cycle.
-std::string linkOnJointCycle(const std::string& xml) {
+// A link that is the child of two joints is refused too (a URDF is a tree): urdfdom keeps the last parent it reads
+// but lists the link under both parents, so the breadth-first walk met it twice, once before its parent
+// (fuzz_urdf, session 6: an out-of-range parent index read in computeAllowedCollisions).
+std::string jointGraphProblem(const std::string& xml) {
   TiXmlDocument doc;
   doc.Parse(xml.c_str());
   if (doc.Error()) return {};  // urdfdom fails on the same error before building any link
@@ -56,6 +59,7 @@ std::string linkOnJointCycle(const std::string& xml) {
   if (!robot) return {};
   std::multimap<std::string, std::string> children;  // parent -> child
   std::map<std::string, int> parents;                 // link -> number of parent joints
+  std::string twoParents;                             // the first link met as the child of a second joint
   for (const TiXmlElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
     const auto* p = j->FirstChildElement("parent");
     const auto* c = j->FirstChildElement("child");
@@ -64,7 +68,7 @@ std::string linkOnJointCycle(const std::string& xml) {
     if (!parent || !child) continue;  // urdfdom rejects the joint
     children.emplace(parent, child);
     parents[parent] += 0;
-    ++parents[child];
+    if (++parents[child] == 2 && twoParents.empty()) twoParents = child;
   }
   std::vector<std::string> roots;
   for (const auto& [link, count] : parents)
@@ -77,13 +81,14 @@ std::string linkOnJointCycle(const std::string& xml) {
       if (--parents[it->second] == 0) roots.push_back(it->second);
   }
   for (const auto& [link, count] : parents)
-    if (count > 0) return link;
+    if (count > 0) return "joints form a cycle through link '" + link + "'";
+  if (!twoParents.empty()) return "link '" + twoParents + "' is the child of more than one joint";
   return {};
 }
 
 Status parseUrdfModel(const std::string& xml, ::urdf::ModelInterfaceSharedPtr& model) {
-  if (const std::string link = linkOnJointCycle(xml); !link.empty())
-    return Status::parseError("URDF joints form a cycle through link '" + link + "' (the kinematic graph must be a tree)");
+  if (const std::string problem = jointGraphProblem(xml); !problem.empty())
+    return Status::parseError("URDF " + problem + " (the kinematic graph must be a tree)");
   std::lock_guard<std::mutex> lock(parserMutex());
   CapturedLog log;
   console_bridge::useOutputHandler(&log);
@@ -246,8 +251,14 @@ Status buildTree(const ::urdf::ModelInterface& um, const std::string& baseDir, c
   const auto root = um.getRoot();
   if (!root) return Status::parseError("malformed URDF: no root link");
   std::vector<::urdf::LinkConstSharedPtr> queue{root};
+  std::map<std::string, std::uint32_t> placed;  // link name -> index
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const auto& ul = *queue[head];
+    // The pre-check makes the graph a tree; should urdfdom still list a link twice, or before its parent, refuse it
+    // rather than index link -1.
+    const auto parent = head > 0 && ul.parent_joint ? placed.find(ul.parent_joint->parent_link_name) : placed.end();
+    if (!placed.emplace(ul.name, std::uint32_t(head)).second || (head > 0 && parent == placed.end()))
+      return Status::parseError("malformed URDF: link '" + ul.name + "' is not reached exactly once from the root");
     Link<T> link;
     link.name = ul.name;
     for (const auto& c : ul.collision_array) {
@@ -263,7 +274,7 @@ Status buildTree(const ::urdf::ModelInterface& um, const std::string& baseDir, c
       Joint<T> j;
       Status s = convertJoint(uj, j);
       if (!s.ok()) return s;
-      j.parentLink = std::uint32_t(model.findLink(uj.parent_link_name));
+      j.parentLink = parent->second;
       j.childLink = std::uint32_t(head);
       link.parentJoint = std::int32_t(model.joints.size());
       model.joints.push_back(j);
