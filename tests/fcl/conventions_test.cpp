@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -170,6 +171,17 @@ TEST(FclConventions, NumMaxContactsCapsMeshContacts) {
   gq::fcl::collide<double>(fan.get(), at(0, 0, 0), &sphere, at(0, 0, 0.1), ::fcl::CollisionRequestd(2, false), two);
   EXPECT_EQ(all.numContacts(), 6u);
   EXPECT_EQ(two.numContacts(), 2u);
+  // The cap counts contacts already in the result (appended, not cleared): one there, cap 5 -> four more. The
+  // adapter fetches only as many candidate triangles as there is room for; each must still be a distinct one.
+  for (const std::size_t cap : {1u, 5u}) {
+    ::fcl::CollisionResultd result;
+    result.addContact(::fcl::Contactd(&sphere, &sphere, kNone, kNone));
+    gq::fcl::collide<double>(fan.get(), at(0, 0, 0), &sphere, at(0, 0, 0.1), ::fcl::CollisionRequestd(cap, false), result);
+    ASSERT_EQ(result.numContacts(), cap) << "cap " << cap;
+    std::set<int> ids;
+    for (std::size_t i = 1; i < cap; ++i) ids.insert(result.getContact(i).b1);
+    EXPECT_EQ(ids.size(), cap - 1) << "cap " << cap;
+  }
 }
 
 // FCL issue 545: a small cube centred on the big cube's diagonal near its corner. The exact MTD pushes the small
