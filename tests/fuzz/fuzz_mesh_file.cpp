@@ -1,8 +1,9 @@
 // libFuzzer target: gq::loadMeshFile on arbitrary bytes saved as .obj or .stl (both through assimp; first byte
 // picks), then cooking of what loaded. Contract: ok -> every index in range; error -> `out` untouched; nothing crashes
 // or throws. Built a second time as fuzz_mesh_file_stl (GQ_FUZZ_STL_ONLY: every input saved as .stl): assimp 5.2's
-// OBJ importer allocates and clears two 16 MB buffers per file, ~50 ms per OBJ input under ASan, which holds the
-// mixed target near 19 exec/s; the STL-only build reaches 10M runs in a session. DAE is not mutated here: assimp 5.2's Collada loader segfaults on malformed files
+// OBJ importer allocates and fills a 16 MB line cache per file, which ASan maps and unmaps each time (~50 ms per OBJ
+// input), so the mixed target runs ~14-19 exec/s under ASan; its long runs use a UBSan-only build (scripts/fuzz).
+// DAE is not mutated here: assimp 5.2's Collada loader segfaults on malformed files
 // (known_crashes/fuzz_mesh_file_assimp_collada_segv.bin, third-party); the DAE tests of tests/core cover that format.
 #include <unistd.h>
 

@@ -114,7 +114,8 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
     bool overflow = false;
     std::uint32_t count = 0;
     // Exact candidates are contacts themselves: fetch no more than the result has room for (the query stops there).
-    const std::uint32_t pageSize = exactCandidates && !withGeometry && room < kTrianglePage ? std::uint32_t(room) : kTrianglePage;
+    const std::uint32_t pageSize =
+        exactCandidates && !withGeometry && room < kTrianglePage ? std::uint32_t(room) : kTrianglePage;
     Status s = findOverlapTriangleMesh(query, queryPose, mesh, meshPose, page, pageSize, start, overflow, count);
     if (!s.ok()) return s;
     for (std::uint32_t i = 0; i < count; ++i) {
