@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 #include "exact_reference.h"
@@ -245,6 +246,64 @@ TEST_P(FclContacts, DepthsAndNormalsMatchTheExactMinimumTranslation) {
             << kFclWrongDistance << " in " << fclWrongCount << " (max " << maxFclError << "), normals compared in "
             << fclNormalsCompared << "\n";
   EXPECT_GT(checked, 50);
+}
+
+// A convex hull against a mesh reports one contact per triangle it overlaps: the candidate volume (a box for long
+// hulls, a sphere for round ones) may only add candidates, never drop one. Reference: each triangle as a TriangleP
+// against the hull, by the separating-axis theorem in long double; a disagreement is allowed only within kTouchBand
+// of touching.
+TestShape octahedronShape(double ax, double ay, double az) {
+  TestShape s;
+  s.kind = Kind::Convex;
+  s.vertices = {{ax, 0, 0}, {-ax, 0, 0}, {0, ay, 0}, {0, -ay, 0}, {0, 0, az}, {0, 0, -az}};
+  auto faceList = std::make_shared<std::vector<int>>();
+  for (int sx : {0, 1})
+    for (int sy : {2, 3})
+      for (int sz : {4, 5}) {
+        std::vector<int> tri = {sx, sy, sz};
+        if ((s.vertices[sy] - s.vertices[sx]).cross(s.vertices[sz] - s.vertices[sx]).dot(s.vertices[sx]) < 0)
+          std::swap(tri[1], tri[2]);
+        s.faces.push_back(tri);
+        faceList->insert(faceList->end(), {3, tri[0], tri[1], tri[2]});
+      }
+  s.geometry = std::make_shared<::fcl::Convexd>(std::make_shared<std::vector<::fcl::Vector3d>>(s.vertices), 8, faceList);
+  s.geometry->computeLocalAABB();
+  return s;
+}
+
+TEST(FclMeshContacts, ConvexAgainstMeshReportsEveryTriangleItOverlaps) {
+  std::mt19937 rng(91);
+  const TestShape mesh = makeShape(Kind::Mesh, rng);
+  // Round (its circumsphere is the smaller candidate volume) and long (its box is).
+  for (const TestShape& hull : {octahedronShape(0.5, 0.45, 0.4), octahedronShape(0.9, 0.15, 0.12)}) {
+    int contacts = 0, touching = 0;
+    for (int i = 0; i < 300; ++i) {
+      const ::fcl::Transform3d ph = randomPose(rng, kPoseExtent), pm = randomPose(rng, 0.2);
+      ::fcl::CollisionResultd result;
+      gq::fcl::collide<double>(mesh.geometry.get(), pm, hull.geometry.get(), ph, ::fcl::CollisionRequestd(1000, false),
+                               result);
+      std::set<int> reported;
+      for (std::size_t c = 0; c < result.numContacts(); ++c) reported.insert(result.getContact(c).b1);
+      ASSERT_EQ(reported.size(), result.numContacts()) << "pose " << i << ": a triangle reported twice";
+      for (std::size_t t = 0; t < mesh.faces.size(); ++t) {
+        TestShape triangle;
+        triangle.kind = Kind::TriangleP;
+        for (int v : mesh.faces[t]) triangle.vertices.push_back(mesh.vertices[std::size_t(v)]);
+        triangle.faces = {{0, 1, 2}};
+        triangle.geometry = std::make_shared<::fcl::TrianglePd>(triangle.vertices[0], triangle.vertices[1],
+                                                                triangle.vertices[2]);
+        const bool exact = exactAnswer(hull, ph, triangle, pm).colliding;
+        if (exact == (reported.count(int(t)) > 0)) continue;
+        const double gap = gqSignedDistance(hull, ph, triangle, pm);
+        EXPECT_LT(std::fabs(gap), kTouchBand) << "pose " << i << ", triangle " << t << ": exact " << exact;
+        ++touching;
+      }
+      contacts += int(result.numContacts());
+    }
+    std::cout << "hull " << hull.vertices[0].x() << " x " << hull.vertices[2].y() << " x " << hull.vertices[4].z()
+              << ": " << contacts << " triangle contacts over 300 poses, " << touching << " within the touch band\n";
+    EXPECT_GT(contacts, 300);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(ExactDepthPairs, FclContacts,

@@ -5,13 +5,14 @@
 //    one: the gap when the shape lies on one side, else minus the smaller push-out depth (FCL's rule
 //    depth = r - |signed distance| for a sphere).
 //  - BVHModel against a shape: one contact per triangle touched, as FCL's mesh-shape traversal. Candidates come from
-//    findOverlapTriangleMesh (exact for sphere/capsule/box; the shape's oriented bounding box otherwise, then an
-//    exact test); a triangle's depth and normal come from distance() against the triangle as a support shape.
+//    findOverlapTriangleMesh (exact for sphere/capsule/box; a bounding box or sphere otherwise, then an exact
+//    test); a triangle's depth and normal come from distance() against the triangle as a support shape.
 //  - BVHModel against BVHModel: findOverlapTriangleMeshPairs, one contact per intersecting triangle pair.
 //  - BVHModel against Halfspace/Plane (gq has no mesh-plane query): per triangle from its vertices' heights.
 #include "pair_kernels.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -70,13 +71,25 @@ template <class T> bool isPrimitiveQuery(const Geometry<T>& g) {
   return t == GeometryType::Sphere || t == GeometryType::Capsule || t == GeometryType::Box;
 }
 
-// The box that findOverlapTriangleMesh takes for shapes it does not take itself: the shape's local bounds.
-template <class T> Status boundingBox(const Geometry<T>& g, const Transform<T>& pose, Geometry<T>& box, Transform<T>& boxPose) {
+// The stand-in that findOverlapTriangleMesh takes for shapes it does not take itself: the shape's local bounding
+// box or, for a convex mesh whose circumsphere about the box's centre has the smaller volume (round hulls), that
+// sphere: a sphere-triangle test costs a fraction of the box-triangle separating-axis test.
+template <class T>
+Status candidateVolume(const Geometry<T>& g, const Transform<T>& pose, Geometry<T>& volume, Transform<T>& volumePose) {
   Bounds3<T> local;
   const Status s = computeGeomBounds(local, g, Transform<T>(), T(0), T(1));
   if (!s.ok()) return s;
-  box = BoxGeometry<T>(local.extents().cwiseMax(Vec3<T>::Constant(std::numeric_limits<T>::min())));
-  boxPose = pose * Transform<T>(local.center());
+  const Vec3<T> half = local.extents().cwiseMax(Vec3<T>::Constant(std::numeric_limits<T>::min()));
+  const Vec3<T> centre = local.center();
+  volume = BoxGeometry<T>(half);
+  volumePose = pose * Transform<T>(centre);
+  if (const ConvexMeshGeometry<T>* hull = g.template getIf<ConvexMeshGeometry<T>>()) {
+    const Mat3<T> scale = hull->scale.toMatrix();
+    T r2 = 0;
+    for (const Vec3<T>& v : hull->mesh->vertices) r2 = std::max(r2, (scale * v - centre).squaredNorm());
+    const T r = std::sqrt(r2) * (T(1) + 8 * std::numeric_limits<T>::epsilon());  // rounding: never inside a vertex
+    if (T(4.18879) * r * r * r < T(8) * half.x() * half.y() * half.z()) volume = SphereGeometry<T>(r);  // 4/3 pi r^3
+  }
   return s;
 }
 
@@ -104,7 +117,7 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   Geometry<T> query = shape;
   Transform<T> queryPose = shapePose;
   if (!exactCandidates) {
-    const Status s = boundingBox(shape, shapePose, query, queryPose);
+    const Status s = candidateVolume(shape, shapePose, query, queryPose);
     if (!s.ok()) return s;
   }
   std::uint32_t page[kTrianglePage];
