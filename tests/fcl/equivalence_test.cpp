@@ -256,17 +256,8 @@ TestShape octahedronShape(double ax, double ay, double az) {
   TestShape s;
   s.kind = Kind::Convex;
   s.vertices = {{ax, 0, 0}, {-ax, 0, 0}, {0, ay, 0}, {0, -ay, 0}, {0, 0, az}, {0, 0, -az}};
-  auto faceList = std::make_shared<std::vector<int>>();
-  for (int sx : {0, 1})
-    for (int sy : {2, 3})
-      for (int sz : {4, 5}) {
-        std::vector<int> tri = {sx, sy, sz};
-        if ((s.vertices[sy] - s.vertices[sx]).cross(s.vertices[sz] - s.vertices[sx]).dot(s.vertices[sx]) < 0)
-          std::swap(tri[1], tri[2]);
-        s.faces.push_back(tri);
-        faceList->insert(faceList->end(), {3, tri[0], tri[1], tri[2]});
-      }
-  s.geometry = std::make_shared<::fcl::Convexd>(std::make_shared<std::vector<::fcl::Vector3d>>(s.vertices), 8, faceList);
+  s.faces = octahedronFaces(s.vertices);
+  s.geometry = convexGeometry(s.vertices, s.faces);
   s.geometry->computeLocalAABB();
   return s;
 }

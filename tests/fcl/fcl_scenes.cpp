@@ -43,15 +43,7 @@ namespace {
 void octahedron(std::mt19937& rng, std::vector<::fcl::Vector3d>& v, std::vector<std::vector<int>>& f) {
   std::uniform_real_distribution<double> u(0.35, 0.8);
   v = {{u(rng), 0, 0}, {-u(rng), 0, 0}, {0, u(rng), 0}, {0, -u(rng), 0}, {0, 0, u(rng)}, {0, 0, -u(rng)}};
-  f.clear();
-  for (int sx : {0, 1})
-    for (int sy : {2, 3})
-      for (int sz : {4, 5}) {
-        std::vector<int> tri = {sx, sy, sz};
-        const ::fcl::Vector3d n = (v[sy] - v[sx]).cross(v[sz] - v[sx]);
-        if (n.dot(v[sx] + v[sy] + v[sz]) < 0) std::swap(tri[1], tri[2]);
-        f.push_back(tri);
-      }
+  f = octahedronFaces(v);
 }
 
 // A closed latitude-longitude sphere of radius r (rings x segments), CCW from outside.
@@ -81,6 +73,30 @@ void uvSphere(double r, int rings, int segments, std::vector<::fcl::Vector3d>& v
 
 void randomHull(std::mt19937& rng, int, std::vector<::fcl::Vector3d>& vertices, std::vector<std::vector<int>>& faces) {
   octahedron(rng, vertices, faces);
+}
+
+std::vector<std::vector<int>> octahedronFaces(const std::vector<::fcl::Vector3d>& v) {
+  std::vector<std::vector<int>> f;
+  for (int sx : {0, 1})
+    for (int sy : {2, 3})
+      for (int sz : {4, 5}) {
+        std::vector<int> tri = {sx, sy, sz};
+        const ::fcl::Vector3d n = (v[sy] - v[sx]).cross(v[sz] - v[sx]);
+        if (n.dot(v[sx] + v[sy] + v[sz]) < 0) std::swap(tri[1], tri[2]);
+        f.push_back(tri);
+      }
+  return f;
+}
+
+std::shared_ptr<::fcl::Convexd> convexGeometry(const std::vector<::fcl::Vector3d>& vertices,
+                                               const std::vector<std::vector<int>>& faces) {
+  auto faceList = std::make_shared<std::vector<int>>();
+  for (const auto& f : faces) {
+    faceList->push_back(int(f.size()));
+    for (int i : f) faceList->push_back(i);
+  }
+  return std::make_shared<::fcl::Convexd>(std::make_shared<std::vector<::fcl::Vector3d>>(vertices), int(faces.size()),
+                                          faceList);
 }
 
 TestShape makeShape(Kind k, std::mt19937& rng) {
@@ -115,17 +131,10 @@ TestShape makeShape(Kind k, std::mt19937& rng) {
       s.size = {u(rng), u(rng), u(rng)};
       s.geometry = std::make_shared<::fcl::Ellipsoidd>(s.size);
       break;
-    case Kind::Convex: {
+    case Kind::Convex:
       octahedron(rng, s.vertices, s.faces);
-      auto verts = std::make_shared<std::vector<::fcl::Vector3d>>(s.vertices);
-      auto faceList = std::make_shared<std::vector<int>>();
-      for (const auto& f : s.faces) {
-        faceList->push_back(int(f.size()));
-        for (int i : f) faceList->push_back(i);
-      }
-      s.geometry = std::make_shared<::fcl::Convexd>(verts, int(s.faces.size()), faceList);
+      s.geometry = convexGeometry(s.vertices, s.faces);
       break;
-    }
     case Kind::TriangleP: {
       std::uniform_real_distribution<double> c(-0.7, 0.7);
       for (int i = 0; i < 3; ++i) s.vertices.emplace_back(c(rng), c(rng), c(rng));

@@ -36,6 +36,12 @@ struct TestShape {
 
 TestShape makeShape(Kind k, std::mt19937& rng);
 
+// The eight faces (CCW from outside) of an octahedron whose vertices are +x, -x, +y, -y, +z, -z points on the axes.
+std::vector<std::vector<int>> octahedronFaces(const std::vector<::fcl::Vector3d>& v);
+// FCL's Convex over these vertices and polygon faces.
+std::shared_ptr<::fcl::Convexd> convexGeometry(const std::vector<::fcl::Vector3d>& vertices,
+                                               const std::vector<std::vector<int>>& faces);
+
 // A uniformly random rotation and a translation uniform in [-extent, extent]^3.
 ::fcl::Transform3d randomPose(std::mt19937& rng, double extent);
 

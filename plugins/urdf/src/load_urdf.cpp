@@ -43,8 +43,9 @@ Status readFile(const std::string& path, const char* what, std::string& out) {
 }
 
 // What keeps the joint graph (parent -> child edges) from being a tree, or "" for none. urdfdom puts each child
-// link into its parent's child list by shared pointer, so a cyclic joint graph (e.g. a joint whose parent is its child) is never
-// freed when urdfdom then rejects the model (found by fuzz_urdf under LeakSanitizer): such input is refused first.
+// link into its parent's child list by shared pointer, so a cyclic joint graph (e.g. a joint whose parent is its
+// child) is never freed when urdfdom then rejects the model (found by fuzz_urdf under LeakSanitizer): such input is
+// refused first.
 // The document is read with TinyXML 1, urdfdom's own parser, as urdfdom reads it (up to the first NUL): TinyXML 1
 // accepts damaged XML that tinyxml2 rejects, so a stricter parser here let a cycle through (fuzz_urdf, session 5).
 // Kahn's algorithm: links left with a parent after peeling off every root are on or below a cycle.
