@@ -90,10 +90,11 @@ template <class T> Conversion triangle(const ::fcl::TriangleP<T>& t, Converted<T
 template <class T> Conversion cached(const ::fcl::CollisionGeometry<T>* g, Converted<T>& out) {
   Conversion conversion = Conversion::Invalid;
   FclShape shape = FclShape::Unsupported;
-  const Geometry<T>* geometry = cachedGeometry(g, shape, conversion);
+  const CandidateVolume<T>* candidate = nullptr;
+  const Geometry<T>* geometry = cachedGeometry(g, shape, conversion, candidate);
   if (!geometry) return conversion;
   out.shape = shape;
-  out.setCached(geometry);
+  out.setCached(geometry, candidate);
   return Conversion::Ok;
 }
 

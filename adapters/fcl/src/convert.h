@@ -37,6 +37,13 @@ enum class Frame : std::uint8_t {
   Offset,           // planes: `offset`
 };
 
+// The stand-in that findOverlapTriangleMesh takes for a shape it does not take itself (pair_kernels.h), in the
+// shape's local frame: a box or sphere `volume` centred at `centre`.
+template <class T> struct CandidateVolume {
+  Geometry<T> volume;
+  Vec3<T> centre = Vec3<T>::Zero();
+};
+
 template <class T> class Converted {
  public:
   Converted() = default;
@@ -63,12 +70,18 @@ template <class T> class Converted {
     local_ = CustomGeometry<T>(std::shared_ptr<const CustomGeometryCallbacks<T>>(std::shared_ptr<const void>(), &c));
     geometry_ = &local_;
   }
-  // Cached geometry, kept alive by the cache for the duration of the call (see geometry_cache.h).
-  void setCached(const Geometry<T>* cached) { geometry_ = cached; }
+  // Cached geometry, kept alive by the cache for the duration of the call (see geometry_cache.h), with its
+  // candidate volume when the cache holds one (a Convex: computed once, at cooking).
+  void setCached(const Geometry<T>* cached, const CandidateVolume<T>* candidate) {
+    geometry_ = cached;
+    candidate_ = candidate;
+  }
+  const CandidateVolume<T>* cachedCandidate() const { return candidate_; }
 
  private:
   Geometry<T> local_;
   const Geometry<T>* geometry_ = &local_;
+  const CandidateVolume<T>* candidate_ = nullptr;
   std::variant<std::monostate, CylinderCallbacks<T>, ConeCallbacks<T>, EllipsoidCallbacks<T>, TriangleCallbacks<T>>
       callbacks_;
 };

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "gq/cooking.h"
+#include "pair_kernels.h"
 
 namespace gq::fcl::detail {
 namespace {
@@ -102,6 +103,7 @@ template <class T> struct Entry {
   FclShape shape = FclShape::Unsupported;
   Conversion conversion = Conversion::Invalid;
   Geometry<T> geometry;
+  std::optional<CandidateVolume<T>> candidate;  // Convex
   const void* vertexArray = nullptr;            // Convex: its vertex vector (identity)
   std::optional<::fcl::Convex<T>> convexAlive;  // Convex: a copy sharing that vector keeps it alive
   std::uint64_t fingerprint = 0;                // BVHModel
@@ -129,6 +131,8 @@ template <class T> std::shared_ptr<const Entry<T>> cookConvex(const ::fcl::Conve
     e->shape = FclShape::Convex;
     e->conversion = Conversion::Ok;
     e->geometry = ConvexMeshGeometry<T>(hull);
+    CandidateVolume<T> candidate;
+    if (candidateVolume(e->geometry, candidate).ok()) e->candidate = candidate;
   }
   return e;
 }
@@ -215,7 +219,8 @@ template <class T> void clearShared() {
 }  // namespace
 
 template <class T>
-const Geometry<T>* cachedGeometry(const ::fcl::CollisionGeometry<T>* g, FclShape& shape, Conversion& conversion) {
+const Geometry<T>* cachedGeometry(const ::fcl::CollisionGeometry<T>* g, FclShape& shape, Conversion& conversion,
+                                  const CandidateVolume<T>*& candidate) {
   Key<T> key{g, g->getNodeType() == ::fcl::GEOM_CONVEX, nullptr, {}, 0};
   if (key.convex) {
     key.vertexArray = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
@@ -232,6 +237,7 @@ const Geometry<T>* cachedGeometry(const ::fcl::CollisionGeometry<T>* g, FclShape
   conversion = e->conversion;
   if (conversion != Conversion::Ok) return nullptr;
   shape = e->shape;
+  candidate = e->candidate ? &*e->candidate : nullptr;
   return &e->geometry;
 }
 
@@ -247,9 +253,10 @@ void clearCached() {
   clearShared<double>();
 }
 
-template const Geometry<float>* cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, FclShape&, Conversion&);
+template const Geometry<float>* cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, FclShape&, Conversion&,
+                                                      const CandidateVolume<float>*&);
 template const Geometry<double>* cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, FclShape&,
-                                                        Conversion&);
+                                                        Conversion&, const CandidateVolume<double>*&);
 template void forgetCached<float>(const ::fcl::CollisionGeometry<float>*);
 template void forgetCached<double>(const ::fcl::CollisionGeometry<double>*);
 

@@ -71,28 +71,6 @@ template <class T> bool isPrimitiveQuery(const Geometry<T>& g) {
   return t == GeometryType::Sphere || t == GeometryType::Capsule || t == GeometryType::Box;
 }
 
-// The stand-in that findOverlapTriangleMesh takes for shapes it does not take itself: the shape's local bounding
-// box or, for a convex mesh whose circumsphere about the box's centre has the smaller volume (round hulls), that
-// sphere: a sphere-triangle test costs a fraction of the box-triangle separating-axis test.
-template <class T>
-Status candidateVolume(const Geometry<T>& g, const Transform<T>& pose, Geometry<T>& volume, Transform<T>& volumePose) {
-  Bounds3<T> local;
-  const Status s = computeGeomBounds(local, g, Transform<T>(), T(0), T(1));
-  if (!s.ok()) return s;
-  const Vec3<T> half = local.extents().cwiseMax(Vec3<T>::Constant(std::numeric_limits<T>::min()));
-  const Vec3<T> centre = local.center();
-  volume = BoxGeometry<T>(half);
-  volumePose = pose * Transform<T>(centre);
-  if (const ConvexMeshGeometry<T>* hull = g.template getIf<ConvexMeshGeometry<T>>()) {
-    const Mat3<T> scale = hull->scale.toMatrix();
-    T r2 = 0;
-    for (const Vec3<T>& v : hull->mesh->vertices) r2 = std::max(r2, (scale * v - centre).squaredNorm());
-    const T r = std::sqrt(r2) * (T(1) + 8 * std::numeric_limits<T>::epsilon());  // rounding: never inside a vertex
-    if (T(4.18879) * r * r * r < T(8) * half.x() * half.y() * half.z()) volume = SphereGeometry<T>(r);  // 4/3 pi r^3
-  }
-  return s;
-}
-
 // Contact of `shape` with one world triangle; normal from the triangle to the shape.
 template <class T>
 Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const Triangle<T>& triangle,
@@ -110,15 +88,23 @@ Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const
 
 // Mesh first: b1 = triangle, normal from the mesh to the shape.
 template <class T>
-Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Geometry<T>& shape,
-                         const Transform<T>& shapePose, bool withGeometry, std::size_t room,
-                         std::vector<PairContact<T>>& out) {
+Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose,
+                         const Converted<T>& converted, const Transform<T>& shapePose, bool withGeometry,
+                         std::size_t room, std::vector<PairContact<T>>& out) {
+  const Geometry<T>& shape = converted.geometry();
   const bool exactCandidates = isPrimitiveQuery(shape);
   Geometry<T> query = shape;
   Transform<T> queryPose = shapePose;
   if (!exactCandidates) {
-    const Status s = candidateVolume(shape, shapePose, query, queryPose);
-    if (!s.ok()) return s;
+    CandidateVolume<T> computed;
+    const CandidateVolume<T>* candidate = converted.cachedCandidate();
+    if (!candidate) {
+      const Status s = candidateVolume(shape, computed);
+      if (!s.ok()) return s;
+      candidate = &computed;
+    }
+    query = candidate->volume;
+    queryPose = shapePose * Transform<T>(candidate->centre);
   }
   std::uint32_t page[kTrianglePage];
   std::uint32_t start = 0;
@@ -279,6 +265,24 @@ template <class T> int nearestTriangle(const TriangleMeshGeometry<T>& mesh, cons
 
 }  // namespace
 
+template <class T> Status candidateVolume(const Geometry<T>& g, CandidateVolume<T>& out) {
+  Bounds3<T> local;
+  const Status s = computeGeomBounds(local, g, Transform<T>(), T(0), T(1));
+  if (!s.ok()) return s;
+  const Vec3<T> half = local.extents().cwiseMax(Vec3<T>::Constant(std::numeric_limits<T>::min()));
+  out.centre = local.center();
+  out.volume = BoxGeometry<T>(half);
+  if (const ConvexMeshGeometry<T>* hull = g.template getIf<ConvexMeshGeometry<T>>()) {
+    const Mat3<T> scale = hull->scale.toMatrix();
+    T r2 = 0;
+    for (const Vec3<T>& v : hull->mesh->vertices) r2 = std::max(r2, (scale * v - out.centre).squaredNorm());
+    const T r = std::sqrt(r2) * (T(1) + 8 * std::numeric_limits<T>::epsilon());  // rounding: never inside a vertex
+    const T sphereVolume = T(4.18879) * r * r * r;  // 4/3 pi r^3
+    if (sphereVolume < T(8) * half.x() * half.y() * half.z()) out.volume = SphereGeometry<T>(r);
+  }
+  return s;
+}
+
 template <class T>
 Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Converted<T>& b, const Transform<T>& pb,
                     bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out) {
@@ -296,8 +300,8 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
   }
   if (ma || mb) {
     const std::size_t first = out.size();
-    const Status s = ma ? meshShapeContacts(*ma, pa, b.geometry(), pb, withGeometry, room, out)
-                        : meshShapeContacts(*mb, pb, a.geometry(), pa, withGeometry, room, out);
+    const Status s = ma ? meshShapeContacts(*ma, pa, b, pb, withGeometry, room, out)
+                        : meshShapeContacts(*mb, pb, a, pa, withGeometry, room, out);
     if (mb)
       for (std::size_t i = first; i < out.size(); ++i) flip(out[i]);
     return s;
@@ -346,6 +350,8 @@ Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Convert
   return s;
 }
 
+template Status candidateVolume<float>(const Geometry<float>&, CandidateVolume<float>&);
+template Status candidateVolume<double>(const Geometry<double>&, CandidateVolume<double>&);
 template Status pairContacts<float>(const Converted<float>&, const Transform<float>&, const Converted<float>&,
                                     const Transform<float>&, bool, std::size_t, std::vector<PairContact<float>>&);
 template Status pairContacts<double>(const Converted<double>&, const Transform<double>&, const Converted<double>&,
