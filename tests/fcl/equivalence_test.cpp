@@ -80,6 +80,13 @@ double certificateTolerance(const Pair& p) {
   return p.first == Kind::Mesh || p.second == Kind::Mesh ? 1e-6 : kCertificateTolerance;
 }
 
+// The request with distance_tolerance 0: gq's GJK stops at its own certified bound (1e-12 relative) instead of FCL's
+// default 1e-6, which these tests' 1e-7 certificates need (DistanceToleranceBoundsTheError checks the default).
+::fcl::DistanceRequestd ownTolerance(::fcl::DistanceRequestd request) {
+  request.distance_tolerance = 0;
+  return request;
+}
+
 class FclEquivalence : public ::testing::TestWithParam<Pair> {};
 
 TEST_P(FclEquivalence, CollideBooleansMatchFclExceptWhereTheExactAnswerShowsFclWrong) {
@@ -156,7 +163,7 @@ TEST_P(FclEquivalence, SeparationDistancesMatchTheExactAnswerAndFcl) {
     const ::fcl::Transform3d pa = randomPose(rng, kPoseExtent), pb = randomPose(rng, kPoseExtent);
     ::fcl::DistanceRequestd request(true);
     ::fcl::DistanceResultd fromFcl, fromGq;
-    gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, request, fromGq);
+    gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, ownTolerance(request), fromGq);
     const ExactAnswer exact = exactAnswer(a, pa, b, pb);
     if (exact.distanceKnown && exact.distance > kTouchBand) {
       EXPECT_NEAR(fromGq.min_distance, double(exact.distance), kExactTolerance) << "pose " << i;
@@ -199,6 +206,51 @@ TEST_P(FclEquivalence, SeparationDistancesMatchTheExactAnswerAndFcl) {
   EXPECT_GT(compared, 0);
   std::cout << name(pair.first) << "-" << name(pair.second) << ": gq distance certified within " << maxCertificateError << "\n";
   EXPECT_LE(maxCertificateError, certificateTolerance(pair));
+}
+
+// FCL's DistanceRequest::distance_tolerance (default 1e-6) is GJK's stop tolerance: gq stops once its certified
+// error bound is below it. The exact distance lies in [gap, tight] (gq at its own tolerance, certified by a separating
+// plane to certificateTolerance), so an answer at tolerance t must lie in [gap, gap + t + certificate]. On curved
+// shapes the coarse tolerance must actually be used (some answer moves by > 1e-9); polytope pairs (box-convex) end
+// on an exact simplex either way.
+TEST(FclDistanceTolerance, DistanceToleranceBoundsTheError) {
+  struct Case {
+    Kind a, b;
+    bool curved;
+  };
+  const Case cases[] = {{Kind::Box, Kind::Cylinder, true},          {Kind::Cylinder, Kind::Cone, true},
+                        {Kind::Ellipsoid, Kind::Ellipsoid, true},   {Kind::Capsule, Kind::Ellipsoid, true},
+                        {Kind::Cone, Kind::TriangleP, true},        {Kind::Box, Kind::Convex, false}};
+  for (const Case& c : cases) {
+    const Pair pair{c.a, c.b};
+    std::mt19937 rng(seedOf(pair) + 3);
+    const TestShape a = makeShape(pair.first, rng), b = makeShape(pair.second, rng);
+    for (const double tolerance : {1e-6, 1e-3}) {
+      int compared = 0;
+      double largestMove = 0;
+      for (int i = 0; i < 300; ++i) {
+        const ::fcl::Transform3d pa = randomPose(rng, kPoseExtent), pb = randomPose(rng, kPoseExtent);
+        ::fcl::DistanceRequestd request(true);
+        request.distance_tolerance = tolerance;
+        ::fcl::DistanceResultd coarse, tight;
+        gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, ownTolerance(request), tight);
+        if (!(tight.min_distance > kTouchBand)) continue;
+        const double gap = double(certifiedGap(a, pa, b, pb, tight.nearest_points[1] - tight.nearest_points[0]));
+        ASSERT_LE(tight.min_distance - gap, certificateTolerance(pair)) << "pose " << i;
+        gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, request, coarse);
+        EXPECT_GE(coarse.min_distance, gap - kExactTolerance) << "pose " << i;
+        EXPECT_LE(coarse.min_distance, gap + tolerance + certificateTolerance(pair)) << "pose " << i;
+        // The nearest points realise the distance.
+        EXPECT_NEAR((coarse.nearest_points[1] - coarse.nearest_points[0]).norm(), coarse.min_distance, 1e-9);
+        largestMove = std::max(largestMove, coarse.min_distance - tight.min_distance);
+        ++compared;
+      }
+      EXPECT_GT(compared, 50) << name(pair.first) << "-" << name(pair.second);
+      if (c.curved) EXPECT_GT(largestMove, 1e-9) << name(pair.first) << "-" << name(pair.second) << " at " << tolerance;
+      std::cout << name(pair.first) << "-" << name(pair.second) << " at tolerance " << tolerance << ": " << compared
+                << " separated poses, largest excess over gq's own answer " << largestMove << "\n";
+    }
+  }
 }
 
 // Contacts with minimumTranslation: gq's depth equals the exact one; moving o2 along the normal by the depth

@@ -239,7 +239,8 @@ template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, D
   if (!k::distanceBoxBoxOverlapping<S>(ha, hb, r, t, local)) {
     const Geometry<S> ga = BoxGeometry<S>(ha), gb = BoxGeometry<S>(hb);
     const Transform<S> pb(t, Quat<S>(r));
-    if (!k::distanceGjk(ga, Transform<S>(), gb, pb, static_cast<GjkCache<S>*>(nullptr), local).ok()) return Answer::Unanswered;
+    if (!k::distanceGjk(ga, Transform<S>(), gb, pb, static_cast<GjkCache<S>*>(nullptr), local, S(ask.tolerance)).ok())
+      return Answer::Unanswered;
   }
   frameToWorld(*a.tf, ask.points, local, out);
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
@@ -311,8 +312,9 @@ Answer overlapGq(const Geometry<S>& a, const Geometry<S>& b, const Transform<S>&
 // path writes those); the depth would need EPA, which the request did not ask for.
 // A GJK stop above tolerance still writes its best answer (as core's distanceGjk, which reports it as a warning).
 template <class S> void distanceWithoutDepth(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S>& b,
-                                             const Transform<S>& pb, DistanceResult<S>& out) {
-  const k::GjkResult<S> g = k::gjkDistance(k::makeConvexShape(a, pa), k::makeConvexShape(b, pb));
+                                             const Transform<S>& pb, S tolerance, DistanceResult<S>& out) {
+  const k::GjkResult<S> g = k::gjkDistance(k::makeConvexShape(a, pa), k::makeConvexShape(b, pb),
+                                           static_cast<GjkCache<S>*>(nullptr), tolerance);
   if (g.coresOverlap) {
     out.distance = S(-1);
     out.normal = out.point0 = out.point1 = Vec3<S>::Zero();
@@ -326,7 +328,7 @@ template <class S> void distanceWithoutDepth(const Geometry<S>& a, const Transfo
 
 template <class S, GT A, GT B>
 Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S>& b, const Transform<S>& pb,
-                  bool depth, DistanceResult<S>& out) {
+                  DistanceAsk ask, DistanceResult<S>& out) {
   if constexpr (A == GT::Plane && B == GT::Plane) {
     return Answer::Unanswered;
   } else if constexpr (A == GT::Sphere && B == GT::Plane) {
@@ -337,10 +339,11 @@ Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S
     k::distancePlaneBox(as<A>(a), pa, as<B>(b), pb, out);
   } else if constexpr (A == GT::Plane) {  // convex mesh or custom: through its support mapping
     k::distancePlaneConvex(as<A>(a), pa, b, pb, out);
-  } else if (!depth) {
-    distanceWithoutDepth(a, pa, b, pb, out);
+  } else if (!ask.depth) {
+    distanceWithoutDepth(a, pa, b, pb, S(ask.tolerance), out);
   } else {
-    if (!k::distanceGjk(a, pa, b, pb, static_cast<GjkCache<S>*>(nullptr), out).ok()) return Answer::Unanswered;
+    if (!k::distanceGjk(a, pa, b, pb, static_cast<GjkCache<S>*>(nullptr), out, S(ask.tolerance)).ok())
+      return Answer::Unanswered;
   }
   return finiteResult(out) ? Answer::Done : Answer::Unanswered;
 }
@@ -359,7 +362,7 @@ Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, 
   Transform<S> pa, pb;
   const Answer r = convertBoth(a, b, ca, cb, pa, pb);
   if (r != Answer::Done) return r;
-  return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, ask.depth, out);
+  return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, ask, out);
 }
 
 // ---- the table ----

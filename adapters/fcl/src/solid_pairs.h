@@ -41,11 +41,12 @@ template <class S> struct Solid {
 // linear part that is not a rotation).
 template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit);
 
-// What a distance request asks for: the world witnesses (enable_nearest_points) and the penetration depth
-// (enable_signed_distance).
+// What a distance request asks for: the world witnesses (enable_nearest_points), the penetration depth
+// (enable_signed_distance) and GJK's stop tolerance (DistanceRequest::distance_tolerance, absolute; 0: gq's own).
 struct DistanceAsk {
   bool points;
   bool depth;
+  double tolerance = 0;
 };
 
 // Signed distance, normal from a to b; the world witnesses point0 (on a) and point1 (on b) only `ask.points`.

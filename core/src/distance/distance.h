@@ -65,9 +65,10 @@ bool distanceBoxBoxOverlapping(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<
 
 // Any two of sphere, capsule, box, convex mesh, convex custom: GJK on the cores, EPA when they overlap. Returns Ok,
 // or Warning when GJK/EPA stopped with an error bound above tolerance (the best answer is still written).
+// `stopTolerance`: GJK's (gjk.h); EPA keeps its own.
 template <class T>
 Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
-                   GjkCache<T>* cache, DistanceResult<T>& out);
+                   GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance = T(0));
 
 // Closest points of segments [p0, q0] and [p1, q1] (either may have zero length); s, t in [0, 1].
 template <class T> struct SegmentClosest {

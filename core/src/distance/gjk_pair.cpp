@@ -6,10 +6,10 @@ namespace gq::detail {
 
 template <class T>
 Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
-                   GjkCache<T>* cache, DistanceResult<T>& out) {
+                   GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance) {
   const ConvexShape<T> a = makeConvexShape(g0, pose0);
   const ConvexShape<T> b = makeConvexShape(g1, pose1);
-  const GjkResult<T> g = gjkDistance(a, b, cache);
+  const GjkResult<T> g = gjkDistance(a, b, cache, stopTolerance);
   if (!g.coresOverlap) {
     out.distance = g.distance;
     out.normal = g.normal;
@@ -25,7 +25,9 @@ Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geome
   return e.status.ok() ? Status() : Status::warning(e.status.message);
 }
 
-template Status distanceGjk<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&, GjkCache<float>*, DistanceResult<float>&);
-template Status distanceGjk<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&, GjkCache<double>*, DistanceResult<double>&);
+template Status distanceGjk<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
+                                   const Transform<float>&, GjkCache<float>*, DistanceResult<float>&, float);
+template Status distanceGjk<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
+                                    const Transform<double>&, GjkCache<double>*, DistanceResult<double>&, double);
 
 }  // namespace gq::detail

@@ -81,8 +81,10 @@ template <class T> struct Momentum {
 
 }  // namespace
 
-template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache) {
+template <class T>
+GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache, T stopTolerance) {
   const T tolerance = gjkTolerance(a, b);
+  const T gapTolerance = std::max(tolerance, stopTolerance);  // overlap is still decided at `tolerance`
   SupportMap<T> sa(a), sb(b);
   GjkResult<T> r;
   GjkSimplex<T>& s = r.simplex;
@@ -118,7 +120,7 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
       // Duality gap at v only (a momentum direction's lower bound, though valid, broke sweep accuracy tests).
       if (!accelerated) lowerBound = std::max(lowerBound, d.dot(p.w) / d.norm());
       gapBound = std::max(T(0), vNorm - lowerBound);
-      if (gapBound <= tolerance) { converged = true; break; }
+      if (gapBound <= gapTolerance) { converged = true; break; }
       const bool repeated = alreadyInSimplex(s, p.w);
       // Momentum support that passes v's gap test, or repeats a point: no information, retry without momentum.
       if (accelerated && (repeated || v.dot(v - p.w) <= tolerance * vNorm)) {
@@ -157,7 +159,7 @@ template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const Conve
   }
   r.iterations = it;
   r.errorBound = r.coresOverlap ? T(0) : std::max(T(0), v.norm() - lowerBound);
-  if (!converged && !(r.errorBound <= tolerance))
+  if (!converged && !(r.errorBound <= gapTolerance))
     r.status = Status::notConverged("GJK stopped after " + std::to_string(it) + " iterations with error bound " +
                                     std::to_string(double(r.errorBound)));
   if (!r.coresOverlap) {
@@ -245,8 +247,10 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
   return v.norm() <= margins + tolerance && overlapping(s, false, v.norm());
 }
 
-template GjkResult<float> gjkDistance<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkCache<float>*);
-template GjkResult<double> gjkDistance<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkCache<double>*);
+template GjkResult<float> gjkDistance<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkCache<float>*,
+                                             float);
+template GjkResult<double> gjkDistance<double>(const ConvexShape<double>&, const ConvexShape<double>&,
+                                               GjkCache<double>*, double);
 template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkOverlapWitness<float>*);
 template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkOverlapWitness<double>*);
 

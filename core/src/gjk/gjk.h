@@ -104,7 +104,12 @@ template <class T> struct GjkResult {
 };
 
 // Distance between a and b. `cache` (optional): warm-start direction in a's local frame, updated on return.
-template <class T> GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache = nullptr);
+// `stopTolerance` (optional, absolute): stop once the certified error bound (the duality gap) is below
+// max(gjkTolerance(a, b), stopTolerance), for a caller that asked for less (FCL's DistanceRequest::distance_tolerance);
+// whether the cores overlap is still decided at gjkTolerance. The default 0 leaves the stop rule as it is.
+template <class T>
+GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache = nullptr,
+                         T stopTolerance = T(0));
 
 // What a positive gjkOverlap saw of the cores when it stopped: either a simplex enclosing the origin (cores
 // overlap) or a point of the cores' Minkowski difference, whose norm bounds the core distance from above.
