@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -251,6 +252,35 @@ TEST(FclDistanceTolerance, DistanceToleranceBoundsTheError) {
                 << " separated poses, largest excess over gq's own answer " << largestMove << "\n";
     }
   }
+}
+
+// A distance_tolerance of 0, below 0, infinite or NaN asks for gq's own stop rule: the same bits as 0 (FCL's GJK would
+// run to its iteration limit on NaN; gq treats it as no request).
+TEST(FclDistanceTolerance, NonPositiveOrNonFiniteToleranceMeansGqsOwn) {
+  std::mt19937 rng(11);
+  const TestShape a = makeShape(Kind::Box, rng), b = makeShape(Kind::Cylinder, rng);
+  const ::fcl::Transform3d pa = ::fcl::Transform3d::Identity();
+  ::fcl::Transform3d pb = ::fcl::Transform3d::Identity();
+  pb.translation() = ::fcl::Vector3d(2.5, 0.3, -0.2);
+  pb.linear() = Eigen::AngleAxisd(0.7, ::fcl::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  ::fcl::DistanceRequestd request(true);
+  request.distance_tolerance = 0;
+  ::fcl::DistanceResultd own;
+  gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, request, own);
+  ASSERT_GT(own.min_distance, 0.1);
+  for (const double t : {-1e-3, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    request.distance_tolerance = t;
+    ::fcl::DistanceResultd r;
+    gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, request, r);
+    EXPECT_EQ(r.min_distance, own.min_distance) << t;
+    EXPECT_EQ(r.nearest_points[0], own.nearest_points[0]) << t;
+    EXPECT_EQ(r.nearest_points[1], own.nearest_points[1]) << t;
+  }
+  request.distance_tolerance = 1e-2;  // and a coarse one is used (this pose stops earlier)
+  ::fcl::DistanceResultd coarse;
+  gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, request, coarse);
+  EXPECT_NE(coarse.min_distance, own.min_distance);
+  EXPECT_LE(coarse.min_distance - own.min_distance, 1e-2);
 }
 
 // Contacts with minimumTranslation: gq's depth equals the exact one; moving o2 along the normal by the depth

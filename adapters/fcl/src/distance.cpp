@@ -9,7 +9,6 @@
 //  - BVHModel sides are thin surfaces: 0 when touching or crossing; with enable_signed_distance the deepest
 //    triangle contact's depth is reported negated, with both nearest points at its position (FCL's workaround).
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -46,11 +45,7 @@ S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1, cons
                 const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
   DistanceResult<S> d;
   const bool withPoints = request.enable_nearest_points;
-  // FCL's GJK stops when an iteration gains less than distance_tolerance; gq's stops at a certified error bound,
-  // here below that tolerance (a non-positive or non-finite one leaves gq's own).
-  const S t = request.distance_tolerance;
-  const double tolerance = t > S(0) && std::isfinite(t) ? double(t) : 0.0;
-  const detail::DistanceAsk ask{withPoints, request.enable_signed_distance, tolerance};
+  const detail::DistanceAsk ask{withPoints, request.enable_signed_distance, double(request.distance_tolerance)};
   switch (detail::solidDistance(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, ask, d)) {
     case detail::Answer::Done: break;
     case detail::Answer::Invalid: return std::numeric_limits<S>::max();

@@ -106,6 +106,12 @@ template <class S> void flip(DistanceResult<S>& d) {
   d.normal = -d.normal;
 }
 
+// GJK's stop tolerance from the request: FCL's GJK stops when an iteration gains less than distance_tolerance; gq's
+// stops once its certified error bound is below it. 0 (gq's own) for a non-positive, infinite or NaN one.
+template <class S> S stopTolerance(DistanceAsk ask) {
+  return ask.tolerance > 0 && ask.tolerance <= double(std::numeric_limits<S>::max()) ? S(ask.tolerance) : S(0);
+}
+
 template <class S> bool finiteResult(const DistanceResult<S>& r) {
   return std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal);
 }
@@ -239,7 +245,8 @@ template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, D
   if (!k::distanceBoxBoxOverlapping<S>(ha, hb, r, t, local)) {
     const Geometry<S> ga = BoxGeometry<S>(ha), gb = BoxGeometry<S>(hb);
     const Transform<S> pb(t, Quat<S>(r));
-    if (!k::distanceGjk(ga, Transform<S>(), gb, pb, static_cast<GjkCache<S>*>(nullptr), local, S(ask.tolerance)).ok())
+    const S tolerance = stopTolerance<S>(ask);
+    if (!k::distanceGjk(ga, Transform<S>(), gb, pb, static_cast<GjkCache<S>*>(nullptr), local, tolerance).ok())
       return Answer::Unanswered;
   }
   frameToWorld(*a.tf, ask.points, local, out);
@@ -340,9 +347,9 @@ Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S
   } else if constexpr (A == GT::Plane) {  // convex mesh or custom: through its support mapping
     k::distancePlaneConvex(as<A>(a), pa, b, pb, out);
   } else if (!ask.depth) {
-    distanceWithoutDepth(a, pa, b, pb, S(ask.tolerance), out);
+    distanceWithoutDepth(a, pa, b, pb, stopTolerance<S>(ask), out);
   } else {
-    if (!k::distanceGjk(a, pa, b, pb, static_cast<GjkCache<S>*>(nullptr), out, S(ask.tolerance)).ok())
+    if (!k::distanceGjk(a, pa, b, pb, static_cast<GjkCache<S>*>(nullptr), out, stopTolerance<S>(ask)).ok())
       return Answer::Unanswered;
   }
   return finiteResult(out) ? Answer::Done : Answer::Unanswered;
