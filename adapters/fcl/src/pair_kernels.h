@@ -24,13 +24,13 @@ template <class T> struct PairDistance {
   int b1 = kNoPrimitive, b2 = kNoPrimitive;
 };
 
-// Appends up to `room` contacts of a colliding pair (one per primitive pair, as FCL). Without `withGeometry` only
-// b1/b2 are meaningful. A non-ok status means gq cannot answer the pair (the caller falls back to FCL).
 // The candidate volume of a shape findOverlapTriangleMesh does not take itself (not a sphere, capsule or box): its
 // local bounding box or, for a convex mesh whose circumsphere about the box's centre has the smaller volume (round
 // hulls), that sphere: a sphere-triangle test costs a fraction of the box-triangle separating-axis test.
 template <class T> Status candidateVolume(const Geometry<T>& g, CandidateVolume<T>& out);
 
+// Appends up to `room` contacts of a colliding pair (one per primitive pair, as FCL). Without `withGeometry` only
+// b1/b2 are meaningful. A non-ok status means gq cannot answer the pair (the caller falls back to FCL).
 template <class T>
 Status pairContacts(const Converted<T>& a, const Transform<T>& poseA, const Converted<T>& b, const Transform<T>& poseB,
                     bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out);

@@ -42,8 +42,8 @@ template <class S> struct Solid {
 template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit);
 
 // What a distance request asks for: the world witnesses (enable_nearest_points), the penetration depth
-// (enable_signed_distance) and GJK's stop tolerance (DistanceRequest::distance_tolerance as given: read, and a
-// non-positive or non-finite one replaced by gq's own, only by the pairs that run GJK).
+// (enable_signed_distance) and GJK's stop tolerance (DistanceRequest::distance_tolerance as the host set it; only
+// the pairs that run GJK read it, and a non-positive or non-finite one means gq's own).
 struct DistanceAsk {
   bool points;
   bool depth;
