@@ -119,6 +119,7 @@ template <class S> Result runPair(Shapes<S>& shapes, QueryKind kind, const PairC
   }
   ::fcl::DistanceRequest<S> request(true);
   request.enable_signed_distance = true;
+  request.distance_tolerance = 0;  // gq's own GJK tolerance, as the `gq` backend (FCL's 1e-6 default: docs/fcl.md)
   ::fcl::DistanceResult<S> result;
   const double ns = medianNanoseconds(repeat, [&] {
     result.clear();
