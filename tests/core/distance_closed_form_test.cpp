@@ -67,6 +67,15 @@ template <class T> void checkCapsulePair(const gq::CapsuleGeometry<T>& c0, const
   expectConsistent(r, kClosedFormTol<T>);
 }
 
+// Capsule 0 at (base, q); capsule 1 turned by `turn` about capsule 0's Z and moved by `offset` in its frame.
+template <class T>
+void checkTurnedCapsulePair(const gq::CapsuleGeometry<T>& c0, const gq::CapsuleGeometry<T>& c1, const Eigen::Quaterniond& q,
+                            double turn, const Eigen::Vector3d& offset, const Eigen::Vector3d& base, int i) {
+  const Eigen::Quaterniond q1 = q * Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()));
+  checkCapsulePair(c0, gq::Transform<T>(base.cast<T>(), q.cast<T>()), c1,
+                   gq::Transform<T>((base + q * offset).cast<T>(), q1.cast<T>()), i);
+}
+
 TYPED_TEST(DistanceClosedForm, CapsuleCapsuleIsSegmentDistanceMinusRadii) {
   using T = TypeParam;
   Rng rng(13);
@@ -85,11 +94,25 @@ TYPED_TEST(DistanceClosedForm, CapsuleCapsuleParallelAxesAreExact) {
     const gq::CapsuleGeometry<T> c1(T(rng.uniform(0.1, 0.5)), T(rng.uniform(0.1, 1.5)));
     const Eigen::Quaterniond q = rng.rotation();
     // Same axis (or reversed), offset both along and across it: overlapping or disjoint spans.
-    const Eigen::Quaterniond q1 = (i % 2) ? q : q * Eigen::Quaterniond(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()));
-    const Eigen::Vector3d offset = q * Eigen::Vector3d(rng.uniform(-3, 3), rng.uniform(-1, 1), rng.uniform(-1, 1));
-    const Eigen::Vector3d base = rng.vec(-1, 1);
-    checkCapsulePair(c0, gq::Transform<T>(base.cast<T>(), q.cast<T>()), c1,
-                     gq::Transform<T>((base + offset).cast<T>(), q1.cast<T>()), i);
+    const double turn = (i % 2) ? 0 : M_PI;
+    const Eigen::Vector3d offset(rng.uniform(-3, 3), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    checkTurnedCapsulePair(c0, c1, q, turn, offset, rng.vec(-1, 1), i);
+  }
+}
+
+// Axes a small angle apart (1e-6 to 1e-2 rad), side by side with the spans shifted: the closest points sit at
+// one end, which the Gram-determinant form of the segment solve (ae - b^2 below eps * ae read as parallel) missed
+// by up to |d| sin(angle), 5e-4 in float.
+TYPED_TEST(DistanceClosedForm, CapsuleCapsuleNearlyParallelAxesAreExact) {
+  using T = TypeParam;
+  Rng rng(16);
+  for (int i = 0; i < kPoses; ++i) {
+    const gq::CapsuleGeometry<T> c0(T(rng.uniform(0.05, 0.2)), T(rng.uniform(0.5, 1.5)));
+    const gq::CapsuleGeometry<T> c1(T(rng.uniform(0.05, 0.2)), T(rng.uniform(0.5, 1.5)));
+    const Eigen::Quaterniond q = rng.rotation();
+    const double angle = std::pow(10.0, rng.uniform(-6, -2)) * (i % 2 ? 1 : -1);
+    const Eigen::Vector3d offset(rng.uniform(-1, 1), rng.uniform(0.5, 1), 0);
+    checkTurnedCapsulePair(c0, c1, q, angle, offset, rng.vec(-1, 1), i);
   }
 }
 

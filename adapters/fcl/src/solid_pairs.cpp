@@ -327,10 +327,7 @@ template <class S> void distanceWithoutDepth(const Geometry<S>& a, const Transfo
     out.normal = out.point0 = out.point1 = Vec3<S>::Zero();
     return;
   }
-  out.distance = g.distance;
-  out.normal = g.normal;
-  out.point0 = g.point0;
-  out.point1 = g.point1;
+  k::writeSeparated(g, out);
 }
 
 template <class S, GT A, GT B>

@@ -30,4 +30,13 @@ template <class T> inline Vec3<T> unitOr(const Vec3<T>& d, const Vec3<T>& fallba
   return tryUnit(d, unit) ? unit : fallback;
 }
 
+// A unit vector perpendicular to v: v crossed with the coordinate axis least aligned with it (well conditioned);
+// +X for v = 0.
+template <class T> inline Vec3<T> anyPerpendicular(const Vec3<T>& v) {
+  if (!(v.squaredNorm() > T(0))) return Vec3<T>::UnitX();
+  Eigen::Index i;
+  v.cwiseAbs().minCoeff(&i);
+  return v.cross(Vec3<T>::Unit(i)).normalized();
+}
+
 }  // namespace gq::detail

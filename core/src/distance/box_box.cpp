@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "distance/distance.h"
+#include "shapes/segment.h"
 #include "gq/tolerances.h"
 #include "overlap/box_box_sat.h"
 #include "overlap/segment_box.h"
@@ -94,19 +95,9 @@ template <class T>
 bool distanceBoxBoxOverlapping(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01,
                                DistanceResult<T>& local) {
   const BoxPair<T> pair = boxPair(h0, h1, r01, t01);
-  T depth = std::numeric_limits<T>::max();
-  Vec3<T> n = Vec3<T>::UnitX();
-  bool separated = false;
-  forEachBoxAxis(pair, [&](const BoxAxis<T>& axis) {
-    if (axis.overlap < T(0)) return separated = true;
-    const T d = axis.overlap / axis.length;
-    if (d < depth) {
-      depth = d;
-      n = (axis.gap > T(0) ? axis.axis : Vec3<T>(-axis.axis)) / axis.length;  // towards box 1
-    }
-    return false;
-  });
-  if (separated) return false;
+  T depth;
+  Vec3<T> n;  // towards box 1
+  if (!leastOverlapAxis(pair, depth, n)) return false;
   const Vec3<T> moved = t01 + depth * n;  // box 1 touching box 0
   const T size = h0.norm() + h1.norm() + t01.norm();
   const T tolerance = T(kTouchUlps) * std::numeric_limits<T>::epsilon() * size;

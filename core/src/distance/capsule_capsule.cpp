@@ -2,6 +2,7 @@
 // centre-to-centre direction; the minimum translation is then along the common perpendicular d0 x d1 (the
 // Minkowski difference of two segments is flat), or orthogonal to the axis when they are parallel.
 #include "distance/distance.h"
+#include "shapes/segment.h"
 
 namespace gq::detail {
 namespace {
@@ -9,7 +10,7 @@ namespace {
 template <class T> Vec3<T> intersectingAxesNormal(const Vec3<T>& d0, const Vec3<T>& d1, const Vec3<T>& towards) {
   const Vec3<T> c = d0.cross(d1);
   Vec3<T> n;
-  if (!tryUnit(c, n)) n = anyOrthogonal<T>(d0.squaredNorm() > T(0) ? d0 : d1);
+  if (!tryUnit(c, n)) n = anyPerpendicular<T>(d0.squaredNorm() > T(0) ? d0 : d1);
   return n.dot(towards) < T(0) ? Vec3<T>(-n) : n;
 }
 

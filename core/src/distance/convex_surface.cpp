@@ -55,13 +55,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
     for (int lane = 0; lane < 4; ++lane) {
       if (node.child[lane] == Bvh4Node::kEmpty) continue;
       const Entry c{node.child[lane], boxDistanceSq(box, mesh.childWorldBounds(node, lane))};
-      if (c.lower > best.boundSq()) continue;
-      int j = n++;
-      while (j > 0 && children[j - 1].lower < c.lower) {
-        children[j] = children[j - 1];
-        --j;
-      }
-      children[j] = c;
+      if (!(c.lower > best.boundSq())) insertNearestLast(children, n, c);
     }
     for (int i = 0; i < n; ++i) stack.push_back(children[i]);
   }

@@ -70,19 +70,8 @@ template <class T>
 Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
                    GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance = T(0));
 
-// Closest points of segments [p0, q0] and [p1, q1] (either may have zero length); s, t in [0, 1].
-template <class T> struct SegmentClosest {
-  Vec3<T> c0, c1;
-  T s, t;
-};
-template <class T>
-SegmentClosest<T> closestSegmentSegment(const Vec3<T>& p0, const Vec3<T>& q0, const Vec3<T>& p1, const Vec3<T>& q1);
-template <class T> Vec3<T> closestOnSegment(const Vec3<T>& p, const Vec3<T>& q, const Vec3<T>& x);
-
 // Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide.
 template <class T>
 void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback, DistanceResult<T>& out);
-// A unit vector orthogonal to d (d non-zero), or +X for d = 0.
-template <class T> Vec3<T> anyOrthogonal(const Vec3<T>& d);
 
 }  // namespace gq::detail

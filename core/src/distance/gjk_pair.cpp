@@ -11,10 +11,7 @@ Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geome
   const ConvexShape<T> b = makeConvexShape(g1, pose1);
   const GjkResult<T> g = gjkDistance(a, b, cache, stopTolerance);
   if (!g.coresOverlap) {
-    out.distance = g.distance;
-    out.normal = g.normal;
-    out.point0 = g.point0;
-    out.point1 = g.point1;
+    writeSeparated(g, out);
     return g.status.ok() ? Status() : Status::warning(g.status.message);
   }
   const EpaResult<T> e = epaPenetration(a, b, &g.simplex);

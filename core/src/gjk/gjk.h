@@ -103,6 +103,14 @@ template <class T> struct GjkResult {
   GjkSimplex<T> simplex;       // final simplex (handed to EPA when the cores overlap)
 };
 
+// The distance result of cores that are apart (!g.coresOverlap): signed distance, normal and witnesses.
+template <class T> void writeSeparated(const GjkResult<T>& g, DistanceResult<T>& out) {
+  out.distance = g.distance;
+  out.normal = g.normal;
+  out.point0 = g.point0;
+  out.point1 = g.point1;
+}
+
 // Distance between a and b. `cache` (optional): warm-start direction in a's local frame, updated on return.
 // `stopTolerance` (optional, absolute): stop once the certified error bound (the duality gap) is below
 // max(gjkTolerance(a, b), stopTolerance), for a caller that asked for less (FCL's DistanceRequest::distance_tolerance);

@@ -163,13 +163,7 @@ template <class T> MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, c
         const Bounds3<T> box = b.childWorldBounds(node, lane);
         c = {{p.refA, node.child[lane], p.boxA, box}, boxDistanceSq(p.boxA, box)};
       }
-      if (c.lower > best.distSq) continue;
-      int j = n++;
-      while (j > 0 && children[j - 1].lower < c.lower) {
-        children[j] = children[j - 1];
-        --j;
-      }
-      children[j] = c;
+      if (!(c.lower > best.distSq)) insertNearestLast(children, n, c);
     }
     for (int i = 0; i < n; ++i) stack.push_back(children[i]);
   }

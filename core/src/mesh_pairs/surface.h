@@ -56,6 +56,17 @@ template <class T> T boxDistanceSq(const Bounds3<T>& a, const Bounds3<T>& b) {
   return gap.squaredNorm();
 }
 
+// Best-first BVH descent: inserts `e` into children[0, n) kept in decreasing order of `e.lower` (a lower bound on
+// the distance), so that pushing them in order onto a stack pops the nearest child first.
+template <class Entry> void insertNearestLast(Entry* children, int& n, const Entry& e) {
+  int j = n++;
+  while (j > 0 && children[j - 1].lower < e.lower) {
+    children[j] = children[j - 1];
+    --j;
+  }
+  children[j] = e;
+}
+
 template <class T> class MeshSurface {
  public:
   MeshSurface(const TriangleMeshGeometry<T>& g, const Transform<T>& pose)

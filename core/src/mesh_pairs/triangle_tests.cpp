@@ -7,18 +7,10 @@
 
 #include "common/unit_vector.h"
 #include "mesh/triangle.h"
+#include "shapes/segment.h"
 
 namespace gq::detail {
 namespace {
-
-// Point on segment [p, q] closest to x.
-template <class T> Vec3<T> closestOnSegmentTo(const Vec3<T>& p, const Vec3<T>& q, const Vec3<T>& x) {
-  const Vec3<T> d = q - p;
-  const T len2 = d.squaredNorm();
-  if (len2 <= T(0)) return p;
-  const T t = std::clamp((x - p).dot(d) / len2, T(0), T(1));
-  return p + t * d;
-}
 
 // Whether x, a point of the triangle's plane, lies inside or on the triangle (edge functions share the sign of n).
 template <class T> bool planePointInTriangle(const Vec3<T>& x, const Triangle<T>& tri, const Vec3<T>& n) {
@@ -50,36 +42,6 @@ template <class T> bool separatesTriangles(const Vec3<T>& axis, const Triangle<T
 }  // namespace
 
 template <class T>
-SegmentPairClosest<T> closestSegmentPair(const Vec3<T>& p0, const Vec3<T>& q0, const Vec3<T>& p1, const Vec3<T>& q1) {
-  // Ericson 5.1.9: minimise |p0 + s d0 - p1 - t d1|^2 over [0,1]^2, clamping s then t then s again.
-  const Vec3<T> d0 = q0 - p0, d1 = q1 - p1, r = p0 - p1;
-  const T a = d0.squaredNorm(), e = d1.squaredNorm(), f = d1.dot(r);
-  T s = T(0), t = T(0);
-  if (a <= T(0) && e <= T(0)) return {p0, p1};
-  if (a <= T(0)) {
-    t = std::clamp(f / e, T(0), T(1));
-  } else {
-    const T c = d0.dot(r);
-    if (e <= T(0)) {
-      s = std::clamp(-c / a, T(0), T(1));
-    } else {
-      const T b = d0.dot(d1);
-      const T denom = a * e - b * b;  // >= 0; 0 for parallel segments (any s works: take 0)
-      s = denom > T(0) ? std::clamp((b * f - c * e) / denom, T(0), T(1)) : T(0);
-      t = (b * s + f) / e;
-      if (t < T(0)) {
-        t = T(0);
-        s = std::clamp(-c / a, T(0), T(1));
-      } else if (t > T(1)) {
-        t = T(1);
-        s = std::clamp((b - c) / a, T(0), T(1));
-      }
-    }
-  }
-  return {Vec3<T>(p0 + s * d0), Vec3<T>(p1 + t * d1)};
-}
-
-template <class T>
 SegmentTriangleClosest<T> closestSegmentTriangle(const Vec3<T>& p, const Vec3<T>& q, const Triangle<T>& tri) {
   const Vec3<T>& a = tri.verts[0];
   const Vec3<T> n = (tri.verts[1] - a).cross(tri.verts[2] - a);
@@ -100,7 +62,7 @@ SegmentTriangleClosest<T> closestSegmentTriangle(const Vec3<T>& p, const Vec3<T>
   offer(p, closestPointOnTriangle(p, tri.verts[0], tri.verts[1], tri.verts[2]));
   offer(q, closestPointOnTriangle(q, tri.verts[0], tri.verts[1], tri.verts[2]));
   for (int i = 0; i < 3; ++i) {
-    const SegmentPairClosest<T> c = closestSegmentPair(p, q, tri.verts[i], tri.verts[(i + 1) % 3]);
+    const SegmentClosest<T> c = closestSegmentSegment(p, q, tri.verts[i], tri.verts[(i + 1) % 3]);
     offer(c.c0, c.c1);
   }
   return best;
@@ -188,8 +150,6 @@ template <class T> TrianglePairClosest<T> closestTriangleTriangle(const Triangle
   return best;
 }
 
-template SegmentPairClosest<float> closestSegmentPair(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&,
-                                                    const Vec3<float>&);
 template SegmentTriangleClosest<float> closestSegmentTriangle(const Vec3<float>&, const Vec3<float>&, const Triangle<float>&);
 template SegmentTriangleExit<float> segmentTriangleExit(const Vec3<float>&, const Vec3<float>&, const Triangle<float>&,
                                                          const Vec3<float>*);
@@ -199,8 +159,6 @@ template bool overlapBoxTriangle(const Vec3<float>&, const Triangle<float>&);
 template bool overlapTriangleTriangle(const Triangle<float>&, const Triangle<float>&);
 template TrianglePairClosest<float> closestTriangleTriangle(const Triangle<float>&, const Triangle<float>&);
 
-template SegmentPairClosest<double> closestSegmentPair(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&,
-                                                    const Vec3<double>&);
 template SegmentTriangleClosest<double> closestSegmentTriangle(const Vec3<double>&, const Vec3<double>&, const Triangle<double>&);
 template SegmentTriangleExit<double> segmentTriangleExit(const Vec3<double>&, const Vec3<double>&, const Triangle<double>&,
                                                           const Vec3<double>*);

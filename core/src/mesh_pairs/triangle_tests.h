@@ -13,13 +13,6 @@ template <class T> struct SegmentTriangleClosest {
   Vec3<T> onTriangle = Vec3<T>::Zero();
 };
 
-// Closest points of two segments [p0, q0], [p1, q1] (either may be a point).
-template <class T> struct SegmentPairClosest {
-  Vec3<T> c0, c1;
-};
-template <class T>
-SegmentPairClosest<T> closestSegmentPair(const Vec3<T>& p0, const Vec3<T>& q0, const Vec3<T>& p1, const Vec3<T>& q1);
-
 // Segment vs triangle: 0 when the segment crosses (or touches) the triangle, else the minimum over the endpoints vs
 // the triangle and the segment vs the three edges (the closest pair of two disjoint convex sets has a vertex or an
 // edge-edge pair on it).

@@ -78,6 +78,22 @@ template <class T> Status checkFiniteResult(const PenetrationResult<T>& r) {
   if (isFinite(r.direction) && std::isfinite(r.depth)) return {};
   return Status::notConverged("mesh penetration overflowed the scalar range (coordinates too large for this type)");
 }
+
+// The iteration run in the surface's frame (surface built at the identity), its direction rotated back to world;
+// `result` and `iterations` are written only on success.
+template <class T, class Surface>
+Status penetrationInSurfaceFrame(PenetrationResult<T>& result, const Geometry<T>& geom, const Transform<T>& pose,
+                                 const Surface& surface, const Transform<T>& surfacePose, bool doubleSided,
+                                 std::uint32_t maxIter, std::uint32_t* iterations) {
+  PenetrationResult<T> r;
+  std::uint32_t moves = 0;
+  iteratePenetration(r, geom, pose.relativeTo(surfacePose), surface, doubleSided, maxIter, moves);
+  if (r.penetrating) r.direction = surfacePose.rotate(r.direction);
+  if (Status f = checkFiniteResult(r); !f.ok()) return f;
+  result = r;
+  if (iterations) *iterations = moves;
+  return Status();
+}
 }  // namespace
 
 template <class T>
@@ -87,15 +103,8 @@ Status computeTriangleMeshPenetration(PenetrationResult<T>& result, const Geomet
   return detail::guarded([&]() -> Status {
     if (Status s = checkPenetrationShape(geom, pose, maxIter); !s.ok()) return s;
     if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), meshPose, "meshPose"); !s.ok()) return s;
-    const detail::MeshSurface<T> surface(mesh, Transform<T>());
-    PenetrationResult<T> r;
-    std::uint32_t moves = 0;
-    iteratePenetration(r, geom, pose.relativeTo(meshPose), surface, mesh.doubleSided(), maxIter, moves);
-    if (r.penetrating) r.direction = meshPose.rotate(r.direction);
-    if (Status f = checkFiniteResult(r); !f.ok()) return f;
-    result = r;
-    if (iterations) *iterations = moves;
-    return Status();
+    return penetrationInSurfaceFrame(result, geom, pose, detail::MeshSurface<T>(mesh, Transform<T>()), meshPose,
+                                     mesh.doubleSided(), maxIter, iterations);
   });
 }
 
@@ -109,15 +118,8 @@ Status computeHeightFieldPenetration(PenetrationResult<T>& result, const Geometr
       return s;
     if (!detail::heightFieldIsWellFormed(*heightField.heightField))
       return Status::invalid("heightfield data is empty or inconsistent (use cookHeightField)");
-    const detail::HeightFieldSurface<T> surface(heightField, Transform<T>());
-    PenetrationResult<T> r;
-    std::uint32_t moves = 0;
-    iteratePenetration(r, geom, pose.relativeTo(heightFieldPose), surface, heightField.doubleSided(), maxIter, moves);
-    if (r.penetrating) r.direction = heightFieldPose.rotate(r.direction);
-    if (Status f = checkFiniteResult(r); !f.ok()) return f;
-    result = r;
-    if (iterations) *iterations = moves;
-    return Status();
+    return penetrationInSurfaceFrame(result, geom, pose, detail::HeightFieldSurface<T>(heightField, Transform<T>()),
+                                     heightFieldPose, heightField.doubleSided(), maxIter, iterations);
   });
 }
 

@@ -7,6 +7,7 @@
 // axes (normalised) is the exact minimum translation distance: the facet normals of the Minkowski difference are
 // among them, and any other axis only overestimates.
 #include <cmath>
+#include <limits>
 
 #include "gq/geometry.h"
 #include "gq/tolerances.h"
@@ -74,6 +75,24 @@ template <class T, class Visit> void forEachBoxAxis(const BoxPair<T>& s, Visit&&
       if (visit(BoxAxis<T>{axis, ra + rb - std::abs(gap), gap, std::sqrt(sinSq)})) return;
     }
   }
+}
+
+// The minimum translation distance: the least normalised overlap over the 15 axes (face axes win ties) and its
+// unit axis pointing from box 0 towards box 1 (the sign of t.L), in box 0's frame. False when an axis separates.
+template <class T> bool leastOverlapAxis(const BoxPair<T>& s, T& depth, Vec3<T>& towardsBox1) {
+  depth = std::numeric_limits<T>::max();
+  towardsBox1 = Vec3<T>::UnitX();
+  bool separated = false;
+  forEachBoxAxis(s, [&](const BoxAxis<T>& axis) {
+    if (axis.overlap < T(0)) return separated = true;
+    const T d = axis.overlap / axis.length;
+    if (d < depth) {
+      depth = d;
+      towardsBox1 = (axis.gap > T(0) ? axis.axis : Vec3<T>(-axis.axis)) / axis.length;
+    }
+    return false;
+  });
+  return !separated;
 }
 
 }  // namespace gq::detail

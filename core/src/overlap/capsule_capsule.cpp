@@ -1,14 +1,14 @@
 // Capsule/capsule overlap: segment-segment distance <= r0 + r1.
 #include "overlap/overlap.h"
-#include "overlap/closest_points.h"
+#include "shapes/segment.h"
 
 namespace gq::detail {
 
 template <class T>
 bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& a0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1) {
-  const SegmentPair<T> cp = closestPointsSegmentSegment(Segment<T>{c0 - a0, c0 + a0}, Segment<T>{c1 - a1, c1 + a1});
+  const SegmentClosest<T> cp = closestSegmentSegment(Vec3<T>(c0 - a0), Vec3<T>(c0 + a0), Vec3<T>(c1 - a1), Vec3<T>(c1 + a1));
   const T r = r0 + r1;
-  return (cp.p0 - cp.p1).squaredNorm() <= r * r;
+  return (cp.c0 - cp.c1).squaredNorm() <= r * r;
 }
 
 template <class T>

@@ -1,6 +1,6 @@
 // Plane/box overlap: the box support point along -n lies in the half-space x <= 0.
 #include "overlap/overlap.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 
 namespace gq::detail {
 

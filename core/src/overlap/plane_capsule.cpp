@@ -1,6 +1,6 @@
 // Plane/capsule overlap: the lower capsule end is within r of the half-space x <= 0.
 #include "overlap/overlap.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 
 namespace gq::detail {
 

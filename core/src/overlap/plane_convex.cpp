@@ -1,6 +1,6 @@
 // Plane/convex overlap: some hull vertex lies in the half-space x <= 0.
 #include "overlap/overlap.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 #include "overlap/polytope.h"
 
 namespace gq::detail {

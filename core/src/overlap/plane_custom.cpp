@@ -1,6 +1,6 @@
 // Plane/custom overlap: the custom shape's support point along -n lies in the half-space x <= 0.
 #include "gq/custom.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 #include "overlap/overlap.h"
 
 namespace gq::detail {

@@ -391,7 +391,7 @@ template <class T> ClosestResult<T> closestPointToPolytope(const Vec3<T>& p, con
     if (insidePolygon(poly, f, q)) best = {s, p, q};
   }
   for (const auto& e : poly.topology->edges) {
-    const Vec3<T> q = closestPointOnSegment(Segment<T>{poly.vertices[e[0]], poly.vertices[e[1]]}, p);
+    const Vec3<T> q = closestPointOnSegment(poly.vertices[e[0]], poly.vertices[e[1]], p);
     const T d = (p - q).norm();
     if (d < best.distance) best = {d, p, q};
   }
@@ -410,9 +410,9 @@ template <class T> ClosestResult<T> closestSegmentToPolytope(const Segment<T>& s
   const ClosestResult<T> atB = closestPointToPolytope(s.b, poly);
   if (atB.distance < best.distance) best = atB;
   for (const auto& e : poly.topology->edges) {
-    const SegmentPair<T> cp = closestPointsSegmentSegment(s, Segment<T>{poly.vertices[e[0]], poly.vertices[e[1]]});
-    const T d = (cp.p0 - cp.p1).norm();
-    if (d < best.distance) best = {d, cp.p0, cp.p1};
+    const SegmentClosest<T> cp = closestSegmentSegment(s.a, s.b, poly.vertices[e[0]], poly.vertices[e[1]]);
+    const T d = (cp.c0 - cp.c1).norm();
+    if (d < best.distance) best = {d, cp.c0, cp.c1};
   }
   return best;
 }

@@ -21,7 +21,7 @@
 #include "gq/cooking.h"
 #include "gq/geometry.h"
 #include "gq/transform.h"
-#include "overlap/closest_points.h"
+#include "shapes/segment.h"
 
 namespace gq::detail {
 

@@ -1,11 +1,11 @@
 // Sphere/capsule overlap: distance from the centre to the capsule segment <= r0 + r1.
 #include "overlap/overlap.h"
-#include "overlap/closest_points.h"
+#include "shapes/segment.h"
 
 namespace gq::detail {
 
 template <class T> bool overlapSphereCapsule(const Vec3<T>& c0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1) {
-  const Vec3<T> q = closestPointOnSegment(Segment<T>{c1 - a1, c1 + a1}, c0);
+  const Vec3<T> q = closestPointOnSegment(Vec3<T>(c1 - a1), Vec3<T>(c1 + a1), c0);
   const T r = r0 + r1;
   return (c0 - q).squaredNorm() <= r * r;
 }

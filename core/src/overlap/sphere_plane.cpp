@@ -1,7 +1,7 @@
 // Sphere/plane overlap: the plane is the solid half-space x <= 0 of its frame, so the sphere overlaps
 // when its centre lies no more than r in front of the plane.
 #include "overlap/overlap.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 
 namespace gq::detail {
 

@@ -8,21 +8,10 @@ namespace gq::detail {
 template <class T>
 bool penetrationBoxBox(const BoxGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1,
                        Vec3<T>& direction, T& depth) {
-  const BoxPair<T> pair = boxPair(g0, p0, g1, p1);
-  T best = std::numeric_limits<T>::max();
-  Vec3<T> bestDir = Vec3<T>::UnitX();
-  bool separated = false;
-  forEachBoxAxis(pair, [&](const BoxAxis<T>& axis) {
-    if (axis.overlap < T(0)) return separated = true;
-    const T d = axis.overlap / axis.length;
-    if (d < best) {
-      best = d;
-      bestDir = (axis.gap > T(0) ? -axis.axis : axis.axis) / axis.length;
-    }
-    return false;
-  });
-  if (separated) return false;
-  direction = p0.rotate(bestDir);
+  T best;
+  Vec3<T> towardsBox1;
+  if (!leastOverlapAxis(boxPair(g0, p0, g1, p1), best, towardsBox1)) return false;
+  direction = p0.rotate(Vec3<T>(-towardsBox1));
   depth = best;
   return true;
 }

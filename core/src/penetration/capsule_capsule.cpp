@@ -1,7 +1,7 @@
 // Capsule/capsule MTD: closest segment points; crossing segments push along the cross product of
 // the axes (the Minkowski difference of two segments is flat, so its depth is 0 along that normal).
 #include "penetration/penetration.h"
-#include "overlap/closest_points.h"
+#include "shapes/segment.h"
 #include "gq/tolerances.h"
 #include "common/unit_vector.h"
 
@@ -26,8 +26,9 @@ template <class T> Vec3<T> crossingDirection(const Transform<T>& p0, const Trans
 template <class T>
 bool penetrationCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1,
                                Vec3<T>& direction, T& depth) {
-  const SegmentPair<T> cp = closestPointsSegmentSegment(capsuleSegment(g0, p0), capsuleSegment(g1, p1));
-  const Vec3<T> d = cp.p0 - cp.p1;
+  const Segment<T> s0 = capsuleSegment(g0, p0), s1 = capsuleSegment(g1, p1);
+  const SegmentClosest<T> cp = closestSegmentSegment(s0.a, s0.b, s1.a, s1.b);
+  const Vec3<T> d = cp.c0 - cp.c1;
   const T len = d.norm();
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;

@@ -1,6 +1,6 @@
 // Plane/box MTD: the plane (geom0) moves back along -n by the depth of the box support point.
 #include "penetration/penetration.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 
 namespace gq::detail {
 

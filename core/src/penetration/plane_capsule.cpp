@@ -1,6 +1,6 @@
 // Plane/capsule MTD: the plane (geom0) moves back along -n until the lower capsule end clears it.
 #include "penetration/penetration.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 
 namespace gq::detail {
 

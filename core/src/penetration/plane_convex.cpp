@@ -1,7 +1,7 @@
 // Plane/convex MTD: the plane (geom0) moves back along -n by the depth of the deepest hull vertex.
 #include "gq/cooking.h"
 #include "penetration/penetration.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 
 namespace gq::detail {
 

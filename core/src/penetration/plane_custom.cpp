@@ -1,6 +1,6 @@
 // Plane/custom MTD: the plane (geom0) moves back along -n by the depth of the custom shape's support point.
 #include "gq/custom.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 #include "penetration/penetration.h"
 
 namespace gq::detail {

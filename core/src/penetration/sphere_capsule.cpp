@@ -1,7 +1,7 @@
 // Sphere/capsule MTD: sphere against the closest segment point; a centre on the segment pushes
 // perpendicular to it (every perpendicular gives the same depth r0 + r1).
 #include "penetration/penetration.h"
-#include "overlap/closest_points.h"
+#include "shapes/segment.h"
 #include "common/unit_vector.h"
 
 namespace gq::detail {
@@ -10,7 +10,7 @@ template <class T>
 bool penetrationSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1,
                               Vec3<T>& direction, T& depth) {
   const Vec3<T> axis = p1.rotate(Vec3<T>(g1.halfHeight, T(0), T(0)));
-  const Vec3<T> q = closestPointOnSegment(Segment<T>{p1.p - axis, p1.p + axis}, p0.p);
+  const Vec3<T> q = closestPointOnSegment(Vec3<T>(p1.p - axis), Vec3<T>(p1.p + axis), p0.p);
   const Vec3<T> d = p0.p - q;
   const T len = d.norm();
   const T pen = g0.radius + g1.radius - len;

@@ -1,6 +1,6 @@
 // Sphere/plane MTD: depth r - n.(c - p) along the plane normal n (half-space x <= 0 is solid).
 #include "penetration/penetration.h"
-#include "overlap/closest_points.h"
+#include "shapes/plane.h"
 
 namespace gq::detail {
 

@@ -1,7 +1,6 @@
 // Sphere/sphere MTD: depth r0 + r1 - |c0 - c1| along c0 - c1; coincident centres push along +X.
 #include "common/unit_vector.h"
 #include "penetration/penetration.h"
-#include "overlap/closest_points.h"
 
 namespace gq::detail {
 

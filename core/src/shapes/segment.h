@@ -1,8 +1,15 @@
 #pragma once
-// Closest point on a segment, used by capsule kernels.
+// Closest points on segments: the exact kernels behind every sphere/capsule pair, capsule sweeps and the
+// segment-triangle tests. Either segment may have zero length.
+#include <algorithm>
+
 #include "gq/math.h"
 
 namespace gq::detail {
+
+template <class T> struct Segment {
+  Vec3<T> a, b;
+};
 
 // Parameter s in [0, 1] of the point of segment a + s * (b - a) closest to p.
 template <class T> T closestParameterOnSegment(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& p) {
@@ -19,6 +26,46 @@ template <class T> Vec3<T> closestPointOnSegment(const Vec3<T>& a, const Vec3<T>
 // The capsule's core segment (local X axis) clamped: the closest point of it to a local point is (clamp(x), 0, 0).
 template <class T> Vec3<T> closestPointOnCapsuleAxis(T halfHeight, const Vec3<T>& localPoint) {
   return Vec3<T>(std::clamp(localPoint.x(), -halfHeight, halfHeight), T(0), T(0));
+}
+
+template <class T> struct SegmentClosest {
+  Vec3<T> c0, c1;  // closest point on the first and on the second segment
+};
+
+// Minimise |p0 + s d0 - p1 - t d1|^2 over [0,1]^2: take the unconstrained line-line solution, clamp s, re-solve t
+// for that s, clamp t, then re-solve s for the clamped t (the standard procedure for convex quadratics on a box).
+// The line-line parameter is s = (p1 - p0).(d1 x n) / |n|^2 with n = d0 x d1, not (bf - ce) / (ae - b^2): the
+// Gram determinant ae - b^2 = |n|^2 cancels catastrophically for nearly parallel segments (relative error
+// eps / sin^2 of the angle instead of eps / sin), which in float moved closest points by ~1e-3 along the segments.
+// Parallel segments (n = 0): any s on the common range is a minimiser; s = 0 is taken before the clamping.
+template <class T>
+SegmentClosest<T> closestSegmentSegment(const Vec3<T>& p0, const Vec3<T>& q0, const Vec3<T>& p1, const Vec3<T>& q1) {
+  const Vec3<T> d0 = q0 - p0, d1 = q1 - p1, r = p0 - p1;
+  const T a = d0.squaredNorm(), e = d1.squaredNorm(), f = d1.dot(r);
+  T s = T(0), t = T(0);
+  if (!(a > T(0)) && !(e > T(0))) return {p0, p1};
+  if (!(a > T(0))) {
+    t = std::clamp(f / e, T(0), T(1));
+  } else {
+    const T c = d0.dot(r);
+    if (!(e > T(0))) {
+      s = std::clamp(-c / a, T(0), T(1));
+    } else {
+      const T b = d0.dot(d1);
+      const Vec3<T> n = d0.cross(d1);
+      const T nn = n.squaredNorm();
+      s = nn > T(0) ? std::clamp(-r.dot(d1.cross(n)) / nn, T(0), T(1)) : T(0);
+      t = (b * s + f) / e;
+      if (t < T(0)) {
+        t = T(0);
+        s = std::clamp(-c / a, T(0), T(1));
+      } else if (t > T(1)) {
+        t = T(1);
+        s = std::clamp((b - c) / a, T(0), T(1));
+      }
+    }
+  }
+  return {p0 + d0 * s, p1 + d1 * t};
 }
 
 }  // namespace gq::detail

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "gq/urdf/self_collision.h"
-#include "overlap/closest_points.h"  // core/src (private include path)
+#include "shapes/segment.h"  // core/src (private include path)
 
 namespace gq::urdf::detail {
 
@@ -20,9 +20,9 @@ template <class T> bool spheresOverlap(const Vec3<T>& ca, T ra, const Vec3<T>& c
 // form with a e - b^2 lost up to sqrt(eps) |d|; tests/urdf/cull_tests_test.cpp).
 template <class T>
 T segmentSquaredDistance(const Vec3<T>& p0, const Vec3<T>& d0, const Vec3<T>& p1, const Vec3<T>& d1) {
-  const gq::detail::SegmentPair<T> c =
-      gq::detail::closestPointsSegmentSegment(gq::detail::Segment<T>{p0, p0 + d0}, gq::detail::Segment<T>{p1, p1 + d1});
-  return (c.p0 - c.p1).squaredNorm();
+  const gq::detail::SegmentClosest<T> c =
+      gq::detail::closestSegmentSegment<T>(p0, Vec3<T>(p0 + d0), p1, Vec3<T>(p1 + d1));
+  return (c.c0 - c.c1).squaredNorm();
 }
 
 // Capsules (segment from `start` along `span`, radius) are disjoint when their segments are farther apart than the
