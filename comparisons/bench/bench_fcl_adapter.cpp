@@ -163,13 +163,19 @@ template <bool Gq> bool countCollision(::fcl::CollisionObjectd* a, ::fcl::Collis
   return false;
 }
 
-template <bool Gq> void BM_BroadphaseSelfCollide(benchmark::State& state) {
-  Scene scene;
+// gq's or FCL's dynamic AABB tree manager over the scene's objects, set up.
+template <bool Gq> std::unique_ptr<::fcl::BroadPhaseCollisionManagerd> setUpManager(Scene& scene) {
   std::unique_ptr<::fcl::BroadPhaseCollisionManagerd> manager;
   if (Gq) manager = std::make_unique<gq::fcl::DynamicAABBTreeCollisionManagerd>();
   else manager = std::make_unique<::fcl::DynamicAABBTreeCollisionManagerd>();
   manager->registerObjects(scene.pointers);
   manager->setup();
+  return manager;
+}
+
+template <bool Gq> void BM_BroadphaseSelfCollide(benchmark::State& state) {
+  Scene scene;
+  const auto manager = setUpManager<Gq>(scene);
   std::size_t pairs = 0;
   for (auto _ : state) {
     pairs = 0;
@@ -186,11 +192,7 @@ bool countCandidate(::fcl::CollisionObjectd*, ::fcl::CollisionObjectd*, void* da
 
 template <bool Gq> void BM_BroadphaseCandidates(benchmark::State& state) {
   Scene scene;
-  std::unique_ptr<::fcl::BroadPhaseCollisionManagerd> manager;
-  if (Gq) manager = std::make_unique<gq::fcl::DynamicAABBTreeCollisionManagerd>();
-  else manager = std::make_unique<::fcl::DynamicAABBTreeCollisionManagerd>();
-  manager->registerObjects(scene.pointers);
-  manager->setup();
+  const auto manager = setUpManager<Gq>(scene);
   std::size_t candidates = 0;
   for (auto _ : state) {
     candidates = 0;

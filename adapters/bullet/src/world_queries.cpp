@@ -71,6 +71,16 @@ class FiniteSweepResults final : public SweepCallback {
 
 bool isSurface(const ShapeView& v) { return v.kind == ShapeKind::Mesh || v.kind == ShapeKind::HeightField; }
 
+// The shape info Bullet's result callbacks read: a compound child's index (part -1), or the part and triangle of a
+// mesh face; null for a plain convex, as Bullet passes.
+btCollisionWorld::LocalShapeInfo* shapeInfo(const ShapeView& view, int child, std::uint32_t face,
+                                            btCollisionWorld::LocalShapeInfo& info) {
+  const TriangleIds ids = view.triangleIds(face);
+  info.m_shapePart = child >= 0 ? -1 : ids.part;
+  info.m_triangleIndex = child >= 0 ? child : ids.index;
+  return child >= 0 || isSurface(view) ? &info : nullptr;
+}
+
 // Rounding radius a query sees: only convex shapes carry Bullet's outside margin into rays and sweeps.
 Real roundingOf(const ShapeView& v) { return v.kind == ShapeKind::Convex ? v.margin : Real(0); }
 
@@ -131,11 +141,7 @@ class RayVisitor final : public btBroadphaseRayCallback {
     const Real fraction = hit.distance / length;
     if (!(fraction < cb_.m_closestHitFraction)) return true;
     btCollisionWorld::LocalShapeInfo info;
-    const TriangleIds ids = view.triangleIds(hit.face);
-    info.m_shapePart = child >= 0 ? -1 : ids.part;
-    info.m_triangleIndex = child >= 0 ? child : ids.index;
-    const bool named = child >= 0 || isSurface(view);
-    btCollisionWorld::LocalRayResult result(object, named ? &info : nullptr, toBt(hit.normal), fraction);
+    btCollisionWorld::LocalRayResult result(object, shapeInfo(view, child, hit.face, info), toBt(hit.normal), fraction);
     cb_.addSingleResult(result, true);
     return true;
   }
@@ -224,12 +230,8 @@ class SweepVisitor final : public btBroadphaseRayCallback {
     const Real fraction = hit.distance / length;
     if (!(fraction < cb_.m_closestHitFraction)) return true;
     btCollisionWorld::LocalShapeInfo info;
-    const TriangleIds ids = target.triangleIds(hit.faceIndex);
-    info.m_shapePart = child >= 0 ? -1 : ids.part;
-    info.m_triangleIndex = child >= 0 ? child : ids.index;
-    const bool named = child >= 0 || isSurface(target);
-    btCollisionWorld::LocalConvexResult result(object, named ? &info : nullptr, toBt(hit.normal), toBt(hit.position),
-                                               fraction);
+    btCollisionWorld::LocalConvexResult result(object, shapeInfo(target, child, hit.faceIndex, info), toBt(hit.normal),
+                                               toBt(hit.position), fraction);
     cb_.addSingleResult(result, true);
     return true;
   }

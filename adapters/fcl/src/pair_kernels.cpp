@@ -290,22 +290,22 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
   const TriangleMeshGeometry<T>* ma = meshOf(a);
   const TriangleMeshGeometry<T>* mb = meshOf(b);
   if (ma && mb) return meshMeshContacts(*ma, pa, *mb, pb, withGeometry, room, out);
-  if ((ma && b.isPlaneLike()) || (mb && a.isPlaneLike())) {
+  // One mesh: the kernel takes the mesh first; contacts it adds for a mesh in b are flipped back to a -> b.
+  auto meshFirst = [&](auto&& contacts) {
     const std::size_t first = out.size();
-    const Status s = ma ? meshPlaneContacts(*ma, pa, b, pb, withGeometry, room, out)
-                        : meshPlaneContacts(*mb, pb, a, pa, withGeometry, room, out);
+    const Status s = ma ? contacts(*ma, pa, b, pb) : contacts(*mb, pb, a, pa);
     if (mb)
       for (std::size_t i = first; i < out.size(); ++i) flip(out[i]);
     return s;
-  }
-  if (ma || mb) {
-    const std::size_t first = out.size();
-    const Status s = ma ? meshShapeContacts(*ma, pa, b, pb, withGeometry, room, out)
-                        : meshShapeContacts(*mb, pb, a, pa, withGeometry, room, out);
-    if (mb)
-      for (std::size_t i = first; i < out.size(); ++i) flip(out[i]);
-    return s;
-  }
+  };
+  if ((ma && b.isPlaneLike()) || (mb && a.isPlaneLike()))
+    return meshFirst([&](const auto& m, const auto& pm, const auto& o, const auto& po) {
+      return meshPlaneContacts(m, pm, o, po, withGeometry, room, out);
+    });
+  if (ma || mb)
+    return meshFirst([&](const auto& m, const auto& pm, const auto& o, const auto& po) {
+      return meshShapeContacts(m, pm, o, po, withGeometry, room, out);
+    });
   if (a.shape == FclShape::Plane || b.shape == FclShape::Plane) {
     if (a.isPlaneLike() && b.isPlaneLike()) return Status::unsupported("plane against plane");
     const bool planeFirst = a.shape == FclShape::Plane;

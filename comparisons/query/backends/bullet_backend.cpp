@@ -415,6 +415,13 @@ Result adapterSweep(AdapterWorld& w, BulletShapes& shapes, const SweepCase& q, i
 }
 #endif
 
+// A Bullet build answers its btScalar's precision; the other one names the program that answers it.
+Result otherPrecision(Precision p) {
+  return Result::failure(std::string(kBulletPrecisionUnsupported) + (p == Precision::Float
+                                                                         ? "float is answered by gq-query-bullet"
+                                                                         : "double is answered by gq-query-bullet64"));
+}
+
 }  // namespace
 
 struct BulletBackend::Impl {
@@ -425,10 +432,7 @@ BulletBackend::BulletBackend() : impl_(new Impl) {}
 BulletBackend::~BulletBackend() { delete impl_; }
 
 Result BulletBackend::run(const Case& c, int repeat) {
-  if (c.precision != kNativePrecision)
-    return Result::failure(std::string(kBulletPrecisionUnsupported) +
-                           (c.precision == Precision::Float ? "float is answered by gq-query-bullet"
-                                                            : "double is answered by gq-query-bullet64"));
+  if (c.precision != kNativePrecision) return otherPrecision(c.precision);
   switch (c.query) {
     case QueryKind::Raycast: return raycast(impl_->shapes, std::get<RaycastCase>(c.input), repeat);
     case QueryKind::Overlap:
@@ -449,10 +453,7 @@ GqBulletBackend::GqBulletBackend() : impl_(new Impl) {}
 GqBulletBackend::~GqBulletBackend() { delete impl_; }
 
 Result GqBulletBackend::run(const Case& c, int repeat) {
-  if (c.precision != kNativePrecision)
-    return Result::failure(std::string(kBulletPrecisionUnsupported) +
-                           (c.precision == Precision::Float ? "float is answered by gq-query-bullet"
-                                                            : "double is answered by gq-query-bullet64"));
+  if (c.precision != kNativePrecision) return otherPrecision(c.precision);
   switch (c.query) {
     case QueryKind::Raycast: return adapterRaycast(impl_->world, impl_->shapes, std::get<RaycastCase>(c.input), repeat);
     case QueryKind::Overlap:

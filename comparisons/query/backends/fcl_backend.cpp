@@ -5,6 +5,7 @@
 
 #include <fcl/fcl.h>
 
+#include "fcl_distance_out.h"
 #include "native_shapes.h"
 #include "timing.h"
 
@@ -166,14 +167,7 @@ Result runPair(FclShapes<S>& shapes, fcl::GJKSolverType solver, QueryKind kind, 
     result.min_distance = -c.penetration_depth;
     result.nearest_points[0] = result.nearest_points[1] = c.pos;
   }
-  DistanceOut out;
-  out.distance = double(result.min_distance);
-  out.point0 = result.nearest_points[0].template cast<double>();  // world frame in FCL 0.7
-  out.point1 = result.nearest_points[1].template cast<double>();
-  // From geom0 to geom1: along p1 - p0 when separated, against it when penetrating.
-  const double sign = out.distance < 0 ? -1.0 : 1.0;
-  out.normal = sign * native::unitOrZero(out.point1 - out.point0);
-  return success<S>(ns, out);
+  return success<S>(ns, distanceOutOf(result));
 }
 
 }  // namespace

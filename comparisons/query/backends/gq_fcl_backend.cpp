@@ -4,6 +4,7 @@
 #include <map>
 
 #include "gq/fcl/fcl.h"
+#include "fcl_distance_out.h"
 #include "native_shapes.h"
 #include "timing.h"
 
@@ -125,13 +126,7 @@ template <class S> Result runPair(Shapes<S>& shapes, QueryKind kind, const PairC
     result.clear();
     gq::fcl::distance<S>(g0.get(), tf0, g1.get(), tf1, request, result);
   });
-  DistanceOut out;
-  out.distance = double(result.min_distance);
-  out.point0 = result.nearest_points[0].template cast<double>();
-  out.point1 = result.nearest_points[1].template cast<double>();
-  const double sign = out.distance < 0 ? -1.0 : 1.0;
-  out.normal = sign * native::unitOrZero(out.point1 - out.point0);
-  return success<S>(ns, out);
+  return success<S>(ns, distanceOutOf(result));
 }
 
 }  // namespace
