@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "gq/cooking.h"
 #include "gq/mesh_query.h"
@@ -96,12 +97,12 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   Geometry<T> query = shape;
   Transform<T> queryPose = shapePose;
   if (!exactCandidates) {
-    CandidateVolume<T> computed;
+    std::optional<CandidateVolume<T>> computed;  // only for a shape converted without the cache
     const CandidateVolume<T>* candidate = converted.cachedCandidate();
     if (!candidate) {
-      const Status s = candidateVolume(shape, computed);
+      const Status s = candidateVolume(shape, computed.emplace());
       if (!s.ok()) return s;
-      candidate = &computed;
+      candidate = &*computed;
     }
     query = candidate->volume;
     queryPose = shapePose * Transform<T>(candidate->centre);
