@@ -1,6 +1,6 @@
 #pragma once
-// Closest points on segments: the exact kernels behind every sphere/capsule pair, capsule sweeps and the
-// segment-triangle tests. Either segment may have zero length.
+// Closest points on segments, written once: the exact kernels behind the sphere/capsule pairs, the rounded cores of
+// the polytope tests, box-box touch points and the segment-triangle tests. Either segment may have zero length.
 #include <algorithm>
 
 #include "gq/math.h"
