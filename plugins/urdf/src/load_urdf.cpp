@@ -2,6 +2,7 @@
 // opened), SRDF pairs and group states, then the allowed-collision matrix. urdfdom reports parse errors through
 // console_bridge; they are captured into the returned Status instead of being printed.
 #include <console_bridge/console.h>
+#include <cstring>
 #include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
@@ -87,9 +88,34 @@ std::string jointGraphProblem(const std::string& xml) {
   return {};
 }
 
+// urdfdom 3 hands some messages built from attribute values to console_bridge as the printf format (a sphere radius
+// that is not a number, for one), and the handler above makes console_bridge format them: a "%s" in such a value
+// read a wild pointer (fuzz_urdf, session 9: SEGV in vsnprintf). No number, name or joint type needs '%', so an
+// attribute holding one is refused before urdfdom reads it; mesh filenames keep theirs (URL escapes, e.g. "%20").
+// The name of the first such attribute, or "" for none; read with TinyXML 1, as urdfdom reads it.
+std::string attributeWithPercent(const TiXmlElement* e) {
+  for (; e; e = e->NextSiblingElement()) {
+    for (const TiXmlAttribute* a = e->FirstAttribute(); a; a = a->Next())
+      if (std::strchr(a->Value(), '%') && std::strcmp(a->Name(), "filename") != 0)
+        return std::string(e->Value()) + " " + a->Name();
+    if (std::string inner = attributeWithPercent(e->FirstChildElement()); !inner.empty()) return inner;
+  }
+  return {};
+}
+
+std::string percentProblem(const std::string& xml) {
+  TiXmlDocument doc;
+  doc.Parse(xml.c_str());
+  if (doc.Error()) return {};  // urdfdom fails on the same error before reading any attribute
+  return attributeWithPercent(doc.FirstChildElement());
+}
+
 Status parseUrdfModel(const std::string& xml, ::urdf::ModelInterfaceSharedPtr& model) {
   if (const std::string problem = jointGraphProblem(xml); !problem.empty())
     return Status::parseError("URDF " + problem + " (the kinematic graph must be a tree)");
+  if (const std::string attribute = percentProblem(xml); !attribute.empty())
+    return Status::parseError("URDF attribute '" + attribute +
+                              "' contains '%' (only mesh filenames may: urdfdom would use it as a printf format)");
   std::lock_guard<std::mutex> lock(parserMutex());
   CapturedLog log;
   console_bridge::useOutputHandler(&log);
