@@ -1,25 +1,15 @@
-// Point vs capsule: the sphere answer around the closest point of the core segment (local X axis).
+// Point vs capsule: the ball answer about the closest point of the core segment (local X axis); a point on the
+// axis itself goes out along local Y.
 #include "point_distance/point_distance.h"
 #include "shapes/segment.h"
-#include "common/unit_vector.h"
 
 namespace gq::detail {
 
 template <class T>
 void pointDistanceCapsule(const CapsuleGeometry<T>& g, const Transform<T>& pose, const Vec3<T>& point,
                           PointDistanceResult<T>& out) {
-  const Vec3<T> local = pose.transformInv(point);
-  const Vec3<T> onAxis = closestPointOnCapsuleAxis(g.halfHeight, local);
-  const Vec3<T> m = local - onAxis;
-  const T len = m.norm();
-  out.closestIndex = kInvalidFaceIndex;
-  if (len <= g.radius) {
-    out.distance = T(0);
-    out.closestPoint = point;
-    return;
-  }
-  out.distance = len - g.radius;
-  out.closestPoint = pose.transform(Vec3<T>(onAxis + g.radius * unitOr(m, Vec3<T>(Vec3<T>::UnitY()))));
+  const Vec3<T> onAxis = closestPointOnCapsuleAxis(g.halfHeight, pose.transformInv(point));
+  pointDistanceBall(pose.transform(onAxis), g.radius, point, pose.rotate(Vec3<T>(Vec3<T>::UnitY())), out);
 }
 
 template void pointDistanceCapsule<float>(const CapsuleGeometry<float>&, const Transform<float>&, const Vec3<float>&, PointDistanceResult<float>&);

@@ -47,16 +47,11 @@ Status readFile(const std::string& path, const char* what, std::string& out) {
 // link into its parent's child list by shared pointer, so a cyclic joint graph (e.g. a joint whose parent is its
 // child) is never freed when urdfdom then rejects the model (found by fuzz_urdf under LeakSanitizer): such input is
 // refused first.
-// The document is read with TinyXML 1, urdfdom's own parser, as urdfdom reads it (up to the first NUL): TinyXML 1
-// accepts damaged XML that tinyxml2 rejects, so a stricter parser here let a cycle through (fuzz_urdf, session 5).
 // Kahn's algorithm: links left with a parent after peeling off every root are on or below a cycle.
 // A link that is the child of two joints is refused too (a URDF is a tree): urdfdom keeps the last parent it reads
 // but lists the link under both parents, so the breadth-first walk met it twice, once before its parent
 // (fuzz_urdf, session 6: an out-of-range parent index read in computeAllowedCollisions).
-std::string jointGraphProblem(const std::string& xml) {
-  TiXmlDocument doc;
-  doc.Parse(xml.c_str());
-  if (doc.Error()) return {};  // urdfdom fails on the same error before building any link
+std::string jointGraphProblem(const TiXmlDocument& doc) {
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) return {};
   std::multimap<std::string, std::string> children;  // parent -> child
@@ -92,7 +87,7 @@ std::string jointGraphProblem(const std::string& xml) {
 // that is not a number, for one), and the handler above makes console_bridge format them: a "%s" in such a value
 // read a wild pointer (fuzz_urdf, session 9: SEGV in vsnprintf). No number, name or joint type needs '%', so an
 // attribute holding one is refused before urdfdom reads it; mesh filenames keep theirs (URL escapes, e.g. "%20").
-// The name of the first such attribute, or "" for none; read with TinyXML 1, as urdfdom reads it.
+// The name of the first such attribute, or "" for none.
 std::string attributeWithPercent(const TiXmlElement* e) {
   for (; e; e = e->NextSiblingElement()) {
     for (const TiXmlAttribute* a = e->FirstAttribute(); a; a = a->Next())
@@ -103,19 +98,23 @@ std::string attributeWithPercent(const TiXmlElement* e) {
   return {};
 }
 
-std::string percentProblem(const std::string& xml) {
+// What urdfdom must not be given, or "" for none. The document is read with TinyXML 1, urdfdom's own parser, as
+// urdfdom reads it (up to the first NUL): TinyXML 1 accepts damaged XML that tinyxml2 rejects, so a stricter
+// parser here let a cycle through (fuzz_urdf, session 5). One parse serves both checks.
+std::string preParseProblem(const std::string& xml) {
   TiXmlDocument doc;
   doc.Parse(xml.c_str());
-  if (doc.Error()) return {};  // urdfdom fails on the same error before reading any attribute
-  return attributeWithPercent(doc.FirstChildElement());
+  if (doc.Error()) return {};  // urdfdom fails on the same error before building any link or reading an attribute
+  if (const std::string problem = jointGraphProblem(doc); !problem.empty())
+    return "URDF " + problem + " (the kinematic graph must be a tree)";
+  if (const std::string attribute = attributeWithPercent(doc.FirstChildElement()); !attribute.empty())
+    return "URDF attribute '" + attribute +
+           "' contains '%' (only mesh filenames may: urdfdom would use it as a printf format)";
+  return {};
 }
 
 Status parseUrdfModel(const std::string& xml, ::urdf::ModelInterfaceSharedPtr& model) {
-  if (const std::string problem = jointGraphProblem(xml); !problem.empty())
-    return Status::parseError("URDF " + problem + " (the kinematic graph must be a tree)");
-  if (const std::string attribute = percentProblem(xml); !attribute.empty())
-    return Status::parseError("URDF attribute '" + attribute +
-                              "' contains '%' (only mesh filenames may: urdfdom would use it as a printf format)");
+  if (const std::string problem = preParseProblem(xml); !problem.empty()) return Status::parseError(problem);
   std::lock_guard<std::mutex> lock(parserMutex());
   CapturedLog log;
   console_bridge::useOutputHandler(&log);
