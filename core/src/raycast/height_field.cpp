@@ -63,6 +63,24 @@ template <class T> void touchedRange(T a, T b, T pad, std::int64_t lo, std::int6
   last = std::int64_t(l);
 }
 
+// Calls step(k, slabSpan) for the unit slabs k in [lo, hi] (widened by `pad`) that the line o + t d crosses during
+// `span`, in the order it crosses them. Returns true when a step does (stop the query); a slab entered after
+// limit() ends the walk (slabs are entered in increasing t).
+template <class T, class Limit, class Step>
+bool walkSlabs(T o, T d, Span<T> span, std::int64_t lo, std::int64_t hi, T pad, Limit& limit, Step&& step) {
+  std::int64_t first, last;
+  touchedRange(o + span.t0 * d, o + span.t1 * d, pad, lo, hi, first, last);
+  const bool up = d >= T(0);
+  for (std::int64_t i = first; i <= last; ++i) {
+    const std::int64_t k = up ? i : first + last - i;
+    const Span<T> slab = clipToSlab(o, d, T(k) - pad, T(k + 1) + pad, span);
+    if (slab.empty()) continue;
+    if (slab.t0 > limit()) return false;
+    if (step(k, slab)) return true;
+  }
+  return false;
+}
+
 // Visits the grid cells (r, c) with r in [rowLo, rowHi], c in [colLo, colHi] that the line crosses during `span`,
 // front to back: row strips in the order the ray crosses them, and cells along each strip likewise. Each strip and
 // cell is widened by `pad` (grid units). Cells entered after limit() are skipped. visit(r, c, cellSpan) returns
@@ -70,26 +88,10 @@ template <class T> void touchedRange(T a, T b, T pad, std::int64_t lo, std::int6
 template <class T, class Limit, class Visit>
 bool walkGrid(const GridLine<T>& line, Span<T> span, std::int64_t rowLo, std::int64_t rowHi, std::int64_t colLo,
               std::int64_t colHi, T pad, Limit&& limit, Visit&& visit) {
-  std::int64_t rFirst, rLast;
-  touchedRange(line.ox + span.t0 * line.dx, line.ox + span.t1 * line.dx, pad, rowLo, rowHi, rFirst, rLast);
-  const bool rowsUp = line.dx >= T(0);
-  for (std::int64_t i = rFirst; i <= rLast; ++i) {
-    const std::int64_t r = rowsUp ? i : rFirst + rLast - i;
-    const Span<T> strip = clipToSlab(line.ox, line.dx, T(r) - pad, T(r + 1) + pad, span);
-    if (strip.empty()) continue;
-    if (strip.t0 > limit()) return false;  // strips are entered in increasing t
-    std::int64_t cFirst, cLast;
-    touchedRange(line.oz + strip.t0 * line.dz, line.oz + strip.t1 * line.dz, pad, colLo, colHi, cFirst, cLast);
-    const bool colsUp = line.dz >= T(0);
-    for (std::int64_t j = cFirst; j <= cLast; ++j) {
-      const std::int64_t c = colsUp ? j : cFirst + cLast - j;
-      const Span<T> cell = clipToSlab(line.oz, line.dz, T(c) - pad, T(c + 1) + pad, strip);
-      if (cell.empty()) continue;
-      if (cell.t0 > limit()) break;
-      if (visit(r, c, cell)) return true;
-    }
-  }
-  return false;
+  return walkSlabs(line.ox, line.dx, span, rowLo, rowHi, pad, limit, [&](std::int64_t r, const Span<T>& strip) {
+    return walkSlabs(line.oz, line.dz, strip, colLo, colHi, pad, limit,
+                     [&](std::int64_t c, const Span<T>& cell) { return visit(r, c, cell); });
+  });
 }
 
 template <class T> struct Candidate {
