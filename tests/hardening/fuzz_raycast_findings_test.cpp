@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "../fuzz/fuzz_decode.h"
@@ -71,6 +72,42 @@ TEST(FuzzRaycastFindings, ConvexEntryParameterThatOverflowsIsNoHit) {
   EXPECT_TRUE(r.hits.empty());
   for (const auto& h : r.hits) EXPECT_TRUE(std::isfinite(h.distance));
 }
+
+// A float box seen from x = -2.98e38 along +X with maxDist = inf (session 10, after 2.8M executions): in the box's
+// frame one direction component is tiny and the origin's carries a rounding error of the order of its ulp (~1e31),
+// so that slab's entry parameter overflowed to inf and came out as a hit at distance inf. At that range float cannot
+// tell whether the ray meets a box of size 1; the façade's rule (a hit has a finite distance) makes it a miss.
+TEST(FuzzRaycastFindings, BoxEntryParameterThatOverflowsIsNoHit) {
+  const Replay r = replayRaycast({0x43, 0x63, 0x48, 0xea, 0x6c, 0xa2, 0xe5, 0x00, 0x59, 0x8a, 0xe2, 0x1f, 0xf1,
+                                  0x95, 0x04, 0x3c, 0x02, 0x66, 0x05, 0xff, 0x79, 0x4d, 0x08, 0x5c, 0x24, 0xca,
+                                  0x41, 0xd6, 0x8f, 0xf5, 0xff, 0xff, 0x60, 0x10, 0x00, 0x73, 0x31, 0x26, 0x90,
+                                  0x3c, 0x00, 0x75, 0xf5, 0x54, 0xb4, 0x01, 0x00, 0x00, 0x01, 0x8d, 0x03});
+  ASSERT_EQ(r.type, gq::GeometryType::Box);
+  ASSERT_TRUE(r.status.ok()) << r.status.toString();
+  for (const auto& h : r.hits) EXPECT_TRUE(std::isfinite(h.distance));
+}
+
+// The same rule for a kernel the fuzzer has not reached: a plane approached at a grazing angle from far away, whose
+// hit parameter s / |n.d| exceeds the largest T. maxDist = inf: no hit; a ray that gets there within range still hits.
+template <class T> void expectGrazingFarPlaneIsNoHit(T far, T approach) {
+  const gq::Geometry<T> plane = gq::PlaneGeometry<T>();
+  const gq::Vec3<T> dir = gq::Vec3<T>(-approach, 1, 0).normalized();
+  gq::RaycastHit<T> hit;
+  std::uint32_t count = 9;
+  gq::Status s = gq::raycast(gq::Vec3<T>(far, 0, 0), dir, plane, gq::Transform<T>::identity(), std::numeric_limits<T>::infinity(),
+                             gq::kDefaultHitFlags, 1, &hit, count);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  EXPECT_EQ(count, 0u) << "hit at " << hit.distance;
+  s = gq::raycast(gq::Vec3<T>(T(1), 0, 0), dir, plane, gq::Transform<T>::identity(), std::numeric_limits<T>::infinity(),
+                  gq::kDefaultHitFlags, 1, &hit, count);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  ASSERT_EQ(count, 1u);
+  EXPECT_TRUE(std::isfinite(hit.distance));
+  EXPECT_NEAR(double(hit.distance), 1.0 / double(-dir.x()), 1e-5 / double(-dir.x()));
+}
+
+TEST(FuzzRaycastFindings, EntryParameterBeyondTheLargestFloatIsNoHit) { expectGrazingFarPlaneIsNoHit<float>(3e38f, 1e-6f); }
+TEST(FuzzRaycastFindings, EntryParameterBeyondTheLargestDoubleIsNoHit) { expectGrazingFarPlaneIsNoHit<double>(1e308, 1e-10); }
 
 // A sphere at x = FLT_MAX and a ray from x = -FLT_MAX (found after 26.5M executions): origin - centre overflowed to
 // -inf and the hit distance came out NaN. Such an origin has no position in the shape's frame: InvalidArgument.

@@ -1,5 +1,7 @@
 // Raycast façade: validation, then one dispatch table indexed by GeometryType.
+#include <algorithm>
 #include <array>
+#include <limits>
 
 #include "common/validate.h"
 #include "gq/query.h"
@@ -55,7 +57,11 @@ Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>&
     if (Status s = validateRaycast(origin, unitDir, geom, pose, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
     // Several hits only with MeshMultiple (the spec); solids cap themselves at one.
     const std::uint32_t cap = hitFlags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
-    const detail::RayQuery<T> ray{origin, unitDir, maxDist, hitFlags, cap};
+    // A hit has a finite distance: an entry parameter that overflows T (a far ray all but parallel to a box face or
+    // a plane, found by fuzz_raycast) lies beyond every representable distance, so maxDist = inf means the largest
+    // finite T and every kernel's "t > maxDist" test rejects it.
+    const T reach = std::min(maxDist, std::numeric_limits<T>::max());
+    const detail::RayQuery<T> ray{origin, unitDir, reach, hitFlags, cap};
     hitCount = kRaycastTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, ray, hits);
     return Status();
   });

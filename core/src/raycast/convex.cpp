@@ -45,8 +45,8 @@ std::uint32_t raycastConvex(const ConvexMeshGeometry<T>& g, const Transform<T>& 
     writeInsideHit(ray, hits[0]);
     return 1;
   }
-  // An entry parameter that overflowed (a ray all but parallel to a face, far away in the hull's frame) is no hit:
-  // with maxDist = inf it passed every other test and came out as a hit at infinity (found by fuzz_raycast, float).
+  // An entry parameter that overflowed (a ray all but parallel to a face, far away in the hull's frame) is no hit
+  // (found by fuzz_raycast, float; the façade's finite maxDist now rejects inf for every kernel, this also NaN).
   if (face == kInvalidFaceIndex || !std::isfinite(tNear) || tNear > tFar || tNear < T(0) || tNear > ray.maxDist)
     return 0;
   const auto normal = [&] { return pose.rotate(scale.normalToShape(hull.polygons[face].normal)); };
