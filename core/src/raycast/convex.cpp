@@ -46,7 +46,8 @@ std::uint32_t raycastConvex(const ConvexMeshGeometry<T>& g, const Transform<T>& 
     return 1;
   }
   // An entry parameter that overflowed (a ray all but parallel to a face, far away in the hull's frame) is no hit
-  // (found by fuzz_raycast, float; the façade's finite maxDist now rejects inf for every kernel, this also NaN).
+  // (found by fuzz_raycast, float). The façade's finite maxDist rejects an infinite one in every kernel; this test
+  // also rejects NaN.
   if (face == kInvalidFaceIndex || !std::isfinite(tNear) || tNear > tFar || tNear < T(0) || tNear > ray.maxDist)
     return 0;
   const auto normal = [&] { return pose.rotate(scale.normalToShape(hull.polygons[face].normal)); };
