@@ -108,6 +108,40 @@ TEST(FclBadInput, LinearPartThatIsNotARotationWritesNothing) {
   expectNothingWrittenEitherOrder(box(1, 1, 1), scaled, box(1, 1, 1), at(0, 0, 0));
 }
 
+TEST(FclBadInput, BadInputThatOverlapsAsReadWritesNothingIntoAnEmptyResult) {
+  // collide checks the closed-form pairs' input only before reporting a hit (a miss writes nothing either way, and
+  // the seeded results above make every call check). Each pair overlaps as read: with the pose made valid it collides.
+  ::fcl::Transform3d nanRotation = at(0.3, 0, 0);
+  nanRotation.linear()(1, 2) = kNaN;
+  ::fcl::Transform3d scaled = at(0.3, 0, 0);
+  scaled.linear() *= 2.0;
+  const Geom capsule = std::make_shared<::fcl::Capsuled>(0.3, 1);
+  struct Case {
+    Geom bad;
+    ::fcl::Transform3d badPose;
+    Geom good;
+  };
+  const Case cases[] = {{sphere(0.5), nanRotation, sphere(0.5)}, {sphere(0.5), nanRotation, capsule},
+                        {sphere(0.5), nanRotation, box(1, 1, 1)}, {capsule, scaled, sphere(0.5)},
+                        {capsule, scaled, capsule},               {capsule, scaled, box(1, 1, 1)},
+                        {box(1, 1, 1), scaled, sphere(0.5)},      {box(1, 1, 1), scaled, box(1, 1, 1)}};
+  for (const Case& c : cases) {
+    for (const bool badFirst : {true, false}) {
+      for (const bool contact : {false, true}) {
+        const auto call = [&](const ::fcl::Transform3d& badPose, ::fcl::CollisionResultd& result) {
+          const ::fcl::CollisionRequestd request(4, contact);
+          return badFirst ? gq::fcl::collide(c.bad.get(), badPose, c.good.get(), at(0, 0, 0), request, result)
+                          : gq::fcl::collide(c.good.get(), at(0, 0, 0), c.bad.get(), badPose, request, result);
+        };
+        ::fcl::CollisionResultd valid, bad;
+        EXPECT_GE(call(at(0.3, 0, 0), valid), 1u);
+        EXPECT_EQ(call(c.badPose, bad), 0u);
+        EXPECT_EQ(bad.numContacts(), 0u);
+      }
+    }
+  }
+}
+
 TEST(FclBadInput, ZeroSizeWritesNothing) {
   // FCL answers a zero-radius sphere as a point and a zero box as a point; gq has no point geometry (sizes must be
   // > 0), so the pair is not answered rather than answered with a made-up thickness.

@@ -41,12 +41,12 @@ bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
 }
 
 // Two closed solids, the fast path (solid_pairs.h): at most one contact, no buffer; contact geometry only when
-// asked for.
+// asked for. With `resultHeldContacts` a miss returns their count and bad input 0: the table must tell them apart.
 template <class S>
-detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact, bool& added,
-                             ::fcl::CollisionResult<S>& result) {
+detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact,
+                             bool resultHeldContacts, bool& added, ::fcl::CollisionResult<S>& result) {
   if (!withContact) {
-    const detail::Answer answer = detail::solidOverlap(a, b, added);
+    const detail::Answer answer = detail::solidOverlap(a, b, resultHeldContacts, added);
     if (answer == detail::Answer::Done && added)
       result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive));
     return answer;
@@ -97,8 +97,8 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
   const bool fclContact = request.enable_contact && contactFromFcl(s1, s2, options);
   if (detail::isSolid(s1) && detail::isSolid(s2) && !request.enable_cost && !fclContact) {
     bool added = false;
-    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact, added,
-                          result)) {
+    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact,
+                          before > 0, added, result)) {
       case detail::Answer::Done: detail::countGq(); return before + added;
       case detail::Answer::Invalid: return 0;
       case detail::Answer::Unanswered: break;

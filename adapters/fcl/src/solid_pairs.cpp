@@ -60,23 +60,51 @@ template <class S> bool isOrthonormal(const Isometry<S>& tf) {
 
 template <class S> bool positive(S v) { return v > S(0) && v <= std::numeric_limits<S>::max(); }
 
-template <class S> bool readSphere(const Solid<S>& s, S& radius) {
-  radius = static_cast<const ::fcl::Sphere<S>*>(s.geometry)->radius;
-  return positive(radius) && finiteMatrix(*s.tf);
-}
-
-template <class S> bool readBox(const Solid<S>& s, Vec3<S>& half) {
-  half = static_cast<const ::fcl::Box<S>*>(s.geometry)->side * S(0.5);
-  return positive(half.x()) && positive(half.y()) && positive(half.z()) && finiteTranslation(*s.tf) &&
-         isOrthonormal(*s.tf);
+// Sizes are checked before any kernel runs (a few comparisons; the kernels' clamps need ordered bounds). The
+// transforms' checks, the costly part, run in the readers or, for collide, only before a hit (validatedHit).
+template <class S> S sphereRadius(const Solid<S>& s) { return static_cast<const ::fcl::Sphere<S>*>(s.geometry)->radius; }
+template <class S> Vec3<S> boxHalf(const Solid<S>& s) { return static_cast<const ::fcl::Box<S>*>(s.geometry)->side * S(0.5); }
+template <class S> bool boxSized(const Vec3<S>& half) {
+  return positive(half.x()) && positive(half.y()) && positive(half.z());
 }
 
 // FCL's capsule: radius and full length lz along local Z; its centre is taken relative to `origin`.
-template <class S> bool readCapsule(const Solid<S>& s, const Vec3<S>& origin, k::CapsuleAxis<S>& capsule) {
+template <class S> k::CapsuleAxis<S> capsuleAxis(const Solid<S>& s, const Vec3<S>& origin) {
   const auto* c = static_cast<const ::fcl::Capsule<S>*>(s.geometry);
-  capsule = k::CapsuleAxis<S>{s.tf->translation() - origin, s.tf->linear().col(2), c->lz * S(0.5), c->radius};
-  return positive(c->radius) && c->lz >= S(0) && c->lz <= std::numeric_limits<S>::max() &&
-         finiteTranslation(*s.tf) && isOrthonormal(*s.tf);
+  return k::CapsuleAxis<S>{s.tf->translation() - origin, s.tf->linear().col(2), c->lz * S(0.5), c->radius};
+}
+template <class S> bool capsuleSized(const Solid<S>& s) {
+  const auto* c = static_cast<const ::fcl::Capsule<S>*>(s.geometry);
+  return positive(c->radius) && c->lz >= S(0) && c->lz <= std::numeric_limits<S>::max();
+}
+
+// A sphere's transform: finite (its rotation does not move it). A box's or capsule's: a finite translation and an
+// orthonormal linear part.
+template <class S> bool spherePose(const Solid<S>& s) { return finiteMatrix(*s.tf); }
+template <class S> bool rigidPose(const Solid<S>& s) { return finiteTranslation(*s.tf) && isOrthonormal(*s.tf); }
+
+template <class S> bool readSphere(const Solid<S>& s, S& radius) {
+  radius = sphereRadius(s);
+  return positive(radius) && spherePose(s);
+}
+
+template <class S> bool readBox(const Solid<S>& s, Vec3<S>& half) {
+  half = boxHalf(s);
+  return boxSized(half) && rigidPose(s);
+}
+
+template <class S> bool readCapsule(const Solid<S>& s, const Vec3<S>& origin, k::CapsuleAxis<S>& capsule) {
+  capsule = capsuleAxis(s, origin);
+  return capsuleSized(s) && rigidPose(s);
+}
+
+// collide writes only on a hit, and bad input must write nothing: a miss writes nothing whatever the transforms
+// hold, so collide's closed-form entries run their kernel on them as read and check them only before reporting a
+// hit (most calls of a narrow phase miss), or on a miss too when the caller must tell it from bad input (`check`:
+// collide returns the result's count on a miss and 0 on bad input). The kernels are arithmetic with fixed loop
+// bounds: a NaN or inf transform gives some boolean, never a fault.
+template <class Valid> Answer validatedHit(bool check, Valid valid) {
+  return !check || valid() ? Answer::Done : Answer::Invalid;
 }
 
 // x (world) in the frame of the pose tf: R^T (x - t).
@@ -118,11 +146,11 @@ template <class S> bool finiteResult(const DistanceResult<S>& r) {
 
 // ---- primitive pairs, in core's order ----
 
-template <class S> Answer sphereSphereOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  S ra, rb;
-  if (!readSphere(a, ra) || !readSphere(b, rb)) return Answer::Invalid;
+template <class S> Answer sphereSphereOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  const S ra = sphereRadius(a), rb = sphereRadius(b);
+  if (!positive(ra) || !positive(rb)) return Answer::Invalid;
   hit = k::overlapSphereSphere<S>(Vec3<S>::Zero(), ra, b.tf->translation() - a.tf->translation(), rb);
-  return Answer::Done;
+  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && spherePose(b); });
 }
 
 template <class S> Answer sphereSphereDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
@@ -134,12 +162,12 @@ template <class S> Answer sphereSphereDistance(const Solid<S>& a, const Solid<S>
   return Answer::Done;
 }
 
-template <class S> Answer sphereCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  S ra;
-  k::CapsuleAxis<S> cb;
-  if (!readSphere(a, ra) || !readCapsule(b, Vec3<S>(a.tf->translation()), cb)) return Answer::Invalid;
+template <class S> Answer sphereCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  const S ra = sphereRadius(a);
+  if (!positive(ra) || !capsuleSized(b)) return Answer::Invalid;
+  const k::CapsuleAxis<S> cb = capsuleAxis(b, Vec3<S>(a.tf->translation()));
   hit = k::overlapSphereCapsule<S>(Vec3<S>::Zero(), ra, cb.centre, cb.halfHeight * cb.axis, cb.radius);
-  return Answer::Done;
+  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
 }
 
 template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
@@ -152,12 +180,12 @@ template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S
   return Answer::Done;
 }
 
-template <class S> Answer sphereBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  S ra;
-  Vec3<S> hb;
-  if (!readSphere(a, ra) || !readBox(b, hb)) return Answer::Invalid;
+template <class S> Answer sphereBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  const S ra = sphereRadius(a);
+  const Vec3<S> hb = boxHalf(b);
+  if (!positive(ra) || !boxSized(hb)) return Answer::Invalid;
   hit = k::overlapSphereBox<S>(inFrame(*b.tf, Vec3<S>(a.tf->translation())), ra, hb);
-  return Answer::Done;
+  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
 }
 
 template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
@@ -170,13 +198,13 @@ template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b
   return Answer::Done;
 }
 
-template <class S> Answer capsuleCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  k::CapsuleAxis<S> ca, cb;
+template <class S> Answer capsuleCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  if (!capsuleSized(a) || !capsuleSized(b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
-  if (!readCapsule(a, origin, ca) || !readCapsule(b, origin, cb)) return Answer::Invalid;
+  const k::CapsuleAxis<S> ca = capsuleAxis(a, origin), cb = capsuleAxis(b, origin);
   hit = k::overlapCapsuleCapsule<S>(ca.centre, ca.halfHeight * ca.axis, ca.radius, cb.centre, cb.halfHeight * cb.axis,
                                     cb.radius);
-  return Answer::Done;
+  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
 
 template <class S>
@@ -190,28 +218,29 @@ Answer capsuleCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk 
 }
 
 // The capsule's segment in the box's frame: centre c and half-axis d.
-template <class S> Answer capsuleInBox(const Solid<S>& capsule, const Solid<S>& box, k::CapsuleAxis<S>& c, Vec3<S>& d,
-                                       Vec3<S>& h) {
-  const Vec3<S> origin = box.tf->translation();
-  if (!readCapsule(capsule, origin, c) || !readBox(box, h)) return Answer::Invalid;
+template <class S> void capsuleInBox(const Solid<S>& capsule, const Solid<S>& box, k::CapsuleAxis<S>& c, Vec3<S>& d) {
+  c = capsuleAxis(capsule, Vec3<S>(box.tf->translation()));
   const auto rt = box.tf->linear().transpose();
   c.centre = rt * c.centre;
   d = rt * (c.halfHeight * c.axis);
-  return Answer::Done;
 }
 
-template <class S> Answer capsuleBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+template <class S> Answer capsuleBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  const Vec3<S> h = boxHalf(b);
+  if (!capsuleSized(a) || !boxSized(h)) return Answer::Invalid;
   k::CapsuleAxis<S> c;
-  Vec3<S> d, h;
-  if (capsuleInBox(a, b, c, d, h) != Answer::Done) return Answer::Invalid;
+  Vec3<S> d;
+  capsuleInBox(a, b, c, d);
   hit = k::overlapCapsuleBox<S>(c.centre, d, c.radius, h);
-  return Answer::Done;
+  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
 
 template <class S> Answer capsuleBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+  const Vec3<S> h = boxHalf(b);
+  if (!capsuleSized(a) || !boxSized(h) || !rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
   k::CapsuleAxis<S> c;
-  Vec3<S> d, h;
-  if (capsuleInBox(a, b, c, d, h) != Answer::Done) return Answer::Invalid;
+  Vec3<S> d;
+  capsuleInBox(a, b, c, d);
   DistanceResult<S> local;
   k::distanceCapsuleBox<S>(c.centre, d, c.radius, h, local);
   frameToWorld(*b.tf, ask.points, local, out);
@@ -219,19 +248,19 @@ template <class S> Answer capsuleBoxDistance(const Solid<S>& a, const Solid<S>& 
 }
 
 // Box b in box a's frame: axes R_a^T R_b, centre R_a^T (t_b - t_a).
-template <class S> Answer boxInBox(const Solid<S>& a, const Solid<S>& b, Vec3<S>& ha, Vec3<S>& hb, Mat3<S>& r, Vec3<S>& t) {
-  if (!readBox(a, ha) || !readBox(b, hb)) return Answer::Invalid;
+template <class S> void boxInBox(const Solid<S>& a, const Solid<S>& b, Mat3<S>& r, Vec3<S>& t) {
   r.noalias() = a.tf->linear().transpose() * b.tf->linear();
   t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
-  return Answer::Done;
 }
 
-template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  Vec3<S> ha, hb, t;
+template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  const Vec3<S> ha = boxHalf(a), hb = boxHalf(b);
+  if (!boxSized(ha) || !boxSized(hb)) return Answer::Invalid;
+  Vec3<S> t;
   Mat3<S> r;
-  if (boxInBox(a, b, ha, hb, r, t) != Answer::Done) return Answer::Invalid;
+  boxInBox(a, b, r, t);
   hit = k::overlapBoxBox<S>(ha, hb, r, t);
-  return Answer::Done;
+  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
 
 // In box a's frame: overlapping boxes by the SAT (core's distanceBoxBoxOverlapping); separated ones by GJK (core
@@ -239,7 +268,8 @@ template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bo
 template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> ha, hb, t;
   Mat3<S> r;
-  if (boxInBox(a, b, ha, hb, r, t) != Answer::Done) return Answer::Invalid;
+  if (!readBox(a, ha) || !readBox(b, hb)) return Answer::Invalid;
+  boxInBox(a, b, r, t);
   DistanceResult<S> local;
   // (Starting GJK along the SAT's first separating axis instead of the centre difference cost 12% more.)
   if (!k::distanceBoxBoxOverlapping<S>(ha, hb, r, t, local)) {
@@ -371,14 +401,14 @@ Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, 
 
 // ---- the table ----
 
-template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  if constexpr (gqType(A) > gqType(B)) return overlapEntry<S, B, A>(b, a, hit);
-  else if constexpr (A == FS::Sphere && B == FS::Sphere) return sphereSphereOverlap(a, b, hit);
-  else if constexpr (A == FS::Sphere && B == FS::Capsule) return sphereCapsuleOverlap(a, b, hit);
-  else if constexpr (A == FS::Sphere && B == FS::Box) return sphereBoxOverlap(a, b, hit);
-  else if constexpr (A == FS::Capsule && B == FS::Capsule) return capsuleCapsuleOverlap(a, b, hit);
-  else if constexpr (A == FS::Capsule && B == FS::Box) return capsuleBoxOverlap(a, b, hit);
-  else if constexpr (A == FS::Box && B == FS::Box) return boxBoxOverlap(a, b, hit);
+template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  if constexpr (gqType(A) > gqType(B)) return overlapEntry<S, B, A>(b, a, checkMiss, hit);
+  else if constexpr (A == FS::Sphere && B == FS::Sphere) return sphereSphereOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Sphere && B == FS::Capsule) return sphereCapsuleOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Sphere && B == FS::Box) return sphereBoxOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Capsule && B == FS::Capsule) return capsuleCapsuleOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Capsule && B == FS::Box) return capsuleBoxOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Box && B == FS::Box) return boxBoxOverlap(a, b, checkMiss, hit);
   else return convertedOverlap<S, A, B>(a, b, hit);
 }
 
@@ -406,7 +436,7 @@ Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, Dist
 }
 
 template <class S> struct PairEntry {
-  Answer (*overlap)(const Solid<S>&, const Solid<S>&, bool&);
+  Answer (*overlap)(const Solid<S>&, const Solid<S>&, bool, bool&);
   Answer (*distance)(const Solid<S>&, const Solid<S>&, DistanceAsk, DistanceResult<S>&);
 };
 
@@ -436,8 +466,8 @@ template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* g) {
   return type >= 0 && type < ::fcl::NODE_COUNT ? kShapeOf[type] : FS::Unsupported;
 }
 
-template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  return entry<S>(a.shape, b.shape).overlap(a, b, hit);
+template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  return entry<S>(a.shape, b.shape).overlap(a, b, checkMiss, hit);
 }
 
 template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
@@ -446,8 +476,8 @@ template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, Di
 
 template FclShape shapeOf<float>(const ::fcl::CollisionGeometry<float>*);
 template FclShape shapeOf<double>(const ::fcl::CollisionGeometry<double>*);
-template Answer solidOverlap<float>(const Solid<float>&, const Solid<float>&, bool&);
-template Answer solidOverlap<double>(const Solid<double>&, const Solid<double>&, bool&);
+template Answer solidOverlap<float>(const Solid<float>&, const Solid<float>&, bool, bool&);
+template Answer solidOverlap<double>(const Solid<double>&, const Solid<double>&, bool, bool&);
 template Answer solidDistance<float>(const Solid<float>&, const Solid<float>&, DistanceAsk, DistanceResult<float>&);
 template Answer solidDistance<double>(const Solid<double>&, const Solid<double>&, DistanceAsk, DistanceResult<double>&);
 

@@ -38,8 +38,9 @@ template <class S> struct Solid {
 };
 
 // Both sides solid (isSolid) is a precondition; the transforms are validated here (Invalid: not finite, or a
-// linear part that is not a rotation).
-template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit);
+// linear part that is not a rotation). A miss writes nothing, as bad input must not: the closed-form pairs validate
+// only before reporting a hit, or on a miss too when `checkMiss` (the caller tells the two apart).
+template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit);
 
 // What a distance request asks for: the world witnesses (enable_nearest_points), the penetration depth
 // (enable_signed_distance) and GJK's stop tolerance (DistanceRequest::distance_tolerance as the host set it; only
