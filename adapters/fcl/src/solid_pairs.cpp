@@ -454,18 +454,6 @@ template <class S> const PairEntry<S>& entry(FS a, FS b) { return kTable<S>[std:
 
 }  // namespace
 
-template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* g) {
-  // Indexed by FCL's NODE_TYPE: BV_UNKNOWN, the eight BVHModel bounding volumes, then the shapes in FCL's order.
-  static constexpr FS kShapeOf[::fcl::NODE_COUNT] = {
-      FS::Unsupported, FS::Mesh,      FS::Mesh,   FS::Mesh,     FS::Mesh,  FS::Mesh,     FS::Mesh,
-      FS::Mesh,        FS::Mesh,      FS::Box,    FS::Sphere,   FS::Ellipsoid, FS::Capsule, FS::Cone,
-      FS::Cylinder,    FS::Convex,    FS::Plane,  FS::Halfspace, FS::TriangleP, FS::Unsupported};
-  static_assert(::fcl::GEOM_BOX == 9 && ::fcl::GEOM_TRIANGLE == 18 && ::fcl::NODE_COUNT == 20, "FCL 0.7's NODE_TYPE");
-  if (!g) return FS::Unsupported;
-  const int type = g->getNodeType();
-  return type >= 0 && type < ::fcl::NODE_COUNT ? kShapeOf[type] : FS::Unsupported;
-}
-
 template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
   return entry<S>(a.shape, b.shape).overlap(a, b, checkMiss, hit);
 }
@@ -474,8 +462,6 @@ template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, Di
   return entry<S>(a.shape, b.shape).distance(a, b, ask, out);
 }
 
-template FclShape shapeOf<float>(const ::fcl::CollisionGeometry<float>*);
-template FclShape shapeOf<double>(const ::fcl::CollisionGeometry<double>*);
 template Answer solidOverlap<float>(const Solid<float>&, const Solid<float>&, bool, bool&);
 template Answer solidOverlap<double>(const Solid<double>&, const Solid<double>&, bool, bool&);
 template Answer solidDistance<float>(const Solid<float>&, const Solid<float>&, DistanceAsk, DistanceResult<float>&);

@@ -11,12 +11,11 @@
 // (without a requested depth, GJK pairs answer FCL's -1 when overlapping: solidDistance).
 #include <cstdint>
 
+#include <fcl/geometry/collision_geometry.h>
+
 #include "convert.h"
 #include "gq/query.h"
 
-namespace fcl {
-template <typename S> class CollisionGeometry;
-}
 
 namespace gq::fcl::detail {
 
@@ -26,8 +25,19 @@ template <class S> using Isometry = Eigen::Transform<S, 3, Eigen::Isometry>;
 // Unanswered: gq has no usable answer (half-space against half-space, GJK/EPA not converged): FCL answers.
 enum class Answer : std::uint8_t { Done, Invalid, Unanswered };
 
-// The FclShape of an FCL geometry from its node type alone (null: Unsupported).
-template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* geometry);
+// The FclShape of an FCL geometry from its node type alone (null: Unsupported). Inline: every call asks it twice.
+template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* geometry) {
+  using FS = FclShape;
+  // Indexed by FCL's NODE_TYPE: BV_UNKNOWN, the eight BVHModel bounding volumes, then the shapes in FCL's order.
+  static constexpr FS kShapeOf[::fcl::NODE_COUNT] = {
+      FS::Unsupported, FS::Mesh,      FS::Mesh,   FS::Mesh,     FS::Mesh,  FS::Mesh,     FS::Mesh,
+      FS::Mesh,        FS::Mesh,      FS::Box,    FS::Sphere,   FS::Ellipsoid, FS::Capsule, FS::Cone,
+      FS::Cylinder,    FS::Convex,    FS::Plane,  FS::Halfspace, FS::TriangleP, FS::Unsupported};
+  static_assert(::fcl::GEOM_BOX == 9 && ::fcl::GEOM_TRIANGLE == 18 && ::fcl::NODE_COUNT == 20, "FCL 0.7's NODE_TYPE");
+  if (!geometry) return FS::Unsupported;
+  const int type = geometry->getNodeType();
+  return type >= 0 && type < ::fcl::NODE_COUNT ? kShapeOf[type] : FS::Unsupported;
+}
 inline bool isSolid(FclShape s) { return s <= FclShape::Halfspace && s != FclShape::Unsupported; }
 
 // One side of a query: an FCL geometry, its shapeOf and its pose.
