@@ -62,8 +62,12 @@ template <class S> bool positive(S v) { return v > S(0) && v <= std::numeric_lim
 
 // Sizes are checked before any kernel runs (a few comparisons; the kernels' clamps need ordered bounds). The
 // transforms' checks, the costly part, run in the readers or, for collide, only before a hit (validatedHit).
-template <class S> S sphereRadius(const Solid<S>& s) { return static_cast<const ::fcl::Sphere<S>*>(s.geometry)->radius; }
-template <class S> Vec3<S> boxHalf(const Solid<S>& s) { return static_cast<const ::fcl::Box<S>*>(s.geometry)->side * S(0.5); }
+template <class S> S sphereRadius(const Solid<S>& s) {
+  return static_cast<const ::fcl::Sphere<S>*>(s.geometry)->radius;
+}
+template <class S> Vec3<S> boxHalf(const Solid<S>& s) {
+  return static_cast<const ::fcl::Box<S>*>(s.geometry)->side * S(0.5);
+}
 template <class S> bool boxSized(const Vec3<S>& half) {
   return positive(half.x()) && positive(half.y()) && positive(half.z());
 }

@@ -16,7 +16,6 @@
 #include "convert.h"
 #include "gq/query.h"
 
-
 namespace gq::fcl::detail {
 
 template <class S> using Isometry = Eigen::Transform<S, 3, Eigen::Isometry>;
