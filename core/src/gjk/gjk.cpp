@@ -152,7 +152,9 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
     lambda = c.lambda;
     if (v.squaredNorm() < best.v.squaredNorm()) best = {s, lambda, v};
   }
-  if (!r.coresOverlap && best.v.squaredNorm() < v.squaredNorm()) {
+  // Only a GJK that gave up falls back to its best simplex. A converged one keeps its own: an earlier simplex whose
+  // |v| is smaller by rounding has the distance right but can point v off by ~sqrt(rounding / distance).
+  if (!r.coresOverlap && !converged && best.v.squaredNorm() < v.squaredNorm()) {
     s = best.s;
     lambda = best.lambda;
     v = best.v;
