@@ -62,7 +62,7 @@ TYPED_TEST(Kinematics, ValuesOutsideLimitsWrongSizeOrNaNAreRejectedWithoutOutput
   using T = TypeParam;
   std::vector<Transform<T>> poses(1);
   for (const std::vector<T>& bad : {std::vector<T>{T(3.5), T(0), T(0)}, std::vector<T>{T(0), T(-0.1), T(0)},
-                                    std::vector<T>{T(0), T(0)}, std::vector<T>{std::nan(""), T(0), T(0)}}) {
+                                    std::vector<T>{T(0), T(0)}, std::vector<T>{T(std::nan("")), T(0), T(0)}}) {
     const Status s = forwardKinematics(this->m, bad, poses);
     EXPECT_EQ(s.code, StatusCode::InvalidArgument) << s.toString();
     EXPECT_EQ(poses.size(), 1u);
