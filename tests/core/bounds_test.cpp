@@ -73,7 +73,7 @@ TYPED_TEST(Bounds, BoxBoundsAreTightWhenRotated) {
   using T = TypeParam;
   test::Rng rng(2);
   for (int i = 0; i < 100; ++i) {
-    const Vec3<T> h(T(rng.uniform(0.1, 3)), T(rng.uniform(0.1, 3)), T(rng.uniform(0.1, 3)));
+    const Vec3<T> h = rng.vec<T>(0.1, 3);
     const Transform<T> pose = rng.pose<T>(10);
     const auto [lo, hi] = boxOfPoints(corners(-test::toLD(h), test::toLD(h)), pose);
     expectBox(bounds<T>(BoxGeometry<T>(h), pose), lo, hi, 20);
@@ -97,12 +97,14 @@ TYPED_TEST(Bounds, ConvexBoundsAreExactUnderScaleAndPose) {
   using T = TypeParam;
   test::Rng rng(4);
   std::vector<Vec3<T>> pts;
-  for (int i = 0; i < 60; ++i) pts.push_back(rng.unitVector<T>() * T(rng.uniform(0.5, 2)));
+  for (int i = 0; i < 60; ++i) {
+    const Vec3<T> dir = rng.unitVector<T>();
+    pts.push_back(dir * T(rng.uniform(0.5, 2)));
+  }
   std::shared_ptr<const ConvexMesh<T>> hull;
   ASSERT_TRUE(cookConvexMesh(pts, hull).ok());
   for (int i = 0; i < 50; ++i) {
-    const MeshScale<T> scale(Vec3<T>(T(rng.uniform(0.3, 3)), T(rng.uniform(0.3, 3)), T(rng.uniform(0.3, 3))),
-                             rng.rotation<T>());
+    const MeshScale<T> scale = rng.meshScale<T>(0.3, 3);
     const Transform<T> pose = rng.pose<T>(10);
     // Every input point, scaled in long double: interior points cannot extend the box, so this is the hull's box.
     const test::Mat3L R = test::rotationLD(scale.rotation);

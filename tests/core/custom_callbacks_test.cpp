@@ -127,7 +127,7 @@ template <class T> struct CustomCallbacks : ::testing::Test {
   std::shared_ptr<Ball<T>> plain = std::make_shared<Ball<T>>(T(kR));
   const Geometry<T> sphere = SphereGeometry<T>(T(kSphere));
 
-  static Transform<T> pose(Rng& rng, double half) { return Transform<T>(rng.inBox<T>(half), rng.rotation<T>()); }
+  static Transform<T> pose(Rng& rng, double half) { return rng.pose<T>(half); }
   // Distance between the two centres in long double.
   static LD centreDistance(const Transform<T>& a, const Transform<T>& b) { return (toL(a.p) - toL(b.p)).norm(); }
 };

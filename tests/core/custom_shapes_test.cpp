@@ -18,8 +18,10 @@ template <class T> struct CustomShapes : ::testing::Test {
   static Transform<T> randomPose(std::mt19937_64& gen) {
     std::normal_distribution<double> n;
     std::uniform_real_distribution<double> u(-3, 3);
-    const Eigen::Quaterniond q = Eigen::Quaterniond(n(gen), n(gen), n(gen), n(gen)).normalized();
-    return Transform<T>(Vec3<T>(T(u(gen)), T(u(gen)), T(u(gen))), q.cast<T>());
+    // One draw per declarator: argument evaluation order is unspecified (GCC and clang differ).
+    const double w = n(gen), qx = n(gen), qy = n(gen), qz = n(gen);
+    const double x = u(gen), y = u(gen), z = u(gen);
+    return Transform<T>(Vec3<T>(T(x), T(y), T(z)), Eigen::Quaterniond(w, qx, qy, qz).normalized().cast<T>());
   }
   // Fires the local ray (origin, dir) at `geom` posed by `pose`; expects the hit at `distance` with local `normal`.
   static void expectHit(const Geometry<T>& geom, const Transform<T>& pose, const Eigen::Vector3d& origin,

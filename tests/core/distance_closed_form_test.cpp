@@ -80,9 +80,11 @@ TYPED_TEST(DistanceClosedForm, CapsuleCapsuleIsSegmentDistanceMinusRadii) {
   using T = TypeParam;
   Rng rng(13);
   for (int i = 0; i < kPoses; ++i) {
-    const gq::CapsuleGeometry<T> c0(T(rng.uniform(0.1, 0.5)), T(rng.uniform(0, 1.5)));
-    const gq::CapsuleGeometry<T> c1(T(rng.uniform(0.1, 0.5)), T(rng.uniform(0, 1.5)));
-    checkCapsulePair(c0, randomPose<T>(rng, 1.5), c1, randomPose<T>(rng, 1.5), i);
+    const double r0 = rng.uniform(0.1, 0.5), hh0 = rng.uniform(0, 1.5);
+    const double r1 = rng.uniform(0.1, 0.5), hh1 = rng.uniform(0, 1.5);
+    const gq::CapsuleGeometry<T> c0{T(r0), T(hh0)}, c1{T(r1), T(hh1)};
+    const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 1.5);
+    checkCapsulePair(c0, p0, c1, p1, i);
   }
 }
 
@@ -90,12 +92,13 @@ TYPED_TEST(DistanceClosedForm, CapsuleCapsuleParallelAxesAreExact) {
   using T = TypeParam;
   Rng rng(14);
   for (int i = 0; i < kPoses; ++i) {
-    const gq::CapsuleGeometry<T> c0(T(rng.uniform(0.1, 0.5)), T(rng.uniform(0.1, 1.5)));
-    const gq::CapsuleGeometry<T> c1(T(rng.uniform(0.1, 0.5)), T(rng.uniform(0.1, 1.5)));
+    const double r0 = rng.uniform(0.1, 0.5), hh0 = rng.uniform(0.1, 1.5);
+    const double r1 = rng.uniform(0.1, 0.5), hh1 = rng.uniform(0.1, 1.5);
+    const gq::CapsuleGeometry<T> c0{T(r0), T(hh0)}, c1{T(r1), T(hh1)};
     const Eigen::Quaterniond q = rng.rotation();
     // Same axis (or reversed), offset both along and across it: overlapping or disjoint spans.
     const double turn = (i % 2) ? 0 : M_PI;
-    const Eigen::Vector3d offset(rng.uniform(-3, 3), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    const Eigen::Vector3d offset{rng.uniform(-3, 3), rng.uniform(-1, 1), rng.uniform(-1, 1)};
     checkTurnedCapsulePair(c0, c1, q, turn, offset, rng.vec(-1, 1), i);
   }
 }
@@ -107,11 +110,12 @@ TYPED_TEST(DistanceClosedForm, CapsuleCapsuleNearlyParallelAxesAreExact) {
   using T = TypeParam;
   Rng rng(16);
   for (int i = 0; i < kPoses; ++i) {
-    const gq::CapsuleGeometry<T> c0(T(rng.uniform(0.05, 0.2)), T(rng.uniform(0.5, 1.5)));
-    const gq::CapsuleGeometry<T> c1(T(rng.uniform(0.05, 0.2)), T(rng.uniform(0.5, 1.5)));
+    const double r0 = rng.uniform(0.05, 0.2), hh0 = rng.uniform(0.5, 1.5);
+    const double r1 = rng.uniform(0.05, 0.2), hh1 = rng.uniform(0.5, 1.5);
+    const gq::CapsuleGeometry<T> c0{T(r0), T(hh0)}, c1{T(r1), T(hh1)};
     const Eigen::Quaterniond q = rng.rotation();
     const double angle = std::pow(10.0, rng.uniform(-6, -2)) * (i % 2 ? 1 : -1);
-    const Eigen::Vector3d offset(rng.uniform(-1, 1), rng.uniform(0.5, 1), 0);
+    const Eigen::Vector3d offset{rng.uniform(-1, 1), rng.uniform(0.5, 1), 0};
     checkTurnedCapsulePair(c0, c1, q, angle, offset, rng.vec(-1, 1), i);
   }
 }
@@ -120,9 +124,11 @@ TYPED_TEST(DistanceClosedForm, CapsuleCapsuleZeroLengthSegmentsAreSpheres) {
   using T = TypeParam;
   Rng rng(15);
   for (int i = 0; i < kPoses; ++i) {
-    const gq::CapsuleGeometry<T> c0(T(rng.uniform(0.1, 0.5)), T(0));
-    const gq::CapsuleGeometry<T> c1(T(rng.uniform(0.1, 0.5)), T(i % 2 ? 0 : rng.uniform(0, 1)));
-    checkCapsulePair(c0, randomPose<T>(rng, 1.5), c1, randomPose<T>(rng, 1.5), i);
+    const double r0 = rng.uniform(0.1, 0.5);
+    const double r1 = rng.uniform(0.1, 0.5), hh1 = i % 2 ? 0 : rng.uniform(0, 1);
+    const gq::CapsuleGeometry<T> c0{T(r0), T(0)}, c1{T(r1), T(hh1)};
+    const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 1.5);
+    checkCapsulePair(c0, p0, c1, p1, i);
   }
 }
 
@@ -221,7 +227,8 @@ TYPED_TEST(DistanceClosedForm, PlaneCapsuleIsLowestEndHeightMinusRadius) {
   using T = TypeParam;
   Rng rng(19);
   for (int i = 0; i < kPoses; ++i) {
-    const gq::CapsuleGeometry<T> cap(T(rng.uniform(0.1, 0.6)), T(rng.uniform(0, 1.5)));
+    const double rad = rng.uniform(0.1, 0.6), hh = rng.uniform(0, 1.5);
+    const gq::CapsuleGeometry<T> cap{T(rad), T(hh)};
     const auto p0 = randomPose<T>(rng, 1), p1 = randomPose<T>(rng, 2);
     const PoseL pl = toL(p0);
     const VL n = pl.rotate(VL(1, 0, 0));

@@ -124,7 +124,7 @@ TYPED_TEST(DistanceGjk, BoxBoxSeparatedAlongFaceAxisIsTheGap) {
     const Eigen::Quaterniond q = rng.rotation();
     const double gap = rng.uniform(1e-3, 1.0);
     const double reach = (q.conjugate() * Eigen::Vector3d::UnitX()).cwiseAbs().dot(hB);
-    const Eigen::Vector3d c(1 + gap + reach, rng.uniform(-0.1, 0.1), rng.uniform(-0.1, 0.1));
+    const Eigen::Vector3d c{1 + gap + reach, rng.uniform(-0.1, 0.1), rng.uniform(-0.1, 0.1)};
     const gq::Transform<T> pA, pB(c.cast<T>(), q.cast<T>());
     gq::DistanceResult<T> r;
     ASSERT_TRUE(gq::distance(r, box<T>(hA), pA, box<T>(hB), pB).ok());
@@ -182,18 +182,18 @@ TYPED_TEST(DistanceGjk, ConvexConvexMatchesBruteForceFeaturePairs) {
     const auto h0 = makeHull<T>(pointsOnEllipsoid<T>(rng, 12 + i % 9, rng.vec(0.3, 1)));
     const auto h1 = makeHull<T>(pointsOnEllipsoid<T>(rng, 12 + i % 7, rng.vec(0.3, 1)));
     const auto p0 = randomPose<T>(rng, 1), p1 = randomPose<T>(rng, 1);
-    const gq::MeshScale<T> s0, s1(rng.vec(0.5, 1.5).cast<T>(), rng.rotation().cast<T>());
+    const gq::MeshScale<T> s0, s1 = randomScale<T>(rng, 0.5, 1.5);
     checkPair<T>(gq::ConvexMeshGeometry<T>(h0, s0), p0, roundedHull(*h0, s0, p0), gq::ConvexMeshGeometry<T>(h1, s1),
                  p1, roundedHull(*h1, s1, p1), i);
   }
 }
 
 // GJK can stall on a rounding tie and still converge later; the simplex it converged on gives the normal. (Falling
-// back to an earlier simplex whose |v| was smaller by rounding tilted float normals by up to 2.5e-4 in ~1 of 5,000
-// of these poses; the seed makes 4 such poses.)
+// back to an earlier simplex whose |v| was smaller by rounding cost float normals up to 3.7e-4 of gap in ~1 of 5,000
+// of these poses; this seed draws 5 such poses.)
 TYPED_TEST(DistanceGjk, ConvexConvexNormalIsTheSeparatingDirectionAfterAStall) {
   using T = TypeParam;
-  Rng rng(36);
+  Rng rng(32);
   for (int i = 0; i < 20 * kPoses; ++i) {
     const auto h0 = makeHull<T>(randomOctahedron<T>(rng)), h1 = makeHull<T>(randomOctahedron<T>(rng));
     const auto p0 = randomPose<T>(rng, 1), p1 = randomPose<T>(rng, 1);
@@ -207,7 +207,8 @@ TYPED_TEST(DistanceGjk, CapsuleBoxMatchesBruteForceSegmentFeatures) {
   using T = TypeParam;
   Rng rng(25);
   for (int i = 0; i < kPoses; ++i) {
-    const gq::CapsuleGeometry<T> cap(T(rng.uniform(0.05, 0.5)), T(rng.uniform(0.1, 1.2)));
+    const double rad = rng.uniform(0.05, 0.5), hh = rng.uniform(0.1, 1.2);
+    const gq::CapsuleGeometry<T> cap{T(rad), T(hh)};
     const Eigen::Vector3d h = rng.vec(0.2, 1);
     const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 1.5);
     checkPair<T>(cap, p0, roundedCapsule(cap, p0), box<T>(h), p1, roundedBox(h, p1), i);
@@ -260,7 +261,8 @@ TYPED_TEST(DistanceGjk, WarmStartedCallTakesNoMoreIterations) {
   int fewer = 0;
   for (int i = 0; i < 200; ++i) {
     const auto p0 = randomPose<T>(rng, 0.2);
-    const gq::Transform<T> p1(gq::Vec3<T>(rng.unit().cast<T>() * T(2.5)), rng.rotation().cast<T>());
+    const gq::Vec3<T> centre = rng.unit().cast<T>() * T(2.5);
+    const gq::Transform<T> p1(centre, rng.rotation().cast<T>());
     gq::GjkCache<T> cache;
     gq::DistanceResult<T> cold, warm;
     ASSERT_TRUE(gq::distance(cold, g0, p0, g1, p1, &cache).ok());

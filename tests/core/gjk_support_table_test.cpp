@@ -134,7 +134,7 @@ TYPED_TEST(GjkSupportTable, HullSupportThroughTheTableIsExactUnderScaleAndPose) 
     const auto hull = cookedHull<T>(rng, n);
     ASSERT_TRUE(hull);
     for (int g = 0; g < 20; ++g) {
-      const gq::MeshScale<T> scale(rng.vec(0.2, 3).cast<T>(), rng.rotation().cast<T>());
+      const gq::MeshScale<T> scale = randomScale<T>(rng, 0.2, 3);
       const gq::Transform<T> pose = randomPose<T>(rng, 5);
       const gq::Geometry<T> geom(gq::ConvexMeshGeometry<T>(hull, scale));
       const auto shape = gq::detail::makeConvexShape(geom, pose);

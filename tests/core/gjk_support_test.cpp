@@ -23,7 +23,7 @@ TYPED_TEST(GjkSupport, HillClimbingOnLargeHullFindsTheExtremeVertex) {
   const auto hull = makeHull<T>(pointsOnEllipsoid<T>(rng, 80, Eigen::Vector3d(1, 0.6, 0.9)));
   ASSERT_GT(hull->vertices.size(), gq::detail::kHillClimbMinVertices);
   for (int s = 0; s < 2; ++s) {
-    const gq::MeshScale<T> scale = s ? gq::MeshScale<T>(rng.vec(0.3, 2).cast<T>(), rng.rotation().cast<T>()) : gq::MeshScale<T>();
+    const gq::MeshScale<T> scale = s ? randomScale<T>(rng, 0.3, 2) : gq::MeshScale<T>();
     const auto pose = randomPose<T>(rng, 2);
     const auto shape = gq::detail::makeConvexShape<T>(gq::ConvexMeshGeometry<T>(hull, scale), pose);
     const Eigen::Matrix<L, 3, 3> S = scale.toMatrix().template cast<L>();

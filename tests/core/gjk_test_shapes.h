@@ -30,6 +30,7 @@ template <class T> constexpr double kGjkTol = std::is_same_v<T, double> ? 1e-7 :
 
 template <class T> VL toL(const gq::Vec3<T>& v) { return v.template cast<L>(); }
 
+// One draw per statement (or a braced list): argument evaluation order is unspecified (GCC and clang differ).
 struct Rng {
   std::mt19937_64 gen;
   explicit Rng(std::uint64_t seed) : gen(seed) {}
@@ -37,17 +38,30 @@ struct Rng {
   Eigen::Vector3d vec(double lo, double hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
   Eigen::Quaterniond rotation() {
     std::normal_distribution<double> n;
-    Eigen::Quaterniond q(n(gen), n(gen), n(gen), n(gen));
-    return q.normalized();
+    const double w = n(gen);
+    const double x = n(gen);
+    const double y = n(gen);
+    const double z = n(gen);
+    return Eigen::Quaterniond(w, x, y, z).normalized();
   }
   Eigen::Vector3d unit() {
     std::normal_distribution<double> n;
-    return Eigen::Vector3d(n(gen), n(gen), n(gen)).normalized();
+    const double x = n(gen);
+    const double y = n(gen);
+    const double z = n(gen);
+    return Eigen::Vector3d(x, y, z).normalized();
   }
 };
 
 template <class T> gq::Transform<T> randomPose(Rng& rng, double spread) {
-  return gq::Transform<T>(rng.vec(-spread, spread).cast<T>(), rng.rotation().cast<T>());
+  const gq::Vec3<T> p = rng.vec(-spread, spread).cast<T>();
+  return gq::Transform<T>(p, rng.rotation().cast<T>());
+}
+
+// Per-axis stretch in [lo, hi) along randomly rotated axes.
+template <class T> gq::MeshScale<T> randomScale(Rng& rng, double lo, double hi) {
+  const gq::Vec3<T> s = rng.vec(lo, hi).cast<T>();
+  return gq::MeshScale<T>(s, rng.rotation().cast<T>());
 }
 
 // The pose as the library sees it (rotation renormalised), in long double.

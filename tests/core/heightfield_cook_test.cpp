@@ -170,9 +170,10 @@ TYPED_TEST(HeightFieldCook, BoundsAreTheExactBoxOfTheLocalExtentUnderThePose) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int trial = 0; trial < 20; ++trial) {
-    const gq::Vec3<T> axis = gq::Vec3<T>(T(u(rng)), T(u(rng)), T(u(rng))).normalized();
-    const gq::Transform<T> pose(gq::Vec3<T>(T(3 * u(rng)), T(3 * u(rng)), T(3 * u(rng))),
-                                gq::Quat<T>(Eigen::AngleAxis<T>(T(3 * u(rng)), axis)));
+    const double ax = u(rng), ay = u(rng), az = u(rng), px = u(rng), py = u(rng), pz = u(rng), angle = u(rng);
+    const gq::Vec3<T> axis = gq::Vec3<T>(T(ax), T(ay), T(az)).normalized();
+    const gq::Transform<T> pose(gq::Vec3<T>(T(3 * px), T(3 * py), T(3 * pz)),
+                                gq::Quat<T>(Eigen::AngleAxis<T>(T(3 * angle), axis)));
     const gq::Bounds3<T> b = gq::detail::boundsHeightField(g, pose);
     const Eigen::Matrix<long double, 3, 3> R = pose.q.toRotationMatrix().template cast<long double>();
     const Eigen::Matrix<long double, 3, 1> centre = R * ((lo + hi) / 2) + pose.p.template cast<long double>();

@@ -372,8 +372,9 @@ template <class T> void randomRaysMatchBruteForce(gq::HitFlags flags, gq::MeshGe
   int hitsSeen = 0;
   for (int i = 0; i < rayCount; ++i) {
     // Aim from a random point around the field at a random point over it; about a third start below.
-    const gq::Vec3<T> target(T(13 * 0.5 * u(rng)), T(4 * u(rng) - 2), T(21 * 0.8 * u(rng)));
-    const gq::Vec3<T> start = target + gq::Vec3<T>(T(16 * u(rng) - 8), T(12 * u(rng) - 4), T(16 * u(rng) - 8));
+    const double tx = u(rng), ty = u(rng), tz = u(rng), sx = u(rng), sy = u(rng), sz = u(rng);
+    const gq::Vec3<T> target(T(13 * 0.5 * tx), T(4 * ty - 2), T(21 * 0.8 * tz));
+    const gq::Vec3<T> start = target + gq::Vec3<T>(T(16 * sx - 8), T(12 * sy - 4), T(16 * sz - 8));
     const gq::Vec3<T> o = pose.transform(start), d = pose.rotate((target - start).normalized());
     const T maxDist = T((target - start).norm() * (0.5 + 1.5 * u(rng)));
     const Cast<T> c = cast(g, pose, o, d, maxDist, kAll | flags, maxHits);

@@ -140,9 +140,10 @@ TYPED_TEST(MeshBunny, ClosestHitEqualsBruteForceOn100kRays) {
   std::mt19937_64 rng(2024);
   std::uniform_real_distribution<double> u(0, 1);
   std::normal_distribution<double> n;
+  // One draw per declarator: argument evaluation order is unspecified (GCC and clang differ).
   auto unit = [&] {
-    Eigen::Vector3d v(n(rng), n(rng), n(rng));
-    return v.normalized();
+    const double x = n(rng), y = n(rng), z = n(rng);
+    return Eigen::Vector3d(x, y, z).normalized();
   };
   for (int i = 0; i < kRays; ++i) {
     if (i % 2 == 0) {  // aimed at a random point of a random triangle, from outside the bounds
@@ -156,9 +157,10 @@ TYPED_TEST(MeshBunny, ClosestHitEqualsBruteForceOn100kRays) {
       origins[i] = o.template cast<T>();
       dirs[i] = (target - o).normalized().template cast<T>();
     } else {  // random origin in the (enlarged) bounds, random direction
-      origins[i] = (center.template cast<double>() +
-                    Eigen::Vector3d(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5) * (3.0 * double(radius)))
-                       .template cast<T>();
+      const double x = u(rng), y = u(rng), z = u(rng);
+      origins[i] =
+          (center.template cast<double>() + Eigen::Vector3d(x - 0.5, y - 0.5, z - 0.5) * (3.0 * double(radius)))
+              .template cast<T>();
       dirs[i] = unit().template cast<T>();
     }
   }
@@ -221,7 +223,8 @@ TYPED_TEST(MeshBunny, PointDistanceEqualsBruteForceUnderScaleAndPose) {
   std::uniform_real_distribution<double> u(-0.8, 0.8);
   std::vector<Vec3<T>> points;
   for (int i = 0; i < kPoints; ++i) {
-    const Vec3L p = box.center() + Vec3L(u(rng), u(rng), u(rng)).cwiseProduct(box.sizes()) * (i % 2 ? 0.7L : 1.5L);
+    const double x = u(rng), y = u(rng), z = u(rng);
+    const Vec3L p = box.center() + Vec3L(x, y, z).cwiseProduct(box.sizes()) * (i % 2 ? 0.7L : 1.5L);
     points.push_back(p.template cast<T>());
   }
   std::atomic<int> bad{0};

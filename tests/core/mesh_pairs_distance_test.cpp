@@ -48,7 +48,7 @@ template <class T> Geometry<T> randomShape(test::Rng& rng, int kind, const Trans
     ref.r = r;
     return CapsuleGeometry<T>(r, hh);
   }
-  const Vec3<T> he(T(rng.uniform(0.05, 0.4)), T(rng.uniform(0.05, 0.4)), T(rng.uniform(0.05, 0.4)));
+  const Vec3<T> he = rng.vec<T>(0.05, 0.4);
   ref.box = BoxL{test::toLD(pose.p), rot, test::toLD(he)};
   return BoxGeometry<T>(he);
 }

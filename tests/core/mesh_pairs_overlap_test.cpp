@@ -97,7 +97,8 @@ template <class T> ShapeCase<T> randomShape(test::Rng& rng, int kind, double spr
     std::vector<Vec3<T>> local;
     std::vector<std::vector<std::uint32_t>> faces;
     if (kind == ShapeCase<T>::Box) {
-      const Vec3<T> he(T(rng.uniform(0.05, 1.0) * size), T(rng.uniform(0.05, 1.0) * size), T(rng.uniform(0.05, 1.0) * size));
+      const double x = rng.uniform(0.05, 1.0), y = rng.uniform(0.05, 1.0), z = rng.uniform(0.05, 1.0);
+      const Vec3<T> he(T(x * size), T(y * size), T(z * size));
       s.geom = BoxGeometry<T>(he);
       for (int k = 0; k < 8; ++k) local.push_back(Vec3<T>((k & 1) ? he.x() : -he.x(), (k & 2) ? he.y() : -he.y(), (k & 4) ? he.z() : -he.z()));
       for (int k = 0; k < 3; ++k) s.axes.push_back(r.col(k));
@@ -146,7 +147,7 @@ Reference bruteForce(const ShapeCase<T>& s, const std::vector<TriL>& tris, const
 
 // Random scaled (sometimes mirrored) icosphere instance.
 template <class T> MeshScale<T> randomScale(test::Rng& rng) {
-  Vec3<T> s(T(rng.uniform(0.6, 1.4)), T(rng.uniform(0.6, 1.4)), T(rng.uniform(0.6, 1.4)));
+  Vec3<T> s = rng.vec<T>(0.6, 1.4);
   if (rng.chance(0.3)) s.x() = -s.x();
   return MeshScale<T>(s, rng.rotation<T>());
 }
@@ -286,7 +287,7 @@ TYPED_TEST(MeshOverlap, BunnyVsBunnyMatchesBruteForceOverAabbFilteredTrianglePai
   int overlaps = 0;
   const int poses = 1000;
   for (int i = 0; i < poses; ++i) {
-    const Transform<T> pose(rng.inBox<T>(0.12), rng.rotation<T>());
+    const Transform<T> pose = rng.pose<T>(0.12);
     const std::vector<TriL> b = worldTriangles(centred, MeshScale<T>(), pose);
     Vec3L lo = Vec3L::Constant(1e30L), hi = -lo;
     for (const auto& t : b)
@@ -368,7 +369,8 @@ TYPED_TEST(HeightFieldOverlap, MeshVsHeightFieldMatchesBruteForceOverTrianglePai
   test::Rng rng(8);
   int overlaps = 0;
   for (int i = 0; i < 1000; ++i) {
-    const Transform<T> pose(Vec3<T>(T(rng.uniform(-1.5, 1.5)), T(rng.uniform(-1.2, 1.2)), T(rng.uniform(-1.5, 1.5))), rng.rotation<T>());
+    const double x = rng.uniform(-1.5, 1.5), y = rng.uniform(-1.2, 1.2), z = rng.uniform(-1.5, 1.5);
+    const Transform<T> pose(Vec3<T>(T(x), T(y), T(z)), rng.rotation<T>());
     const std::vector<TriL> mtris = worldTriangles(sphere, MeshScale<T>(T(0.6)), pose);
     bool expected = false;
     for (const auto& m : mtris)

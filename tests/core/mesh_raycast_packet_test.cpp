@@ -26,10 +26,16 @@ template <class T> float floatCeil(T t) {
   return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
+// Three draws of n in order, one per declarator: argument evaluation order is unspecified (GCC and clang differ).
+Eigen::Vector3d normal3(std::normal_distribution<double>& n, std::mt19937_64& rng) {
+  const double x = n(rng), y = n(rng), z = n(rng);
+  return {x, y, z};
+}
+
 // Four random triangles of edge length ~size around `center` (a fan sharing vertex 0 plus one apart).
 template <class T> MeshData<T> randomLeaf(std::mt19937_64& rng, const Vec3<T>& center, double size) {
   std::normal_distribution<double> n;
-  auto jitter = [&]() -> Eigen::Vector3d { return Eigen::Vector3d(n(rng), n(rng), n(rng)) * size; };
+  auto jitter = [&]() -> Eigen::Vector3d { return normal3(n, rng) * size; };
   MeshData<T> m;
   const Eigen::Vector3d c = center.template cast<double>();
   for (int i = 0; i < 6; ++i) m.vertices.push_back((c + jitter()).template cast<T>());
@@ -85,7 +91,7 @@ TYPED_TEST(MeshRaycastPacket, PreTestKeepsEveryTriangleTheExactTestHits) {
   for (int leaf = 0; leaf < 300; ++leaf) {
     const double size = std::pow(10.0, -4.0 + 4.0 * u(rng));      // edge lengths 1e-4 .. 1
     const double offset = size * std::pow(10.0, 3.0 * u(rng));     // mesh 1 .. 1000 sizes away from the frame origin
-    const Vec3<T> center = (Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized() * offset).template cast<T>();
+    const Vec3<T> center = (normal3(n, rng).normalized() * offset).template cast<T>();
     const MeshData<T> m = randomLeaf<T>(rng, center, size);
     const auto mesh = meshtest::cook(m.vertices, m.triangles);
     ASSERT_NE(mesh, nullptr);
@@ -111,7 +117,7 @@ TYPED_TEST(MeshRaycastPacket, PreTestKeepsEveryTriangleTheExactTestHits) {
       }
       // Origins from very near (grazing, close range) to far (100x the offset) away.
       const double dist = size * std::pow(10.0, -2.0 + 6.0 * u(rng));
-      Eigen::Vector3d away = Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+      Eigen::Vector3d away = normal3(n, rng).normalized();
       if (r % 7 == 0) {  // nearly in the plane of the triangle
         const Eigen::Vector3d nrm = (b - a).cross(c - a).template cast<double>().normalized();
         away = (away - nrm * nrm.dot(away) * (1.0 - 1e-6)).normalized();

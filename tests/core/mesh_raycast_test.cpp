@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "gq/mesh_query.h"
 #include "gq/query.h"
@@ -12,6 +13,12 @@ namespace gq {
 namespace {
 
 using meshtest::Scalars;
+
+// Three draws of d in order, one per declarator: argument evaluation order is unspecified (GCC and clang differ).
+template <class T, class Distribution> Vec3<T> draw3(Distribution& d, std::mt19937_64& rng) {
+  const double x = d(rng), y = d(rng), z = d(rng);
+  return Vec3<T>(T(x), T(y), T(z));
+}
 
 template <class T> class MeshRaycast : public ::testing::Test {
  protected:
@@ -175,8 +182,8 @@ TYPED_TEST(MeshRaycast, UVAndNormalMatchGetTriangleUnderScaleAndPose) {
     const Transform<T> pose(Vec3<T>(1, -2, 3), Quat<T>(Eigen::AngleAxis<T>(T(1.1), Vec3<T>(-1, 0, 2).normalized())));
     int hitsSeen = 0;
     for (int i = 0; i < 200; ++i) {
-      const Vec3<T> target = pose.p + Vec3<T>(T(u(rng)), T(u(rng)), T(u(rng)));
-      const Vec3<T> o = target + Vec3<T>(T(u(rng)), T(u(rng)), T(u(rng))).normalized() * T(10);
+      const Vec3<T> target = pose.p + draw3<T>(u, rng);
+      const Vec3<T> o = target + draw3<T>(u, rng).normalized() * T(10);
       const Vec3<T> d = (target - o).normalized();
       RaycastHit<T> hit;
       if (this->cast(g, pose, o, d, T(100), kDefaultHitFlags | HitFlag::UV, 1, &hit) == 0) continue;
@@ -264,7 +271,7 @@ TYPED_TEST(MeshRaycast, WatertightRaysThroughEdgesAndVerticesOfAClosedMeshAlways
       // Others within ~45 degrees of it, so the ray enters the (convex) mesh at the target.
       Vec3<T> offset = target.normalized() * T(2);
       while (r > 0) {
-        const Vec3<T> tilted = offset + Vec3<T>(T(n(rng)), T(n(rng)), T(n(rng))) * T(0.8);
+        const Vec3<T> tilted = offset + draw3<T>(n, rng) * T(0.8);
         if (tilted.normalized().dot(target.normalized()) > T(0.7)) {
           offset = tilted;
           break;

@@ -46,13 +46,15 @@ template <class T> struct ShapeFactory {
   Geometry<T> make(Kind kind, Rng& rng) const {
     switch (kind) {
       case Kind::Sphere: return SphereGeometry<T>(T(rng.uniform(0.2, 1.0)));
-      case Kind::Capsule: return CapsuleGeometry<T>(T(rng.uniform(0.1, 0.6)), rng.chance(0.1) ? T(0) : T(rng.uniform(0, 1)));
+      case Kind::Capsule: {
+        const T radius = T(rng.uniform(0.1, 0.6));
+        return CapsuleGeometry<T>(radius, rng.chance(0.1) ? T(0) : T(rng.uniform(0, 1)));
+      }
       case Kind::Box: return BoxGeometry<T>(rng.inBox<T>(1).cwiseAbs() + Vec3<T>::Constant(T(0.05)));
       case Kind::Hull: {
         const auto& mesh = hulls[std::size_t(rng.uniform(0, double(hulls.size()) - 1e-9))];
         if (rng.chance(0.5)) return ConvexMeshGeometry<T>(mesh);
-        return ConvexMeshGeometry<T>(mesh, MeshScale<T>(Vec3<T>(T(rng.uniform(0.5, 1.5)), T(rng.uniform(0.5, 1.5)),
-                                                                T(rng.uniform(0.5, 1.5))), rng.rotation<T>()));
+        return ConvexMeshGeometry<T>(mesh, rng.meshScale<T>(0.5, 1.5));
       }
     }
     return SphereGeometry<T>(1);

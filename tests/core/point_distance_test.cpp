@@ -100,7 +100,7 @@ TYPED_TEST(PointDistance, BoxMatchesClosedForm) {
   using T = TypeParam;
   test::Rng rng(3);
   for (int i = 0; i < 2000; ++i) {
-    const Vec3<T> h(T(rng.uniform(0.1, 2)), T(rng.uniform(0.1, 2)), T(rng.uniform(0.1, 2)));
+    const Vec3<T> h = rng.vec<T>(0.1, 2);
     const Transform<T> pose = rng.pose<T>(10);
     const Vec3<T> p = pose.p + rng.inBox<T>(5);
     const Vec3L local = toLocal(pose, p);
@@ -153,10 +153,7 @@ TYPED_TEST(PointDistance, ScaledConvexMatchesBruteForceOverTriangles) {
     for (int i = 0; i < 40; ++i) pts.push_back(rng.inBox<T>(1.5));
     std::shared_ptr<const ConvexMesh<T>> hull;
     ASSERT_TRUE(cookConvexMesh(pts, hull).ok());
-    const MeshScale<T> scale =
-        shape == 0 ? MeshScale<T>()
-                   : MeshScale<T>(Vec3<T>(T(rng.uniform(0.3, 3)), T(rng.uniform(0.3, 3)), T(rng.uniform(0.3, 3))),
-                                  rng.rotation<T>());
+    const MeshScale<T> scale = shape == 0 ? MeshScale<T>() : rng.meshScale<T>(0.3, 3);
     const Transform<T> pose = rng.pose<T>(10);
     int insideCount = 0;
     for (int i = 0; i < 300; ++i) {

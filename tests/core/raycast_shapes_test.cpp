@@ -339,8 +339,12 @@ void checkRandomRays(const Geometry<T>& g, const Transform<T>& pose, double size
   int compared = 0, hits = 0, inside = 0;
   for (int i = 0; i < 10000; ++i) {
     Vec3<T> origin;
-    if (rng.chance(0.15)) origin = pose.p + rng.unitVector<T>() * T(size * rng.uniform(50, 5000));  // far away
-    else origin = pose.p + rng.inBox<T>(3 * size);
+    if (rng.chance(0.15)) {  // far away
+      const Vec3<T> away = rng.unitVector<T>();
+      origin = pose.p + away * T(size * rng.uniform(50, 5000));
+    } else {
+      origin = pose.p + rng.inBox<T>(3 * size);
+    }
     Vec3<T> dir = rng.chance(0.1) ? rng.unitVector<T>()
                                   : Vec3<T>((pose.p + rng.inBox<T>(1.2 * size) - origin).normalized());
     if (!(dir.norm() > 0)) continue;
@@ -425,7 +429,7 @@ TYPED_TEST(Raycast, RandomRaysMatchClosedFormBox) {
   using T = TypeParam;
   test::Rng rng(13);
   for (int shape = 0; shape < 2; ++shape) {
-    const Vec3<T> h(T(rng.uniform(0.2, 2)), T(rng.uniform(0.2, 2)), T(rng.uniform(0.2, 2)));
+    const Vec3<T> h = rng.vec<T>(0.2, 2);
     const Transform<T> pose = rng.pose<T>(20);
     const Reference ref = [&](const Vec3L& o, const Vec3L& d, LD grow) {
       return boxEntryLD(toLocal(pose, o), test::rotationLD(pose.q).transpose() * d,
@@ -442,9 +446,8 @@ TYPED_TEST(Raycast, RandomRaysMatchClosedFormScaledConvexBox) {
   using T = TypeParam;
   test::Rng rng(14);
   for (int shape = 0; shape < 2; ++shape) {
-    const Vec3<T> h(T(rng.uniform(0.3, 1.5)), T(rng.uniform(0.3, 1.5)), T(rng.uniform(0.3, 1.5)));
-    const MeshScale<T> scale(Vec3<T>(T(rng.uniform(0.5, 2)), T(rng.uniform(0.5, 2)), T(rng.uniform(0.5, 2))),
-                             rng.rotation<T>());
+    const Vec3<T> h = rng.vec<T>(0.3, 1.5);
+    const MeshScale<T> scale = rng.meshScale<T>(0.5, 2);
     const Transform<T> pose = rng.pose<T>(20);
     // In the hull frame: x_mesh = S^-1 x_shape, S = R diag(s) R^T, computed in long double. The shape grown by
     // `grow` is approximated by growing the unscaled box by grow / max(s): a margin, not an exact offset, which

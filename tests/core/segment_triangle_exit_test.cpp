@@ -34,7 +34,11 @@ std::vector<V> fibonacciDirections(int n) {
 TEST(SegmentTriangleExit, IsTheLeastExitOverAllDirectionsForSegmentsCrossingOrLyingOnTheTriangle) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const auto randomVec = [&] { return V(u(rng), u(rng), u(rng)); };
+  // One draw per declarator: argument evaluation order is unspecified (GCC and clang differ).
+  const auto randomVec = [&] {
+    const double x = u(rng), y = u(rng), z = u(rng);
+    return V(x, y, z);
+  };
   const std::vector<V> dirs = fibonacciDirections(50000);
   double worstGap = 0.0;
   for (int k = 0; k < 100; ++k) {

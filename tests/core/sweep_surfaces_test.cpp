@@ -65,7 +65,10 @@ template <class T> struct SweepSurfaces : ::testing::Test {
 
   std::vector<Geometry<T>> sweptShapes() {
     std::vector<Vec3<T>> points;
-    for (int i = 0; i < 12; ++i) points.push_back(Vec3<T>(rng.unitVector<T>() * T(rng.uniform(0.15, 0.25))));
+    for (int i = 0; i < 12; ++i) {
+      const Vec3<T> dir = rng.unitVector<T>();
+      points.push_back(dir * T(rng.uniform(0.15, 0.25)));
+    }
     std::shared_ptr<const ConvexMesh<T>> hull;
     EXPECT_TRUE(cookConvexMesh(points, hull).ok());
     return {SphereGeometry<T>(T(0.2)), CapsuleGeometry<T>(T(0.15), T(0.25)), BoxGeometry<T>(T(0.2), T(0.15), T(0.1)),
@@ -99,10 +102,12 @@ template <class T> struct SweepSurfaces : ::testing::Test {
   };
   Case randomCase() {
     Case c;
-    c.terrain = Transform<T>(rng.inBox<T>(3), rng.rotation<T>());
-    const Vec3<T> local(T(rng.uniform(0.8, 1.7)), T(rng.uniform(1.0, 2.0)), T(rng.uniform(0.8, 1.7)));
+    c.terrain = rng.pose<T>(3);
+    const double x = rng.uniform(0.8, 1.7), y = rng.uniform(1.0, 2.0), z = rng.uniform(0.8, 1.7);
+    const Vec3<T> local{T(x), T(y), T(z)};
     c.start = Transform<T>(c.terrain.transform(local), rng.rotation<T>());
-    c.dir = c.terrain.rotate(Vec3<T>(T(rng.uniform(-0.4, 0.4)), T(-1), T(rng.uniform(-0.4, 0.4))).normalized());
+    const double dx = rng.uniform(-0.4, 0.4), dz = rng.uniform(-0.4, 0.4);
+    c.dir = c.terrain.rotate(Vec3<T>(T(dx), T(-1), T(dz)).normalized());
     return c;
   }
   std::vector<Core> worldTriangles(const Transform<T>& terrain) const {
@@ -185,10 +190,10 @@ TYPED_TEST(SweepSurfaces, MeshInitialOverlapWithMtdReportsTheDepthAlongTheFaceNo
   ASSERT_TRUE(cookTriangleMesh(v, {TriangleIndices{0, 1, 2}, TriangleIndices{0, 2, 3}}, square).ok());
   const Geometry<T> mesh = TriangleMeshGeometry<T>(square);
   for (int i = 0; i < 20; ++i) {
-    const Transform<T> pose(this->rng.template inBox<T>(3), this->rng.template rotation<T>());
+    const Transform<T> pose = this->rng.template pose<T>(3);
     const Vec3<T> up = pose.rotate(Vec3<T>::UnitY());
-    const double hc = this->rng.uniform(0.02, 0.09);
-    const Vec3<T> centre = pose.transform(Vec3<T>(T(this->rng.uniform(-1, 1)), T(hc), T(this->rng.uniform(-1, 1))));
+    const double hc = this->rng.uniform(0.02, 0.09), x = this->rng.uniform(-1, 1), z = this->rng.uniform(-1, 1);
+    const Vec3<T> centre = pose.transform(Vec3<T>(T(x), T(hc), T(z)));
     const std::pair<Geometry<T>, double> shapes[] = {{SphereGeometry<T>(T(0.2)), 0.2 - hc},
                                                       {BoxGeometry<T>(T(0.3), T(0.1), T(0.25)), 0.1 - hc}};
     for (const auto& [shape, depth] : shapes) {

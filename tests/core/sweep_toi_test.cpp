@@ -33,13 +33,18 @@ template <class T> constexpr double kToiTol = std::is_same_v<T, double> ? 1e-7 :
 template <class T> constexpr double kTouch = std::is_same_v<T, double> ? 1e-9 : 1e-4;
 template <class T> constexpr int kCasesPerPair = std::is_same_v<T, double> ? 1000 : 250;
 
+// Three draws of d in order, one per declarator: argument evaluation order is unspecified (GCC and clang differ).
+template <class Distribution> Eigen::Vector3d draw3(Distribution& d, std::mt19937_64& gen) {
+  const double x = d(gen), y = d(gen), z = d(gen);
+  return {x, y, z};
+}
+
 template <class T> std::shared_ptr<const ConvexMesh<T>> randomHull(std::mt19937_64& gen) {
   std::normal_distribution<double> n;
   std::uniform_real_distribution<double> u(0.3, 0.8);
-  const Eigen::Vector3d radii(u(gen), u(gen), u(gen));
+  const Eigen::Vector3d radii = draw3(u, gen);
   std::vector<Vec3<T>> pts;
-  for (int i = 0; i < 9; ++i)
-    pts.push_back(Eigen::Vector3d(n(gen), n(gen), n(gen)).normalized().cwiseProduct(radii).cast<T>());
+  for (int i = 0; i < 9; ++i) pts.push_back(draw3(n, gen).normalized().cwiseProduct(radii).cast<T>());
   std::shared_ptr<const ConvexMesh<T>> mesh;
   EXPECT_TRUE(cookConvexMesh(pts, mesh).ok());
   return mesh;
@@ -49,8 +54,11 @@ template <class T> Geometry<T> randomShape(GeometryType type, std::mt19937_64& g
   std::uniform_real_distribution<double> u(0.2, 0.7);
   switch (type) {
     case GeometryType::Sphere: return SphereGeometry<T>(T(u(gen)));
-    case GeometryType::Capsule: return CapsuleGeometry<T>(T(u(gen) * 0.6), T(u(gen)));
-    case GeometryType::Box: return BoxGeometry<T>(T(u(gen)), T(u(gen)), T(u(gen)));
+    case GeometryType::Capsule: {
+      const double radius = u(gen) * 0.6;
+      return CapsuleGeometry<T>(T(radius), T(u(gen)));
+    }
+    case GeometryType::Box: return BoxGeometry<T>(draw3(u, gen).cast<T>());
     default: return ConvexMeshGeometry<T>(randomHull<T>(gen));
   }
 }
@@ -58,8 +66,9 @@ template <class T> Geometry<T> randomShape(GeometryType type, std::mt19937_64& g
 template <class T> Transform<T> randomPose(std::mt19937_64& gen, double spread) {
   std::uniform_real_distribution<double> u(-spread, spread);
   std::normal_distribution<double> n;
-  const Eigen::Quaterniond q(n(gen), n(gen), n(gen), n(gen));
-  return Transform<T>(Vec3<T>(T(u(gen)), T(u(gen)), T(u(gen))), q.normalized().cast<T>());
+  const double w = n(gen), x = n(gen), y = n(gen), z = n(gen);
+  const Eigen::Quaterniond q(w, x, y, z);
+  return Transform<T>(draw3(u, gen).cast<T>(), q.normalized().cast<T>());
 }
 
 struct PairStats {
@@ -125,7 +134,7 @@ template <class T> PairStats checkPair(GeometryType swept, GeometryType target, 
     const Geometry<T> g0 = randomShape<T>(swept, gen), g1 = randomShape<T>(target, gen);
     const Transform<T> p0 = randomPose<T>(gen, 2.0), p1 = randomPose<T>(gen, 0.5);
     // Aim near the target: most sweeps hit, some graze past or miss.
-    const Eigen::Vector3d aim = (p1.p - p0.p).template cast<double>() + 0.35 * Eigen::Vector3d(n(gen), n(gen), n(gen));
+    const Eigen::Vector3d aim = (p1.p - p0.p).template cast<double>() + 0.35 * draw3(n, gen);
     const Vec3<T> dir = aim.normalized().cast<T>();
     SweepHit<T> hit;
     bool hasHit = false;

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "gq/geometry.h"
 #include "gq/math.h"
 #include "gq/transform.h"
 
@@ -20,29 +21,49 @@ template <class T> struct Tol;
 template <> struct Tol<float> { static constexpr double kRel = 1e-4; };
 template <> struct Tol<double> { static constexpr double kRel = 1e-9; };
 
+// One draw per statement: argument evaluation order is unspecified (GCC and clang differ).
 class Rng {
  public:
   explicit Rng(std::uint64_t seed) : gen_(seed) {}
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen_); }
   bool chance(double p) { return uniform(0, 1) < p; }
-  template <class T> Vec3<T> inBox(double half) {
-    return Vec3<T>(T(uniform(-half, half)), T(uniform(-half, half)), T(uniform(-half, half)));
+  // Each coordinate uniform in [lo, hi), drawn x, y, z.
+  template <class T> Vec3<T> vec(double lo, double hi) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    return draw3(u).cast<T>();
   }
+  template <class T> Vec3<T> inBox(double half) { return vec<T>(-half, half); }
   template <class T> Vec3<T> unitVector() {
     std::normal_distribution<double> n;
     Eigen::Vector3d v;
-    do v = Eigen::Vector3d(n(gen_), n(gen_), n(gen_));
+    do v = draw3(n);
     while (v.norm() < 1e-6);
     return v.normalized().cast<T>();
   }
   template <class T> Quat<T> rotation() {
     std::normal_distribution<double> n;
-    Eigen::Quaterniond q(n(gen_), n(gen_), n(gen_), n(gen_));
-    return q.normalized().cast<T>();
+    const double w = n(gen_);
+    const Eigen::Vector3d xyz = draw3(n);
+    return Eigen::Quaterniond(w, xyz.x(), xyz.y(), xyz.z()).normalized().cast<T>();
   }
-  template <class T> Transform<T> pose(double translation) { return Transform<T>(inBox<T>(translation), rotation<T>()); }
+  template <class T> Transform<T> pose(double translation) {
+    const Vec3<T> p = inBox<T>(translation);
+    return Transform<T>(p, rotation<T>());
+  }
+  // Per-axis stretch in [lo, hi) along randomly rotated axes.
+  template <class T> MeshScale<T> meshScale(double lo, double hi) {
+    const Vec3<T> s = vec<T>(lo, hi);
+    return MeshScale<T>(s, rotation<T>());
+  }
 
  private:
+  template <class Distribution> Eigen::Vector3d draw3(Distribution& d) {
+    const double x = d(gen_);
+    const double y = d(gen_);
+    const double z = d(gen_);
+    return {x, y, z};
+  }
+
   std::mt19937_64 gen_;
 };
 

@@ -42,17 +42,28 @@ template <class T> std::vector<Scenario<T>> makeScenarios(std::size_t count, std
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::normal_distribution<double> n;
-  auto vec = [&](double half) -> Vec3<T> { return Vec3<T>(T(half * u(rng)), T(half * u(rng)), T(half * u(rng))); };
-  auto rot = [&]() -> Quat<T> { return Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().cast<T>(); };
+  // One draw per declarator: argument evaluation order is unspecified (GCC and clang differ).
+  auto vec = [&](double half) -> Vec3<T> {
+    const double x = u(rng), y = u(rng), z = u(rng);
+    return Vec3<T>(T(half * x), T(half * y), T(half * z));
+  };
+  auto rot = [&]() -> Quat<T> {
+    const double w = n(rng), x = n(rng), y = n(rng), z = n(rng);
+    return Eigen::Quaterniond(w, x, y, z).normalized().cast<T>();
+  };
   auto unit = [&]() -> Vec3<T> {  // explicit type: no Eigen expression of a dead temporary
-    return Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized().cast<T>(); };
+    const double x = n(rng), y = n(rng), z = n(rng);
+    return Eigen::Vector3d(x, y, z).normalized().cast<T>();
+  };
   std::vector<Scenario<T>> out(count);
   for (std::size_t i = 0; i < count; ++i) {
     Scenario<T>& s = out[i];
     s.geom0 = i % kGeometryTypeCount;
     s.geom1 = (i / kGeometryTypeCount) % kGeometryTypeCount;
-    s.pose0 = Transform<T>(vec(1.5), rot());
-    s.pose1 = Transform<T>(vec(1.5), rot());
+    const Vec3<T> p0 = vec(1.5);
+    s.pose0 = Transform<T>(p0, rot());
+    const Vec3<T> p1 = vec(1.5);
+    s.pose1 = Transform<T>(p1, rot());
     s.dir = unit();
     s.origin = s.pose1.p - T(4) * s.dir + vec(0.3);
   }

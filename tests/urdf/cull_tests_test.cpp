@@ -42,15 +42,19 @@ template <class T> void expectSegmentDistanceWithinRounding(std::uint64_t seed) 
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
   const double tilts[] = {1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
+  // One draw per declarator: argument evaluation order is unspecified (GCC and clang differ).
+  const auto vec = [&] {
+    const double x = u(rng), y = u(rng), z = u(rng);
+    return Vec3<T>(T(x), T(y), T(z));
+  };
   for (int k = 0; k < 600; ++k) {
-    Vec3<T> p0(T(u(rng)), T(u(rng)), T(u(rng))), d0(T(u(rng)), T(u(rng)), T(u(rng))),
-        p1(T(u(rng)), T(u(rng)), T(u(rng))), d1(T(u(rng)), T(u(rng)), T(u(rng)));
+    Vec3<T> p0 = vec(), d0 = vec(), p1 = vec(), d1 = vec();
     if (k % 5 == 1) d1 = d0 * T(u(rng));  // parallel (or antiparallel)
-    if (k % 5 == 2) d1 = d0 + T(tilts[(k / 5) % 6]) * Vec3<T>(T(u(rng)), T(u(rng)), T(u(rng)));  // nearly parallel
+    if (k % 5 == 2) d1 = d0 + T(tilts[(k / 5) % 6]) * vec();  // nearly parallel
     if (k % 5 == 3) d0.setZero();  // a point
     if (k % 5 == 4) {              // nearly parallel and overlapping along their length, a small gap apart
-      d1 = -d0 + T(tilts[(k / 5) % 6]) * Vec3<T>(T(u(rng)), T(u(rng)), T(u(rng)));
-      p1 = p0 + d0 + T(0.01) * d0.cross(Vec3<T>(T(u(rng)), T(u(rng)), T(u(rng))));
+      d1 = -d0 + T(tilts[(k / 5) % 6]) * vec();
+      p1 = p0 + d0 + T(0.01) * d0.cross(vec());
     }
     const LD exact = exactSegmentDistance(p0.template cast<LD>(), d0.template cast<LD>(), p1.template cast<LD>(),
                                           d1.template cast<LD>());
@@ -81,7 +85,10 @@ TEST(CullTests, EnclosingCapsuleContainsEveryPoint) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Vec3<double>> points;
-  for (int k = 0; k < 500; ++k) points.emplace_back(0.8 * u(rng), 0.2 * u(rng) + 0.3, 0.1 * u(rng));
+  for (int k = 0; k < 500; ++k) {
+    const double x = u(rng), y = u(rng), z = u(rng);
+    points.emplace_back(0.8 * x, 0.2 * y + 0.3, 0.1 * z);
+  }
   Vec3<double> mean;
   const detail::EnclosingCapsule c = detail::enclosingCapsule(points, detail::principalAxes(points, mean), 0.0);
   double worst = -1;
