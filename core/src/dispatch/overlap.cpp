@@ -1,11 +1,12 @@
 // Overlap façade: validation, then one dispatch table indexed [type0][type1].
 //
 // Semantics: touching counts as overlapping (every kernel compares with <=); the plane is the solid half-space
-// x <= 0 of its frame. Kernels run with both poses expressed relative to pose0, so that shapes far from the
-// origin keep their relative precision.
+// x <= 0 of its frame. Kernels run in the frame of the smaller shape (common/pair_frame.h), so that shapes far from
+// the origin, or far from a much larger shape, keep their precision.
 #include <array>
 #include <string>
 
+#include "common/pair_frame.h"
 #include "common/validate.h"
 #include "custom/callback_queries.h"
 #include "gq/custom.h"
@@ -139,10 +140,10 @@ Status overlap(const Geometry<T>& geom0, const Transform<T>& pose0, const Geomet
   return detail::guarded([&]() -> Status {
     if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
     if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1)) return nonConvexCustomStatus(geom0, geom1);
-    const Transform<T> relative1 = pose1.relativeTo(pose0);
+    const detail::PairFrame<T> frame = detail::pairFrame(geom0, pose0, geom1, pose1);
     bool result = false;
     const OverlapFn<T> fn = kOverlapTable<T>[std::size_t(geom0.type())][std::size_t(geom1.type())];
-    if (Status s = fn(geom0, Transform<T>(), geom1, relative1, result); !s.ok()) return s;
+    if (Status s = fn(geom0, frame.pose0, geom1, frame.pose1, result); !s.ok()) return s;
     overlapping = result;
     return Status();
   });

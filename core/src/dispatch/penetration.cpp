@@ -3,11 +3,12 @@
 // Sign convention (the one place it is written): when `penetrating`, translating geom0 by direction * depth
 // separates the shapes; direction is unit and depth >= 0 (0 when touching, which counts as penetrating, so that
 // overlap() and computePenetration() agree). The plane is the solid half-space x <= 0 of its frame.
-// Kernels run with both poses relative to pose0 (shapes far from the origin keep their relative precision); the
-// direction is rotated back to world space here.
+// Kernels run in the frame of the smaller shape (common/pair_frame.h: shapes far from the origin, or far from a much
+// larger shape, keep their precision); the direction is rotated back to world space here.
 #include <array>
 #include <string>
 
+#include "common/pair_frame.h"
 #include "common/validate.h"
 #include "custom/callback_queries.h"
 #include "gq/custom.h"
@@ -155,15 +156,15 @@ Status computePenetration(PenetrationResult<T>& result, const Geometry<T>& geom0
   return detail::guarded([&]() -> Status {
     if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
     if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1)) return nonConvexCustomStatus(geom0, geom1);
-    const Transform<T> relative1 = pose1.relativeTo(pose0);
+    const detail::PairFrame<T> frame = detail::pairFrame(geom0, pose0, geom1, pose1);
     PenetrationResult<T> local;
     const PenetrationFn<T> fn = kPenetrationTable<T>[std::size_t(geom0.type())][std::size_t(geom1.type())];
-    if (Status s = fn(geom0, Transform<T>(), geom1, relative1, local); !s.ok()) return s;
+    if (Status s = fn(geom0, frame.pose0, geom1, frame.pose1, local); !s.ok()) return s;
     if (!local.penetrating) {
       result = PenetrationResult<T>();
       return Status();
     }
-    local.direction = pose0.rotate(local.direction);
+    local.direction = frame.world.rotate(local.direction);
     if (!isFinite(local.direction) || !std::isfinite(local.depth))
       return Status::internal("computePenetration produced a non-finite result");
     result = local;

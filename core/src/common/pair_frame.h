@@ -1,0 +1,40 @@
+#pragma once
+// The frame the overlap and penetration kernels run in: the pose of the smaller shape. Its features keep full
+// precision, while the other shape's offset rounds by ~eps * |offset|, small against that larger shape's own size.
+// (In pose0's frame a unit cube 1e30 away from a capsule of radius 1e30 collapsed to one point, and the kernels read
+// its faces and edges from rounding noise: "penetrating" for shapes 4e29 apart, found by fuzz_pair_queries.)
+#include <cmath>
+#include <limits>
+
+#include "gq/cooking.h"
+#include "gq/custom.h"
+#include "gq/geometry.h"
+
+namespace gq::detail {
+
+// Radius about the shape's origin that holds its features. Infinite for planes, meshes and heightfields: they are
+// never the smaller shape (their kernels work in the surface's own frame).
+template <class T> T featureRadius(const Geometry<T>& g) {
+  const auto radius = [](const Bounds3<T>& b) { return b.min.cwiseAbs().cwiseMax(b.max.cwiseAbs()).norm(); };
+  if (const auto* s = g.template getIf<SphereGeometry<T>>()) return s->radius;
+  if (const auto* c = g.template getIf<CapsuleGeometry<T>>()) return c->halfHeight + c->radius;
+  if (const auto* b = g.template getIf<BoxGeometry<T>>()) return b->halfExtents.norm();
+  if (const auto* m = g.template getIf<ConvexMeshGeometry<T>>())
+    return radius(m->mesh->localBounds) * m->scale.scale.cwiseAbs().maxCoeff();
+  if (const auto* c = g.template getIf<CustomGeometry<T>>()) return radius(c->callbacks->localBounds());
+  return std::numeric_limits<T>::infinity();
+}
+
+template <class T> struct PairFrame {
+  Transform<T> world;         // the frame's pose
+  Transform<T> pose0, pose1;  // the shapes' poses in it
+};
+
+// pose0's frame unless shape 1 is strictly smaller (so equal shapes keep pose0's, as every pair did before).
+template <class T>
+PairFrame<T> pairFrame(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
+  if (featureRadius(g1) < featureRadius(g0)) return {p1, p0.relativeTo(p1), Transform<T>()};
+  return {p0, Transform<T>(), p1.relativeTo(p0)};
+}
+
+}  // namespace gq::detail
