@@ -27,7 +27,18 @@ TYPED_TEST_SUITE(PenetrationProperty, Scalars);
 template <class T> double kRel() { return std::is_same_v<T, float> ? 1e-3 : 1e-6; }
 template <class T> double band() { return std::is_same_v<T, float> ? 2e-5 : 1e-11; }
 
-enum class Kind { Sphere, Capsule, Box, Hull };
+enum class Kind { Sphere, Capsule, Box, Hull, Sheet, Needle };
+
+// A hull scaled flat along one (Sheet) or two (Needle) axes of a random frame, by a factor down to 1e-30 (1e-60 in
+// double): its face normals come from S^-1 and most of them point along the flattened axes, and the Gauss-map arcs
+// of its rim edges are rounding noise (the edge directions carry the facets there).
+template <class T> MeshScale<T> flatScale(Rng& rng, int flatAxes) {
+  const double tiny[] = {1e-4, 1e-9, 1e-30, std::is_same_v<T, float> ? 1e-30 : 1e-60};
+  Vec3<T> s = rng.vec<T>(0.5, 1.5);
+  const int first = int(rng.uniform(0, 3 - 1e-9));
+  for (int k = 0; k < flatAxes; ++k) s[(first + k) % 3] = T(tiny[int(rng.uniform(0, 4 - 1e-9))]);
+  return MeshScale<T>(s, rng.rotation<T>());
+}
 
 template <class T> struct ShapeFactory {
   std::vector<std::shared_ptr<const ConvexMesh<T>>> hulls;
@@ -55,6 +66,11 @@ template <class T> struct ShapeFactory {
         const auto& mesh = hulls[std::size_t(rng.uniform(0, double(hulls.size()) - 1e-9))];
         if (rng.chance(0.5)) return ConvexMeshGeometry<T>(mesh);
         return ConvexMeshGeometry<T>(mesh, rng.meshScale<T>(0.5, 1.5));
+      }
+      case Kind::Sheet:
+      case Kind::Needle: {
+        const auto& mesh = hulls[std::size_t(rng.uniform(0, double(hulls.size()) - 1e-9))];
+        return ConvexMeshGeometry<T>(mesh, flatScale<T>(rng, kind == Kind::Sheet ? 1 : 2));
       }
     }
     return SphereGeometry<T>(1);
@@ -120,6 +136,14 @@ TYPED_TEST(PenetrationProperty, CapsuleHull40PointsMovingByDepthSeparates) {
 TYPED_TEST(PenetrationProperty, BoxHull40PointsMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Box, Kind::Hull, 15, 40); }
 TYPED_TEST(PenetrationProperty, HullHull40PointsMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Hull, Kind::Hull, 16, 40); }
 TYPED_TEST(PenetrationProperty, SphereHull40PointsMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Sphere, Kind::Hull, 17, 40); }
+// Hulls scaled flat (fuzz_pair_queries: a box against a cube scaled (3.6, 1e-56, 1e-123) answered penetrating 2.6
+// deep while overlap and distance said 1.4 apart; a float cube scaled (1e-18, 7e8, 3.5) gave NaN face normals).
+TYPED_TEST(PenetrationProperty, BoxSheetMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Box, Kind::Sheet, 18); }
+TYPED_TEST(PenetrationProperty, BoxNeedleMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Box, Kind::Needle, 19); }
+TYPED_TEST(PenetrationProperty, HullSheetMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Hull, Kind::Sheet, 20); }
+TYPED_TEST(PenetrationProperty, HullNeedleMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Hull, Kind::Needle, 21); }
+TYPED_TEST(PenetrationProperty, CapsuleSheetMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Capsule, Kind::Sheet, 22); }
+TYPED_TEST(PenetrationProperty, SphereNeedleMovingByDepthSeparates) { checkPair<TypeParam>(Kind::Sphere, Kind::Needle, 23); }
 // Swapped orders go through the dispatch's generic wrapper (direction negated).
 TYPED_TEST(PenetrationProperty, SwappedPairsMovingByDepthSeparates) {
   checkPair<TypeParam>(Kind::Box, Kind::Sphere, 11);

@@ -1,6 +1,6 @@
 // libFuzzer target: overlap, computePenetration, distance and sweep on one decoded pair; bytes = precision, two
 // geometries and poses, sweep direction, maxDist, flags, inflation. Contract: ok -> finite outputs (unit normals
-// where promised); error -> outputs untouched.
+// where promised); error -> outputs untouched; and, for two solids, the three families tell one story (below).
 #include "fuzz_decode.h"
 
 namespace {
@@ -10,33 +10,64 @@ template <class T> bool unitOrZero(const gq::Vec3<T>& n) {
   return len == T(0) || std::abs(len - T(1)) < T(1e-2);
 }
 
+// Radius about the origin of the shape's local bounds; 0 where unbounded (a plane).
+template <class T> long double localRadius(const gq::Geometry<T>& g) {
+  gq::Bounds3<T> b;
+  if (!gq::computeGeomBounds(b, g, gq::Transform<T>()).ok()) return 0;
+  const long double r = b.min.cwiseAbs().cwiseMax(b.max.cwiseAbs()).template cast<long double>().norm();
+  return std::isfinite(r) ? r : 0;
+}
+
+bool isSolid(gq::GeometryType t) {
+  return t != gq::GeometryType::TriangleMesh && t != gq::GeometryType::HeightField;
+}
+
+// Two solids (meshes and heightfields are surfaces, with other distance semantics): overlap, penetration and signed
+// distance must agree up to rounding of the pair's scale (sizes plus offset), relative 1e-3 in float, 1e-6 in
+// double; penetration and signed distance are the same MTD, compared within 10x that. Catches gross answers from
+// one family (session 12: "penetrating 1e30 deep" for shapes 4e29 apart) that each family's own checks pass.
+template <class T>
+void requireOneStory(const gq::Geometry<T>& g0, const gq::Transform<T>& p0, const gq::Geometry<T>& g1,
+                     const gq::Transform<T>& p1, bool overlapping, const gq::PenetrationResult<T>* pen,
+                     const gq::DistanceResult<T>* dist) {
+  if (!isSolid(g0.type()) || !isSolid(g1.type())) return;
+  const long double offset = (p1.p - p0.p).template cast<long double>().norm();
+  const long double scale = localRadius(g0) + localRadius(g1) + offset;
+  const long double tol = (sizeof(T) == 4 ? 1e-3L : 1e-6L) * scale;
+  if (pen) gq::fuzz::require(pen->penetrating == overlapping || (dist && std::abs((long double)dist->distance) <= tol));
+  if (dist) gq::fuzz::require(overlapping ? dist->distance <= tol : dist->distance >= -tol);
+  // Open finding (open_findings/README.md): float EPA on a custom cylinder 1e6 long answers depths ~1e6 where the
+  // exact MTD is 3.4; the depth comparison skips float custom shapes until it is fixed.
+  const bool openEpaFinding =
+      sizeof(T) == 4 && (g0.type() == gq::GeometryType::Custom || g1.type() == gq::GeometryType::Custom);
+  if (pen && dist && pen->penetrating && dist->distance < 0 && !openEpaFinding)
+    gq::fuzz::require(std::abs((long double)pen->depth + dist->distance) <= 10 * tol);
+}
+
 template <class T> void run(gq::fuzz::Bytes& in) {
   using namespace gq;
   const Geometry<T> g0 = fuzz::geometry<T>(in);
   const Transform<T> p0 = in.pose<T>();
   const Geometry<T> g1 = fuzz::geometry<T>(in);
   const Transform<T> p1 = in.pose<T>();
-  {
-    bool overlapping = false;
-    const Status s = overlap(g0, p0, g1, p1, overlapping);
-    fuzz::require(s.ok() || !overlapping);
-  }
-  {
-    PenetrationResult<T> r;
-    r.depth = T(-7);
-    const Status s = computePenetration(r, g0, p0, g1, p1);
-    if (!s.ok()) fuzz::require(r.depth == T(-7) && !r.penetrating);
-    else fuzz::require(isFinite(r.direction) && std::isfinite(r.depth) && r.depth >= T(0) &&
-                       (!r.penetrating || unitOrZero(r.direction)));
-  }
-  {
-    DistanceResult<T> r;
-    r.distance = T(-7777);
-    GjkCache<T> cache;
-    const Status s = distance(r, g0, p0, g1, p1, in.flag() ? &cache : nullptr);
-    if (!s.ok()) fuzz::require(r.distance == T(-7777));
-    else fuzz::require(std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal));
-  }
+  bool overlapping = false;
+  const Status overlapStatus = overlap(g0, p0, g1, p1, overlapping);
+  fuzz::require(overlapStatus.ok() || !overlapping);
+  PenetrationResult<T> pen;
+  pen.depth = T(-7);
+  const Status penStatus = computePenetration(pen, g0, p0, g1, p1);
+  if (!penStatus.ok()) fuzz::require(pen.depth == T(-7) && !pen.penetrating);
+  else fuzz::require(isFinite(pen.direction) && std::isfinite(pen.depth) && pen.depth >= T(0) &&
+                     (!pen.penetrating || unitOrZero(pen.direction)));
+  DistanceResult<T> dist;
+  dist.distance = T(-7777);
+  GjkCache<T> cache;
+  const Status distStatus = distance(dist, g0, p0, g1, p1, in.flag() ? &cache : nullptr);
+  if (!distStatus.ok()) fuzz::require(dist.distance == T(-7777));
+  else fuzz::require(std::isfinite(dist.distance) && isFinite(dist.point0) && isFinite(dist.point1) &&
+                     isFinite(dist.normal));
+  if (overlapStatus.ok())
+    requireOneStory(g0, p0, g1, p1, overlapping, penStatus.ok() ? &pen : nullptr, distStatus.ok() ? &dist : nullptr);
   {
     const Vec3<T> dir = in.direction<T>();
     const T maxDist = in.scalar<T>();

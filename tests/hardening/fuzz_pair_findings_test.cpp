@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -99,6 +100,70 @@ TEST(FuzzPairFindings, UnitCubeFarFromAHugeCapsuleKeepsItsShape) {
     ASSERT_TRUE(gq::distance(d, a, pa, b, pb).ok());
     EXPECT_NEAR(d.distance / apart, 1.0, 1e-9) << "swapped " << swap;
   }
+}
+
+// A float sphere of radius 7.94 1.62 from a cube hull scaled by (8.9e-19, 7.1e8, 3.5) about a rotated frame: a sheet
+// whose vertices reach 7e8. Its face normals came from a general 3x3 inverse of the scale matrix, rounding noise in
+// float: SAT met no usable axis, so overlap said yes and penetration answered depth FLT_MAX (found by the
+// fuzzer's cross-family check). S^-1 now comes from the scale factors. Apart, in both orders; pushed 3.62 towards
+// the sheet (along double's exact normal), 2 deep (float rounds the sheet's vertices by ~0.06).
+TEST(FuzzPairFindings, HullScaledToASheetKeepsItsFaceNormals) {
+  const Pair<float> f = knownPair<float>("fuzz_pair_queries_float_sheet_hull_penetration_depth_flt_max.bin");
+  ASSERT_EQ(f.g1.type(), gq::GeometryType::ConvexMesh);
+  for (const bool swap : {false, true}) {
+    bool overlapping = true;
+    gq::PenetrationResult<float> pen;
+    if (swap) {
+      ASSERT_TRUE(gq::overlap(f.g1, f.p1, f.g0, f.p0, overlapping).ok());
+      ASSERT_TRUE(gq::computePenetration(pen, f.g1, f.p1, f.g0, f.p0).ok());
+    } else {
+      ASSERT_TRUE(gq::overlap(f.g0, f.p0, f.g1, f.p1, overlapping).ok());
+      ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+    }
+    EXPECT_FALSE(overlapping) << "swapped " << swap;
+    EXPECT_FALSE(pen.penetrating) << "swapped " << swap;
+  }
+  const auto& sheet = f.g1.get<gq::ConvexMeshGeometry<float>>();
+  const gq::Geometry<double> sheetD = gq::ConvexMeshGeometry<double>(
+      gq::fuzz::FallbackData<double>::get().hull,
+      gq::MeshScale<double>(sheet.scale.scale.cast<double>(), sheet.scale.rotation.cast<double>()));
+  ASSERT_EQ(f.g0.type(), gq::GeometryType::Capsule);
+  const double radius = f.g0.get<gq::CapsuleGeometry<float>>().radius;
+  const gq::Transform<double> p0(f.p0.p.cast<double>()), p1(f.p1.p.cast<double>());
+  gq::DistanceResult<double> exact;
+  ASSERT_TRUE(gq::distance(exact, gq::Geometry<double>(gq::SphereGeometry<double>(radius)), p0, sheetD, p1).ok());
+  ASSERT_NEAR(exact.distance, 1.6204, 1e-3);  // the gap, also by enumerating the parallelepiped's features
+  const gq::Transform<float> pushed((f.p0.p.cast<double>() + exact.normal * (exact.distance + 2)).cast<float>());
+  gq::PenetrationResult<float> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, pushed, f.g1, f.p1).ok());
+  ASSERT_TRUE(pen.penetrating);
+  EXPECT_NEAR(pen.depth, 2.0f, 0.25f);
+  EXPECT_NEAR(std::abs(pen.direction.cast<double>().dot(exact.normal)), 1.0, 1e-3);
+}
+
+// A float hull scaled by (7.9, 1.3e6, 4.4e-41) against a sphere of radius 7.9: the smallest factor is subnormal, so
+// 1/s overflowed, every face normal came out NaN and penetration answered depth FLT_MAX. Normals now map by
+// min|s| / s. The depth is double's for the same numbers, within the rounding of the sheet's float vertices.
+TEST(FuzzPairFindings, HullWithASubnormalScaleFactorGetsAFiniteDepth) {
+  const Pair<float> f = knownPair<float>("fuzz_pair_queries_float_subnormal_hull_scale_depth_flt_max.bin");
+  ASSERT_EQ(f.g0.type(), gq::GeometryType::ConvexMesh);
+  ASSERT_EQ(f.g1.type(), gq::GeometryType::Sphere);
+  const auto& hull = f.g0.get<gq::ConvexMeshGeometry<float>>();
+  ASSERT_LT(std::abs(hull.scale.scale.minCoeff()), std::numeric_limits<float>::min());  // subnormal
+  gq::PenetrationResult<float> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  ASSERT_TRUE(pen.penetrating);
+  const gq::Geometry<double> hullD = gq::ConvexMeshGeometry<double>(
+      gq::fuzz::FallbackData<double>::get().hull,
+      gq::MeshScale<double>(hull.scale.scale.cast<double>(), hull.scale.rotation.cast<double>()));
+  const gq::Geometry<double> ballD = gq::SphereGeometry<double>(f.g1.get<gq::SphereGeometry<float>>().radius);
+  const gq::Transform<double> p0(f.p0.p.cast<double>(), f.p0.q.cast<double>());
+  const gq::Transform<double> p1(f.p1.p.cast<double>(), f.p1.q.cast<double>());
+  gq::PenetrationResult<double> reference;
+  ASSERT_TRUE(gq::computePenetration(reference, hullD, p0, ballD, p1).ok());
+  ASSERT_TRUE(reference.penetrating);
+  EXPECT_NEAR(pen.depth, reference.depth, 0.25);  // two ulps of the vertices (~1.3e6 in float)
+  EXPECT_NEAR(pen.direction.cast<double>().dot(reference.direction), 1.0, 1e-3);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
-// The frame the overlap and penetration kernels run in: the pose of the smaller shape. Its features keep full
-// precision, while the other shape's offset rounds by ~eps * |offset|, small against that larger shape's own size.
+// The frame the overlap and penetration kernels run in: the pose of the smaller shape (distance's kernels run at its
+// position, rotations kept). Its features keep full precision, while the other shape's offset rounds by
+// ~eps * |offset|, small against that larger shape's own size.
 // (In pose0's frame a unit cube 1e30 away from a capsule of radius 1e30 collapsed to one point, and the kernels read
 // its faces and edges from rounding noise: "penetrating" for shapes 4e29 apart, found by fuzz_pair_queries.)
 #include <cmath>
@@ -35,6 +36,13 @@ template <class T>
 PairFrame<T> pairFrame(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
   if (featureRadius(g1) < featureRadius(g0)) return {p1, p0.relativeTo(p1), Transform<T>()};
   return {p0, Transform<T>(), p1.relativeTo(p0)};
+}
+
+// The smaller shape's position (as pairFrame picks it), for queries that translate both poses and keep their
+// rotations.
+template <class T>
+Vec3<T> pairOrigin(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
+  return featureRadius(g1) < featureRadius(g0) ? p1.p : p0.p;
 }
 
 }  // namespace gq::detail

@@ -5,6 +5,7 @@
 // plane-plane, plane-mesh/heightfield, mesh-heightfield, heightfield-heightfield, and non-convex custom shapes.
 #include <array>
 
+#include "common/pair_frame.h"
 #include "common/validate.h"
 #include "distance/distance.h"
 #include "distance/surface_distance.h"
@@ -132,12 +133,18 @@ Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Trans
     if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
     if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1))
       return Status::unsupported("distance needs a convex custom geometry (isConvex() is false)");
-    // Normalise the poses' rotations (validation accepts |q| within 1e-3 of 1).
-    const Transform<T> q0(pose0.p, pose0.q.normalized()), q1(pose1.p, pose1.q.normalized());
+    // Normalise the poses' rotations (validation accepts |q| within 1e-3 of 1). Kernels run with both poses
+    // translated by the smaller shape's position (common/pair_frame.h), rotations kept (the GjkCache lives in
+    // geom0's frame): a float pair near x = 3e7 lost 0.28 of depth to world coordinates.
+    const Vec3<T> origin = detail::pairOrigin(geom0, pose0, geom1, pose1);
+    const Transform<T> q0(Vec3<T>(pose0.p - origin), pose0.q.normalized());
+    const Transform<T> q1(Vec3<T>(pose1.p - origin), pose1.q.normalized());
     DistanceResult<T> r;
     const auto fn = kDistanceTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())];
     const Status s = fn(geom0, q0, geom1, q1, cache, r);
     if (!s.ok()) return s;
+    r.point0 += origin;
+    r.point1 += origin;
     if (!finiteResult(r)) return Status::internal("distance produced a non-finite result");
     result = r;
     return s;

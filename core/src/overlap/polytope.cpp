@@ -18,6 +18,7 @@
 
 #include "gjk/gjk.h"
 #include "gq/tolerances.h"
+#include "shapes/hull_scale.h"
 
 namespace gq::detail {
 namespace {
@@ -64,14 +65,29 @@ template <class T> void consider(T push, const Vec3<T>& direction, SatResult<T>&
 template <class T> struct EdgeArc {
   Vec3<T> n1, n2, plane;
   std::uint32_t vertex;  // one endpoint of the edge
+  // Faces (nearly) coplanar or opposite, as at the rim of a hull scaled flat: `plane` is rounding noise and the arc
+  // undecided, so facet normals come from the edge direction `direction` (unit; zero for a zero-length edge).
+  bool flat;
+  Vec3<T> direction;
 };
+
+// Below this |n1 x n2| an arc is flat: the direction of `plane` is off by ~(normal rounding) / |plane|.
+template <class T> T flatArcSine() { return std::sqrt(T(tol::Rel<T>::kEpsilon)); }
+
+template <class T> Vec3<T> edgeDirection(const Polytope<T>& poly, const std::array<std::uint32_t, 2>& edge) {
+  return (poly.vertices[edge[1]] - poly.vertices[edge[0]]).stableNormalized();
+}
 
 template <class T> void edgeArcs(const Polytope<T>& poly, T sign, std::vector<EdgeArc<T>>& arcs) {
   const PolytopeTopology& topo = *poly.topology;
+  const T flatSine = flatArcSine<T>();
   arcs.clear();
   for (std::size_t i = 0; i < topo.edges.size(); ++i) {
     const Vec3<T> n1 = poly.faceNormals[topo.edgeFaces[i][0]] * sign, n2 = poly.faceNormals[topo.edgeFaces[i][1]] * sign;
-    arcs.push_back({n1, n2, n2.cross(n1), topo.edges[i][0]});
+    const Vec3<T> plane = n2.cross(n1);
+    const bool flat = !(plane.squaredNorm() > flatSine * flatSine);
+    const Vec3<T> direction = flat ? edgeDirection(poly, topo.edges[i]) : Vec3<T>::Zero();
+    arcs.push_back({n1, n2, plane, topo.edges[i][0], flat, direction});
   }
 }
 
@@ -107,6 +123,15 @@ void testEdgePairsGaussMap(const Polytope<T>& a, const Polytope<T>& b, bool stop
     const Vec3<T> coneMid = ea.n1 + ea.n2;
     const Vec3<T>& va = a.vertices[ea.vertex];
     for (const EdgeArc<T>& eb : s.b) {
+      if (ea.flat || eb.flat) {  // no usable arc: the pair's axis from the edge directions, both signs
+        const Vec3<T> da = ea.flat ? ea.direction : Vec3<T>(ea.plane.normalized());
+        const Vec3<T> db = eb.flat ? eb.direction : Vec3<T>(eb.plane.normalized());
+        const Vec3<T> c = da.cross(db);
+        const T len2 = c.squaredNorm();
+        if (len2 > eps * eps) testAxisBothSigns(a, b, Vec3<T>(c / std::sqrt(len2)), best);
+        if (stopWhenSeparated && best.depth < T(0)) return;
+        continue;
+      }
       const Crossing crossing = arcsCross(ea, eb, eps);
       if (crossing == Crossing::No) continue;
       // The facet normal is perpendicular to both edges, i.e. to both arc planes.
@@ -138,8 +163,11 @@ void testEdgePairsDirect(const Polytope<T>& a, const Polytope<T>& b, bool stopWh
     for (std::size_t j = 0; j < tb.edges.size(); ++j) {
       const auto& eb = tb.edges[j];
       if (tb.edgeFacesKnown && !ta.edgeFacesKnown) {
-        const T s1 = b.faceNormals[tb.edgeFaces[j][0]].dot(da), s2 = b.faceNormals[tb.edgeFaces[j][1]].dot(da);
-        if (s1 * s2 > eps * eps) continue;
+        const Vec3<T>& n1 = b.faceNormals[tb.edgeFaces[j][0]];
+        const Vec3<T>& n2 = b.faceNormals[tb.edgeFaces[j][1]];
+        const T s1 = n1.dot(da), s2 = n2.dot(da), flatSine = flatArcSine<T>();
+        const bool flat = !(n1.cross(n2).squaredNorm() > flatSine * flatSine);  // its arc is noise: keep the edge
+        if (!flat && s1 * s2 > eps * eps) continue;
       }
       const Vec3<T> db = (b.vertices[eb[1]] - b.vertices[eb[0]]).normalized();
       const Vec3<T> c = da.cross(db);
@@ -339,20 +367,30 @@ template <class T> void buildBoxPolytope(const BoxGeometry<T>& box, const Transf
 }
 
 // Scaled hull: x = pose(S v) with S symmetric; normals map by S^-T = S^-1 (then renormalised).
+// min|s| S^-1: the directions of S^-1 for a scale whose smallest factor's reciprocal overflows.
+template <class T> Mat3<T> shrunkInverse(const MeshScale<T>& scale) {
+  const Mat3<T> axes = scale.rotation.normalized().toRotationMatrix();
+  const Vec3<T> shrink = Vec3<T>::Constant(scale.scale.cwiseAbs().minCoeff()).cwiseQuotient(scale.scale);
+  return axes * shrink.asDiagonal() * axes.transpose();
+}
+
 template <class T>
 void buildConvexPolytope(const ConvexMeshGeometry<T>& convex, const Transform<T>& pose, Polytope<T>& out) {
   std::shared_ptr<const PolytopeTopology> topology = hullTopology(convex.mesh);
   clearPolytope(out, topology.get());
   out.ownedTopology = std::move(topology);
   const ConvexMesh<T>& mesh = *convex.mesh;
-  const Mat3<T> s = convex.scale.toMatrix();
+  // Normals map by S^-1 = R diag(1/s) R^T, taken from the factors (a general 3x3 inverse of a scale like
+  // (1e-18, 7e8, 3.5) is rounding noise in float); where 1/s overflows (a subnormal factor) by the same matrix times
+  // the smallest |s| (min|s| / s stays in [-1, 1]), the same directions. Normalized without squaring.
+  const HullScale<T> scale(convex.scale);
   const Mat3<T> r = pose.q.toRotationMatrix();
-  const Mat3<T> vertexMap = r * s;
-  const Mat3<T> normalMap = r * s.inverse();
+  const Mat3<T> vertexMap = r * scale.toShape;
+  const Mat3<T> normalMap = r * (scale.toMesh.allFinite() ? scale.toMesh : shrunkInverse(convex.scale));
   for (const Vec3<T>& v : mesh.vertices) out.vertices.push_back(vertexMap * v + pose.p);
   const PolytopeTopology& topo = *out.topology;
   for (std::size_t f = 0; f < topo.facePolygon.size(); ++f) {
-    const Vec3<T> n = (normalMap * mesh.polygons[topo.facePolygon[f]].normal).normalized();
+    const Vec3<T> n = (normalMap * mesh.polygons[topo.facePolygon[f]].normal).stableNormalized();
     out.faceNormals.push_back(n);
     out.faceOffsets.push_back(-n.dot(out.vertices[topo.faceVertices[topo.faceBegin[f]]]));
   }

@@ -2,6 +2,7 @@
 // tolerance relative to the hull size) and whose outward normal agrees best with the contact normal. At an edge or
 // vertex several planes pass through the point; the contact normal picks the face the swept shape came from.
 #include "gq/cooking.h"
+#include "shapes/hull_scale.h"
 #include "sweep/sweep.h"
 
 namespace gq::detail {
@@ -10,11 +11,11 @@ template <class T>
 std::uint32_t convexPolygonAt(const ConvexMeshGeometry<T>& g, const Transform<T>& pose, const Vec3<T>& point,
                               const Vec3<T>& normal) {
   const ConvexMesh<T>& hull = *g.mesh;
-  const Mat3<T> s = g.scale.toMatrix();
+  const HullScale<T> s(g.scale);
   // Mesh space: x_mesh = S^-1 x_shape; a mesh-space plane normal m maps to S^-1 m in shape space, so the contact
   // normal maps back as S n (normalised), and plane distances are compared after that scaling.
-  const Vec3<T> xm = s.inverse() * pose.transformInv(point);
-  const Vec3<T> nm = (s * pose.rotateInv(normal)).normalized();
+  const Vec3<T> xm = s.toMesh * pose.transformInv(point);
+  const Vec3<T> nm = (s.toShape * pose.rotateInv(normal)).stableNormalized();
   const T size = std::max(hull.localBounds.extents().norm(), std::numeric_limits<T>::min());
   const T planeTol = std::sqrt(std::numeric_limits<T>::epsilon()) * size;
   std::uint32_t best = kInvalidFaceIndex, fallback = 0;
