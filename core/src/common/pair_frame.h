@@ -31,18 +31,21 @@ template <class T> struct PairFrame {
   Transform<T> pose0, pose1;  // the shapes' poses in it
 };
 
-// pose0's frame unless shape 1 is strictly smaller (so equal shapes keep pose0's, as every pair did before).
+// Shape 1 is strictly smaller (so equal shapes keep pose0's frame, as every pair did before).
+template <class T> bool shape1IsSmaller(const Geometry<T>& g0, const Geometry<T>& g1) {
+  return featureRadius(g1) < featureRadius(g0);
+}
+
 template <class T>
 PairFrame<T> pairFrame(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
-  if (featureRadius(g1) < featureRadius(g0)) return {p1, p0.relativeTo(p1), Transform<T>()};
+  if (shape1IsSmaller(g0, g1)) return {p1, p0.relativeTo(p1), Transform<T>()};
   return {p0, Transform<T>(), p1.relativeTo(p0)};
 }
 
-// The smaller shape's position (as pairFrame picks it), for queries that translate both poses and keep their
-// rotations.
+// The smaller shape's position, for queries that translate both poses and keep their rotations.
 template <class T>
 Vec3<T> pairOrigin(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
-  return featureRadius(g1) < featureRadius(g0) ? p1.p : p0.p;
+  return shape1IsSmaller(g0, g1) ? p1.p : p0.p;
 }
 
 }  // namespace gq::detail

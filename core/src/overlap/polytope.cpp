@@ -71,8 +71,11 @@ template <class T> struct EdgeArc {
   Vec3<T> direction;
 };
 
-// Below this |n1 x n2| an arc is flat: the direction of `plane` is off by ~(normal rounding) / |plane|.
-template <class T> T flatArcSine() { return std::sqrt(T(tol::Rel<T>::kEpsilon)); }
+// An arc with |n1 x n2| below sqrt(kEpsilon) is flat: the direction of `plane` is off by ~(normal rounding) / |plane|.
+template <class T> bool isFlatArc(const Vec3<T>& plane) {
+  const T flatSine = std::sqrt(T(tol::Rel<T>::kEpsilon));
+  return !(plane.squaredNorm() > flatSine * flatSine);
+}
 
 template <class T> Vec3<T> edgeDirection(const Polytope<T>& poly, const std::array<std::uint32_t, 2>& edge) {
   return (poly.vertices[edge[1]] - poly.vertices[edge[0]]).stableNormalized();
@@ -80,12 +83,11 @@ template <class T> Vec3<T> edgeDirection(const Polytope<T>& poly, const std::arr
 
 template <class T> void edgeArcs(const Polytope<T>& poly, T sign, std::vector<EdgeArc<T>>& arcs) {
   const PolytopeTopology& topo = *poly.topology;
-  const T flatSine = flatArcSine<T>();
   arcs.clear();
   for (std::size_t i = 0; i < topo.edges.size(); ++i) {
     const Vec3<T> n1 = poly.faceNormals[topo.edgeFaces[i][0]] * sign, n2 = poly.faceNormals[topo.edgeFaces[i][1]] * sign;
     const Vec3<T> plane = n2.cross(n1);
-    const bool flat = !(plane.squaredNorm() > flatSine * flatSine);
+    const bool flat = isFlatArc(plane);
     const Vec3<T> direction = flat ? edgeDirection(poly, topo.edges[i]) : Vec3<T>::Zero();
     arcs.push_back({n1, n2, plane, topo.edges[i][0], flat, direction});
   }
@@ -165,9 +167,8 @@ void testEdgePairsDirect(const Polytope<T>& a, const Polytope<T>& b, bool stopWh
       if (tb.edgeFacesKnown && !ta.edgeFacesKnown) {
         const Vec3<T>& n1 = b.faceNormals[tb.edgeFaces[j][0]];
         const Vec3<T>& n2 = b.faceNormals[tb.edgeFaces[j][1]];
-        const T s1 = n1.dot(da), s2 = n2.dot(da), flatSine = flatArcSine<T>();
-        const bool flat = !(n1.cross(n2).squaredNorm() > flatSine * flatSine);  // its arc is noise: keep the edge
-        if (!flat && s1 * s2 > eps * eps) continue;
+        const T s1 = n1.dot(da), s2 = n2.dot(da);
+        if (!isFlatArc(Vec3<T>(n2.cross(n1))) && s1 * s2 > eps * eps) continue;  // a flat arc is noise: keep the edge
       }
       const Vec3<T> db = (b.vertices[eb[1]] - b.vertices[eb[0]]).normalized();
       const Vec3<T> c = da.cross(db);
@@ -366,7 +367,6 @@ template <class T> void buildBoxPolytope(const BoxGeometry<T>& box, const Transf
   fillCoordinates(out);
 }
 
-// Scaled hull: x = pose(S v) with S symmetric; normals map by S^-T = S^-1 (then renormalised).
 // min|s| S^-1: the directions of S^-1 for a scale whose smallest factor's reciprocal overflows.
 template <class T> Mat3<T> shrunkInverse(const MeshScale<T>& scale) {
   const Mat3<T> axes = scale.rotation.normalized().toRotationMatrix();
@@ -374,6 +374,7 @@ template <class T> Mat3<T> shrunkInverse(const MeshScale<T>& scale) {
   return axes * shrink.asDiagonal() * axes.transpose();
 }
 
+// Scaled hull: x = pose(S v) with S symmetric; normals map by S^-T = S^-1 (then renormalised).
 template <class T>
 void buildConvexPolytope(const ConvexMeshGeometry<T>& convex, const Transform<T>& pose, Polytope<T>& out) {
   std::shared_ptr<const PolytopeTopology> topology = hullTopology(convex.mesh);
