@@ -5,6 +5,7 @@
 
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/sphere.h>
 
 #include <algorithm>
@@ -394,6 +395,23 @@ template <class S, FS A, FS B> Answer convertedOverlap(const Solid<S>& a, const 
   return overlapGq<S, gqType(A), gqType(B)>(ca.geometry(), cb.geometry(), pb.relativeTo(pa), hit);
 }
 
+// Box and cylinder: core's certificates in the box's frame (FCL's cylinder axis is its local Z), GJK when they find
+// none.
+template <class S> Answer boxCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  const Vec3<S> h = boxHalf(a);
+  const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
+  const S radius = cylinder->radius, halfHeight = cylinder->lz * S(0.5);
+  if (!boxSized(h) || !positive(radius) || !positive(halfHeight)) return Answer::Invalid;
+  const auto rt = a.tf->linear().transpose();
+  switch (k::cylinderBoxCertificate<S>(rt * (b.tf->translation() - a.tf->translation()), rt * b.tf->linear().col(2),
+                                       radius, halfHeight, h)) {
+    case k::OverlapCertificate::Apart: hit = false; break;
+    case k::OverlapCertificate::Overlapping: hit = true; break;
+    case k::OverlapCertificate::Unknown: return convertedOverlap<S, FS::Box, FS::Cylinder>(a, b, hit);
+  }
+  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
+}
+
 template <class S, FS A, FS B>
 Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
@@ -413,6 +431,7 @@ template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Soli
   else if constexpr (A == FS::Capsule && B == FS::Capsule) return capsuleCapsuleOverlap(a, b, checkMiss, hit);
   else if constexpr (A == FS::Capsule && B == FS::Box) return capsuleBoxOverlap(a, b, checkMiss, hit);
   else if constexpr (A == FS::Box && B == FS::Box) return boxBoxOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Box && B == FS::Cylinder) return boxCylinderOverlap(a, b, checkMiss, hit);
   else return convertedOverlap<S, A, B>(a, b, hit);
 }
 

@@ -1,10 +1,12 @@
 // Cylinder along local X: |x| <= h, y^2 + z^2 <= r^2.
 // Support: (sign(d.x) h, r (d.y, d.z) / |(d.y, d.z)|). Raycast: the slab |x| <= h clipped with the infinite
-// cylinder, whose entry/exit are the roots of (o_yz + t d_yz)^2 = r^2.
+// cylinder, whose entry/exit are the roots of (o_yz + t d_yz)^2 = r^2. Overlap with a box: the certificates of
+// overlap/cylinder_box.cpp, which decide most poses without GJK.
 #include <cmath>
 
 #include "custom/ray_interval.h"
 #include "gq/custom_shapes.h"
+#include "overlap/overlap.h"
 
 namespace gq {
 namespace {
@@ -49,6 +51,20 @@ bool CylinderCallbacks<T>::raycast(const Vec3<T>& o, const Vec3<T>& d, T maxDist
     return Vec3<T>(Vec3<T>(T(0), p.y(), p.z()).normalized());
   };
   return detail::writeIntervalHit(r, o, d, maxDist, flags, normalAt, hit);
+}
+
+template <class T>
+bool CylinderCallbacks<T>::overlap(const Geometry<T>& other, const Transform<T>& otherPose, bool& overlapping) const {
+  if (other.type() != GeometryType::Box) return false;
+  const Vec3<T>& h = other.template get<BoxGeometry<T>>().halfExtents;
+  // The cylinder in the box's frame: centre R^T (0 - t), axis R^T e_x.
+  switch (detail::cylinderBoxCertificate(otherPose.transformInv(Vec3<T>::Zero()), otherPose.rotateInv(Vec3<T>::UnitX()),
+                                         radius_, halfHeight_, h)) {
+    case detail::OverlapCertificate::Apart: overlapping = false; return true;
+    case detail::OverlapCertificate::Overlapping: overlapping = true; return true;
+    case detail::OverlapCertificate::Unknown: break;
+  }
+  return false;
 }
 
 template <class T> Status makeCylinder(T radius, T halfHeight, CustomGeometry<T>& out) {

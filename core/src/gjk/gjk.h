@@ -146,7 +146,11 @@ template <class T> struct EpaResult {
 template <class T>
 EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkSimplex<T>* start = nullptr);
 
-// GJK/EPA stopping tolerance for a pair (see kGjkRoundoffUlps).
+// GJK/EPA stopping tolerance for a pair (see kGjkRoundoffUlps): gjkRelativeTolerance times the pair's length scale.
 template <class T> T gjkTolerance(const ConvexShape<T>& a, const ConvexShape<T>& b);
+template <class T> constexpr T gjkRelativeTolerance() {
+  const T floor = T(kGjkRoundoffUlps) * std::numeric_limits<T>::epsilon();
+  return T(tol::Rel<T>::kGjkTolerance) > floor ? T(tol::Rel<T>::kGjkTolerance) : floor;
+}
 
 }  // namespace gq::detail

@@ -84,7 +84,7 @@ template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const
 }
 
 template <class T> T gjkTolerance(const ConvexShape<T>& a, const ConvexShape<T>& b) {
-  const T rel = std::max(T(tol::Rel<T>::kGjkTolerance), T(kGjkRoundoffUlps) * std::numeric_limits<T>::epsilon());
+  const T rel = gjkRelativeTolerance<T>();
   // Rounding of world-space support points grows with their distance from the origin too.
   const T scale = std::max({a.size, b.size, (a.pose.p - b.pose.p).norm()});
   return rel * std::max(scale, std::numeric_limits<T>::min());

@@ -2,6 +2,8 @@
 // Boolean overlap kernels, one per pair (overlap/<a>_<b>.cpp, a <= b in GeometryType order). Touching counts as
 // overlapping. Inputs are validated by the façade (dispatch/overlap.cpp), which also expresses both poses relative
 // to pose0 so that far-from-origin poses keep their precision.
+#include <cstdint>
+
 #include "gq/geometry.h"
 #include "gq/transform.h"
 
@@ -36,6 +38,12 @@ template <class T> bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& 
 template <class T> bool overlapCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& aInBox, T r0, const Vec3<T>& h);
 template <class T> bool overlapBoxBox(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01);
 template <class T> bool overlapPlaneCustom(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CustomGeometry<T>& g1, const Transform<T>& p1);
+// A cylinder (centre c, unit axis a, radius, half height, in the box's frame) against a box of half extents h
+// centred at the origin, decided without GJK when a separating axis (a gap beyond GJK's tolerance) or a common
+// point is cheap to find (cylinder_box.cpp); Unknown otherwise.
+enum class OverlapCertificate : std::uint8_t { Apart, Overlapping, Unknown };
+template <class T>
+OverlapCertificate cylinderBoxCertificate(const Vec3<T>& c, const Vec3<T>& a, T radius, T halfHeight, const Vec3<T>& h);
 // Convex custom geometry (either side) against sphere, capsule, box, convex or custom: GJK.
 template <class T> bool overlapCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);
 }  // namespace gq::detail
