@@ -349,6 +349,12 @@ Answer overlapGq(const Geometry<S>& a, const Geometry<S>& b, const Transform<S>&
   return Answer::Done;
 }
 
+// FCL's answer for an overlapping GJK pair without enable_signed_distance.
+template <class S> void writeOverlapping(DistanceResult<S>& out) {
+  out.distance = S(-1);
+  out.normal = out.point0 = out.point1 = Vec3<S>::Zero();
+}
+
 // FCL's distance without enable_signed_distance on a GJK pair: GJK alone. Separated (or only the margins overlap):
 // the exact signed distance. Overlapping cores: FCL's answer, -1 with both nearest points at the origin (its GJK
 // path writes those); the depth would need EPA, which the request did not ask for.
@@ -357,11 +363,7 @@ template <class S> void distanceWithoutDepth(const Geometry<S>& a, const Transfo
                                              const Transform<S>& pb, S tolerance, DistanceResult<S>& out) {
   const k::GjkResult<S> g = k::gjkDistance(k::makeConvexShape(a, pa), k::makeConvexShape(b, pb),
                                            static_cast<GjkCache<S>*>(nullptr), tolerance);
-  if (g.coresOverlap) {
-    out.distance = S(-1);
-    out.normal = out.point0 = out.point1 = Vec3<S>::Zero();
-    return;
-  }
+  if (g.coresOverlap) return writeOverlapping(out);
   k::writeSeparated(g, out);
 }
 
@@ -395,23 +397,6 @@ template <class S, FS A, FS B> Answer convertedOverlap(const Solid<S>& a, const 
   return overlapGq<S, gqType(A), gqType(B)>(ca.geometry(), cb.geometry(), pb.relativeTo(pa), hit);
 }
 
-// Box and cylinder: core's certificates in the box's frame (FCL's cylinder axis is its local Z), GJK when they find
-// none.
-template <class S> Answer boxCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
-  const Vec3<S> h = boxHalf(a);
-  const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
-  const S radius = cylinder->radius, halfHeight = cylinder->lz * S(0.5);
-  if (!boxSized(h) || !positive(radius) || !positive(halfHeight)) return Answer::Invalid;
-  const auto rt = a.tf->linear().transpose();
-  switch (k::cylinderBoxCertificate<S>(rt * (b.tf->translation() - a.tf->translation()), rt * b.tf->linear().col(2),
-                                       radius, halfHeight, h)) {
-    case k::OverlapCertificate::Apart: hit = false; break;
-    case k::OverlapCertificate::Overlapping: hit = true; break;
-    case k::OverlapCertificate::Unknown: return convertedOverlap<S, FS::Box, FS::Cylinder>(a, b, hit);
-  }
-  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
-}
-
 template <class S, FS A, FS B>
 Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
@@ -419,6 +404,38 @@ Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, 
   const Answer r = convertBoth(a, b, ca, cb, pa, pb);
   if (r != Answer::Done) return r;
   return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, ask, out);
+}
+
+// Box and cylinder: core's certificates in the box's frame (FCL's cylinder axis is its local Z); GJK when they find
+// none. Sizes are checked first (Invalid), the transforms by the callers.
+template <class S> bool boxCylinderCertificate(const Solid<S>& box, const Solid<S>& cylinder,
+                                               k::OverlapCertificate& certificate) {
+  const Vec3<S> h = boxHalf(box);
+  const auto* c = static_cast<const ::fcl::Cylinder<S>*>(cylinder.geometry);
+  const S radius = c->radius, halfHeight = c->lz * S(0.5);
+  if (!boxSized(h) || !positive(radius) || !positive(halfHeight)) return false;
+  const auto rt = box.tf->linear().transpose();
+  certificate = k::cylinderBoxCertificate<S>(rt * (cylinder.tf->translation() - box.tf->translation()),
+                                             rt * cylinder.tf->linear().col(2), radius, halfHeight, h);
+  return true;
+}
+
+template <class S> Answer boxCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  k::OverlapCertificate certificate;
+  if (!boxCylinderCertificate(a, b, certificate)) return Answer::Invalid;
+  if (certificate == k::OverlapCertificate::Unknown) return convertedOverlap<S, FS::Box, FS::Cylinder>(a, b, hit);
+  hit = certificate == k::OverlapCertificate::Overlapping;
+  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
+}
+
+// Without a requested depth, proven overlap is FCL's -1 at once; everything else is GJK's.
+template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+  k::OverlapCertificate certificate = k::OverlapCertificate::Unknown;
+  if (!ask.depth && !boxCylinderCertificate(a, b, certificate)) return Answer::Invalid;
+  if (certificate != k::OverlapCertificate::Overlapping) return convertedDistance<S, FS::Box, FS::Cylinder>(a, b, ask, out);
+  if (!rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
+  writeOverlapping(out);
+  return Answer::Done;
 }
 
 // ---- the table ----
@@ -453,6 +470,8 @@ Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, Dist
     return capsuleBoxDistance(a, b, ask, out);
   } else if constexpr (A == FS::Box && B == FS::Box) {
     return boxBoxDistance(a, b, ask, out);
+  } else if constexpr (A == FS::Box && B == FS::Cylinder) {
+    return boxCylinderDistance(a, b, ask, out);
   } else {
     return convertedDistance<S, A, B>(a, b, ask, out);
   }
