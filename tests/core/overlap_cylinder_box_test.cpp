@@ -50,7 +50,7 @@ TYPED_TEST(CylinderBoxOverlap, CertificateIsGjksAnswerOnRandomPoses) {
   EXPECT_LT(unknown, 400) << "certificates decide most poses";
 }
 
-// Flush contacts (cap on a face, side on a face, rim on an edge) at gap 0, inside GJK's tolerance and beyond it.
+// Flush contacts (cap on a face, side on a face, side on an edge) at gap 0, inside GJK's tolerance and beyond it.
 TYPED_TEST(CylinderBoxOverlap, TouchingIsOverlappingAndOnlyGapsBeyondTheToleranceAreApart) {
   using T = TypeParam;
   const gq::Vec3<T> h(T(1), T(0.75), T(0.5));
