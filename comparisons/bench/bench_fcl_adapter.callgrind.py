@@ -12,7 +12,7 @@ import sys
 import tempfile
 
 NAMES = ["sphere_sphere", "box_box", "capsule_capsule", "sphere_box", "capsule_box", "cylinder_box", "convex30",
-         "convex100", "mesh_sphere", "mesh_convex30"]
+         "convex100", "mesh_sphere", "mesh_convex30", "sphere_cylinder"]
 # (label, benchmark loop function, callee prefix) for the four entry points.
 ENTRIES = [("collide fcl", "BM_Collide<false>", "unsigned long fcl::collide<"),
            ("collide gq_fcl", "BM_Collide<true>", "unsigned long gq::fcl::collide<"),

@@ -74,15 +74,17 @@ Family family(int id) {
     case 6: return {convexHull(30, 1), convexHull(30, 2)};
     case 7: return {convexHull(100, 3), convexHull(100, 4)};
     case 8: return {sphereMesh(0.8, 16, 24), std::make_shared<::fcl::Sphered>(0.3)};
-    default: return {sphereMesh(0.8, 16, 24), convexHull(30, 5)};
+    case 9: return {sphereMesh(0.8, 16, 24), convexHull(30, 5)};
+    default: return {std::make_shared<::fcl::Sphered>(0.5), std::make_shared<::fcl::Cylinderd>(0.4, 1.0)};
   }
 }
 const char* familyName(int id) {
   static const char* names[] = {"sphere_sphere", "box_box",    "capsule_capsule", "sphere_box",   "capsule_box",
-                                "cylinder_box",  "convex30",   "convex100",       "mesh_sphere",  "mesh_convex30"};
+                                "cylinder_box",  "convex30",   "convex100",       "mesh_sphere",  "mesh_convex30",
+                                "sphere_cylinder"};
   return names[id];
 }
-constexpr int kFamilies = 10;
+constexpr int kFamilies = 11;
 
 std::vector<::fcl::Transform3d> poses(std::uint32_t seed) {
   std::mt19937 rng(seed);

@@ -428,6 +428,33 @@ template <class S> Answer boxCylinderOverlap(const Solid<S>& a, const Solid<S>& 
   return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
 
+// Sphere and cylinder: core's closed forms in the cylinder's frame, FCL's axis Z taken as core's X.
+template <class S> Answer sphereCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  const S ra = sphereRadius(a);
+  const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
+  if (!positive(ra) || !positive(cylinder->radius) || !positive(cylinder->lz)) return Answer::Invalid;
+  const Vec3<S> c = inFrame(*b.tf, Vec3<S>(a.tf->translation()));
+  hit = k::overlapSphereCylinder<S>(Vec3<S>(c.z(), c.x(), c.y()), ra, cylinder->radius, cylinder->lz * S(0.5));
+  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
+}
+
+// Core's (X, Y, Z) in the cylinder is FCL's (Z, X, Y): its axis is FCL's Z.
+template <class S> Vec3<S> fclFromAxisX(const Vec3<S>& v) { return Vec3<S>(v.y(), v.z(), v.x()); }
+
+template <class S> Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+  S ra;
+  const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
+  if (!readSphere(a, ra) || !positive(cylinder->radius) || !positive(cylinder->lz) || !rigidPose(b)) return Answer::Invalid;
+  const Vec3<S> c = inFrame(*b.tf, Vec3<S>(a.tf->translation()));
+  DistanceResult<S> local;
+  k::distanceSphereCylinder<S>(Vec3<S>(c.z(), c.x(), c.y()), ra, cylinder->radius, cylinder->lz * S(0.5), local);
+  local.normal = fclFromAxisX(local.normal);
+  local.point0 = fclFromAxisX(local.point0);
+  local.point1 = fclFromAxisX(local.point1);
+  frameToWorld(*b.tf, ask.points, local, out);
+  return finiteResult(local) ? Answer::Done : Answer::Unanswered;
+}
+
 // Without a requested depth, proven overlap is FCL's -1 at once; everything else is GJK's.
 template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   k::OverlapCertificate certificate = k::OverlapCertificate::Unknown;
@@ -449,6 +476,7 @@ template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Soli
   else if constexpr (A == FS::Capsule && B == FS::Box) return capsuleBoxOverlap(a, b, checkMiss, hit);
   else if constexpr (A == FS::Box && B == FS::Box) return boxBoxOverlap(a, b, checkMiss, hit);
   else if constexpr (A == FS::Box && B == FS::Cylinder) return boxCylinderOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Sphere && B == FS::Cylinder) return sphereCylinderOverlap(a, b, checkMiss, hit);
   else return convertedOverlap<S, A, B>(a, b, hit);
 }
 
@@ -472,6 +500,8 @@ Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, Dist
     return boxBoxDistance(a, b, ask, out);
   } else if constexpr (A == FS::Box && B == FS::Cylinder) {
     return boxCylinderDistance(a, b, ask, out);
+  } else if constexpr (A == FS::Sphere && B == FS::Cylinder) {
+    return sphereCylinderDistance(a, b, ask, out);
   } else {
     return convertedDistance<S, A, B>(a, b, ask, out);
   }

@@ -1,7 +1,8 @@
 #pragma once
 // Ready-made custom shapes (the spec's PxCustomGeometryExt::CylinderCallbacks and ConeCallbacks): exact raycasts
 // and bounds, and a support mapping through which overlap, penetration, distance and sweeps run GJK/EPA (the
-// cylinder answers overlap with a box itself when a separating axis or a common point is cheap to find).
+// cylinder answers overlap with a sphere itself, and with a box when a separating axis or a common point is cheap
+// to find).
 // Both have their axis along local X (like the capsule):
 //  - Cylinder: |x| <= halfHeight, y^2 + z^2 <= radius^2;
 //  - Cone: base disk of `radius` at x = -halfHeight, apex at x = +halfHeight.
@@ -23,7 +24,8 @@ template <class T> class CylinderCallbacks final : public CustomGeometryCallback
   Vec3<T> support(const Vec3<T>& dir) const override;
   bool raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, HitFlags flags,
                RaycastHit<T>& hit) const override;
-  // Against a box: a separating axis or a common point when one is cheap to find, else GJK (false).
+  // Against a sphere: closed form. Against a box: a separating axis or a common point when one is cheap to find,
+  // else GJK (false).
   bool overlap(const Geometry<T>& other, const Transform<T>& otherPose, bool& overlapping) const override;
   T radius() const { return radius_; }
   T halfHeight() const { return halfHeight_; }

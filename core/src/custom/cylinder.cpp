@@ -1,7 +1,8 @@
 // Cylinder along local X: |x| <= h, y^2 + z^2 <= r^2.
 // Support: (sign(d.x) h, r (d.y, d.z) / |(d.y, d.z)|). Raycast: the slab |x| <= h clipped with the infinite
-// cylinder, whose entry/exit are the roots of (o_yz + t d_yz)^2 = r^2. Overlap with a box: the certificates of
-// overlap/cylinder_box.cpp, which decide most poses without GJK.
+// cylinder, whose entry/exit are the roots of (o_yz + t d_yz)^2 = r^2. Overlap with a sphere: closed form
+// (overlap/sphere_cylinder.cpp); with a box: the certificates of overlap/cylinder_box.cpp, which decide most poses
+// without GJK.
 #include <cmath>
 
 #include "custom/ray_interval.h"
@@ -55,6 +56,11 @@ bool CylinderCallbacks<T>::raycast(const Vec3<T>& o, const Vec3<T>& d, T maxDist
 
 template <class T>
 bool CylinderCallbacks<T>::overlap(const Geometry<T>& other, const Transform<T>& otherPose, bool& overlapping) const {
+  if (other.type() == GeometryType::Sphere) {
+    overlapping = detail::overlapSphereCylinder(otherPose.p, other.template get<SphereGeometry<T>>().radius, radius_,
+                                                halfHeight_);
+    return true;
+  }
   if (other.type() != GeometryType::Box) return false;
   const Vec3<T>& h = other.template get<BoxGeometry<T>>().halfExtents;
   // The cylinder in the box's frame: centre R^T (0 - t), axis R^T e_x.

@@ -51,6 +51,9 @@ template <class T> struct CapsuleAxis {
 template <class T>
 void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
 template <class T> void distanceSphereBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
+// A sphere (centre c in the cylinder's frame, whose axis is X) against a cylinder of radius r and half height hh
+// (sphere_cylinder.cpp); the result is in that frame.
+template <class T> void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local);
 template <class T> void distanceCapsuleCapsule(const CapsuleAxis<T>& capsule0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
 // Capsule (segment c + s d, s in [-1, 1], radius r0) against the box [-h, h], exact (distance/capsule_box.cpp).
 template <class T>

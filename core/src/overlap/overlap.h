@@ -38,6 +38,8 @@ template <class T> bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& 
 template <class T> bool overlapCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& aInBox, T r0, const Vec3<T>& h);
 template <class T> bool overlapBoxBox(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01);
 template <class T> bool overlapPlaneCustom(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CustomGeometry<T>& g1, const Transform<T>& p1);
+// A sphere (centre c in the cylinder's frame, whose axis is X) against a cylinder: closed form (sphere_cylinder.cpp).
+template <class T> bool overlapSphereCylinder(const Vec3<T>& c, T radius, T cylinderRadius, T halfHeight);
 // A cylinder (centre c, unit axis a, radius, half height, in the box's frame) against a box of half extents h
 // centred at the origin, decided without GJK when a separating axis (a gap beyond GJK's tolerance) or a common
 // point is cheap to find (cylinder_box.cpp); Unknown otherwise.

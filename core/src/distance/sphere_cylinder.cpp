@@ -1,0 +1,37 @@
+// Sphere vs cylinder, in the cylinder's frame (axis X, radius r, half height hh): outside, the cylinder's closest
+// point clamps the centre's axial coordinate to [-hh, hh] and its distance from the axis to r; inside, the sphere
+// leaves through the cap or the side with the least room (depth = radius + that room).
+#include <algorithm>
+#include <cmath>
+
+#include "distance/distance.h"
+
+namespace gq::detail {
+
+template <class T> void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local) {
+  const T rho = std::sqrt(c.y() * c.y() + c.z() * c.z());
+  const Vec3<T> radial = rho > T(0) ? Vec3<T>(T(0), c.y() / rho, c.z() / rho) : Vec3<T>(Vec3<T>::UnitY());
+  const T axialRoom = hh - std::abs(c.x()), radialRoom = r - rho;
+  if (axialRoom < T(0) || radialRoom < T(0)) {
+    const Vec3<T> q = Vec3<T>(std::clamp(c.x(), -hh, hh), T(0), T(0)) + std::min(rho, r) * radial;
+    ballsDistance(c, r0, q, T(0), Vec3<T>(Vec3<T>::UnitX()), local);
+    return;
+  }
+  Vec3<T> exit = c;
+  if (axialRoom <= radialRoom) {
+    const T side = c.x() < T(0) ? T(-1) : T(1);
+    exit.x() = side * hh;
+    local.normal = -side * Vec3<T>::UnitX();  // moving the cylinder this way pushes the sphere out of the cap
+  } else {
+    exit = Vec3<T>(c.x(), T(0), T(0)) + r * radial;
+    local.normal = -radial;
+  }
+  local.distance = -(std::min(axialRoom, radialRoom) + r0);
+  local.point0 = c + r0 * local.normal;
+  local.point1 = exit;
+}
+
+template void distanceSphereCylinder<float>(const Vec3<float>&, float, float, float, DistanceResult<float>&);
+template void distanceSphereCylinder<double>(const Vec3<double>&, double, double, double, DistanceResult<double>&);
+
+}  // namespace gq::detail
