@@ -2,8 +2,8 @@
 //  - DistanceResult::update keeps the smaller distance (pre-seeded results stay when the pair is farther);
 //  - a result already at min_distance <= 0 is satisfied: nothing is computed (as FCL's isSatisfied);
 //  - shapes: the signed distance with enable_signed_distance. Without it (FCL: the penetrating value is
-//    "implementation defined", mostly -1) closed-form pairs (sphere, capsule, box among themselves and against a
-//    plane or half-space) still give the exact signed distance, which costs them nothing more, and GJK pairs answer
+//    "implementation defined", mostly -1) closed-form pairs (sphere, capsule, box among themselves, sphere-cylinder,
+//    and against a plane or half-space) still give the exact signed distance, which costs them nothing more, and GJK pairs answer
 //    FCL's -1 with nearest points at the origin when they overlap (no EPA); nearest points (world frame) are written
 //    when enable_nearest_points is set, and always for BVHModel and plane pairs;
 //  - BVHModel sides are thin surfaces: 0 when touching or crossing; with enable_signed_distance the deepest

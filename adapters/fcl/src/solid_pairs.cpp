@@ -444,7 +444,8 @@ template <class S> Vec3<S> fclFromAxisX(const Vec3<S>& v) { return Vec3<S>(v.y()
 template <class S> Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   S ra;
   const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
-  if (!readSphere(a, ra) || !positive(cylinder->radius) || !positive(cylinder->lz) || !rigidPose(b)) return Answer::Invalid;
+  if (!readSphere(a, ra) || !positive(cylinder->radius) || !positive(cylinder->lz) || !rigidPose(b))
+    return Answer::Invalid;
   const Vec3<S> c = inFrame(*b.tf, Vec3<S>(a.tf->translation()));
   DistanceResult<S> local;
   k::distanceSphereCylinder<S>(Vec3<S>(c.z(), c.x(), c.y()), ra, cylinder->radius, cylinder->lz * S(0.5), local);

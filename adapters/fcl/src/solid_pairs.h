@@ -5,8 +5,8 @@
 //  - sphere, box and capsule pairs read the FCL parameters and the Transform3 matrices as they are (no gq::Geometry,
 //    no quaternion, no cache): the second shape is expressed in the first's frame (R_a^T R_b, R_a^T (t_b - t_a)), or
 //    in the box's frame, or relative to the first translation, and core's frame-form kernels answer; so do a
-//    sphere/cylinder overlap and distance (closed forms), a box/cylinder overlap and a box/cylinder distance without a requested depth when core's certificates prove the
-//    overlap (FCL's -1), else GJK;
+//    sphere/cylinder overlap and distance (closed forms), a box/cylinder overlap and a box/cylinder distance
+//    without a requested depth when core's certificates prove the overlap (FCL's -1), else GJK;
 //  - pairs with another solid convert both sides (convert.h; a Convex comes from the cache) and call core's kernel
 //    for their gq geometry types, chosen at compile time.
 // Semantics are the façade's: touching overlaps; distance is signed with the normal from a to b, in world space

@@ -63,7 +63,8 @@ template <class T> bool commonPoint(const CylinderInBox<T>& s) {
 }  // namespace
 
 template <class T>
-OverlapCertificate cylinderBoxCertificate(const Vec3<T>& c, const Vec3<T>& a, T radius, T halfHeight, const Vec3<T>& h) {
+OverlapCertificate cylinderBoxCertificate(const Vec3<T>& c, const Vec3<T>& a, T radius, T halfHeight,
+                                          const Vec3<T>& h) {
   const CylinderInBox<T> s{c, a, radius, halfHeight, h};
   // gjkTolerance's length scale: the larger bounding radius, or the centres' distance.
   const T scale = std::max({Vec3<T>(halfHeight, radius, radius).norm(), h.norm(), c.norm()});
