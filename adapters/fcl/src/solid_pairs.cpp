@@ -428,27 +428,31 @@ template <class S> Answer boxCylinderOverlap(const Solid<S>& a, const Solid<S>& 
   return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
 
-// Sphere and cylinder: core's closed forms in the cylinder's frame, FCL's axis Z taken as core's X.
+// Sphere and cylinder: core's closed forms in the cylinder's frame, FCL's axis Z taken as core's X: core's
+// (X, Y, Z) is FCL's (Z, X, Y).
+template <class S> Vec3<S> fclFromAxisX(const Vec3<S>& v) { return Vec3<S>(v.y(), v.z(), v.x()); }
+
+// The sphere's centre in the cylinder's frame, in core's axes.
+template <class S> Vec3<S> sphereInCylinder(const Solid<S>& sphere, const Solid<S>& cylinder) {
+  const Vec3<S> c = inFrame(*cylinder.tf, Vec3<S>(sphere.tf->translation()));
+  return Vec3<S>(c.z(), c.x(), c.y());
+}
+
 template <class S> Answer sphereCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
   const S ra = sphereRadius(a);
   const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
   if (!positive(ra) || !positive(cylinder->radius) || !positive(cylinder->lz)) return Answer::Invalid;
-  const Vec3<S> c = inFrame(*b.tf, Vec3<S>(a.tf->translation()));
-  hit = k::overlapSphereCylinder<S>(Vec3<S>(c.z(), c.x(), c.y()), ra, cylinder->radius, cylinder->lz * S(0.5));
+  hit = k::overlapSphereCylinder<S>(sphereInCylinder(a, b), ra, cylinder->radius, cylinder->lz * S(0.5));
   return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
 }
-
-// Core's (X, Y, Z) in the cylinder is FCL's (Z, X, Y): its axis is FCL's Z.
-template <class S> Vec3<S> fclFromAxisX(const Vec3<S>& v) { return Vec3<S>(v.y(), v.z(), v.x()); }
 
 template <class S> Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   S ra;
   const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
   if (!readSphere(a, ra) || !positive(cylinder->radius) || !positive(cylinder->lz) || !rigidPose(b))
     return Answer::Invalid;
-  const Vec3<S> c = inFrame(*b.tf, Vec3<S>(a.tf->translation()));
   DistanceResult<S> local;
-  k::distanceSphereCylinder<S>(Vec3<S>(c.z(), c.x(), c.y()), ra, cylinder->radius, cylinder->lz * S(0.5), local);
+  k::distanceSphereCylinder<S>(sphereInCylinder(a, b), ra, cylinder->radius, cylinder->lz * S(0.5), local);
   local.normal = fclFromAxisX(local.normal);
   local.point0 = fclFromAxisX(local.point0);
   local.point1 = fclFromAxisX(local.point1);
