@@ -1,4 +1,5 @@
-// Convex hull cooking (qhull): polygon faces, hull-only vertices, adjacency, bounds, centre, and rejected inputs.
+// Convex hull cooking (qhull): polygon faces, hull-only vertices, adjacency, bounds, centre and its balls, and
+// rejected inputs.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -45,6 +46,12 @@ template <class T> std::size_t checkHull(const ConvexMesh<T>& hull, const std::v
     EXPECT_TRUE(std::find(input.begin(), input.end(), v) != input.end()) << "hull vertex is not an input point";
     EXPECT_TRUE(hull.localBounds.contains(v));
   }
+  // The cooked balls: every vertex in the outer one, the inner one behind every plane.
+  const Eigen::Vector3d c = hull.center.template cast<double>();
+  for (const Vec3<T>& v : hull.vertices) EXPECT_LE((v.template cast<double>() - c).norm(), double(hull.outerRadius));
+  for (const HullPolygon<T>& poly : hull.polygons)
+    EXPECT_GE(-(poly.normal.template cast<double>().dot(c) + double(poly.d)), double(hull.innerRadius));
+  EXPECT_GT(hull.innerRadius, T(0));
   EXPECT_EQ(hull.adjacencyOffsets.size(), hull.vertices.size() + 1);
   EXPECT_EQ(hull.adjacencyOffsets.back(), hull.adjacency.size());
   for (std::size_t i = 0; i < hull.vertices.size(); ++i) {  // symmetric, at least 3 neighbours (a 3-D vertex)
@@ -83,6 +90,9 @@ TYPED_TEST(ConvexCook, CubeWithInteriorPointsHasEightVerticesAndSixQuads) {
   EXPECT_EQ(hull->localBounds.min, Vec3<T>::Constant(T(-1)));
   EXPECT_EQ(hull->localBounds.max, Vec3<T>::Constant(T(1)));
   EXPECT_LT(hull->center.norm(), T(1e-6));
+  // The balls are tight on a cube about its centre: the inscribed ball touches the faces, the outer one the corners.
+  EXPECT_NEAR(hull->innerRadius, T(1), T(1e-5));
+  EXPECT_NEAR(hull->outerRadius, std::sqrt(T(3)), T(1e-5));
 }
 
 TYPED_TEST(ConvexCook, RandomPointCloudsLieInsideEveryPlane) {

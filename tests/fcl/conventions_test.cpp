@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <set>
 #include <thread>
 #include <vector>
@@ -128,6 +129,27 @@ TEST(FclConventions, WithoutSignedDistanceAPenetratingGjkPairIsMinusOneAsFcl) {
   EXPECT_NEAR(gq::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 1.75), signedRequest, withDepth), -0.25, 1e-6);
   ::fcl::DistanceResultd apart;  // separated: the distance, signed request or not
   EXPECT_NEAR(gq::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 2.5), unsignedRequest, apart), 0.5, 1e-6);
+}
+
+// The same for two Convex cubes (sides 2): centres 1.75 apart overlap (their inscribed balls do, which answers
+// without GJK), 2.5 and 4 apart are 0.5 and 2 apart (GJK; the second also beyond their circumscribed balls).
+TEST(FclConventions, WithoutSignedDistanceOverlappingConvexHullsAreMinusOneAsFcl) {
+  auto corners = std::make_shared<std::vector<Vector3d>>();
+  for (int i = 0; i < 8; ++i) corners->emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+  // Quads counter-clockwise from outside: -x, +x, -y, +y, -z, +z.
+  auto faces = std::make_shared<std::vector<int>>(std::vector<int>{4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4,
+                                                                   4, 2, 6, 7, 3, 4, 0, 2, 3, 1, 4, 4, 5, 7, 6});
+  const ::fcl::Convexd cube(corners, 6, faces);
+  const ::fcl::DistanceRequestd unsignedRequest(true);
+  ::fcl::DistanceResultd gqResult, fclResult;
+  EXPECT_EQ(gq::fcl::distance(&cube, at(0, 0, 0), &cube, at(0, 0, 1.75), unsignedRequest, gqResult), -1.0);
+  ::fcl::distance(&cube, at(0, 0, 0), &cube, at(0, 0, 1.75), unsignedRequest, fclResult);
+  EXPECT_EQ(fclResult.min_distance, -1.0);
+  for (int i : {0, 1}) EXPECT_EQ(gqResult.nearest_points[i], Vector3d::Zero());
+  for (const double gap : {0.5, 2.0}) {
+    ::fcl::DistanceResultd apart;
+    EXPECT_NEAR(gq::fcl::distance(&cube, at(0, 0, 0), &cube, at(0, 0, 2 + gap), unsignedRequest, apart), gap, 1e-9);
+  }
 }
 
 // Closed-form pairs give their exact signed distance without the request: it costs them nothing more.

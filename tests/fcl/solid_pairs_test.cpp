@@ -171,6 +171,38 @@ TEST(FclSolidPairs, AScaledLinearPartIsRejectedForBoxAndCapsule) {
   }
 }
 
+// Two Convex decided by their hulls' balls (deeply overlapping, or far apart) still validate the transforms as the
+// GJK path does: a hull is not symmetric, so a reflection is rejected as a scaled linear part is. A miss on bad
+// input is told from a miss by the return value: 0 instead of the result's count.
+TEST(FclSolidPairs, ConvexPairsDecidedByTheirBallsRejectReflectedAndScaledLinearParts) {
+  std::mt19937 rng(23);
+  std::vector<Vector3d> vertices;
+  std::vector<std::vector<int>> faces;
+  gq::fcltest::randomHull(rng, 30, vertices, faces);
+  const auto hull = gq::fcltest::convexGeometry(vertices, faces);
+  const ::fcl::Transform3d origin = ::fcl::Transform3d::Identity();
+  ::fcl::Transform3d far = origin;
+  far.translation() = Vector3d(20, 0, 0);
+  ::fcl::CollisionRequestd request;
+  request.num_max_contacts = 4;  // room beside the pre-seeded contact
+  for (const ::fcl::Transform3d& at : {origin, far}) {
+    ::fcl::Transform3d reflected = at, scaled = at, rotated = at;
+    reflected.linear() = Eigen::Vector3d(1, 1, -1).asDiagonal();
+    scaled.linear() *= 1.01;
+    rotated.linear() = Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    const bool hit = at.translation().norm() == 0;
+    for (const ::fcl::Transform3d& bad : {reflected, scaled}) {
+      ::fcl::CollisionResultd c;
+      c.addContact(::fcl::Contactd());  // a miss returns the count (1), bad input 0
+      EXPECT_EQ(gq::fcl::collide<double>(hull.get(), origin, hull.get(), bad, request, c), 0u);
+      EXPECT_EQ(c.numContacts(), 1u);
+    }
+    ::fcl::CollisionResultd c;
+    c.addContact(::fcl::Contactd());
+    EXPECT_EQ(gq::fcl::collide<double>(hull.get(), origin, hull.get(), rotated, request, c), hit ? 2u : 1u);
+  }
+}
+
 TEST(FclSolidPairs, NearestPointsAreWrittenOnlyWhenRequested) {
   ::fcl::Sphered sphere(0.5);
   ::fcl::Boxd box(1.0, 1.0, 1.0);

@@ -310,10 +310,14 @@ template <GT G, class S> const auto& as(const Geometry<S>& g) {
   else return g.template get<CustomGeometry<S>>();
 }
 
-template <class S> Answer convertBoth(const Solid<S>& a, const Solid<S>& b, Converted<S>& ca, Converted<S>& cb,
-                                      Transform<S>& pa, Transform<S>& pb) {
+template <class S> Answer convertBoth(const Solid<S>& a, const Solid<S>& b, Converted<S>& ca, Converted<S>& cb) {
+  const bool ok = convert(a.geometry, ca) == Conversion::Ok && convert(b.geometry, cb) == Conversion::Ok;
+  return ok ? Answer::Done : Answer::Invalid;
+}
+
+template <class S> Answer posesOf(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb,
+                                  Transform<S>& pa, Transform<S>& pb) {
   if (!isFiniteTransforms(*a.tf, *b.tf)) return Answer::Invalid;
-  if (convert(a.geometry, ca) != Conversion::Ok || convert(b.geometry, cb) != Conversion::Ok) return Answer::Invalid;
   pa = shapePose(ca, *a.tf);
   pb = shapePose(cb, *b.tf);
   return isRotation(pa) && isRotation(pb) ? Answer::Done : Answer::Invalid;
@@ -389,21 +393,54 @@ Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S
   return finiteResult(out) ? Answer::Done : Answer::Unanswered;
 }
 
-template <class S, FS A, FS B> Answer convertedOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
-  Converted<S> ca, cb;
+template <class S, FS A, FS B>
+Answer overlapConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb, bool& hit) {
   Transform<S> pa, pb;
-  const Answer r = convertBoth(a, b, ca, cb, pa, pb);
+  const Answer r = posesOf(a, b, ca, cb, pa, pb);
   if (r != Answer::Done) return r;
   return overlapGq<S, gqType(A), gqType(B)>(ca.geometry(), cb.geometry(), pb.relativeTo(pa), hit);
+}
+
+template <class S, FS A, FS B> Answer convertedOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+  Converted<S> ca, cb;
+  const Answer r = convertBoth(a, b, ca, cb);
+  return r == Answer::Done ? overlapConverted<S, A, B>(a, b, ca, cb, hit) : r;
+}
+
+template <class S, FS A, FS B>
+Answer distanceConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb,
+                         DistanceAsk ask, DistanceResult<S>& out) {
+  Transform<S> pa, pb;
+  const Answer r = posesOf(a, b, ca, cb, pa, pb);
+  if (r != Answer::Done) return r;
+  return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, ask, out);
 }
 
 template <class S, FS A, FS B>
 Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
-  Transform<S> pa, pb;
-  const Answer r = convertBoth(a, b, ca, cb, pa, pb);
-  if (r != Answer::Done) return r;
-  return distanceGq<S, gqType(A), gqType(B)>(ca.geometry(), pa, cb.geometry(), pb, ask, out);
+  const Answer r = convertBoth(a, b, ca, cb);
+  return r == Answer::Done ? distanceConverted<S, A, B>(a, b, ca, cb, ask, out) : r;
+}
+
+// Two Convex: core's certificate on the cooked hulls' balls, placed by FCL's matrices (a Convex keeps FCL's frame);
+// the converted path (GJK) when it decides nothing. A hull is not symmetric: its linear part must be a rotation.
+template <class S> k::HullBalls<S> hullBalls(const Solid<S>& s, const Converted<S>& c) {
+  const ConvexMesh<S>& m = *as<GT::ConvexMesh>(c.geometry()).mesh;
+  return {s.tf->linear() * m.center + s.tf->translation(), m.innerRadius, m.outerRadius};
+}
+
+template <class S> bool rotationPose(const Solid<S>& s) {
+  return rigidPose(s) && s.tf->linear().determinant() > S(0);
+}
+
+template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+  Converted<S> ca, cb;
+  if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
+  const k::OverlapCertificate certificate = k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
+  if (certificate == k::OverlapCertificate::Unknown) return overlapConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, hit);
+  hit = certificate == k::OverlapCertificate::Overlapping;
+  return validatedHit(hit || checkMiss, [&] { return rotationPose(a) && rotationPose(b); });
 }
 
 // Box and cylinder: core's certificates in the box's frame (FCL's cylinder axis is its local Z); GJK when they find
@@ -470,6 +507,17 @@ template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>&
   return Answer::Done;
 }
 
+// Without a requested depth, overlapping inner balls are FCL's -1 at once; everything else is GJK's.
+template <class S> Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+  Converted<S> ca, cb;
+  if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
+  if (ask.depth || k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb)) != k::OverlapCertificate::Overlapping)
+    return distanceConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, ask, out);
+  if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
+  writeOverlapping(out);
+  return Answer::Done;
+}
+
 // ---- the table ----
 
 template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
@@ -482,6 +530,7 @@ template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Soli
   else if constexpr (A == FS::Box && B == FS::Box) return boxBoxOverlap(a, b, checkMiss, hit);
   else if constexpr (A == FS::Box && B == FS::Cylinder) return boxCylinderOverlap(a, b, checkMiss, hit);
   else if constexpr (A == FS::Sphere && B == FS::Cylinder) return sphereCylinderOverlap(a, b, checkMiss, hit);
+  else if constexpr (A == FS::Convex && B == FS::Convex) return convexConvexOverlap(a, b, checkMiss, hit);
   else return convertedOverlap<S, A, B>(a, b, hit);
 }
 
@@ -507,6 +556,8 @@ Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, Dist
     return boxCylinderDistance(a, b, ask, out);
   } else if constexpr (A == FS::Sphere && B == FS::Cylinder) {
     return sphereCylinderDistance(a, b, ask, out);
+  } else if constexpr (A == FS::Convex && B == FS::Convex) {
+    return convexConvexDistance(a, b, ask, out);
   } else {
     return convertedDistance<S, A, B>(a, b, ask, out);
   }

@@ -3,6 +3,7 @@
 // Cooked data is immutable and shared: std::shared_ptr<const X>, safe to use from any number of threads.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ template <class T> struct ConvexMesh {
   std::vector<std::uint32_t> adjacency;
   Bounds3<T> localBounds;
   Vec3<T> center;  // a strictly interior point (centroid of the vertices)
+  // Balls about `center`: the hull contains the inner one and lies in the outer one (rounded inward and outward).
+  // A hull not made by cookConvexMesh keeps 0 and infinity, which prove nothing.
+  T innerRadius = T(0);
+  T outerRadius = std::numeric_limits<T>::infinity();
 };
 
 struct ConvexCookParams {

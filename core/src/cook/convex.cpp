@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -121,6 +122,39 @@ template <class T> void buildAdjacency(ConvexMesh<T>& hull) {
   }
 }
 
+// A double radius as a T no smaller (outer balls) or no larger (inner balls).
+template <class T> T roundedUp(double r) {
+  const T t = T(r);
+  return double(t) < r ? std::nextafter(t, std::numeric_limits<T>::infinity()) : t;
+}
+template <class T> T roundedDown(double r) {
+  const T t = T(r);
+  return double(t) > r ? std::nextafter(t, T(0)) : t;
+}
+
+// The balls about the stored centre, from the stored (rounded) vertices and planes, in double. The inner one keeps
+// clear of each polygon's plane by 4x its vertices' deviation from it (the facets qhull merged into the polygon
+// tilt by about that much) and by T's rounding of the plane.
+template <class T> void setBalls(ConvexMesh<T>& hull) {
+  const Vec3d c = hull.center.template cast<double>();
+  const double eps = std::numeric_limits<T>::epsilon();
+  double inner = std::numeric_limits<double>::infinity(), outer = 0;
+  for (const HullPolygon<T>& poly : hull.polygons) {
+    const Vec3d n = poly.normal.template cast<double>();
+    const double d = double(poly.d);
+    double deviation = 0;
+    for (std::uint32_t k = 0; k < poly.indexCount; ++k) {
+      const Vec3d v = hull.vertices[hull.polygonVertices[poly.indexBase + k]].template cast<double>();
+      deviation = std::max(deviation, std::abs(n.dot(v) + d));
+    }
+    const double rounding = 8 * eps * (std::abs(d) + c.cwiseAbs().sum());
+    inner = std::min(inner, -(n.dot(c) + d) - 4 * deviation - rounding);
+  }
+  for (const Vec3<T>& v : hull.vertices) outer = std::max(outer, (v.template cast<double>() - c).norm());
+  hull.innerRadius = roundedDown<T>(std::max(0.0, inner));
+  hull.outerRadius = roundedUp<T>(outer * (1 + 1e-15));
+}
+
 template <class T>
 Status buildHull(const std::vector<Vec3d>& input, const std::vector<QhullPolygon>& polys, ConvexMesh<T>& hull) {
   std::map<int, std::uint32_t> compact;  // input index -> hull vertex index
@@ -158,6 +192,7 @@ Status buildHull(const std::vector<Vec3d>& input, const std::vector<QhullPolygon
     out.d = T(d);
     hull.polygons.push_back(out);
   }
+  setBalls(hull);
   buildAdjacency(hull);
   return {};
 }

@@ -46,6 +46,14 @@ template <class T> bool overlapSphereCylinder(const Vec3<T>& c, T radius, T cyli
 enum class OverlapCertificate : std::uint8_t { Apart, Overlapping, Unknown };
 template <class T>
 OverlapCertificate cylinderBoxCertificate(const Vec3<T>& c, const Vec3<T>& a, T radius, T halfHeight, const Vec3<T>& h);
+// Two convex hulls by their cooked balls (ConvexMesh::innerRadius / outerRadius about `center`, placed and
+// scaled): Apart when the outer balls are apart, Overlapping when the inner ones overlap, each by more than GJK's
+// band; Unknown otherwise (convex_convex.cpp).
+template <class T> struct HullBalls {
+  Vec3<T> center;
+  T inner, outer;
+};
+template <class T> OverlapCertificate hullBallsCertificate(const HullBalls<T>& a, const HullBalls<T>& b);
 // Convex custom geometry (either side) against sphere, capsule, box, convex or custom: GJK.
 template <class T> bool overlapCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);
 }  // namespace gq::detail
