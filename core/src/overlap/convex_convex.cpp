@@ -1,5 +1,7 @@
 // Convex/convex overlap: the hulls' cooked balls when they decide, else GJK, with exact SAT (face normals and
 // crossing edge pairs) within the band of touching.
+#include <algorithm>
+
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
@@ -17,8 +19,11 @@ template <class T> HullBalls<T> hullBalls(const ConvexMeshGeometry<T>& g, const 
 
 }  // namespace
 
+// The band scales with the balls and with the centres' coordinates (their rounding, for a hull cooked far from its
+// local origin).
 template <class T> OverlapCertificate hullBallsCertificate(const HullBalls<T>& a, const HullBalls<T>& b) {
-  const T d = (b.center - a.center).norm(), band = kGjkOverlapBand<T> * std::max(a.outer, b.outer);
+  const T scale = std::max({a.outer, b.outer, a.center.cwiseAbs().maxCoeff(), b.center.cwiseAbs().maxCoeff()});
+  const T d = (b.center - a.center).norm(), band = kGjkOverlapBand<T> * scale;
   if (d > a.outer + b.outer + band) return OverlapCertificate::Apart;
   if (d < a.inner + b.inner - band) return OverlapCertificate::Overlapping;
   return OverlapCertificate::Unknown;  // also for a NaN centre
