@@ -5,8 +5,9 @@
 //    one: the gap when the shape lies on one side, else minus the smaller push-out depth (FCL's rule
 //    depth = r - |signed distance| for a sphere).
 //  - BVHModel against a shape: one contact per triangle touched, as FCL's mesh-shape traversal. Candidates come from
-//    findOverlapTriangleMesh (exact for sphere/capsule/box; a bounding box or sphere otherwise, then an exact
-//    test); a triangle's depth and normal come from distance() against the triangle as a support shape.
+//    findOverlapTriangleMesh (exact for sphere/capsule/box; a bounding box or sphere otherwise, then core's exact
+//    shape-triangle test, prepared once per call); a triangle's depth and normal come from distance() against the
+//    triangle as a support shape.
 //  - BVHModel against BVHModel: findOverlapTriangleMeshPairs, one contact per intersecting triangle pair.
 //  - BVHModel against Halfspace/Plane (gq has no mesh-plane query): per triangle from its vertices' heights.
 #include "pair_kernels.h"
@@ -20,6 +21,8 @@
 #include "gq/cooking.h"
 #include "gq/mesh_query.h"
 #include "gq/query.h"
+#include "mesh/mesh_instance.h"
+#include "mesh_pairs/shape_triangle.h"
 #include "support_shapes.h"
 
 namespace gq::fcl::detail {
@@ -75,10 +78,9 @@ template <class T> bool isPrimitiveQuery(const Geometry<T>& g) {
 // Contact of `shape` with one world triangle; normal from the triangle to the shape.
 template <class T>
 Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const Triangle<T>& triangle,
-                       bool withGeometry, bool& hit, PairContact<T>& contact) {
+                       PairContact<T>& contact, bool& hit) {
   const TriangleCallbacks<T> callbacks(triangle.verts[0], triangle.verts[1], triangle.verts[2]);
   const Geometry<T> tri = borrowed<T>(callbacks);
-  if (!withGeometry) return overlap(shape, pose, tri, Transform<T>(), hit);
   DistanceResult<T> d;
   const Status s = distance(d, tri, Transform<T>(), shape, pose);
   if (!s.ok()) return s;
@@ -107,6 +109,10 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
     query = candidate->volume;
     queryPose = shapePose * Transform<T>(candidate->centre);
   }
+  // Set up once per call, on the first candidate: the mesh's world triangles (the arithmetic of getTriangle, whose
+  // checks findOverlapTriangleMesh has made) and the shape for core's boolean shape-triangle test.
+  std::optional<gq::detail::MeshInstance<T>> instance;
+  std::optional<gq::detail::TriangleQueryShape<T>> boolean;
   std::uint32_t page[kTrianglePage];
   std::uint32_t start = 0;
   const std::size_t first = out.size();
@@ -122,9 +128,10 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
       PairContact<T> c;
       bool hit = true;
       if (withGeometry || !exactCandidates) {
-        Triangle<T> triangle;
-        s = getTriangle(mesh, meshPose, page[i], triangle);
-        if (s.ok()) s = triangleContact(shape, shapePose, triangle, withGeometry, hit, c);
+        if (!instance) instance.emplace(mesh, meshPose);
+        const Triangle<T> triangle = instance->worldTriangle(mesh.mesh->cookedIndex[page[i]]);
+        if (withGeometry) s = triangleContact(shape, shapePose, triangle, c, hit);
+        else hit = (boolean ? *boolean : boolean.emplace(shape, shapePose)).overlaps(triangle);
         if (!s.ok()) return s;
       }
       if (!hit) continue;
