@@ -443,14 +443,21 @@ template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>&
   return validatedHit(hit || checkMiss, [&] { return rotationPose(a) && rotationPose(b); });
 }
 
+// FCL's cylinder: radius and full length lz along local Z, valid as the conversion takes it (both positive).
+template <class S> bool cylinderSize(const Solid<S>& s, S& radius, S& halfHeight) {
+  const auto* c = static_cast<const ::fcl::Cylinder<S>*>(s.geometry);
+  radius = c->radius;
+  halfHeight = c->lz * S(0.5);
+  return positive(c->radius) && positive(c->lz);
+}
+
 // Box and cylinder: core's certificates in the box's frame (FCL's cylinder axis is its local Z); GJK when they find
 // none. Sizes are checked first (Invalid), the transforms by the callers.
 template <class S> bool boxCylinderCertificate(const Solid<S>& box, const Solid<S>& cylinder,
                                                k::OverlapCertificate& certificate) {
   const Vec3<S> h = boxHalf(box);
-  const auto* c = static_cast<const ::fcl::Cylinder<S>*>(cylinder.geometry);
-  const S radius = c->radius, halfHeight = c->lz * S(0.5);
-  if (!boxSized(h) || !positive(radius) || !positive(halfHeight)) return false;
+  S radius, halfHeight;
+  if (!boxSized(h) || !cylinderSize(cylinder, radius, halfHeight)) return false;
   const auto rt = box.tf->linear().transpose();
   certificate = k::cylinderBoxCertificate<S>(rt * (cylinder.tf->translation() - box.tf->translation()),
                                              rt * cylinder.tf->linear().col(2), radius, halfHeight, h);
@@ -477,19 +484,17 @@ template <class S> Vec3<S> sphereInCylinder(const Solid<S>& sphere, const Solid<
 
 template <class S> Answer sphereCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
   const S ra = sphereRadius(a);
-  const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
-  if (!positive(ra) || !positive(cylinder->radius) || !positive(cylinder->lz)) return Answer::Invalid;
-  hit = k::overlapSphereCylinder<S>(sphereInCylinder(a, b), ra, cylinder->radius, cylinder->lz * S(0.5));
+  S radius, halfHeight;
+  if (!positive(ra) || !cylinderSize(b, radius, halfHeight)) return Answer::Invalid;
+  hit = k::overlapSphereCylinder<S>(sphereInCylinder(a, b), ra, radius, halfHeight);
   return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
 }
 
 template <class S> Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  S ra;
-  const auto* cylinder = static_cast<const ::fcl::Cylinder<S>*>(b.geometry);
-  if (!readSphere(a, ra) || !positive(cylinder->radius) || !positive(cylinder->lz) || !rigidPose(b))
-    return Answer::Invalid;
+  S ra, radius, halfHeight;
+  if (!readSphere(a, ra) || !cylinderSize(b, radius, halfHeight) || !rigidPose(b)) return Answer::Invalid;
   DistanceResult<S> local;
-  k::distanceSphereCylinder<S>(sphereInCylinder(a, b), ra, cylinder->radius, cylinder->lz * S(0.5), local);
+  k::distanceSphereCylinder<S>(sphereInCylinder(a, b), ra, radius, halfHeight, local);
   local.normal = fclFromAxisX(local.normal);
   local.point0 = fclFromAxisX(local.point0);
   local.point1 = fclFromAxisX(local.point1);
