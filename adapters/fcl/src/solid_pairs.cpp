@@ -394,7 +394,8 @@ Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S
 }
 
 template <class S, FS A, FS B>
-Answer overlapConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb, bool& hit) {
+Answer overlapConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb,
+                        bool& hit) {
   Transform<S> pa, pb;
   const Answer r = posesOf(a, b, ca, cb, pa, pb);
   if (r != Answer::Done) return r;
@@ -438,7 +439,8 @@ template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>&
   Converted<S> ca, cb;
   if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
   const k::OverlapCertificate certificate = k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
-  if (certificate == k::OverlapCertificate::Unknown) return overlapConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, hit);
+  if (certificate == k::OverlapCertificate::Unknown)
+    return overlapConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, hit);
   hit = certificate == k::OverlapCertificate::Overlapping;
   return validatedHit(hit || checkMiss, [&] { return rotationPose(a) && rotationPose(b); });
 }
@@ -513,7 +515,8 @@ template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>&
 }
 
 // Without a requested depth, overlapping inner balls are FCL's -1 at once; everything else is GJK's.
-template <class S> Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S>
+Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
   if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
   if (ask.depth || k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb)) != k::OverlapCertificate::Overlapping)
