@@ -431,6 +431,12 @@ template <class S> k::HullBalls<S> hullBalls(const Solid<S>& s, const Converted<
   return {s.tf->linear() * m.center + s.tf->translation(), m.innerRadius, m.outerRadius};
 }
 
+template <class S>
+k::OverlapCertificate convexCertificate(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca,
+                                        const Converted<S>& cb) {
+  return k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
+}
+
 template <class S> bool rotationPose(const Solid<S>& s) {
   return rigidPose(s) && s.tf->linear().determinant() > S(0);
 }
@@ -438,7 +444,7 @@ template <class S> bool rotationPose(const Solid<S>& s) {
 template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
   Converted<S> ca, cb;
   if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
-  const k::OverlapCertificate certificate = k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
+  const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
   if (certificate == k::OverlapCertificate::Unknown)
     return overlapConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, hit);
   hit = certificate == k::OverlapCertificate::Overlapping;
@@ -492,7 +498,8 @@ template <class S> Answer sphereCylinderOverlap(const Solid<S>& a, const Solid<S
   return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
 }
 
-template <class S> Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S>
+Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   S ra, radius, halfHeight;
   if (!readSphere(a, ra) || !cylinderSize(b, radius, halfHeight) || !rigidPose(b)) return Answer::Invalid;
   DistanceResult<S> local;
@@ -519,7 +526,7 @@ template <class S>
 Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
   if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
-  if (ask.depth || k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb)) != k::OverlapCertificate::Overlapping)
+  if (ask.depth || convexCertificate(a, b, ca, cb) != k::OverlapCertificate::Overlapping)
     return distanceConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, ask, out);
   if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
   writeOverlapping(out);
