@@ -93,11 +93,15 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   T lowerBound = T(0);  // best lower bound of the core distance seen so far
   T gapBound = std::numeric_limits<T>::infinity();
   bool converged = false;
+  // The state of smallest |v| so far. It is the current one until a step fails to decrease |v|; only then is it
+  // copied (`saved`), so the usual strictly decreasing run copies no simplex.
   struct Best {
     GjkSimplex<T> s;
     std::array<T, 4> lambda;
     Vec3<T> v;
-  } best{s, lambda, Vec3<T>::Constant(std::numeric_limits<T>::infinity())};
+  } best;
+  T bestSquared = std::numeric_limits<T>::infinity();
+  bool saved = false;
   Momentum<T> momentum;
   std::uint32_t stalls = 0;
   std::uint32_t it = 0;
@@ -107,7 +111,7 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
     r.coresOverlap = converged = c.containsOrigin || c.v.norm() <= tolerance;
     v = c.v;
     lambda = c.lambda;
-    best = {s, lambda, v};
+    bestSquared = v.squaredNorm();
   }
   while (!r.coresOverlap && it < kGjkMaxIterations) {
     ++it;
@@ -133,8 +137,10 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
     momentum.lastW = p.w;
     ++momentum.step;
     s.points[s.size++] = p;
-    const SimplexClosest<T> c = closestOnSimplex(s);
+    const SimplexChoice<T> choice = chooseOnSimplex(s);
+    const SimplexClosest<T>& c = choice.closest;
     if (c.containsOrigin || c.v.norm() <= tolerance) {
+      reduceSimplex(s, choice);
       r.coresOverlap = true;
       lambda = c.lambda;
       v = c.v;
@@ -144,17 +150,27 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
     // |v| must decrease strictly. Momentum steps may not: they fall back to plain GJK. Near the origin rounding can
     // stall plain GJK too (the simplex is then nearly flat around the origin): keep going from the new simplex,
     // which usually closes around the origin next, and give up after kGjkMaxStalls with the best simplex seen.
-    if (!(c.v.squaredNorm() < best.v.squaredNorm())) {
+    const T squared = c.v.squaredNorm();
+    if (!(squared < bestSquared)) {
+      if (!saved) {  // the state before this step is the best: keep it (the simplex without p)
+        best = {s, lambda, v};
+        --best.s.size;
+        saved = true;
+      }
       if (accelerated) momentum.on = false;
       else if (++stalls > kGjkMaxStalls) break;
     }
+    reduceSimplex(s, choice);
     v = c.v;
     lambda = c.lambda;
-    if (v.squaredNorm() < best.v.squaredNorm()) best = {s, lambda, v};
+    if (squared < bestSquared) {
+      bestSquared = squared;
+      saved = false;
+    }
   }
   // Only a GJK that gave up falls back to its best simplex. A converged one keeps its own: an earlier simplex whose
   // |v| is smaller by rounding has the distance right but can point v off by ~sqrt(rounding / distance).
-  if (!r.coresOverlap && !converged && best.v.squaredNorm() < v.squaredNorm()) {
+  if (!r.coresOverlap && !converged && saved && bestSquared < v.squaredNorm()) {
     s = best.s;
     lambda = best.lambda;
     v = best.v;

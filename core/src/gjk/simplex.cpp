@@ -140,7 +140,7 @@ template <class T> Candidate<T> tetrahedronCandidate(const GjkSimplex<T>& s) {
 
 }  // namespace
 
-template <class T> SimplexClosest<T> closestOnSimplex(GjkSimplex<T>& s) {
+template <class T> SimplexChoice<T> chooseOnSimplex(const GjkSimplex<T>& s) {
   Candidate<T> c;
   switch (s.size) {
     case 1: c = vertexCandidate(s, 0); break;
@@ -148,15 +148,24 @@ template <class T> SimplexClosest<T> closestOnSimplex(GjkSimplex<T>& s) {
     case 3: c = triangleCandidate(s, 0, 1, 2); break;
     default: c = tetrahedronCandidate(s); break;
   }
+  return SimplexChoice<T>{SimplexClosest<T>{c.v, c.lambda, c.containsOrigin}, c.index, c.count};
+}
+
+template <class T> void reduceSimplex(GjkSimplex<T>& s, const SimplexChoice<T>& choice) {
   bool identity = true;
-  for (std::uint32_t k = 0; k < c.count; ++k) identity = identity && c.index[k] == k;
+  for (std::uint32_t k = 0; k < choice.count; ++k) identity = identity && choice.index[k] == k;
   if (!identity) {
     std::array<SupportPoint<T>, 4> kept;
-    for (std::uint32_t k = 0; k < c.count; ++k) kept[k] = s.points[c.index[k]];
-    for (std::uint32_t k = 0; k < c.count; ++k) s.points[k] = kept[k];
+    for (std::uint32_t k = 0; k < choice.count; ++k) kept[k] = s.points[choice.index[k]];
+    for (std::uint32_t k = 0; k < choice.count; ++k) s.points[k] = kept[k];
   }
-  s.size = c.count;
-  return SimplexClosest<T>{c.v, c.lambda, c.containsOrigin};
+  s.size = choice.count;
+}
+
+template <class T> SimplexClosest<T> closestOnSimplex(GjkSimplex<T>& s) {
+  const SimplexChoice<T> choice = chooseOnSimplex(s);
+  reduceSimplex(s, choice);
+  return choice.closest;
 }
 
 template <class T> void simplexWitnesses(const GjkSimplex<T>& s, const std::array<T, 4>& lambda, Vec3<T>& a, Vec3<T>& b) {
@@ -168,6 +177,10 @@ template <class T> void simplexWitnesses(const GjkSimplex<T>& s, const std::arra
   }
 }
 
+template SimplexChoice<float> chooseOnSimplex<float>(const GjkSimplex<float>&);
+template SimplexChoice<double> chooseOnSimplex<double>(const GjkSimplex<double>&);
+template void reduceSimplex<float>(GjkSimplex<float>&, const SimplexChoice<float>&);
+template void reduceSimplex<double>(GjkSimplex<double>&, const SimplexChoice<double>&);
 template SimplexClosest<float> closestOnSimplex<float>(GjkSimplex<float>&);
 template SimplexClosest<double> closestOnSimplex<double>(GjkSimplex<double>&);
 template void simplexWitnesses<float>(const GjkSimplex<float>&, const std::array<float, 4>&, Vec3<float>&, Vec3<float>&);

@@ -12,7 +12,18 @@ template <class T> struct SimplexClosest {
   bool containsOrigin = false;                            // a full tetrahedron with the origin inside
 };
 
-// Reduces `s` to the sub-simplex supporting the closest point and returns it with its weights.
+// The sub-simplex supporting the closest point, as indices into the simplex (in order), with its weights.
+template <class T> struct SimplexChoice {
+  SimplexClosest<T> closest;
+  std::array<std::uint32_t, 4> index = {0, 1, 2, 3};
+  std::uint32_t count = 1;
+};
+
+// Finds the closest sub-simplex and leaves `s` as it is (GJK keeps the simplex for a step that does not progress).
+template <class T> SimplexChoice<T> chooseOnSimplex(const GjkSimplex<T>& s);
+// Reduces `s` to the chosen sub-simplex.
+template <class T> void reduceSimplex(GjkSimplex<T>& s, const SimplexChoice<T>& choice);
+// Both: reduces `s` to the sub-simplex supporting the closest point and returns it with its weights.
 template <class T> SimplexClosest<T> closestOnSimplex(GjkSimplex<T>& s);
 
 // a- and b-witnesses of the closest point: sum of lambda_i * a_i (resp. b_i).
