@@ -18,6 +18,7 @@
 #include "distance/distance.h"
 #include "gjk/gjk.h"
 #include "overlap/overlap.h"
+#include "overlap/polytope.h"
 
 namespace gq::fcl::detail {
 namespace {
@@ -445,8 +446,12 @@ template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>&
   Converted<S> ca, cb;
   if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
   const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
-  if (certificate == k::OverlapCertificate::Unknown)
-    return overlapConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, hit);
+  if (certificate == k::OverlapCertificate::Unknown) {  // core's GJK + SAT past its own (same) certificate
+    Transform<S> pa, pb;
+    const Answer r = posesOf(a, b, ca, cb, pa, pb);
+    if (r == Answer::Done) hit = k::overlapConvexShapes(ca.geometry(), Transform<S>(), cb.geometry(), pb.relativeTo(pa));
+    return r;
+  }
   hit = certificate == k::OverlapCertificate::Overlapping;
   return validatedHit(hit || checkMiss, [&] { return rotationPose(a) && rotationPose(b); });
 }
