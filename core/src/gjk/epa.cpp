@@ -22,6 +22,7 @@
 #include "gjk/gjk.h"
 #include "gjk/simplex.h"
 #include "gjk/support_map.h"
+#include "gjk/wide.h"
 
 namespace gq::detail {
 namespace {
@@ -57,14 +58,29 @@ template <class T> struct Directions {
 };
 
 // Face i-j-k with its outward normal; false when degenerate.
+// The face's unit normal and offset from the widened points (out of line: rare, and wide arithmetic is bulky).
+template <class T> [[gnu::noinline]] void widePlane(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2, EpaFace<T>& f) {
+  using W = typename Wider<T>::type;
+  const WideVec<W> w0 = p0.template cast<W>();
+  const WideVec<W> wn = (p1.template cast<W>() - w0).cross(p2.template cast<W>() - w0);
+  const WideVec<W> unit = wn / wideSqrt(wn.squaredNorm());
+  f.n = unit.template cast<T>();
+  f.dist = T(unit.dot(w0));
+}
+
+// A long thin face far from the origin gets its normal and offset from the widened points (gjk/wide.h).
 template <class T> bool makeFace(const Polytope<T>& poly, std::uint32_t i, std::uint32_t j, std::uint32_t k, EpaFace<T>& f) {
   const Vec3<T>&p0 = poly.points[i].w, &p1 = poly.points[j].w, &p2 = poly.points[k].w;
-  const Vec3<T> n = (p1 - p0).cross(p2 - p0);
+  const Vec3<T> e1 = p1 - p0, e2 = p2 - p0;
+  const Vec3<T> n = e1.cross(e2);
   const T len = n.norm();
   if (!(len > T(0))) return false;
   f.v = {i, j, k};
   f.n = n / len;
   f.dist = f.n.dot(p0);
+  if (planeNeedsWider(len * len, e1.squaredNorm() + e2.squaredNorm(), gjkRelativeTolerance<T>(),
+                      [&] { return p0.squaredNorm(); }, [&] { return f.dist * f.dist; }))
+    widePlane(p0, p1, p2, f);
   f.alive = true;
   f.final = false;
   return true;

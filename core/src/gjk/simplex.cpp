@@ -1,6 +1,8 @@
 // Signed-volume closest point on a simplex (see simplex.h).
 #include "gjk/simplex.h"
 
+#include "gjk/wide.h"
+
 #include <cmath>
 
 namespace gq::detail {
@@ -68,8 +70,31 @@ Candidate<T> closestEdge(const GjkSimplex<T>& s, const std::array<std::uint32_t,
   return any ? best : bestEdge(s, v[0], v[1], v[2]);  // unreachable (some weight is <= 0 or NaN); kept total
 }
 
-// Triangle i-j-k: project the origin on the plane; the weights are the signed areas of the sub-triangles
-// (dotted with the normal n) over |n|^2. Outside the triangle (or degenerate) the closest point is on an edge.
+// The origin's projection p on the plane of (p0, p1, p2) with normal n = (p1 - p0) x (p2 - p0), and its weights: the
+// signed areas of the sub-triangles (dotted with n) over |n|^2.
+template <class W> struct PlaneProjection {
+  Eigen::Matrix<W, 3, 1> p;
+  W l0, l1;
+};
+template <class W>
+PlaneProjection<W> projectOrigin(const Eigen::Matrix<W, 3, 1>& p0, const Eigen::Matrix<W, 3, 1>& p1,
+                                 const Eigen::Matrix<W, 3, 1>& p2, const Eigen::Matrix<W, 3, 1>& n, W nn) {
+  const Eigen::Matrix<W, 3, 1> p = n * (n.dot(p0) / nn);
+  return {p, n.dot((p1 - p).cross(p2 - p)) / nn, n.dot((p2 - p).cross(p0 - p)) / nn};
+}
+
+// The projection from the widened points (out of line: the wide arithmetic would enlarge the hot function's frame).
+template <class T>
+[[gnu::noinline]] PlaneProjection<T> wideProjection(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2) {
+  using W = typename Wider<T>::type;
+  const WideVec<W> w0 = p0.template cast<W>(), w1 = p1.template cast<W>(), w2 = p2.template cast<W>();
+  const WideVec<W> wn = (w1 - w0).cross(w2 - w0);
+  const PlaneProjection<W> wide = projectOrigin(w0, w1, w2, wn, wn.squaredNorm());
+  return {wide.p.template cast<T>(), T(wide.l0), T(wide.l1)};
+}
+
+// Triangle i-j-k: project the origin on the plane. Outside the triangle (or degenerate) the closest point is on an
+// edge.
 template <class T>
 Candidate<T> triangleCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
   const Vec3<T>&p0 = s.points[i].w, &p1 = s.points[j].w, &p2 = s.points[k].w;
@@ -77,10 +102,12 @@ Candidate<T> triangleCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uin
   const T nn = n.squaredNorm();
   const T edge2 = std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()});
   if (!(nn > kDegenerate<T> * edge2 * edge2 * kDegenerate<T>)) return bestEdge(s, i, j, k);
-  const Vec3<T> p = n * (n.dot(p0) / nn);
-  const T l0 = n.dot((p1 - p).cross(p2 - p)) / nn;
-  const T l1 = n.dot((p2 - p).cross(p0 - p)) / nn;
-  const T l2 = T(1) - l0 - l1;
+  PlaneProjection<T> pr = projectOrigin(p0, p1, p2, n, nn);
+  // Past GJK's relative tolerance and past |p| itself (gjk/wide.h): recomputed from the widened points.
+  if (planeNeedsWider(nn, edge2, gjkRelativeTolerance<T>(), [&] { return p0.squaredNorm(); },
+                      [&] { return pr.p.squaredNorm(); }))
+    pr = wideProjection(p0, p1, p2);
+  const T l0 = pr.l0, l1 = pr.l1, l2 = T(1) - l0 - l1;
   if (!(l0 > T(0) && l1 > T(0) && l2 > T(0))) return closestEdge(s, {i, j, k}, {l0, l1, l2});
   Candidate<T> c;
   c.index = {i, j, k, 0};
@@ -88,7 +115,7 @@ Candidate<T> triangleCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uin
   c.lambda = {l0, l1, l2, T(0)};
   // The plane projection, not sum(l_i p_i): near the origin the sum cancels and its direction (the next search
   // direction) would be noise, while n is accurate to rounding of the edges.
-  c.v = p;
+  c.v = pr.p;
   return c;
 }
 
@@ -116,18 +143,8 @@ template <class T> Candidate<T> closestFace(const GjkSimplex<T>& s, const std::a
 
 template <class T> T tripleProduct(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) { return a.dot(b.cross(c)); }
 
-// Tetrahedron: the origin's barycentric weights are signed volumes with the origin replacing one vertex.
-template <class T> Candidate<T> tetrahedronCandidate(const GjkSimplex<T>& s) {
-  const Vec3<T>&p0 = s.points[0].w, &p1 = s.points[1].w, &p2 = s.points[2].w, &p3 = s.points[3].w;
-  const T det = tripleProduct<T>(p1 - p0, p2 - p0, p3 - p0);
-  T edge = T(0);
-  for (const auto& q : {p1, p2, p3}) edge = std::max(edge, (q - p0).norm());
-  if (!(std::abs(det) > kDegenerate<T> * edge * edge * edge)) return bestFace(s);
-  const Vec3<T> o = Vec3<T>::Zero();
-  const std::array<T, 4> l = {tripleProduct<T>(p1 - o, p2 - o, p3 - o) / det,
-                              tripleProduct<T>(p0 - o, p3 - o, p2 - o) / det,
-                              tripleProduct<T>(p0 - o, p1 - o, p3 - o) / det,
-                              tripleProduct<T>(p0 - o, p2 - o, p1 - o) / det};
+// Origin at barycentric weights l of the tetrahedron: inside when all are positive, else on a face it sees.
+template <class T> Candidate<T> tetrahedronFromWeights(const GjkSimplex<T>& s, const std::array<T, 4>& l) {
   if (!(l[0] > T(0) && l[1] > T(0) && l[2] > T(0) && l[3] > T(0))) return closestFace(s, l);
   Candidate<T> c;
   c.index = {0, 1, 2, 3};
@@ -136,6 +153,36 @@ template <class T> Candidate<T> tetrahedronCandidate(const GjkSimplex<T>& s) {
   c.v = Vec3<T>::Zero();
   c.containsOrigin = true;
   return c;
+}
+
+// A long thin tetrahedron (support points of a shape 1e8+ times longer than wide): its volume is below double's
+// rounding of the triple products (error ~ eps |e|^3 with e the long edges), though the points themselves resolve the
+// origin's side of every face. Each rounding in the wider type is ~eps_W / eps_T smaller, so the volumes are
+// recomputed there from the exact (widened) points; still degenerate there, the closest face as before.
+template <class T> [[gnu::noinline]] Candidate<T> wideTetrahedron(const GjkSimplex<T>& s, T edge) {
+  using W = typename Wider<T>::type;
+  std::array<WideVec<W>, 4> p;
+  for (int k = 0; k < 4; ++k) p[k] = s.points[k].w.template cast<W>();
+  const W det = tripleProduct<W>(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
+  const W e = W(edge), bound = W(16) * wideEpsilon<W>() * e * e * e;
+  if (!(det > bound || det < -bound)) return bestFace(s);
+  const std::array<W, 4> wide = {tripleProduct<W>(p[1], p[2], p[3]) / det, tripleProduct<W>(p[0], p[3], p[2]) / det,
+                                 tripleProduct<W>(p[0], p[1], p[3]) / det, tripleProduct<W>(p[0], p[2], p[1]) / det};
+  return tetrahedronFromWeights(s, {T(wide[0]), T(wide[1]), T(wide[2]), T(wide[3])});
+}
+
+// Tetrahedron: the origin's barycentric weights are signed volumes with the origin replacing one vertex.
+template <class T> Candidate<T> tetrahedronCandidate(const GjkSimplex<T>& s) {
+  const Vec3<T>&p0 = s.points[0].w, &p1 = s.points[1].w, &p2 = s.points[2].w, &p3 = s.points[3].w;
+  const T det = tripleProduct<T>(p1 - p0, p2 - p0, p3 - p0);
+  T edge = T(0);
+  for (const auto& q : {p1, p2, p3}) edge = std::max(edge, (q - p0).norm());
+  if (!(std::abs(det) > kDegenerate<T> * edge * edge * edge)) return wideTetrahedron(s, edge);
+  const Vec3<T> o = Vec3<T>::Zero();
+  return tetrahedronFromWeights(s, {tripleProduct<T>(p1 - o, p2 - o, p3 - o) / det,
+                                    tripleProduct<T>(p0 - o, p3 - o, p2 - o) / det,
+                                    tripleProduct<T>(p0 - o, p1 - o, p3 - o) / det,
+                                    tripleProduct<T>(p0 - o, p2 - o, p1 - o) / det});
 }
 
 }  // namespace
