@@ -102,6 +102,38 @@ TEST(GjkLongShapes, BoxInsideACylinderUpTo1e11LongHasItsExactDepthInDouble) {
   }
 }
 
+// The same in float up to half-height 1e6 (float's wider type is double): within float GJK/EPA's tolerance of the
+// pair's size (1e-6 of it), and penetration and distance agree (the float finding answered -994,729 by distance and
+// 205 by penetration for an exact 3.4).
+TEST(GjkLongShapes, BoxInsideACylinderUpTo1e6LongHasItsDepthInFloat) {
+  using T = float;
+  Rng rng(20261125);
+  const T radius = 5.8f;
+  const Vec3<T> half(0.5f, 0.5f, 0.5f);
+  for (int trial = 0; trial < 8; ++trial) {
+    const LongCylinderCase k = longCylinderCase(rng);
+    const Eigen::Quaternionf qc = k.qc.cast<float>(), qb = k.qb.cast<float>();
+    const Vec3<T> cc = k.cc.cast<float>(), cb = k.cb.cast<float>();
+    const L exact = depthOutOfLongCylinder(toL(cb), rotationL(qb.cast<double>()), toL(half), toL(cc),
+                                           rotationL(qc.cast<double>()), L(radius));
+    for (const T halfHeight : {1e2f, 1e4f, 1e6f}) {
+      SCOPED_TRACE(testing::Message() << "trial " << trial << " half-height " << halfHeight << " exact " << double(exact));
+      const gq::Geometry<T> box = gq::BoxGeometry<T>(half);
+      const gq::Geometry<T> cylinder =
+          gq::CustomGeometry<T>(std::make_shared<gq::CylinderCallbacks<T>>(radius, halfHeight));
+      const Transform<T> pb(cb, qb), pc(cc, qc);
+      const double tol = std::max(1e-3, 2 * double(gq::tol::Rel<T>::kGjkTolerance) * double(halfHeight));
+      gq::PenetrationResult<T> pen;
+      ASSERT_TRUE(gq::computePenetration(pen, box, pb, cylinder, pc).ok());
+      EXPECT_TRUE(pen.penetrating);
+      EXPECT_NEAR(double(pen.depth), double(exact), tol);
+      gq::DistanceResult<T> d;
+      ASSERT_TRUE(gq::distance(d, box, pb, cylinder, pc).ok());
+      EXPECT_NEAR(double(d.distance), -double(exact), tol);
+    }
+  }
+}
+
 // Penetration depth of two overlapping oriented boxes: the minimum over the 15 separating axes (3 + 3 face normals,
 // 9 edge cross products) of rA + rB - |n.(cB - cA)| for unit n (the minimum translation of two polytopes lies on one
 // of them).

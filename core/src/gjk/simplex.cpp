@@ -30,6 +30,22 @@ template <class T> const Candidate<T>& closer(const Candidate<T>& x, const Candi
   return y.v.squaredNorm() < x.v.squaredNorm() ? y : x;
 }
 
+// p + t e cancels to |v| from |p|: rounding of eps |p| in v. Once that exceeds 1e-3 of |v| while |v| is above GJK's
+// tolerance (float support points ~1e6 from the origin around a distance of a few units: v's direction, GJK's next
+// search direction, was off by 4 % and GJK stalled), v is recomputed from the widened points.
+template <class T> bool segmentNeedsWider(T farSq, T vSq) {
+  constexpr T eps = std::numeric_limits<T>::epsilon(), rel = gjkRelativeTolerance<T>();
+  if constexpr (eps <= T(1e-3) * rel) return false;  // both conditions at once need eps > 1e-3 rel (float only)
+  else return eps * eps * farSq > T(1e-6) * vSq && vSq > rel * rel * farSq;
+}
+template <class T> [[gnu::noinline]] void widenSegment(const Vec3<T>& p, const Vec3<T>& q, Candidate<T>& c) {
+  using W = typename Wider<T>::type;
+  const WideVec<W> wp = p.template cast<W>(), we = q.template cast<W>() - wp;
+  const W t = -wp.dot(we) / we.squaredNorm();
+  c.lambda = {T(W(1) - t), T(t), T(0), T(0)};
+  c.v = (wp + t * we).template cast<T>();
+}
+
 // Segment i-j: t = -p_i.(p_j - p_i) / |p_j - p_i|^2, clamped to the end points.
 template <class T> Candidate<T> segmentCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j) {
   const Vec3<T>& p = s.points[i].w;
@@ -44,6 +60,7 @@ template <class T> Candidate<T> segmentCandidate(const GjkSimplex<T>& s, std::ui
   c.count = 2;
   c.lambda = {T(1) - t, t, T(0), T(0)};
   c.v = p + t * e;
+  if (segmentNeedsWider(p.squaredNorm(), c.v.squaredNorm())) widenSegment(p, s.points[j].w, c);
   return c;
 }
 
