@@ -72,13 +72,15 @@ TEST(GjkLongShapes, BoxInsideACylinderUpTo1e11LongHasItsExactDepthInDouble) {
                                            rotationL(k.qc), L(radius));
     ASSERT_GT(exact, L(0.5));
     for (const T halfHeight : {1e2, 1e5, 1e8, 4.2e11}) {
-      SCOPED_TRACE(testing::Message() << "trial " << trial << " half-height " << halfHeight << " exact " << double(exact));
+      SCOPED_TRACE(testing::Message() << "trial " << trial << " half-height " << halfHeight << " exact "
+                                      << double(exact));
       const gq::Geometry<T> box = gq::BoxGeometry<T>(half);
       const gq::Geometry<T> cylinder =
           gq::CustomGeometry<T>(std::make_shared<gq::CylinderCallbacks<T>>(radius, halfHeight));
       const Transform<T> pb(k.cb, k.qb), pc(k.cc, k.qc);
       // The boolean GJK alone (the public overlap asks the cylinder's closed-form certificate first).
-      EXPECT_TRUE(gq::detail::gjkOverlap(gq::detail::makeConvexShape(box, pb), gq::detail::makeConvexShape(cylinder, pc)));
+      EXPECT_TRUE(
+          gq::detail::gjkOverlap(gq::detail::makeConvexShape(box, pb), gq::detail::makeConvexShape(cylinder, pc)));
       gq::PenetrationResult<T> pen;
       ASSERT_TRUE(gq::computePenetration(pen, box, pb, cylinder, pc).ok());
       EXPECT_TRUE(pen.penetrating);
@@ -117,7 +119,8 @@ TEST(GjkLongShapes, BoxInsideACylinderUpTo1e6LongHasItsDepthInFloat) {
     const L exact = depthOutOfLongCylinder(toL(cb), rotationL(qb.cast<double>()), toL(half), toL(cc),
                                            rotationL(qc.cast<double>()), L(radius));
     for (const T halfHeight : {1e2f, 1e4f, 1e6f}) {
-      SCOPED_TRACE(testing::Message() << "trial " << trial << " half-height " << halfHeight << " exact " << double(exact));
+      SCOPED_TRACE(testing::Message() << "trial " << trial << " half-height " << halfHeight << " exact "
+                                      << double(exact));
       const gq::Geometry<T> box = gq::BoxGeometry<T>(half);
       const gq::Geometry<T> cylinder =
           gq::CustomGeometry<T>(std::make_shared<gq::CylinderCallbacks<T>>(radius, halfHeight));

@@ -449,7 +449,8 @@ template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>&
   if (certificate == k::OverlapCertificate::Unknown) {  // core's GJK + SAT past its own (same) certificate
     Transform<S> pa, pb;
     const Answer r = posesOf(a, b, ca, cb, pa, pb);
-    if (r == Answer::Done) hit = k::overlapConvexShapes(ca.geometry(), Transform<S>(), cb.geometry(), pb.relativeTo(pa));
+    if (r == Answer::Done)
+      hit = k::overlapConvexShapes(ca.geometry(), Transform<S>(), cb.geometry(), pb.relativeTo(pa));
     return r;
   }
   hit = certificate == k::OverlapCertificate::Overlapping;

@@ -59,7 +59,8 @@ template <class T> struct Directions {
 
 // Face i-j-k with its outward normal; false when degenerate.
 // The face's unit normal and offset from the widened points (out of line: rare, and wide arithmetic is bulky).
-template <class T> [[gnu::noinline]] void widePlane(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2, EpaFace<T>& f) {
+template <class T>
+[[gnu::noinline]] void widePlane(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2, EpaFace<T>& f) {
   using W = typename Wider<T>::type;
   const WideVec<W> w0 = p0.template cast<W>();
   const WideVec<W> wn = (p1.template cast<W>() - w0).cross(p2.template cast<W>() - w0);

@@ -7,8 +7,8 @@
 // that error by eps_T / eps_W. Only such faces pay for it (a test of a few flops decides, planeNeedsWider).
 #include <cmath>
 #include <cstdint>
-#include <type_traits>
 #include <limits>
+#include <type_traits>
 
 #include "gq/geometry.h"
 
@@ -30,13 +30,17 @@ template <class W> constexpr W wideEpsilon() {
     return std::numeric_limits<W>::epsilon();
 }
 
-// Square root in W without libquadmath: Newton steps from the double root (53 -> 106 -> 212 correct bits).
+// Square root in W without libquadmath: Newton steps from the double root (53 -> 106 -> 212 correct bits), with x
+// first brought into double's range by even powers of two (exact; quadruple precision reaches 1e4932).
 template <class W> W wideSqrt(W x) {
-  if (!(x > W(0))) return W(0);
+  if (!(x > W(0)) || !(x - x == W(0))) return W(0);  // zero, negative, NaN or infinite
+  const W up = W(std::uint64_t(1) << 63) * W(std::uint64_t(1) << 63), down = W(1) / up;  // 2^126 and 2^-126
+  W factor = W(1);
+  while (x > W(1e300)) x *= down * down, factor *= up;
+  while (x < W(1e-300)) x *= up * up, factor *= down;
   W r = W(std::sqrt(double(x)));
-  if (!(r > W(0))) return W(0);  // below double's range: not a case of these faces
   for (int k = 0; k < 2; ++k) r = (r + x / r) / W(2);
-  return r;
+  return r * factor;
 }
 
 template <class W> using WideVec = Eigen::Matrix<W, 3, 1>;
