@@ -36,10 +36,19 @@ template <class T> bool shape1IsSmaller(const Geometry<T>& g0, const Geometry<T>
   return featureRadius(g1) < featureRadius(g0);
 }
 
+// A rotation that is not unit to rounding is normalised (validation accepts |q| within 1e-3 of 1, and the relative
+// pose of non-unit quaternions is a scaled rotation: fuzz_pair_queries, session 16, a cube hull whose |q| was 1.0008
+// grew by 0.17 % in the SAT kernels, penetration 3.06784 against the exact 3.06625). One unit to rounding is used as
+// given, so touching contacts built from it stay touching.
+template <class T> Quat<T> unitRotation(const Quat<T>& q) {
+  return std::abs(q.squaredNorm() - T(1)) <= T(16) * std::numeric_limits<T>::epsilon() ? q : q.normalized();
+}
+
 template <class T>
 PairFrame<T> pairFrame(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
-  if (shape1IsSmaller(g0, g1)) return {p1, p0.relativeTo(p1), Transform<T>()};
-  return {p0, Transform<T>(), p1.relativeTo(p0)};
+  const Transform<T> u0(p0.p, unitRotation(p0.q)), u1(p1.p, unitRotation(p1.q));
+  if (shape1IsSmaller(g0, g1)) return {u1, u0.relativeTo(u1), Transform<T>()};
+  return {u0, Transform<T>(), u1.relativeTo(u0)};
 }
 
 // The smaller shape's position, for queries that translate both poses and keep their rotations.
