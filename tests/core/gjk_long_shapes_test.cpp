@@ -61,23 +61,34 @@ LongCylinderCase longCylinderCase(Rng& rng) {
   return k;
 }
 
+// One case in T: the unit box and a cylinder of radius 5.8 and the given half-height, at the case's poses as stored
+// in T, and the exact depth of those poses.
+template <class T> struct LongCylinderPair {
+  gq::Geometry<T> box, cylinder;
+  Transform<T> pb, pc;
+  L exact;
+};
+
+template <class T> LongCylinderPair<T> longCylinderPair(const LongCylinderCase& k, T halfHeight) {
+  const T radius = T(5.8);
+  const Vec3<T> half = Vec3<T>::Constant(T(0.5));
+  const Transform<T> pb(k.cb.cast<T>(), k.qb.cast<T>()), pc(k.cc.cast<T>(), k.qc.cast<T>());
+  const L exact = depthOutOfLongCylinder(toL(pb.p), rotationL(pb.q.template cast<double>()), toL(half), toL(pc.p),
+                                         rotationL(pc.q.template cast<double>()), L(radius));
+  const auto callbacks = std::make_shared<gq::CylinderCallbacks<T>>(radius, halfHeight);
+  return {gq::BoxGeometry<T>(half), gq::CustomGeometry<T>(callbacks), pb, pc, exact};
+}
+
 TEST(GjkLongShapes, BoxInsideACylinderUpTo1e11LongHasItsExactDepthInDouble) {
   using T = double;
   Rng rng(20261124);
-  const T radius = 5.8;
-  const Vec3<T> half(0.5, 0.5, 0.5);
   for (int trial = 0; trial < 8; ++trial) {
     const LongCylinderCase k = longCylinderCase(rng);
-    const L exact = depthOutOfLongCylinder(k.cb.cast<L>(), rotationL(k.qb), toL(half), k.cc.cast<L>(),
-                                           rotationL(k.qc), L(radius));
-    ASSERT_GT(exact, L(0.5));
     for (const T halfHeight : {1e2, 1e5, 1e8, 4.2e11}) {
+      const auto [box, cylinder, pb, pc, exact] = longCylinderPair(k, halfHeight);
+      ASSERT_GT(exact, L(0.5));
       SCOPED_TRACE(testing::Message() << "trial " << trial << " half-height " << halfHeight << " exact "
                                       << double(exact));
-      const gq::Geometry<T> box = gq::BoxGeometry<T>(half);
-      const gq::Geometry<T> cylinder =
-          gq::CustomGeometry<T>(std::make_shared<gq::CylinderCallbacks<T>>(radius, halfHeight));
-      const Transform<T> pb(k.cb, k.qb), pc(k.cc, k.qc);
       // The boolean GJK alone (the public overlap asks the cylinder's closed-form certificate first).
       EXPECT_TRUE(
           gq::detail::gjkOverlap(gq::detail::makeConvexShape(box, pb), gq::detail::makeConvexShape(cylinder, pc)));
@@ -95,7 +106,7 @@ TEST(GjkLongShapes, BoxInsideACylinderUpTo1e11LongHasItsExactDepthInDouble) {
         EXPECT_LE(depth, double(exact) + deep);
       };
       expectDepth(double(pen.depth));
-      const Vec3<T> axis = k.qc * Vec3<T>::UnitX();
+      const Vec3<T> axis = pc.q * Vec3<T>::UnitX();
       EXPECT_NEAR(pen.direction.dot(axis), 0.0, 1e-6);
       gq::DistanceResult<T> d;
       ASSERT_TRUE(gq::distance(d, box, pb, cylinder, pc).ok());
@@ -110,21 +121,12 @@ TEST(GjkLongShapes, BoxInsideACylinderUpTo1e11LongHasItsExactDepthInDouble) {
 TEST(GjkLongShapes, BoxInsideACylinderUpTo1e6LongHasItsDepthInFloat) {
   using T = float;
   Rng rng(20261125);
-  const T radius = 5.8f;
-  const Vec3<T> half(0.5f, 0.5f, 0.5f);
   for (int trial = 0; trial < 8; ++trial) {
     const LongCylinderCase k = longCylinderCase(rng);
-    const Eigen::Quaternionf qc = k.qc.cast<float>(), qb = k.qb.cast<float>();
-    const Vec3<T> cc = k.cc.cast<float>(), cb = k.cb.cast<float>();
-    const L exact = depthOutOfLongCylinder(toL(cb), rotationL(qb.cast<double>()), toL(half), toL(cc),
-                                           rotationL(qc.cast<double>()), L(radius));
     for (const T halfHeight : {1e2f, 1e4f, 1e6f}) {
+      const auto [box, cylinder, pb, pc, exact] = longCylinderPair(k, halfHeight);
       SCOPED_TRACE(testing::Message() << "trial " << trial << " half-height " << halfHeight << " exact "
                                       << double(exact));
-      const gq::Geometry<T> box = gq::BoxGeometry<T>(half);
-      const gq::Geometry<T> cylinder =
-          gq::CustomGeometry<T>(std::make_shared<gq::CylinderCallbacks<T>>(radius, halfHeight));
-      const Transform<T> pb(cb, qb), pc(cc, qc);
       const double tol = std::max(1e-3, 2 * double(gq::tol::Rel<T>::kGjkTolerance) * double(halfHeight));
       gq::PenetrationResult<T> pen;
       ASSERT_TRUE(gq::computePenetration(pen, box, pb, cylinder, pc).ok());

@@ -57,7 +57,6 @@ template <class T> struct Directions {
   void add(const Vec3<T>& x) { d[count++] = x; }
 };
 
-// Face i-j-k with its outward normal; false when degenerate.
 // The face's unit normal and offset from the widened points (out of line: rare, and wide arithmetic is bulky).
 template <class T>
 [[gnu::noinline]] void widePlane(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2, EpaFace<T>& f) {
@@ -69,7 +68,8 @@ template <class T>
   f.dist = T(unit.dot(w0));
 }
 
-// A long thin face far from the origin gets its normal and offset from the widened points (gjk/wide.h).
+// Face i-j-k with its outward normal; false when degenerate. A long thin face far from the origin gets its normal
+// and offset from the widened points (gjk/wide.h).
 template <class T> bool makeFace(const Polytope<T>& poly, std::uint32_t i, std::uint32_t j, std::uint32_t k, EpaFace<T>& f) {
   const Vec3<T>&p0 = poly.points[i].w, &p1 = poly.points[j].w, &p2 = poly.points[k].w;
   const Vec3<T> e1 = p1 - p0, e2 = p2 - p0;

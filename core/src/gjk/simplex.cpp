@@ -160,6 +160,13 @@ template <class T> Candidate<T> closestFace(const GjkSimplex<T>& s, const std::a
 
 template <class T> T tripleProduct(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) { return a.dot(b.cross(c)); }
 
+// The origin's barycentric weights in the tetrahedron: signed volumes with the origin replacing one vertex, over det.
+template <class W>
+std::array<W, 4> originWeights(const Vec3<W>& p0, const Vec3<W>& p1, const Vec3<W>& p2, const Vec3<W>& p3, W det) {
+  return {tripleProduct<W>(p1, p2, p3) / det, tripleProduct<W>(p0, p3, p2) / det, tripleProduct<W>(p0, p1, p3) / det,
+          tripleProduct<W>(p0, p2, p1) / det};
+}
+
 // Origin at barycentric weights l of the tetrahedron: inside when all are positive, else on a face it sees.
 template <class T> Candidate<T> tetrahedronFromWeights(const GjkSimplex<T>& s, const std::array<T, 4>& l) {
   if (!(l[0] > T(0) && l[1] > T(0) && l[2] > T(0) && l[3] > T(0))) return closestFace(s, l);
@@ -178,13 +185,12 @@ template <class T> Candidate<T> tetrahedronFromWeights(const GjkSimplex<T>& s, c
 // recomputed there from the exact (widened) points; still degenerate there, the closest face as before.
 template <class T> [[gnu::noinline]] Candidate<T> wideTetrahedron(const GjkSimplex<T>& s, T edge) {
   using W = typename Wider<T>::type;
-  std::array<WideVec<W>, 4> p;
+  std::array<Vec3<W>, 4> p;
   for (int k = 0; k < 4; ++k) p[k] = s.points[k].w.template cast<W>();
   const W det = tripleProduct<W>(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
   const W e = W(edge), bound = W(16) * wideEpsilon<W>() * e * e * e;
   if (!(det > bound || det < -bound)) return bestFace(s);
-  const std::array<W, 4> wide = {tripleProduct<W>(p[1], p[2], p[3]) / det, tripleProduct<W>(p[0], p[3], p[2]) / det,
-                                 tripleProduct<W>(p[0], p[1], p[3]) / det, tripleProduct<W>(p[0], p[2], p[1]) / det};
+  const std::array<W, 4> wide = originWeights<W>(p[0], p[1], p[2], p[3], det);
   return tetrahedronFromWeights(s, {T(wide[0]), T(wide[1]), T(wide[2]), T(wide[3])});
 }
 
@@ -195,11 +201,7 @@ template <class T> Candidate<T> tetrahedronCandidate(const GjkSimplex<T>& s) {
   T edge = T(0);
   for (const auto& q : {p1, p2, p3}) edge = std::max(edge, (q - p0).norm());
   if (!(std::abs(det) > kDegenerate<T> * edge * edge * edge)) return wideTetrahedron(s, edge);
-  const Vec3<T> o = Vec3<T>::Zero();
-  return tetrahedronFromWeights(s, {tripleProduct<T>(p1 - o, p2 - o, p3 - o) / det,
-                                    tripleProduct<T>(p0 - o, p3 - o, p2 - o) / det,
-                                    tripleProduct<T>(p0 - o, p1 - o, p3 - o) / det,
-                                    tripleProduct<T>(p0 - o, p2 - o, p1 - o) / det});
+  return tetrahedronFromWeights(s, originWeights<T>(p0, p1, p2, p3, det));
 }
 
 }  // namespace
