@@ -43,7 +43,7 @@ bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
 // Two closed solids, the fast path (solid_pairs.h): at most one contact, no buffer; contact geometry only when
 // asked for. With `resultHeldContacts` a miss returns their count and bad input 0: the table must tell them apart.
 template <class S>
-detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact,
+[[gnu::always_inline]] inline detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact,
                              bool resultHeldContacts, bool& added, ::fcl::CollisionResult<S>& result) {
   if (!withContact) {
     const detail::Answer answer = detail::solidOverlap(a, b, resultHeldContacts, added);
@@ -79,31 +79,14 @@ bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const detail::Convert
   return true;
 }
 
-}  // namespace
-
-template <typename S>
-std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
-                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
-                    const Options& options) {
+// Everything off the solid fast path: meshes and two-sided planes (gq), FCL's own contacts, cost sources and what gq
+// does not model (FCL). Out of line: the fast path's frame stays small (inline, its saved registers cost every call).
+template <class S>
+[[gnu::noinline]] std::size_t collideOthers(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                                            const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                            const ::fcl::CollisionRequest<S>& request,
+                                            ::fcl::CollisionResult<S>& result, bool fclContact) {
   using detail::Conversion;
-  if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
-  // FCL's CollisionRequest::isSatisfied (no cost sources, a collision, num_max_contacts reached) on one count.
-  const std::size_t before = result.numContacts();
-  if (!request.enable_cost && before > 0 && request.num_max_contacts <= before) return before;
-  // Bad input (docs/fcl.md) writes nothing and returns 0, before anything reaches FCL (which crashes on it); the
-  // solid path validates the numbers it reads (solid_pairs.h), the others check the transforms here.
-  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
-  const bool fclContact = request.enable_contact && contactFromFcl(s1, s2, options);
-  if (detail::isSolid(s1) && detail::isSolid(s2) && !request.enable_cost && !fclContact) {
-    bool added = false;
-    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact,
-                          before > 0, added, result)) {
-      case detail::Answer::Done: detail::countGq(); return before + added;
-      case detail::Answer::Invalid: return 0;
-      case detail::Answer::Unanswered: break;
-    }
-  }
   if (!detail::isFiniteTransforms(tf1, tf2)) return 0;
   detail::Converted<S> a, b;
   const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
@@ -118,19 +101,55 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
   return result.numContacts();
 }
 
+// The whole of collide; each public overload is this function (forced inline: GCC otherwise splits it in two calls).
+template <class S>
+[[gnu::always_inline]] inline std::size_t collidePair(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                        const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                        const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                        const Options& options) {
+  if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
+  // FCL's CollisionRequest::isSatisfied (no cost sources, a collision, num_max_contacts reached) on one count.
+  const std::size_t before = result.numContacts();
+  if (!request.enable_cost && before > 0 && request.num_max_contacts <= before) return before;
+  // Bad input (docs/fcl.md) writes nothing and returns 0, before anything reaches FCL (which crashes on it); the
+  // solid path validates the numbers it reads (solid_pairs.h), the others check the transforms (collideOthers).
+  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
+  const bool fclContact = request.enable_contact && contactFromFcl(s1, s2, options);
+  if (detail::isSolid(s1) && detail::isSolid(s2) && !request.enable_cost && !fclContact) {
+    bool added = false;
+    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact,
+                          before > 0, added, result)) {
+      case detail::Answer::Done: detail::countGq(); return before + added;
+      case detail::Answer::Invalid: return 0;
+      case detail::Answer::Unanswered: break;
+    }
+  }
+  return collideOthers(o1, tf1, o2, tf2, request, result, fclContact);
+}
+
+}  // namespace
+
+template <typename S>
+std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                    const Options& options) {
+  return collidePair(o1, tf1, o2, tf2, request, result, options);
+}
+
 template <typename S>
 std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
                     const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
                     const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
-  return collide(o1, tf1, o2, tf2, request, result, Options());
+  return collidePair(o1, tf1, o2, tf2, request, result, Options());
 }
 
 template <typename S>
 std::size_t collide(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
                     const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
   if (!o1 || !o2) return 0;  // bad input: nothing written
-  return collide(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
-                 o2->getTransform(), request, result, Options());
+  return collidePair(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
+                     o2->getTransform(), request, result, Options());
 }
 
 template std::size_t collide<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,

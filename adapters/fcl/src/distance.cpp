@@ -38,6 +38,23 @@ Status deepestContact(const detail::Converted<S>& a, const Transform<S>& pa, con
   return s;
 }
 
+// FCL's DistanceRequest::isSatisfied and DistanceResult::update (the smaller distance wins), on the result's public
+// fields as FCL 0.7 defines them: the library's out-of-line copies cost a call each on the fast path.
+template <class S> bool satisfied(const ::fcl::DistanceResult<S>& result) { return result.min_distance <= S(0); }
+
+template <class S>
+void keepSmaller(S distance, const ::fcl::CollisionGeometry<S>* o1, const ::fcl::CollisionGeometry<S>* o2,
+                 const DistanceResult<S>* points, ::fcl::DistanceResult<S>& result) {
+  if (!(result.min_distance > distance)) return;
+  result.min_distance = distance;
+  result.o1 = o1;
+  result.o2 = o2;
+  result.b1 = result.b2 = detail::kNoPrimitive;
+  if (!points) return;
+  result.nearest_points[0] = points->point0;
+  result.nearest_points[1] = points->point1;
+}
+
 // Two closed solids, the fast path (solid_pairs.h).
 template <class S>
 S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
@@ -55,10 +72,7 @@ S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1, cons
       return detail::fclDistance(o1, tf1, o2, tf2, request, result);
   }
   detail::countGq();
-  if (withPoints)
-    result.update(d.distance, o1, o2, detail::kNoPrimitive, detail::kNoPrimitive, d.point0, d.point1);
-  else
-    result.update(d.distance, o1, o2, detail::kNoPrimitive, detail::kNoPrimitive);
+  keepSmaller(d.distance, o1, o2, withPoints ? &d : nullptr, result);
   return result.min_distance;
 }
 
@@ -71,7 +85,7 @@ S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf
   using detail::Conversion;
   // Bad input writes nothing and returns what FCL returns for a pair it cannot answer (docs/fcl.md).
   constexpr S kNothing = std::numeric_limits<S>::max();
-  if (request.isSatisfied(result)) return result.min_distance;
+  if (satisfied(result)) return result.min_distance;  // request.isSatisfied(result)
   const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
   if (detail::isSolid(s1) && detail::isSolid(s2)) return solidDistance(s1, o1, tf1, s2, o2, tf2, request, result);
   if (!detail::isFiniteTransforms(tf1, tf2)) return kNothing;

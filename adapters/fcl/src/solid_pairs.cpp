@@ -39,10 +39,6 @@ template <class S> bool finiteTranslation(const Isometry<S>& tf) {
   return m[12] * S(0) + m[13] * S(0) + m[14] * S(0) == S(0);
 }
 
-// All sixteen entries, in SIMD packets (the 4x4 matrix is contiguous; a scalar loop over the 3x4 block cost twice as
-// much).
-template <class S> bool finiteMatrix(const Isometry<S>& tf) { return (tf.matrix().array() * S(0)).sum() == S(0); }
-
 // The linear part's columns are orthonormal: the Gram matrix R^T R = I within the façade's unit-quaternion tolerance
 // carried over to the matrix. A rotation scaled by 1 + e has Gram (1 + e)^2 I, about 2e on each diagonal entry, so
 // the Frobenius norm of R^T R - I may reach 2 sqrt(3) kUnitQuaternion. A reflection passes: sphere, box and capsule
@@ -85,13 +81,12 @@ template <class S> bool capsuleSized(const Solid<S>& s) {
 }
 
 // A sphere's transform: finite (its rotation does not move it). A box's or capsule's: a finite translation and an
-// orthonormal linear part.
-template <class S> bool spherePose(const Solid<S>& s) { return finiteMatrix(*s.tf); }
+// orthonormal linear part. With a sphere on one side, both transforms are checked finite in one reduction (half
+// the instructions of two), then the other side's linear part orthonormal.
 template <class S> bool rigidPose(const Solid<S>& s) { return finiteTranslation(*s.tf) && isOrthonormal(*s.tf); }
-
-template <class S> bool readSphere(const Solid<S>& s, S& radius) {
-  radius = sphereRadius(s);
-  return positive(radius) && spherePose(s);
+template <class S> bool spherePoses(const Solid<S>& a, const Solid<S>& b) { return isFiniteTransforms(*a.tf, *b.tf); }
+template <class S> bool sphereRigidPoses(const Solid<S>& sphere, const Solid<S>& rigid) {
+  return isFiniteTransforms(*sphere.tf, *rigid.tf) && isOrthonormal(*rigid.tf);
 }
 
 template <class S> bool readBox(const Solid<S>& s, Vec3<S>& half) {
@@ -156,12 +151,12 @@ template <class S> Answer sphereSphereOverlap(const Solid<S>& a, const Solid<S>&
   const S ra = sphereRadius(a), rb = sphereRadius(b);
   if (!positive(ra) || !positive(rb)) return Answer::Invalid;
   hit = k::overlapSphereSphere<S>(Vec3<S>::Zero(), ra, b.tf->translation() - a.tf->translation(), rb);
-  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && spherePose(b); });
+  return validatedHit(hit || checkMiss, [&] { return spherePoses(a, b); });
 }
 
 template <class S> Answer sphereSphereDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  S ra, rb;
-  if (!readSphere(a, ra) || !readSphere(b, rb)) return Answer::Invalid;
+  const S ra = sphereRadius(a), rb = sphereRadius(b);
+  if (!positive(ra) || !positive(rb) || !spherePoses(a, b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
   k::ballsDistance<S>(Vec3<S>::Zero(), ra, b.tf->translation() - origin, rb, Vec3<S>::UnitX(), out);
   shiftPoints(origin, ask.points, out);
@@ -173,14 +168,14 @@ template <class S> Answer sphereCapsuleOverlap(const Solid<S>& a, const Solid<S>
   if (!positive(ra) || !capsuleSized(b)) return Answer::Invalid;
   const k::CapsuleAxis<S> cb = capsuleAxis(b, Vec3<S>(a.tf->translation()));
   hit = k::overlapSphereCapsule<S>(Vec3<S>::Zero(), ra, cb.centre, cb.halfHeight * cb.axis, cb.radius);
-  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return sphereRigidPoses(a, b); });
 }
 
 template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  S ra;
-  k::CapsuleAxis<S> cb;
+  const S ra = sphereRadius(a);
+  if (!positive(ra) || !capsuleSized(b) || !sphereRigidPoses(a, b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
-  if (!readSphere(a, ra) || !readCapsule(b, origin, cb)) return Answer::Invalid;
+  const k::CapsuleAxis<S> cb = capsuleAxis(b, origin);
   k::distanceSphereCapsule<S>(Vec3<S>::Zero(), ra, cb, out);
   shiftPoints(origin, ask.points, out);
   return Answer::Done;
@@ -191,13 +186,13 @@ template <class S> Answer sphereBoxOverlap(const Solid<S>& a, const Solid<S>& b,
   const Vec3<S> hb = boxHalf(b);
   if (!positive(ra) || !boxSized(hb)) return Answer::Invalid;
   hit = k::overlapSphereBox<S>(inFrame(*b.tf, Vec3<S>(a.tf->translation())), ra, hb);
-  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return sphereRigidPoses(a, b); });
 }
 
 template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  S ra;
-  Vec3<S> hb;
-  if (!readSphere(a, ra) || !readBox(b, hb)) return Answer::Invalid;
+  const S ra = sphereRadius(a);
+  const Vec3<S> hb = boxHalf(b);
+  if (!positive(ra) || !boxSized(hb) || !sphereRigidPoses(a, b)) return Answer::Invalid;
   DistanceResult<S> local;
   k::distanceSphereBox<S>(inFrame(*b.tf, Vec3<S>(a.tf->translation())), ra, hb, local);
   frameToWorld(*b.tf, ask.points, local, out);
@@ -501,13 +496,14 @@ template <class S> Answer sphereCylinderOverlap(const Solid<S>& a, const Solid<S
   S radius, halfHeight;
   if (!positive(ra) || !cylinderSize(b, radius, halfHeight)) return Answer::Invalid;
   hit = k::overlapSphereCylinder<S>(sphereInCylinder(a, b), ra, radius, halfHeight);
-  return validatedHit(hit || checkMiss, [&] { return spherePose(a) && rigidPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return sphereRigidPoses(a, b); });
 }
 
 template <class S>
 Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  S ra, radius, halfHeight;
-  if (!readSphere(a, ra) || !cylinderSize(b, radius, halfHeight) || !rigidPose(b)) return Answer::Invalid;
+  const S ra = sphereRadius(a);
+  S radius, halfHeight;
+  if (!positive(ra) || !cylinderSize(b, radius, halfHeight) || !sphereRigidPoses(a, b)) return Answer::Invalid;
   DistanceResult<S> local;
   k::distanceSphereCylinder<S>(sphereInCylinder(a, b), ra, radius, halfHeight, local);
   local.normal = fclFromAxisX(local.normal);
