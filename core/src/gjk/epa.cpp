@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "gjk/gjk.h"
+#include "gjk/pair_scale.h"
 #include "gjk/simplex.h"
 #include "gjk/support_map.h"
 #include "gjk/wide.h"
@@ -353,11 +354,34 @@ void refineFromFaces(const Polytope<T>& poly, SupportMap<T>& sa, SupportMap<T>& 
   osculatingSteps(sa, sb, Vec3<T>(upperPoint.d.normalized()), upper, upperPoint);
 }
 
+// A pair outside the scales GJK/EPA square safely runs rescaled (pair_scale.h), its start simplex with it.
+template <class T>
+[[gnu::noinline]] void penetrationRescaled(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkSimplex<T>* start,
+                                           T factor, EpaResult<T>& r) {
+  GjkSimplex<T> scaledStart;
+  if (start) {
+    scaledStart = *start;
+    scaleSimplex(scaledStart, factor);
+  }
+  const ConvexShape<T> sa = scaledShape(a, factor), sb = scaledShape(b, factor);
+  r = epaPenetration(sa, sb, start ? &scaledStart : nullptr);
+  const T back = T(1) / factor;
+  r.depth *= back;
+  r.point0 *= back;
+  r.point1 *= back;
+  keepHints(sa, a), keepHints(sb, b);
+}
+
 }  // namespace
 
 template <class T>
 EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkSimplex<T>* start) {
+  const T length = gjkPairLength(a, b);
   EpaResult<T> r;
+  if (needsRescale(length)) {
+    penetrationRescaled(a, b, start, rescaleFactor(length), r);
+    return r;
+  }
   GjkSimplex<T> s;
   if (start && start->size > 0) {
     s = *start;
@@ -374,7 +398,7 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
     }
     s = g.simplex;
   }
-  const T tolerance = gjkTolerance(a, b);
+  const T tolerance = gjkToleranceFor(length);
   SupportMap<T> sa(a), sb(b);
   Vec3<T> flatNormal = Vec3<T>::UnitX();
   Polytope<T> poly;

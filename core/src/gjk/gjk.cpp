@@ -15,6 +15,7 @@
 
 #include "gjk/boolean_simplex.h"
 #include "gjk/gjk.h"
+#include "gjk/pair_scale.h"
 #include "gjk/simplex.h"
 #include "gjk/support_map.h"
 
@@ -79,14 +80,50 @@ template <class T> struct Momentum {
   }
 };
 
+// A pair outside the scales GJK squares safely runs rescaled (pair_scale.h), its answer back in the caller's frame.
+template <class T> void unscale(GjkResult<T>& r, T back) {
+  r.distance *= back;
+  r.point0 *= back;
+  r.point1 *= back;
+  r.errorBound *= back;
+  scaleSimplex(r.simplex, back);
+}
+
+template <class T>
+[[gnu::noinline]] void distanceRescaled(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache,
+                                        T stopTolerance, T factor, GjkResult<T>& r) {
+  const ConvexShape<T> sa = scaledShape(a, factor), sb = scaledShape(b, factor);
+  r = gjkDistance(sa, sb, cache, stopTolerance * factor);
+  unscale(r, T(1) / factor);
+  keepHints(sa, a), keepHints(sb, b);
+}
+
+template <class T>
+[[gnu::noinline]] bool overlapRescaled(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness,
+                                       T factor) {
+  const ConvexShape<T> sa = scaledShape(a, factor), sb = scaledShape(b, factor);
+  const bool overlapping = gjkOverlap(sa, sb, witness);
+  if (overlapping && witness) {
+    scaleSimplex(witness->simplex, T(1) / factor);
+    witness->coreDistanceUpper /= factor;
+  }
+  keepHints(sa, a), keepHints(sb, b);
+  return overlapping;
+}
+
 }  // namespace
 
 template <class T>
 GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache, T stopTolerance) {
-  const T tolerance = gjkTolerance(a, b);
+  const T length = gjkPairLength(a, b);
+  GjkResult<T> r;
+  if (needsRescale(length)) {
+    distanceRescaled(a, b, cache, stopTolerance, rescaleFactor(length), r);
+    return r;
+  }
+  const T tolerance = gjkToleranceFor(length);
   const T gapTolerance = std::max(tolerance, stopTolerance);  // overlap is still decided at `tolerance`
   SupportMap<T> sa(a), sb(b);
-  GjkResult<T> r;
   GjkSimplex<T>& s = r.simplex;
   Vec3<T> v = initialDirection(a, b, cache);
   std::array<T, 4> lambda = {T(1), T(0), T(0), T(0)};
@@ -199,12 +236,14 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
 }
 
 template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness) {
+  const T length = gjkPairLength(a, b);
+  if (needsRescale(length)) return overlapRescaled(a, b, witness, rescaleFactor(length));
   // Positive answers leave the evidence: an enclosing simplex, or |v| (an upper bound of the cores' distance).
   const auto overlapping = [&](const GjkSimplex<T>& simplex, bool enclosing, T upper) {
     if (witness) *witness = {enclosing, simplex, upper};
     return true;
   };
-  const T tolerance = gjkTolerance(a, b);
+  const T tolerance = gjkToleranceFor(length);
   const T margins = a.margin + b.margin;
   SupportMap<T> sa(a), sb(b);
   GjkSimplex<T> s;

@@ -9,6 +9,7 @@
 //  - normal is unit and points from shape a towards shape b;
 //  - point0 lies on a's surface, point1 on b's surface, and point1 = point0 + distance * normal;
 //  - for penetration (distance < 0), translating b by depth * normal (or a by -depth * normal) separates them.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -61,11 +62,14 @@ template <class T> struct ConvexShape {
   bool hullScaled = false;                      // false: hullScale is the identity
   const CustomGeometryCallbacks<T>* custom = nullptr;  // Kind::Custom
   T size = T(0);                                // length scale of the shape (bounding radius incl. margin)
+  T localScale = T(1);                          // factor on the local core's points (a rescaled pair, pair_scale.h)
   mutable std::uint32_t climbStart = 0;         // hill-climbing warm start (last support vertex)
 
   // Point of the core farthest along `dir` (world, need not be unit), in world space.
-  Vec3<T> support(const Vec3<T>& dir) const { return pose.transform(supportLocal(pose.rotateInv(dir))); }
-  // Same in the shape's local frame.
+  Vec3<T> support(const Vec3<T>& dir) const {
+    return pose.transform(Vec3<T>(localScale * supportLocal(pose.rotateInv(dir))));
+  }
+  // Same in the shape's local frame, before localScale.
   Vec3<T> supportLocal(const Vec3<T>& dirLocal) const;
   // A point inside the core (world).
   Vec3<T> center() const;
@@ -146,11 +150,21 @@ template <class T> struct EpaResult {
 template <class T>
 EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkSimplex<T>* start = nullptr);
 
-// GJK/EPA stopping tolerance for a pair (see kGjkRoundoffUlps): gjkRelativeTolerance times the pair's length scale.
-template <class T> T gjkTolerance(const ConvexShape<T>& a, const ConvexShape<T>& b);
 template <class T> constexpr T gjkRelativeTolerance() {
   const T floor = T(kGjkRoundoffUlps) * std::numeric_limits<T>::epsilon();
   return T(tol::Rel<T>::kGjkTolerance) > floor ? T(tol::Rel<T>::kGjkTolerance) : floor;
+}
+// A pair's length scale: the larger bounding radius, or the centres' distance (the rounding of world-space support
+// points grows with their distance from the origin too).
+template <class T> T gjkPairLength(const ConvexShape<T>& a, const ConvexShape<T>& b) {
+  return std::max({a.size, b.size, (a.pose.p - b.pose.p).norm()});
+}
+// GJK/EPA stopping tolerance for a pair (see kGjkRoundoffUlps): gjkRelativeTolerance times the pair's length scale.
+template <class T> T gjkToleranceFor(T length) {
+  return gjkRelativeTolerance<T>() * std::max(length, std::numeric_limits<T>::min());
+}
+template <class T> T gjkTolerance(const ConvexShape<T>& a, const ConvexShape<T>& b) {
+  return gjkToleranceFor(gjkPairLength(a, b));
 }
 
 }  // namespace gq::detail

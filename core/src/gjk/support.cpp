@@ -34,8 +34,9 @@ template <class T> Vec3<T> ConvexShape<T>::supportLocal(const Vec3<T>& d) const 
 
 template <class T> Vec3<T> ConvexShape<T>::center() const {
   switch (kind) {
-    case Kind::Hull: return pose.transform(hullScaled ? Vec3<T>(hullScale * hull->center) : hull->center);
-    case Kind::Custom: return pose.transform(custom->localBounds().center());
+    case Kind::Hull:
+      return pose.transform(Vec3<T>(localScale * (hullScaled ? Vec3<T>(hullScale * hull->center) : hull->center)));
+    case Kind::Custom: return pose.transform(Vec3<T>(localScale * custom->localBounds().center()));
     default: return pose.p;
   }
 }
@@ -83,18 +84,9 @@ template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const
   return s;
 }
 
-template <class T> T gjkTolerance(const ConvexShape<T>& a, const ConvexShape<T>& b) {
-  const T rel = gjkRelativeTolerance<T>();
-  // Rounding of world-space support points grows with their distance from the origin too.
-  const T scale = std::max({a.size, b.size, (a.pose.p - b.pose.p).norm()});
-  return rel * std::max(scale, std::numeric_limits<T>::min());
-}
-
 template struct ConvexShape<float>;
 template struct ConvexShape<double>;
 template ConvexShape<float> makeConvexShape<float>(const Geometry<float>&, const Transform<float>&);
 template ConvexShape<double> makeConvexShape<double>(const Geometry<double>&, const Transform<double>&);
-template float gjkTolerance<float>(const ConvexShape<float>&, const ConvexShape<float>&);
-template double gjkTolerance<double>(const ConvexShape<double>&, const ConvexShape<double>&);
 
 }  // namespace gq::detail

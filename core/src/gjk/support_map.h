@@ -4,6 +4,7 @@
 // itself on small shapes. SupportMap folds them once per query into two 3x3 matrices:
 //   hull:   s(d) = R S v* + t  with  v* = argmax_v (S R^T d) . v   (S symmetric, so d.(R S v) = (S R^T d).v)
 //   others: s(d) = R s_local(R^T d) + t
+// (times the shape's localScale on the local point, folded into the first matrix: a rescaled pair, pair_scale.h)
 // and dispatches on the shape kind with a switch (custom shapes call their callbacks). Hull supports hill-climb from
 // the previous answer, so consecutive GJK/EPA directions (which are close) cost a step or two each.
 //
@@ -109,6 +110,7 @@ template <class T> class SupportMap {
       toWorld_ = r;
       toLocal_ = r.transpose();
     }
+    if (s.localScale != T(1)) toWorld_ *= s.localScale;  // a rescaled pair: local points grow, directions do not
     climb_ = hull_ && hull_->vertices.size() > kHillClimbMinVertices && hasAdjacency(*hull_);
   }
 
