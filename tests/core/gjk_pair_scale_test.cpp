@@ -10,6 +10,7 @@
 //    float and 2^-400 to 2^240 in double.
 #include "gjk_test_shapes.h"
 
+#include "gjk/gjk.h"
 #include "gq/custom_shapes.h"
 
 namespace {
@@ -153,6 +154,29 @@ TYPED_TEST(GjkPairScale, APairScaledByAPowerOfTwoAnswersTheScaledAnswer) {
         if (unit.penetrating) EXPECT_GT(scaled.direction.dot(unit.direction), 1 - 1e-3);
         EXPECT_GT(scaled.normal.dot(unit.normal), 1 - 1e-3);
       }
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// A float custom shape wider than 2e19 has a squared bounding radius past FLT_MAX: its GJK size was inf, so a pair's
+// tolerance was inf and a sphere inside "overlapped" at once, 0 deep (the fuzz finding, replayed in
+// FuzzPairFindings: a sphere inside a cylinder 1e30 wide answered its own radius, 5.3, for a depth of 1e30). The
+// size is the bounding radius, sqrt(h^2 + 2 r^2) for a cylinder (long double here).
+TEST(GjkPairScale, FloatCustomShapesBeyond1e19HaveAFiniteSize) {
+  using T = float;
+  for (const T radius : {1e10f, 1e18f, 1e20f, 1e25f, 1e30f, 1e38f}) {
+    const T halfHeight = radius / 4;
+    const gq::Geometry<T> cylinder =
+        gq::CustomGeometry<T>(std::make_shared<gq::CylinderCallbacks<T>>(radius, halfHeight));
+    const gq::Geometry<T> cone = gq::CustomGeometry<T>(std::make_shared<gq::ConeCallbacks<T>>(radius, halfHeight));
+    const L exact = std::sqrt(L(halfHeight) * L(halfHeight) + 2 * L(radius) * L(radius));
+    for (const auto* g : {&cylinder, &cone}) {
+      const T size = gq::detail::makeConvexShape(*g, Transform<T>()).size;
+      EXPECT_NEAR(double(size / exact), 1.0, 1e-6) << "radius " << radius;
     }
   }
 }

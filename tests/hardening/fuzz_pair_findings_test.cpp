@@ -227,3 +227,55 @@ TEST(FuzzPairFindings, UnitCubeInsideTheCapOfAHugeCapsuleIsItsRadiusDeep) {
   ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
   EXPECT_NEAR(d.distance, -1e30, tol);
 }
+
+// Hulls scaled past T's precision (penetration/degenerate_hull.h; DegenerateHullPenetration.* covers the family).
+// A double sphere of radius 2.0625 centred on a cube hull scaled (0.125, 1e-266, 7.9) by a rotation 1e-65 off the
+// identity: pushed out through the sheet's face, 2.0625 (the radius; the sheet is 1e-266 thick), as distance says.
+// Penetration answered 1.9375 along the sheet, out through its rim 0.125 away, which leaves them overlapping.
+TEST(FuzzPairFindings, SphereCentredOnAHullScaledToASheetIsPushedOutThroughTheSheet) {
+  const Pair<double> f = knownPair<double>("fuzz_pair_queries_double_sphere_centred_on_flat_hull.bin");
+  ASSERT_EQ(f.g0.type(), gq::GeometryType::Sphere);
+  ASSERT_EQ(f.g1.type(), gq::GeometryType::ConvexMesh);
+  const double radius = f.g0.get<gq::SphereGeometry<double>>().radius;
+  const auto& sheet = f.g1.get<gq::ConvexMeshGeometry<double>>();
+  const Eigen::Vector3d normal = f.p1.q.normalized() * (sheet.scale.rotation.normalized() * Eigen::Vector3d::UnitY());
+  gq::PenetrationResult<double> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  ASSERT_TRUE(pen.penetrating);
+  EXPECT_NEAR(pen.depth, radius, 1e-12);
+  EXPECT_NEAR(std::abs(pen.direction.dot(normal)), 1.0, 1e-12);
+  gq::DistanceResult<double> d;
+  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_NEAR(d.distance, -radius, 1e-12);
+}
+
+// A float sphere of radius 4.19 beside a 10-vertex hull scaled (9.0e-36, 3.2e-12, 7.56), a needle about 43 long:
+// apart, 4.488 (overlap and distance agreed; the same distance in double). Penetration answered 2.013 deep.
+TEST(FuzzPairFindings, SphereBesideAHullScaledToANeedleIsApartInEveryFamily) {
+  const FloatPair f = knownPair<float>("fuzz_pair_queries_float_sphere_beside_needle_hull_penetration.bin");
+  bool overlapping = true;
+  ASSERT_TRUE(gq::overlap(f.g0, f.p0, f.g1, f.p1, overlapping).ok());
+  EXPECT_FALSE(overlapping);
+  gq::PenetrationResult<float> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_FALSE(pen.penetrating);
+  gq::DistanceResult<float> d;
+  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_NEAR(d.distance, 4.488f, 1e-3f);
+}
+
+// A float sphere (radius 5.3) 7.7e8 from the centre of a custom cylinder of radius and half-height 1e30 (session 17,
+// found once the harness stopped skipping float pairs of scale 1e9+): overlap said yes, penetration "not
+// penetrating" and distance non-finite. The cylinder's GJK size overflowed (|(h, r, r)|^2 > FLT_MAX) and its support
+// squared direction components; in float the depth is the radius, 1e30 (the offset is below its resolution).
+TEST(FuzzPairFindings, SphereInsideAFloatCylinder1e30WideIsItsRadiusDeep) {
+  const FloatPair f = knownPair<float>("fuzz_pair_queries_float_sphere_inside_1e30_cylinder_size_overflow.bin");
+  ASSERT_EQ(f.g1.type(), gq::GeometryType::Custom);
+  gq::PenetrationResult<float> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  ASSERT_TRUE(pen.penetrating);
+  EXPECT_NEAR(double(pen.depth), 1e30, 1e-3 * 1e30);
+  gq::DistanceResult<float> d;
+  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_NEAR(double(d.distance), -1e30, 1e-3 * 1e30);
+}

@@ -24,6 +24,15 @@ template <class T> inline bool tryUnit(const Vec3<T>& d, Vec3<T>& unit) {
   return true;
 }
 
+// |d| where |d|^2 may over- or underflow (then by the largest component first); 0, inf or NaN as d has them.
+template <class T> inline T rangeSafeNorm(const Vec3<T>& d) {
+  const T len2 = d.squaredNorm();
+  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) return std::sqrt(len2);
+  const T scale = d.cwiseAbs().maxCoeff();
+  if (!(scale > T(0)) || !std::isfinite(scale)) return scale;
+  return scale * (d / scale).norm();
+}
+
 // d / |d|, or `fallback` for d = 0 (or non-finite d).
 template <class T> inline Vec3<T> unitOr(const Vec3<T>& d, const Vec3<T>& fallback) {
   Vec3<T> unit;

@@ -6,6 +6,7 @@
 // form (see clipNappe).
 #include <cmath>
 
+#include "common/unit_vector.h"
 #include "custom/ray_interval.h"
 #include "gq/custom_shapes.h"
 
@@ -62,12 +63,18 @@ template <class T> Bounds3<T> ConeCallbacks<T>::localBounds() const {
   return Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>(halfHeight_, radius_, radius_));
 }
 
+// On the unit direction u (tryUnit: GJK's directions reach any magnitude, whose squares over- or underflow): the
+// apex's value u.x h against the rim's -u.x h + r |u_yz|.
 template <class T> Vec3<T> ConeCallbacks<T>::support(const Vec3<T>& d) const {
-  const T radial = std::sqrt(d.y() * d.y() + d.z() * d.z());
-  const T apex = d.x() * halfHeight_, rim = -d.x() * halfHeight_ + radius_ * radial;
-  if (apex >= rim) return Vec3<T>(halfHeight_, T(0), T(0));
-  if (radial == T(0)) return Vec3<T>(-halfHeight_, T(0), T(0));
-  return Vec3<T>(-halfHeight_, radius_ * d.y() / radial, radius_ * d.z() / radial);
+  const Vec3<T> apex(halfHeight_, T(0), T(0));
+  Vec3<T> u, rim;
+  if (!detail::tryUnit(d, u)) return apex;
+  const Vec3<T> yz(T(0), u.y(), u.z());
+  const bool round = detail::tryUnit(yz, rim);
+  const T radial = round ? rim.dot(yz) : T(0);
+  if (u.x() * halfHeight_ >= -u.x() * halfHeight_ + radius_ * radial) return apex;
+  if (!round) return Vec3<T>(-halfHeight_, T(0), T(0));
+  return Vec3<T>(-halfHeight_, radius_ * rim.y(), radius_ * rim.z());
 }
 
 template <class T>

@@ -4,7 +4,9 @@
 // (overlap/sphere_cylinder.cpp); with a box: the certificates of overlap/cylinder_box.cpp, which decide most poses
 // without GJK.
 #include <cmath>
+#include <limits>
 
+#include "common/unit_vector.h"
 #include "custom/ray_interval.h"
 #include "gq/custom_shapes.h"
 #include "overlap/overlap.h"
@@ -18,11 +20,19 @@ template <class T> Bounds3<T> CylinderCallbacks<T>::localBounds() const {
   return Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>(halfHeight_, radius_, radius_));
 }
 
+// The rim direction (d.y, d.z) / |(d.y, d.z)|; where its squared length is subnormal or overflows, by tryUnit: GJK's
+// directions reach any magnitude (concentric shapes give tiny ones), and a float component under 1e-19 or over 1e19
+// lost the rim (a float sphere inside a cylinder 1e30 wide was "apart").
 template <class T> Vec3<T> CylinderCallbacks<T>::support(const Vec3<T>& d) const {
-  const T radial = std::sqrt(d.y() * d.y() + d.z() * d.z());
   const T x = d.x() < T(0) ? -halfHeight_ : halfHeight_;
-  if (radial == T(0)) return Vec3<T>(x, T(0), T(0));
-  return Vec3<T>(x, radius_ * d.y() / radial, radius_ * d.z() / radial);
+  const T radialSq = d.y() * d.y() + d.z() * d.z();
+  if (radialSq >= std::numeric_limits<T>::min() && radialSq <= std::numeric_limits<T>::max()) {
+    const T radial = std::sqrt(radialSq);
+    return Vec3<T>(x, radius_ * d.y() / radial, radius_ * d.z() / radial);
+  }
+  Vec3<T> rim;
+  if (!detail::tryUnit(Vec3<T>(T(0), d.y(), d.z()), rim)) return Vec3<T>(x, T(0), T(0));
+  return Vec3<T>(x, radius_ * rim.y(), radius_ * rim.z());
 }
 
 template <class T>

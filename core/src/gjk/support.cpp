@@ -1,6 +1,7 @@
 // Support mappings of the convex cores: point (sphere), segment (capsule), box, scaled convex hull, custom.
 #include <cmath>
 
+#include "common/unit_vector.h"
 #include "gjk/gjk.h"
 #include "gjk/support_map.h"
 
@@ -17,7 +18,11 @@ template <class T> Vec3<T> supportHull(const ConvexShape<T>& s, const Vec3<T>& d
   return s.hullScaled ? Vec3<T>(s.hullScale * hull.vertices[v]) : hull.vertices[v];
 }
 
-template <class T> T boundsRadius(const Bounds3<T>& b) { return b.min.cwiseAbs().cwiseMax(b.max.cwiseAbs()).norm(); }
+// Range-safe: a float custom shape 2e19+ across has a squared radius past FLT_MAX (its size was inf, so GJK's
+// tolerance was too and any pair with it "overlapped" at once, 0 deep).
+template <class T> T boundsRadius(const Bounds3<T>& b) {
+  return rangeSafeNorm(Vec3<T>(b.min.cwiseAbs().cwiseMax(b.max.cwiseAbs())));
+}
 
 }  // namespace
 

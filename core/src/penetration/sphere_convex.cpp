@@ -1,12 +1,17 @@
-// Sphere/convex MTD: exact (point core + radius against the hull, see polytope.h).
+// Sphere/convex MTD: exact (point core + radius against the hull, see polytope.h); hulls scaled past
+// T's precision by GJK/EPA (degenerate_hull.h).
 #include "penetration/penetration.h"
 #include "overlap/polytope.h"
+#include "penetration/degenerate_hull.h"
 
 namespace gq::detail {
 
 template <class T>
 bool penetrationSphereConvex(const SphereGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1,
                              Vec3<T>& direction, T& depth) {
+  bool penetrating = false;
+  if (scaledPastPrecision(g1.scale) && penetrationBySupport(g0, p0, g1, p1, penetrating, direction, depth))
+    return penetrating;
   Polytope<T>& poly = scratchPolytope<T>(0);
   buildConvexPolytope(g1, p1, poly);
   return penetrationRoundedPolytope(sphereCore(g0, p0), poly, direction, depth);
