@@ -43,8 +43,9 @@ bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
 // Two closed solids, the fast path (solid_pairs.h): at most one contact, no buffer; contact geometry only when
 // asked for. With `resultHeldContacts` a miss returns their count and bad input 0: the table must tell them apart.
 template <class S>
-[[gnu::always_inline]] inline detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b, bool withContact,
-                             bool resultHeldContacts, bool& added, ::fcl::CollisionResult<S>& result) {
+[[gnu::always_inline]] inline detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b,
+                                                          bool withContact, bool resultHeldContacts, bool& added,
+                                                          ::fcl::CollisionResult<S>& result) {
   if (!withContact) {
     const detail::Answer answer = detail::solidOverlap(a, b, resultHeldContacts, added);
     if (answer == detail::Answer::Done && added)
@@ -96,17 +97,20 @@ template <class S>
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost || fclContact ||
       (a.isSolid() && b.isSolid()))
     return detail::fclCollide(o1, tf1, o2, tf2, request, result);
-  if (!collideGeneral(o1, a, pa, o2, b, pb, request, result)) return detail::fclCollide(o1, tf1, o2, tf2, request, result);
+  if (!collideGeneral(o1, a, pa, o2, b, pb, request, result))
+    return detail::fclCollide(o1, tf1, o2, tf2, request, result);
   detail::countGq();
   return result.numContacts();
 }
 
 // The whole of collide; each public overload is this function (forced inline: GCC otherwise splits it in two calls).
 template <class S>
-[[gnu::always_inline]] inline std::size_t collidePair(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
-                        const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-                        const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
-                        const Options& options) {
+[[gnu::always_inline]] inline std::size_t collidePair(const ::fcl::CollisionGeometry<S>* o1,
+                                                     const ::fcl::Transform3<S>& tf1,
+                                                     const ::fcl::CollisionGeometry<S>* o2,
+                                                     const ::fcl::Transform3<S>& tf2,
+                                                     const ::fcl::CollisionRequest<S>& request,
+                                                     ::fcl::CollisionResult<S>& result, const Options& options) {
   if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
   // FCL's CollisionRequest::isSatisfied (no cost sources, a collision, num_max_contacts reached) on one count.
   const std::size_t before = result.numContacts();

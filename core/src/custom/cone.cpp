@@ -5,6 +5,7 @@
 // non-positive set, restricted to w >= 0, is the nappe's interval. Its discriminant is evaluated in a cancellation-free
 // form (see clipNappe).
 #include <cmath>
+#include <limits>
 
 #include "common/unit_vector.h"
 #include "custom/ray_interval.h"
@@ -63,10 +64,20 @@ template <class T> Bounds3<T> ConeCallbacks<T>::localBounds() const {
   return Bounds3<T>::fromCenterExtents(Vec3<T>::Zero(), Vec3<T>(halfHeight_, radius_, radius_));
 }
 
-// On the unit direction u (tryUnit: GJK's directions reach any magnitude, whose squares over- or underflow): the
-// apex's value u.x h against the rim's -u.x h + r |u_yz|.
+// The apex's value d.x h against the base rim's -d.x h + r |d_yz|. GJK's directions reach any magnitude, whose
+// squares or products can leave the range (a float component under 1e-19 or over 1e19): then on the unit direction
+// (tryUnit), with the rim direction by tryUnit too.
 template <class T> Vec3<T> ConeCallbacks<T>::support(const Vec3<T>& d) const {
   const Vec3<T> apex(halfHeight_, T(0), T(0));
+  const T radialSq = d.y() * d.y() + d.z() * d.z();
+  if (radialSq >= std::numeric_limits<T>::min() && radialSq <= std::numeric_limits<T>::max()) {
+    const T radial = std::sqrt(radialSq);
+    const T atApex = d.x() * halfHeight_, atRim = -d.x() * halfHeight_ + radius_ * radial;
+    if (std::isfinite(atApex) && std::isfinite(atRim)) {
+      if (atApex >= atRim) return apex;
+      return Vec3<T>(-halfHeight_, radius_ * d.y() / radial, radius_ * d.z() / radial);
+    }
+  }
   Vec3<T> u, rim;
   if (!detail::tryUnit(d, u)) return apex;
   const Vec3<T> yz(T(0), u.y(), u.z());
