@@ -279,3 +279,32 @@ TEST(FuzzPairFindings, SphereInsideAFloatCylinder1e30WideIsItsRadiusDeep) {
   ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
   EXPECT_NEAR(double(d.distance), -1e30, 1e-3 * 1e30);
 }
+
+// A double sphere of radius 4.9e-299 swept against a triangle mesh scaled by -4.7e-224 at the same place (session
+// 17, a libFuzzer timeout after 3,078,385 executions on the rescaling core): the sweep's bisection for the contact
+// looped forever once its interval was two adjacent doubles (its resolution, GJK's tolerance for a pair 1e-224
+// across, lies far below their spacing near 0.5). It now stops there. The sweep answers, a hit within the mesh's
+// size of the start.
+TEST(FuzzPairFindings, SweepOfATinySphereAgainstATinyMeshTerminates) {
+  const std::string name = "fuzz_pair_queries_double_tiny_sphere_sweep_tiny_mesh_bisection_hang.bin";
+  std::ifstream file(std::string(GQ_SOURCE_DIR) + "/tests/fuzz/known_crashes/" + name, std::ios::binary);
+  ASSERT_TRUE(file.good());
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  gq::fuzz::Bytes in(bytes.data(), bytes.size());
+  ASSERT_FALSE(in.flag());  // double
+  const gq::Geometry<double> g0 = gq::fuzz::geometry<double>(in);
+  const gq::Transform<double> p0 = in.pose<double>();
+  const gq::Geometry<double> g1 = gq::fuzz::geometry<double>(in);
+  const gq::Transform<double> p1 = in.pose<double>();
+  in.flag();  // the distance query's cache flag
+  const gq::Vec3<double> dir = in.direction<double>();
+  const double maxDist = in.scalar<double>();
+  const gq::HitFlags flags = gq::fuzz::hitFlags(in);
+  const double inflation = in.flag() ? in.scalar<double>() : 0.0;
+  ASSERT_EQ(g1.type(), gq::GeometryType::TriangleMesh);
+  gq::SweepHit<double> hit;
+  bool hasHit = false;
+  ASSERT_TRUE(gq::sweep(dir, maxDist, g0, p0, g1, p1, hit, hasHit, flags, inflation).ok());
+  ASSERT_TRUE(hasHit);
+  EXPECT_LE(hit.distance, 1e-222);
+}

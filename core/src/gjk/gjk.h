@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "common/unit_vector.h"
 #include "gq/cooking.h"
 #include "gq/custom.h"
 #include "gq/geometry.h"
@@ -155,9 +156,10 @@ template <class T> constexpr T gjkRelativeTolerance() {
   return T(tol::Rel<T>::kGjkTolerance) > floor ? T(tol::Rel<T>::kGjkTolerance) : floor;
 }
 // A pair's length scale: the larger bounding radius, or the centres' distance (the rounding of world-space support
-// points grows with their distance from the origin too).
+// points grows with their distance from the origin too), range-safe (an offset under 1e-154 in double has a square
+// that underflows: the pair would look smaller than it is, and its rescaled copy larger).
 template <class T> T gjkPairLength(const ConvexShape<T>& a, const ConvexShape<T>& b) {
-  return std::max({a.size, b.size, (a.pose.p - b.pose.p).norm()});
+  return std::max({a.size, b.size, rangeSafeNorm(Vec3<T>(a.pose.p - b.pose.p))});
 }
 // GJK/EPA stopping tolerance for a pair (see kGjkRoundoffUlps): gjkRelativeTolerance times the pair's length scale.
 template <class T> T gjkToleranceFor(T length) {

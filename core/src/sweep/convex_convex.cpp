@@ -44,6 +44,7 @@ ToiResult<T> sweepConvexShapes(const ConvexShape<T>& a, const ConvexShape<T>& b,
     const T resolution = touch;
     while (hi - lo > resolution) {
       const T mid = T(0.5) * (lo + hi);
+      if (!(mid > lo && mid < hi)) break;  // adjacent values: a resolution below T's spacing here cannot be met
       const GjkResult<T> r = distanceAt(mid, nullptr);
       if (isTouching(r)) hi = mid;
       else { lo = mid; rLo = r; }
