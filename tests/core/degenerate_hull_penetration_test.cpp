@@ -123,4 +123,110 @@ TYPED_TEST(DegenerateHullPenetration, SphereBesideANeedleIsApartOrPushedOffItsAx
   }
 }
 
+
+// A box, or a hull of the same cube, in any orientation with its centre in a sheet's plane (within 0.4 min(a, c) of
+// the sheet's centre; half-extents h in [0.2, 0.5]): depth = its support D = sum h_i |n . b_i| along the sheet's
+// normal n. A direction tilted by theta towards the plane costs at least D cos(theta) + (1.8 - |h|) sin(theta) >= D
+// (the sheet reaches 0.6 min(a, c) >= 1.8 beyond the centre in-plane, the box at most |h| <= 0.87 < 0.93). Its
+// face normals are not the sheet's: SAT must find n among the sheet's. Both orders (the sheet on either side).
+TYPED_TEST(DegenerateHullPenetration, BoxAndHullCentredInASheetArePushedOutAlongItsNormal) {
+  using T = TypeParam;
+  Rng rng(2411);
+  const auto cube = unitCube<T>();
+  ASSERT_TRUE(cube);
+  for (int trial = 0; trial < 40; ++trial) {
+    const T a = T(rng.uniform(3, 8)), c = T(rng.uniform(3, 8));
+    const Vec3<T> half(T(rng.uniform(0.2, 0.5)), T(rng.uniform(0.2, 0.5)), T(rng.uniform(0.2, 0.5)));
+    const Eigen::Quaternion<T> sr = scaleRotation<T>(rng, trial);
+    const gq::Geometry<T> sheet = gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(a, tiny<T>(), c), sr));
+    const Transform<T> ps(rng.vec(-4, 4).cast<T>(), rng.rotation().cast<T>());
+    const VL normal = worldAxis(ps, sr, 1), e0 = worldAxis(ps, sr, 0), e2 = worldAxis(ps, sr, 2);
+    const L reach = L(0.4) * L(std::min(a, c));
+    const bool atCentre = trial % 4 == 0;
+    const L u = atCentre ? L(0) : L(rng.uniform(-0.7, 0.7)) * reach;
+    const L w = atCentre ? L(0) : L(rng.uniform(-0.7, 0.7)) * reach;
+    const Vec3<T> centre = (toL(ps.p) + u * e0 + w * e2).template cast<T>();
+    const Transform<T> pb(centre, rng.rotation().cast<T>());
+    const ML boxAxes = pb.q.template cast<L>().normalized().toRotationMatrix();
+    const L depth = half.template cast<L>().dot((boxAxes.transpose() * normal).cwiseAbs());
+    const double tol = tolerance<T>() * (double(std::max(a, c)) + 4);
+    SCOPED_TRACE(testing::Message() << "trial " << trial << " half " << half.transpose());
+    for (const bool hull : {false, true}) {
+      const gq::Geometry<T> solid = hull ? gq::Geometry<T>(gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(half)))
+                                         : gq::Geometry<T>(gq::BoxGeometry<T>(half));
+      SCOPED_TRACE(hull ? "hull" : "box");
+      for (const bool sheetFirst : {false, true}) {
+        SCOPED_TRACE(sheetFirst ? "sheet first" : "solid first");
+        gq::PenetrationResult<T> pen;
+        ASSERT_TRUE((sheetFirst ? gq::computePenetration(pen, sheet, ps, solid, pb)
+                                : gq::computePenetration(pen, solid, pb, sheet, ps)).ok());
+        ASSERT_TRUE(pen.penetrating);
+        EXPECT_NEAR(double(pen.depth), double(depth), tol);
+        EXPECT_NEAR(std::abs(double(pen.direction.template cast<L>().dot(normal))), 1.0, 1e-4);
+      }
+    }
+  }
+}
+
+// A box (or the same cube as a hull) in any orientation beside a needle's middle: the pair's exact MTD by SAT in long
+// double over the complete axis set of a box against a segment (the box's 3 face normals and the 3 crosses of its
+// edges with the segment; the needle's thickness, ~1e-12 of T's rounding, is left out). Both orders.
+TYPED_TEST(DegenerateHullPenetration, BoxAndHullBesideANeedleAreApartOrPushedOffIt) {
+  using T = TypeParam;
+  Rng rng(2412);
+  const auto cube = unitCube<T>();
+  ASSERT_TRUE(cube);
+  int penetrating = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const T length = T(rng.uniform(4, 8));
+    const Vec3<T> half(T(rng.uniform(0.3, 1)), T(rng.uniform(0.3, 1)), T(rng.uniform(0.3, 1)));
+    const Eigen::Quaternion<T> sr = scaleRotation<T>(rng, trial);
+    const gq::Geometry<T> needle =
+        gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(tiny<T>(), T(1e18) * tiny<T>(), length), sr));
+    const Transform<T> pn(rng.vec(-4, 4).cast<T>(), rng.rotation().cast<T>());
+    const VL axis = worldAxis(pn, sr, 2);
+    const L needleHalf = L(length) * sr.template cast<L>().normalized().toRotationMatrix().col(2).cwiseAbs().sum();
+    const VL side = axis.unitOrthogonal();
+    const L d = L(rng.uniform(0.1, 1.5)) * half.template cast<L>().norm(), t = L(rng.uniform(-0.3, 0.3)) * needleHalf;
+    const Transform<T> pb((toL(pn.p) + t * axis + d * side).template cast<T>(), rng.rotation().cast<T>());
+    const VL centre = toL(pb.p), n0 = toL(pn.p) - needleHalf * axis, n1 = toL(pn.p) + needleHalf * axis;
+    const ML boxAxes = pb.q.template cast<L>().normalized().toRotationMatrix();
+    // Overlap along unit u: the smaller push that separates the projections (negative: apart along u).
+    const auto overlapAlong = [&](VL u) {
+      u.normalize();
+      const L r = half.template cast<L>().dot((boxAxes.transpose() * u).cwiseAbs()), c = centre.dot(u);
+      const L lo = std::min(n0.dot(u), n1.dot(u)), hi = std::max(n0.dot(u), n1.dot(u));
+      return std::min(c + r - lo, hi - (c - r));
+    };
+    L exact = std::numeric_limits<L>::max();
+    for (int k = 0; k < 3; ++k) {
+      exact = std::min(exact, overlapAlong(boxAxes.col(k)));
+      const VL cross = boxAxes.col(k).cross(axis);
+      if (cross.norm() > L(1e-9)) exact = std::min(exact, overlapAlong(cross));
+    }
+    SCOPED_TRACE(testing::Message() << "trial " << trial << " half " << half.transpose() << " exact "
+                                    << double(exact));
+    if (std::abs(double(exact)) < 1e-2) continue;  // touching within rounding: either answer
+    penetrating += exact > 0;
+    const double tol = tolerance<T>() * 10;
+    for (const bool hull : {false, true}) {
+      const gq::Geometry<T> solid = hull ? gq::Geometry<T>(gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(half)))
+                                         : gq::Geometry<T>(gq::BoxGeometry<T>(half));
+      SCOPED_TRACE(hull ? "hull" : "box");
+      for (const bool needleFirst : {false, true}) {
+        SCOPED_TRACE(needleFirst ? "needle first" : "solid first");
+        gq::PenetrationResult<T> pen;
+        ASSERT_TRUE((needleFirst ? gq::computePenetration(pen, needle, pn, solid, pb)
+                                 : gq::computePenetration(pen, solid, pb, needle, pn)).ok());
+        EXPECT_EQ(pen.penetrating, exact > 0);
+        if (pen.penetrating) EXPECT_NEAR(double(pen.depth), double(exact), tol);
+        bool overlapping = false;
+        ASSERT_TRUE(gq::overlap(solid, pb, needle, pn, overlapping).ok());
+        EXPECT_EQ(overlapping, exact > 0);
+      }
+    }
+  }
+  EXPECT_GT(penetrating, 5);
+}
+
 }  // namespace

@@ -249,6 +249,27 @@ TEST(FuzzPairFindings, SphereCentredOnAHullScaledToASheetIsPushedOutThroughTheSh
   EXPECT_NEAR(d.distance, -radius, 1e-12);
 }
 
+// The same sheet (a cube hull scaled (0.125, 1e-266, 7.9)) 2e39 below a sphere of radius 2.06 (session 18, the first
+// run with sheets and needles in the harness's cross-family check): penetration answered "1 deep" along the sheet's
+// normal while overlap and distance said apart. GJK's resolution for a pair 2e39 across is far coarser than the
+// radius, so the kernel went to SAT, whose face normals the scale rotation's rounding decides; GJK's separating axis
+// is a proof at any resolution and now answers first.
+TEST(FuzzPairFindings, SphereFarFromAHullScaledToASheetIsApartInEveryFamily) {
+  const Pair<double> f = knownPair<double>("fuzz_pair_queries_double_sphere_far_from_flat_hull.bin");
+  ASSERT_EQ(f.g0.type(), gq::GeometryType::Sphere);
+  ASSERT_EQ(f.g1.type(), gq::GeometryType::ConvexMesh);
+  const double apart = (f.p1.p - f.p0.p).norm();  // 2e39: the sizes (2.06, 7.9) are below its rounding
+  bool overlapping = true;
+  ASSERT_TRUE(gq::overlap(f.g0, f.p0, f.g1, f.p1, overlapping).ok());
+  EXPECT_FALSE(overlapping);
+  gq::PenetrationResult<double> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_FALSE(pen.penetrating);
+  gq::DistanceResult<double> d;
+  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_NEAR(d.distance, apart, 1e-12 * apart);
+}
+
 // A float sphere of radius 4.19 beside a 10-vertex hull scaled (9.0e-36, 3.2e-12, 7.56), a needle about 43 long:
 // apart, 4.488 (overlap and distance agreed; the same distance in double). Penetration answered 2.013 deep.
 TEST(FuzzPairFindings, SphereBesideAHullScaledToANeedleIsApartInEveryFamily) {
