@@ -175,6 +175,33 @@ TYPED_TEST(DistanceGjk, BoxBoxMatchesBruteForceFeaturePairs) {
   EXPECT_LT(penetrating, kPoses - kPoses / 10);
 }
 
+// Boxes scaled by a power of two answer the scaled answer, bitwise, down to sizes whose squares leave T's range
+// (2^-70 in float, 2^-540 in double: squared distances of 2^-140 and 2^-1080 are subnormal or zero). The closed form
+// squares lengths; such pairs run rescaled (distance/box_box.cpp).
+TYPED_TEST(DistanceGjk, BoxPairsScaledByAPowerOfTwoAnswerTheScaledAnswer) {
+  using T = TypeParam;
+  const int exponent = std::is_same_v<T, float> ? -70 : -540;
+  Rng rng(35);
+  int separated = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const Eigen::Vector3d h0 = rng.vec(0.2, 1), h1 = rng.vec(0.2, 1);
+    const auto p0 = randomPose<T>(rng, 1.2), p1 = randomPose<T>(rng, 1.2);
+    const auto scaled = [&](const gq::Transform<T>& p) {
+      return gq::Transform<T>(gq::Vec3<T>(p.p * std::ldexp(T(1), exponent)), p.q);
+    };
+    const auto tiny = [&](const Eigen::Vector3d& h) { return box<T>(h * std::ldexp(1.0, exponent)); };
+    gq::DistanceResult<T> r, s;
+    ASSERT_TRUE(gq::distance(r, box<T>(h0), p0, box<T>(h1), p1).ok());
+    ASSERT_TRUE(gq::distance(s, tiny(h0), scaled(p0), tiny(h1), scaled(p1)).ok());
+    separated += r.distance > T(0);
+    ASSERT_EQ(s.distance, std::ldexp(r.distance, exponent)) << "pose " << i;
+    EXPECT_EQ(s.point0, gq::Vec3<T>(r.point0 * std::ldexp(T(1), exponent))) << "pose " << i;
+    EXPECT_EQ(s.point1, gq::Vec3<T>(r.point1 * std::ldexp(T(1), exponent))) << "pose " << i;
+    EXPECT_EQ(s.normal, r.normal) << "pose " << i;
+  }
+  EXPECT_GT(separated, kPoses / 10);
+}
+
 // Far from the origin the answer depends on the boxes' relative placement only: the kernels run at the smaller
 // shape's position (fuzz_pair_queries: a float cylinder and box near x = 2.8e7, where a coordinate's ulp is 2, lost
 // 0.28 of their depth of 3.17 in world coordinates). Float near 3e7, double near 1e11 (ulp 1.5e-5); the exact answer

@@ -7,19 +7,23 @@
 #include <cmath>
 #include <limits>
 
+#include "common/unit_vector.h"
 #include "gq/cooking.h"
 #include "gq/custom.h"
 #include "gq/geometry.h"
 
 namespace gq::detail {
 
-// Radius about the shape's origin that holds its features. Infinite for planes, meshes and heightfields: they are
-// never the smaller shape (their kernels work in the surface's own frame).
+// Radius about the shape's origin that holds its features (range-safe: a box 2^-540 across has a radius, not 0).
+// Infinite for planes, meshes and heightfields: they are never the smaller shape (their kernels work in the surface's
+// own frame).
 template <class T> T featureRadius(const Geometry<T>& g) {
-  const auto radius = [](const Bounds3<T>& b) { return b.min.cwiseAbs().cwiseMax(b.max.cwiseAbs()).norm(); };
+  const auto radius = [](const Bounds3<T>& b) {
+    return rangeSafeNorm(Vec3<T>(b.min.cwiseAbs().cwiseMax(b.max.cwiseAbs())));
+  };
   if (const auto* s = g.template getIf<SphereGeometry<T>>()) return s->radius;
   if (const auto* c = g.template getIf<CapsuleGeometry<T>>()) return c->halfHeight + c->radius;
-  if (const auto* b = g.template getIf<BoxGeometry<T>>()) return b->halfExtents.norm();
+  if (const auto* b = g.template getIf<BoxGeometry<T>>()) return rangeSafeNorm(b->halfExtents);
   if (const auto* m = g.template getIf<ConvexMeshGeometry<T>>())
     return radius(m->mesh->localBounds) * m->scale.scale.cwiseAbs().maxCoeff();
   if (const auto* c = g.template getIf<CustomGeometry<T>>()) return radius(c->callbacks->localBounds());

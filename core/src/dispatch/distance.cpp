@@ -43,6 +43,24 @@ Status gjk(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
   return detail::distanceGjk(g0, p0, g1, p1, cache, out);
 }
 
+// Boxes: the closed form in box 0's frame (distance/box_box.cpp); GJK/EPA in its rare overlapping parallel-face case.
+template <class T>
+Status boxBox(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+              GjkCache<T>* cache, DistanceResult<T>& out) {
+  const Vec3<T>& h0 = g0.template get<BoxGeometry<T>>().halfExtents;
+  const Vec3<T>& h1 = g1.template get<BoxGeometry<T>>().halfExtents;
+  DistanceResult<T> local;
+  if (!detail::distanceBoxBoxLocal(h0, h1, Mat3<T>((p0.q.conjugate() * p1.q).toRotationMatrix()), p0.transformInv(p1.p),
+                                   local))
+    return detail::distanceGjk(g0, p0, g1, p1, cache, out);
+  out.distance = local.distance;
+  out.normal = p0.rotate(local.normal);
+  out.point0 = p0.transform(local.point0);
+  out.point1 = p0.transform(local.point1);
+  if (cache) cache->iterations = 0;
+  return {};
+}
+
 template <class T>
 Status unsupported(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&,
                    GjkCache<T>*, DistanceResult<T>&) {
@@ -108,8 +126,8 @@ template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTab
      unsupported<T>, planeConvex<T>},
     {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, kCapsuleBox<T>, gjk<T>,
      kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
-    {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, swapped<T, kCapsuleBox<T>>, gjk<T>, gjk<T>, kConvexSurface<T>,
-     kConvexSurface<T>, gjk<T>},
+    {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, swapped<T, kCapsuleBox<T>>, boxBox<T>, gjk<T>,
+     kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
     {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
     {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kMeshMesh<T>,
      unsupported<T>, kSurfaceConvex<T>},

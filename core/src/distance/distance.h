@@ -59,12 +59,12 @@ template <class T> void distanceCapsuleCapsule(const CapsuleAxis<T>& capsule0, c
 template <class T>
 void distanceCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& dInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
 
-// Overlapping boxes in box 0's frame (box 1: axes r01 as columns, centre t01): the exact SAT depth and normal with
-// witnesses on both boxes (distance/box_box.cpp). False when they are separated, or in the rare parallel-face case
-// where no witness is found (then GJK/EPA answers).
+// Boxes in box 0's frame (box 1: axes r01 as columns, centre t01), exact (distance/box_box.cpp): the closest points
+// of separated boxes, or the SAT depth and normal of overlapping ones with witnesses on both. False only in the rare
+// overlapping parallel-face case where no witness is found (then GJK/EPA answers).
 template <class T>
-bool distanceBoxBoxOverlapping(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01,
-                               DistanceResult<T>& local);
+bool distanceBoxBoxLocal(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01,
+                         DistanceResult<T>& local);
 
 // Any two of sphere, capsule, box, convex mesh, convex custom: GJK on the cores, EPA when they overlap. Returns Ok,
 // or Warning when GJK/EPA stopped with an error bound above tolerance (the best answer is still written).

@@ -43,6 +43,7 @@ BoxPair<T> boxPair(const BoxGeometry<T>& g0, const Transform<T>& p0, const BoxGe
 template <class T> struct BoxAxis {
   Vec3<T> axis;
   T overlap, gap, length;
+  int edge0 = -1, edge1 = -1;  // an edge axis e_edge0 x r_edge1; -1 for face axes
 };
 
 // Calls visit(BoxAxis) for the 15 axes in the order face(0), face(1), edges; stops when visit returns true.
@@ -72,7 +73,7 @@ template <class T, class Visit> void forEachBoxAxis(const BoxPair<T>& s, Visit&&
       const T gap = s.t[i2] * s.r(i1, j) - s.t[i1] * s.r(i2, j);
       const T ra = s.a[i1] * s.absR(i2, j) + s.a[i2] * s.absR(i1, j);
       const T rb = s.b[j1] * s.absR(i, j2) + s.b[j2] * s.absR(i, j1);
-      if (visit(BoxAxis<T>{axis, ra + rb - std::abs(gap), gap, std::sqrt(sinSq)})) return;
+      if (visit(BoxAxis<T>{axis, ra + rb - std::abs(gap), gap, std::sqrt(sinSq), i, j})) return;
     }
   }
 }
