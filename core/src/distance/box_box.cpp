@@ -21,7 +21,6 @@
 #include <cmath>
 #include <limits>
 
-#include "common/unit_vector.h"
 #include "distance/distance.h"
 #include "gjk/pair_scale.h"
 #include "shapes/segment.h"
@@ -289,7 +288,7 @@ bool distanceInRange(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, c
 template <class T>
 bool distanceBoxBoxLocal(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01,
                          DistanceResult<T>& local) {
-  const T length = std::max({rangeSafeNorm(h0), rangeSafeNorm(h1), rangeSafeNorm(t01)});
+  const T length = std::max({h0.cwiseAbs().maxCoeff(), h1.cwiseAbs().maxCoeff(), t01.cwiseAbs().maxCoeff()});
   if (!needsRescale(length)) return distanceInRange(h0, h1, r01, t01, local);
   const T factor = rescaleFactor(length);
   if (!distanceInRange(Vec3<T>(h0 * factor), Vec3<T>(h1 * factor), r01, Vec3<T>(t01 * factor), local)) return false;
