@@ -175,6 +175,22 @@ TYPED_TEST(DistanceGjk, BoxBoxMatchesBruteForceFeaturePairs) {
   EXPECT_LT(penetrating, kPoses - kPoses / 10);
 }
 
+// Plates and rods (each half-extent log-uniform in [1e-3, 2]): long parallel edges and faces, the closed form's
+// near-ties between vertex and edge candidates (distance/box_box.cpp). Exact: the brute-force feature pairs.
+TYPED_TEST(DistanceGjk, PlateAndRodBoxesMatchBruteForceFeaturePairs) {
+  using T = TypeParam;
+  Rng rng(36);
+  const auto logUniform = [&] {
+    return Eigen::Vector3d(std::pow(10.0, rng.uniform(-3, 0.3)), std::pow(10.0, rng.uniform(-3, 0.3)),
+                           std::pow(10.0, rng.uniform(-3, 0.3)));
+  };
+  for (int i = 0; i < kPoses; ++i) {
+    const Eigen::Vector3d h0 = logUniform(), h1 = logUniform();
+    const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 1.5);
+    checkPair<T>(box<T>(h0), p0, roundedBox(h0, p0), box<T>(h1), p1, roundedBox(h1, p1), i);
+  }
+}
+
 // Boxes scaled by a power of two answer the scaled answer, bitwise, down to sizes whose squares leave T's range
 // (2^-70 in float, 2^-540 in double: squared distances of 2^-140 and 2^-1080 are subnormal or zero). The closed form
 // squares lengths; such pairs run rescaled (distance/box_box.cpp).

@@ -219,8 +219,9 @@ template <class T> T gapAlong(const BoxPair<T>& s, const Vec3<T>& n) {
 // The pair is the candidate nearest to within rounding (`slack`) whose direction proves the largest gap. Nearer by
 // rounding is not enough: candidates within d of the distance turn by up to sqrt(2 d / distance), and nearly
 // parallel edges have a valley of closest pairs whose distance varies below rounding while their difference vector
-// turns (a float pair 0.63 apart chose one 4e-4 off along its edges, its normal 6e-4 off; the exact pair ended at a
-// vertex). The exact closest pair's direction proves the whole distance.
+// turns (a float pair 0.63 apart chose one 4e-4 off along its edges, its normal 6e-4 off, when every edge pair was
+// tried; the exact pair ended at a vertex). The exact closest pair's direction proves the whole distance. (Since the
+// edge pairs are pruned to the largest gap's axes no test pose needs this choice any more; it stays as the rule.)
 template <class T> void separatedClosest(const BoxPair<T>& s, const AxisSurvey<T>& survey, DistanceResult<T>& local) {
   Candidates<T> c;
   const T size = s.a.norm() + s.b.norm() + s.t.norm();
