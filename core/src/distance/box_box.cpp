@@ -7,7 +7,7 @@
 // candidates is the distance. An edge pair's interior closest pair is at the distance along its axis, which bounds
 // every axis's gap, so only the axes of the largest gap among the SAT's 15 are tried (typically none or one; parallel
 // edges give no candidate of their own: their closest pairs slide to a vertex). Replaces GJK for separated boxes
-// (session 18: exact, and 2,594 instructions per FCL-adapter box-box distance against GJK's 3,524).
+// (session 18: exact, and 2,631 instructions per FCL-adapter box-box distance against GJK's 3,524).
 // Overlapping boxes:
 //  - Depth and normal: the SAT's least overlap, exact; face axes win ties (as penetrationBoxBox).
 //  - Witnesses: box 1 moved out by the depth along the normal touches box 0. The touching set is the intersection of
