@@ -124,6 +124,26 @@ TYPED_TEST(DegenerateHullPenetration, SphereBesideANeedleIsApartOrPushedOffItsAx
 }
 
 
+// `check(pen, solid)` on the penetration of a box of half-extents `half`, then of the cube hull scaled to it, against the
+// degenerate hull, in both orders (the degenerate hull as geom0, then as geom1).
+template <class T, class Check>
+void forBoxAndHullInBothOrders(const std::shared_ptr<const gq::ConvexMesh<T>>& cube, const Vec3<T>& half,
+                               const gq::Geometry<T>& degenerate, const Transform<T>& pd, const Transform<T>& pb,
+                               Check check) {
+  for (const bool hull : {false, true}) {
+    const gq::Geometry<T> solid = hull ? gq::Geometry<T>(gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(half)))
+                                       : gq::Geometry<T>(gq::BoxGeometry<T>(half));
+    SCOPED_TRACE(hull ? "hull" : "box");
+    for (const bool degenerateFirst : {false, true}) {
+      SCOPED_TRACE(degenerateFirst ? "degenerate hull first" : "solid first");
+      gq::PenetrationResult<T> pen;
+      ASSERT_TRUE((degenerateFirst ? gq::computePenetration(pen, degenerate, pd, solid, pb)
+                                   : gq::computePenetration(pen, solid, pb, degenerate, pd)).ok());
+      check(pen, solid);
+    }
+  }
+}
+
 // A box, or a hull of the same cube, in any orientation with its centre in a sheet's plane (within 0.4 min(a, c) of
 // the sheet's centre; half-extents h in [0.2, 0.5]): depth = its support D = sum h_i |n . b_i| along the sheet's
 // normal n. A direction tilted by theta towards the plane costs at least D cos(theta) + (1.8 - |h|) sin(theta) >= D
@@ -151,20 +171,11 @@ TYPED_TEST(DegenerateHullPenetration, BoxAndHullCentredInASheetArePushedOutAlong
     const L depth = half.template cast<L>().dot((boxAxes.transpose() * normal).cwiseAbs());
     const double tol = tolerance<T>() * (double(std::max(a, c)) + 4);
     SCOPED_TRACE(testing::Message() << "trial " << trial << " half " << half.transpose());
-    for (const bool hull : {false, true}) {
-      const gq::Geometry<T> solid = hull ? gq::Geometry<T>(gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(half)))
-                                         : gq::Geometry<T>(gq::BoxGeometry<T>(half));
-      SCOPED_TRACE(hull ? "hull" : "box");
-      for (const bool sheetFirst : {false, true}) {
-        SCOPED_TRACE(sheetFirst ? "sheet first" : "solid first");
-        gq::PenetrationResult<T> pen;
-        ASSERT_TRUE((sheetFirst ? gq::computePenetration(pen, sheet, ps, solid, pb)
-                                : gq::computePenetration(pen, solid, pb, sheet, ps)).ok());
-        ASSERT_TRUE(pen.penetrating);
-        EXPECT_NEAR(double(pen.depth), double(depth), tol);
-        EXPECT_NEAR(std::abs(double(pen.direction.template cast<L>().dot(normal))), 1.0, 1e-4);
-      }
-    }
+    forBoxAndHullInBothOrders<T>(cube, half, sheet, ps, pb, [&](const gq::PenetrationResult<T>& pen, const auto&) {
+      ASSERT_TRUE(pen.penetrating);
+      EXPECT_NEAR(double(pen.depth), double(depth), tol);
+      EXPECT_NEAR(std::abs(double(pen.direction.template cast<L>().dot(normal))), 1.0, 1e-4);
+    });
   }
 }
 
@@ -209,22 +220,14 @@ TYPED_TEST(DegenerateHullPenetration, BoxAndHullBesideANeedleAreApartOrPushedOff
     if (std::abs(double(exact)) < 1e-2) continue;  // touching within rounding: either answer
     penetrating += exact > 0;
     const double tol = tolerance<T>() * 10;
-    for (const bool hull : {false, true}) {
-      const gq::Geometry<T> solid = hull ? gq::Geometry<T>(gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(half)))
-                                         : gq::Geometry<T>(gq::BoxGeometry<T>(half));
-      SCOPED_TRACE(hull ? "hull" : "box");
-      for (const bool needleFirst : {false, true}) {
-        SCOPED_TRACE(needleFirst ? "needle first" : "solid first");
-        gq::PenetrationResult<T> pen;
-        ASSERT_TRUE((needleFirst ? gq::computePenetration(pen, needle, pn, solid, pb)
-                                 : gq::computePenetration(pen, solid, pb, needle, pn)).ok());
-        EXPECT_EQ(pen.penetrating, exact > 0);
-        if (pen.penetrating) EXPECT_NEAR(double(pen.depth), double(exact), tol);
-        bool overlapping = false;
-        ASSERT_TRUE(gq::overlap(solid, pb, needle, pn, overlapping).ok());
-        EXPECT_EQ(overlapping, exact > 0);
-      }
-    }
+    const auto check = [&](const gq::PenetrationResult<T>& pen, const gq::Geometry<T>& solid) {
+      EXPECT_EQ(pen.penetrating, exact > 0);
+      if (pen.penetrating) EXPECT_NEAR(double(pen.depth), double(exact), tol);
+      bool overlapping = false;
+      ASSERT_TRUE(gq::overlap(solid, pb, needle, pn, overlapping).ok());
+      EXPECT_EQ(overlapping, exact > 0);
+    };
+    forBoxAndHullInBothOrders<T>(cube, half, needle, pn, pb, check);
   }
   EXPECT_GT(penetrating, 5);
 }

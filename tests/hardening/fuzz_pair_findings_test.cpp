@@ -35,6 +35,19 @@ template <class T> Pair<T> knownPair(const std::string& name) {
   return pair;
 }
 
+// Overlap and penetration say apart, and distance is `apart` within `tolerance`.
+template <class T> void expectApartInEveryFamily(const Pair<T>& f, T apart, T tolerance) {
+  bool overlapping = true;
+  ASSERT_TRUE(gq::overlap(f.g0, f.p0, f.g1, f.p1, overlapping).ok());
+  EXPECT_FALSE(overlapping);
+  gq::PenetrationResult<T> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_FALSE(pen.penetrating);
+  gq::DistanceResult<T> d;
+  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_NEAR(d.distance, apart, tolerance);
+}
+
 // The pair penetrates with a unit push direction, and its distance normal is unit too.
 void expectUnitPushAndDistanceNormal(const FloatPair& f) {
   gq::PenetrationResult<float> pen;
@@ -259,30 +272,14 @@ TEST(FuzzPairFindings, SphereFarFromAHullScaledToASheetIsApartInEveryFamily) {
   ASSERT_EQ(f.g0.type(), gq::GeometryType::Sphere);
   ASSERT_EQ(f.g1.type(), gq::GeometryType::ConvexMesh);
   const double apart = (f.p1.p - f.p0.p).norm();  // 2e39: the sizes (2.06, 7.9) are below its rounding
-  bool overlapping = true;
-  ASSERT_TRUE(gq::overlap(f.g0, f.p0, f.g1, f.p1, overlapping).ok());
-  EXPECT_FALSE(overlapping);
-  gq::PenetrationResult<double> pen;
-  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
-  EXPECT_FALSE(pen.penetrating);
-  gq::DistanceResult<double> d;
-  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
-  EXPECT_NEAR(d.distance, apart, 1e-12 * apart);
+  expectApartInEveryFamily(f, apart, 1e-12 * apart);
 }
 
 // A float sphere of radius 4.19 beside a 10-vertex hull scaled (9.0e-36, 3.2e-12, 7.56), a needle about 43 long:
 // apart, 4.488 (overlap and distance agreed; the same distance in double). Penetration answered 2.013 deep.
 TEST(FuzzPairFindings, SphereBesideAHullScaledToANeedleIsApartInEveryFamily) {
-  const FloatPair f = knownPair<float>("fuzz_pair_queries_float_sphere_beside_needle_hull_penetration.bin");
-  bool overlapping = true;
-  ASSERT_TRUE(gq::overlap(f.g0, f.p0, f.g1, f.p1, overlapping).ok());
-  EXPECT_FALSE(overlapping);
-  gq::PenetrationResult<float> pen;
-  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
-  EXPECT_FALSE(pen.penetrating);
-  gq::DistanceResult<float> d;
-  ASSERT_TRUE(gq::distance(d, f.g0, f.p0, f.g1, f.p1).ok());
-  EXPECT_NEAR(d.distance, 4.488f, 1e-3f);
+  expectApartInEveryFamily(knownPair<float>("fuzz_pair_queries_float_sphere_beside_needle_hull_penetration.bin"),
+                           4.488f, 1e-3f);
 }
 
 // A float sphere (radius 5.3) 7.7e8 from the centre of a custom cylinder of radius and half-height 1e30 (session 17,
