@@ -103,7 +103,6 @@ void edgesOfBox1(const BoxPair<T>& s, const Vec3<T>& n, const Vec3<T>& t, Touch<
   }
 }
 
-
 // A candidate pair: a point of each box, both in box 0's frame or, for box 0's vertices, both in box 1's (`inBox1`:
 // the distance is the same; only the chosen pair goes back).
 template <class T> struct Candidate {
