@@ -124,8 +124,8 @@ TYPED_TEST(DegenerateHullPenetration, SphereBesideANeedleIsApartOrPushedOffItsAx
 }
 
 
-// `check(pen, solid)` on the penetration of a box of half-extents `half`, then of the cube hull scaled to it, against the
-// degenerate hull, in both orders (the degenerate hull as geom0, then as geom1).
+// `check(pen, solid)` on the penetration of a box of half-extents `half`, then of the cube hull scaled to it,
+// against the degenerate hull, in both orders (the degenerate hull as geom0, then as geom1).
 template <class T, class Check>
 void forBoxAndHullInBothOrders(const std::shared_ptr<const gq::ConvexMesh<T>>& cube, const Vec3<T>& half,
                                const gq::Geometry<T>& degenerate, const Transform<T>& pd, const Transform<T>& pb,
