@@ -123,7 +123,6 @@ TYPED_TEST(DegenerateHullPenetration, SphereBesideANeedleIsApartOrPushedOffItsAx
   }
 }
 
-
 // `check(pen, solid)` on the penetration of a box of half-extents `half`, then of the cube hull scaled to it,
 // against the degenerate hull, in both orders (the degenerate hull as geom0, then as geom1).
 template <class T, class Check>
