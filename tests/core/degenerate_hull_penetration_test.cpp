@@ -42,6 +42,23 @@ template <class T> VL worldAxis(const Transform<T>& pose, const Eigen::Quaternio
   return r.col(k);
 }
 
+// The unit cube scaled to a sheet (a, tiny, c) or to a needle (tiny, 1e18 tiny, length) about the rotation sr.
+template <class T>
+gq::Geometry<T> sheetOf(const std::shared_ptr<const gq::ConvexMesh<T>>& cube, T a, T c,
+                        const Eigen::Quaternion<T>& sr) {
+  return gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(a, tiny<T>(), c), sr));
+}
+template <class T>
+gq::Geometry<T> needleOf(const std::shared_ptr<const gq::ConvexMesh<T>>& cube, T length,
+                         const Eigen::Quaternion<T>& sr) {
+  return gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(tiny<T>(), T(1e18) * tiny<T>(), length), sr));
+}
+// The needle's half-length along the world image of the scale's Z: length * |R e_z|_1 (the cube's corner in the
+// mesh frame, scaled).
+template <class T> L needleHalfLength(T length, const Eigen::Quaternion<T>& sr) {
+  return L(length) * sr.template cast<L>().normalized().toRotationMatrix().col(2).cwiseAbs().sum();
+}
+
 TYPED_TEST(DegenerateHullPenetration, SphereAndCapsuleCentredInASheetArePushedOutAlongItsNormal) {
   using T = TypeParam;
   Rng rng(20261124);
@@ -50,7 +67,7 @@ TYPED_TEST(DegenerateHullPenetration, SphereAndCapsuleCentredInASheetArePushedOu
   for (int trial = 0; trial < 40; ++trial) {
     const T a = T(rng.uniform(3, 8)), c = T(rng.uniform(3, 8)), radius = T(rng.uniform(0.5, 1.5));
     const Eigen::Quaternion<T> sr = scaleRotation<T>(rng, trial);
-    const gq::Geometry<T> sheet = gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(a, tiny<T>(), c), sr));
+    const gq::Geometry<T> sheet = sheetOf(cube, a, c, sr);
     const Transform<T> ps(rng.vec(-4, 4).cast<T>(), rng.rotation().cast<T>());
     const VL normal = worldAxis(ps, sr, 1), e0 = worldAxis(ps, sr, 0), e2 = worldAxis(ps, sr, 2);
     // In the sheet's plane, within its inscribed ellipse (semi-axes a and c) less the radius and a margin.
@@ -90,12 +107,11 @@ TYPED_TEST(DegenerateHullPenetration, SphereBesideANeedleIsApartOrPushedOffItsAx
   for (int trial = 0; trial < 40; ++trial) {
     const T length = T(rng.uniform(4, 8)), radius = T(rng.uniform(1, 4));
     const Eigen::Quaternion<T> sr = scaleRotation<T>(rng, trial);
-    const gq::Geometry<T> needle =
-        gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(tiny<T>(), T(1e18) * tiny<T>(), length), sr));
+    const gq::Geometry<T> needle = needleOf(cube, length, sr);
     const Transform<T> pn(rng.vec(-4, 4).cast<T>(), rng.rotation().cast<T>());
-    // The needle: the segment along the world image of the scale's Z, half-length length * |R e_z|_1 (mesh frame).
+    // The needle: the segment along the world image of the scale's Z (needleHalfLength).
     const VL axis = worldAxis(pn, sr, 2);
-    const L half = L(length) * sr.template cast<L>().normalized().toRotationMatrix().col(2).cwiseAbs().sum();
+    const L half = needleHalfLength(length, sr);
     // The sphere's centre beside the needle's middle half, at distance d from its axis.
     const VL side = axis.unitOrthogonal();
     const L d = L(rng.uniform(0.2, 2.5)) * L(radius), t = L(rng.uniform(-0.5, 0.5)) * half;
@@ -157,7 +173,7 @@ TYPED_TEST(DegenerateHullPenetration, BoxAndHullCentredInASheetArePushedOutAlong
     const T a = T(rng.uniform(3, 8)), c = T(rng.uniform(3, 8));
     const Vec3<T> half(T(rng.uniform(0.2, 0.5)), T(rng.uniform(0.2, 0.5)), T(rng.uniform(0.2, 0.5)));
     const Eigen::Quaternion<T> sr = scaleRotation<T>(rng, trial);
-    const gq::Geometry<T> sheet = gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(a, tiny<T>(), c), sr));
+    const gq::Geometry<T> sheet = sheetOf(cube, a, c, sr);
     const Transform<T> ps(rng.vec(-4, 4).cast<T>(), rng.rotation().cast<T>());
     const VL normal = worldAxis(ps, sr, 1), e0 = worldAxis(ps, sr, 0), e2 = worldAxis(ps, sr, 2);
     const L reach = L(0.4) * L(std::min(a, c));
@@ -191,11 +207,10 @@ TYPED_TEST(DegenerateHullPenetration, BoxAndHullBesideANeedleAreApartOrPushedOff
     const T length = T(rng.uniform(4, 8));
     const Vec3<T> half(T(rng.uniform(0.3, 1)), T(rng.uniform(0.3, 1)), T(rng.uniform(0.3, 1)));
     const Eigen::Quaternion<T> sr = scaleRotation<T>(rng, trial);
-    const gq::Geometry<T> needle =
-        gq::ConvexMeshGeometry<T>(cube, gq::MeshScale<T>(Vec3<T>(tiny<T>(), T(1e18) * tiny<T>(), length), sr));
+    const gq::Geometry<T> needle = needleOf(cube, length, sr);
     const Transform<T> pn(rng.vec(-4, 4).cast<T>(), rng.rotation().cast<T>());
     const VL axis = worldAxis(pn, sr, 2);
-    const L needleHalf = L(length) * sr.template cast<L>().normalized().toRotationMatrix().col(2).cwiseAbs().sum();
+    const L needleHalf = needleHalfLength(length, sr);
     const VL side = axis.unitOrthogonal();
     const L d = L(rng.uniform(0.1, 1.5)) * half.template cast<L>().norm(), t = L(rng.uniform(-0.3, 0.3)) * needleHalf;
     const Transform<T> pb((toL(pn.p) + t * axis + d * side).template cast<T>(), rng.rotation().cast<T>());
