@@ -12,10 +12,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include "exact_reference.h"
 #include "fcl_scenes.h"
+#include "gq/cooking.h"
 #include "gq/fcl/fcl.h"
 
 namespace {
@@ -201,6 +204,49 @@ TEST(FclSolidPairs, ConvexPairsDecidedByTheirBallsRejectReflectedAndScaledLinear
     c.addContact(::fcl::Contactd());
     EXPECT_EQ(gq::fcl::collide<double>(hull.get(), origin, hull.get(), rotated, request, c), hit ? 2u : 1u);
   }
+}
+
+// Two Convex their balls cannot decide (centres between the inner and the outer balls' reach) go to GJK, placed by
+// FCL's matrices as given: a reflection or a scaled linear part is rejected there too, in collide and in distance.
+TEST(FclSolidPairs, ConvexPairsLeftToGjkRejectReflectedAndScaledLinearParts) {
+  std::mt19937 rng(29);
+  std::vector<Vector3d> vertices;
+  std::vector<std::vector<int>> faces;
+  gq::fcltest::randomHull(rng, 30, vertices, faces);
+  const auto hull = gq::fcltest::convexGeometry(vertices, faces);
+  std::shared_ptr<const gq::ConvexMesh<double>> cooked;
+  ASSERT_TRUE(gq::cookConvexMesh(std::vector<gq::Vec3<double>>(vertices.begin(), vertices.end()), cooked).ok());
+  const double reach = cooked->innerRadius + cooked->outerRadius;  // halfway between both balls' contact distances
+  const ::fcl::Transform3d origin = ::fcl::Transform3d::Identity();
+  ::fcl::Transform3d reflected = origin, scaled = origin, rotated = origin;
+  rotated.linear() = Eigen::AngleAxisd(0.05, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  reflected.linear() = Eigen::Vector3d(1, 1, -1).asDiagonal();
+  scaled.linear() *= 1.01;
+  for (::fcl::Transform3d* t : {&reflected, &scaled, &rotated}) {
+    t->translation() = Vector3d(reach, 0, 0) + cooked->center - t->linear() * cooked->center;  // centres `reach` apart
+    const double centres = (t->linear() * cooked->center + t->translation() - cooked->center).norm();
+    ASSERT_GT(centres, 2 * cooked->innerRadius + 0.01);
+    ASSERT_LT(centres, 2 * cooked->outerRadius - 0.01);
+  }
+  ::fcl::CollisionRequestd request;
+  request.num_max_contacts = 4;  // room beside the pre-seeded contact
+  for (const ::fcl::Transform3d& bad : {reflected, scaled}) {
+    ::fcl::CollisionResultd c;
+    c.addContact(::fcl::Contactd());  // a miss returns the count (1), bad input 0
+    EXPECT_EQ(gq::fcl::collide<double>(hull.get(), origin, hull.get(), bad, request, c), 0u);
+    EXPECT_EQ(c.numContacts(), 1u);
+    ::fcl::DistanceResultd d;
+    d.min_distance = 5;
+    EXPECT_EQ(gq::fcl::distance<double>(hull.get(), origin, hull.get(), bad, ::fcl::DistanceRequestd(true), d),
+              std::numeric_limits<double>::max());
+    EXPECT_EQ(d.min_distance, 5);
+  }
+  ::fcl::CollisionResultd c;
+  c.addContact(::fcl::Contactd());
+  EXPECT_NE(gq::fcl::collide<double>(hull.get(), origin, hull.get(), rotated, request, c), 0u);
+  ::fcl::DistanceResultd d;
+  EXPECT_LT(gq::fcl::distance<double>(hull.get(), origin, hull.get(), rotated, ::fcl::DistanceRequestd(true), d),
+            std::numeric_limits<double>::max());
 }
 
 TEST(FclSolidPairs, NearestPointsAreWrittenOnlyWhenRequested) {

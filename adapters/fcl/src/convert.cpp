@@ -88,14 +88,10 @@ template <class T> Conversion triangle(const ::fcl::TriangleP<T>& t, Converted<T
 }
 
 template <class T> Conversion cached(const ::fcl::CollisionGeometry<T>* g, Converted<T>& out) {
-  Conversion conversion = Conversion::Invalid;
-  FclShape shape = FclShape::Unsupported;
-  const CandidateVolume<T>* candidate = nullptr;
-  const Geometry<T>* geometry = cachedGeometry(g, shape, conversion, candidate);
-  if (!geometry) return conversion;
-  out.shape = shape;
-  out.setCached(geometry, candidate);
-  return Conversion::Ok;
+  Cooked<T> cooked;
+  const Conversion conversion = cachedGeometry(g, cooked);
+  if (conversion == Conversion::Ok) out.setCached(cooked);
+  return conversion;
 }
 
 }  // namespace

@@ -18,6 +18,9 @@
 namespace fcl {
 template <typename S> class CollisionGeometry;
 }
+namespace gq::detail {
+template <class T> struct ConvexShape;  // gjk/gjk.h
+}
 
 namespace gq::fcl::detail {
 
@@ -42,6 +45,15 @@ enum class Frame : std::uint8_t {
 template <class T> struct CandidateVolume {
   Geometry<T> volume;
   Vec3<T> centre = Vec3<T>::Zero();
+};
+
+// What the cache (geometry_cache.h) cooked once for a Convex or a BVHModel: the gq geometry and, for a Convex, its
+// candidate volume and its GJK support mapping at the identity pose (the table of start vertices found).
+template <class T> struct Cooked {
+  FclShape shape = FclShape::Unsupported;
+  const Geometry<T>* geometry = nullptr;
+  const CandidateVolume<T>* candidate = nullptr;
+  const gq::detail::ConvexShape<T>* support = nullptr;
 };
 
 template <class T> class Converted {
@@ -70,18 +82,21 @@ template <class T> class Converted {
     local_ = CustomGeometry<T>(std::shared_ptr<const CustomGeometryCallbacks<T>>(std::shared_ptr<const void>(), &c));
     geometry_ = &local_;
   }
-  // Cached geometry, kept alive by the cache for the duration of the call (see geometry_cache.h), with its
-  // candidate volume when the cache holds one (a Convex: computed once, at cooking).
-  void setCached(const Geometry<T>* cached, const CandidateVolume<T>* candidate) {
-    geometry_ = cached;
-    candidate_ = candidate;
+  // Cached geometry, kept alive by the cache for the duration of the call (see geometry_cache.h).
+  void setCached(const Cooked<T>& cooked) {
+    shape = cooked.shape;
+    geometry_ = cooked.geometry;
+    candidate_ = cooked.candidate;
+    support_ = cooked.support;
   }
   const CandidateVolume<T>* cachedCandidate() const { return candidate_; }
+  const gq::detail::ConvexShape<T>* cachedSupport() const { return support_; }
 
  private:
   Geometry<T> local_;
   const Geometry<T>* geometry_ = &local_;
   const CandidateVolume<T>* candidate_ = nullptr;
+  const gq::detail::ConvexShape<T>* support_ = nullptr;
   std::variant<std::monostate, CylinderCallbacks<T>, ConeCallbacks<T>, EllipsoidCallbacks<T>, TriangleCallbacks<T>>
       callbacks_;
 };

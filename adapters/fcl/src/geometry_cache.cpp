@@ -21,10 +21,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "gjk/gjk.h"
 #include "gq/cooking.h"
 #include "pair_kernels.h"
 
 namespace gq::fcl::detail {
+namespace k = gq::detail;
 namespace {
 
 constexpr int kFingerprintSamples = 16;
@@ -104,6 +106,7 @@ template <class T> struct Entry {
   Conversion conversion = Conversion::Invalid;
   Geometry<T> geometry;
   std::optional<CandidateVolume<T>> candidate;  // Convex
+  std::optional<k::ConvexShape<T>> support;     // Convex: at the identity pose
   const void* vertexArray = nullptr;            // Convex: its vertex vector (identity)
   std::optional<::fcl::Convex<T>> convexAlive;  // Convex: a copy sharing that vector keeps it alive
   std::uint64_t fingerprint = 0;                // BVHModel
@@ -133,6 +136,7 @@ template <class T> std::shared_ptr<const Entry<T>> cookConvex(const ::fcl::Conve
     e->geometry = ConvexMeshGeometry<T>(hull);
     CandidateVolume<T> candidate;
     if (candidateVolume(e->geometry, candidate).ok()) e->candidate = candidate;
+    e->support = k::makeConvexShape(e->geometry, Transform<T>());
   }
   return e;
 }
@@ -218,27 +222,23 @@ template <class T> void clearShared() {
 
 }  // namespace
 
-template <class T>
-const Geometry<T>* cachedGeometry(const ::fcl::CollisionGeometry<T>* g, FclShape& shape, Conversion& conversion,
-                                  const CandidateVolume<T>*& candidate) {
+template <class T> Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, Cooked<T>& out) {
   Key<T> key{g, g->getNodeType() == ::fcl::GEOM_CONVEX, nullptr, {}, 0};
   if (key.convex) {
     key.vertexArray = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
   } else {
-    if (!meshView(g, key.mesh)) {
-      conversion = Conversion::NotModelled;
-      return nullptr;
-    }
-    conversion = classifyMesh(key.mesh);
-    if (conversion != Conversion::Ok) return nullptr;
+    if (!meshView(g, key.mesh)) return Conversion::NotModelled;
+    const Conversion conversion = classifyMesh(key.mesh);
+    if (conversion != Conversion::Ok) return conversion;
     key.fingerprint = meshFingerprint(key.mesh);
   }
   const Entry<T>* e = lookup(key);
-  conversion = e->conversion;
-  if (conversion != Conversion::Ok) return nullptr;
-  shape = e->shape;
-  candidate = e->candidate ? &*e->candidate : nullptr;
-  return &e->geometry;
+  if (e->conversion != Conversion::Ok) return e->conversion;
+  out.shape = e->shape;
+  out.geometry = &e->geometry;
+  out.candidate = e->candidate ? &*e->candidate : nullptr;
+  out.support = e->support ? &*e->support : nullptr;
+  return Conversion::Ok;
 }
 
 template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* g) {
@@ -253,10 +253,8 @@ void clearCached() {
   clearShared<double>();
 }
 
-template const Geometry<float>* cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, FclShape&, Conversion&,
-                                                      const CandidateVolume<float>*&);
-template const Geometry<double>* cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, FclShape&,
-                                                        Conversion&, const CandidateVolume<double>*&);
+template Conversion cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, Cooked<float>&);
+template Conversion cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, Cooked<double>&);
 template void forgetCached<float>(const ::fcl::CollisionGeometry<float>*);
 template void forgetCached<double>(const ::fcl::CollisionGeometry<double>*);
 

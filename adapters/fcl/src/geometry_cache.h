@@ -14,13 +14,10 @@
 
 namespace gq::fcl::detail {
 
-// The cooked geometry of a Convex or a triangle BVHModel, or nullptr: `conversion` tells why (Invalid for an empty,
-// unfinished or uncookable model; NotModelled for point clouds and octrees). `candidate`: a Convex's candidate
-// volume (null for meshes). The pointers stay valid until this thread's next lookup of two more geometries (a call
-// looks up at most two).
-template <class T>
-const Geometry<T>* cachedGeometry(const ::fcl::CollisionGeometry<T>* geometry, FclShape& shape, Conversion& conversion,
-                                  const CandidateVolume<T>*& candidate);
+// The cooked geometry of a Convex or a triangle BVHModel (`out`), or the reason there is none: Invalid for an empty,
+// unfinished or uncookable model; NotModelled for point clouds and octrees. The pointers stay valid until this
+// thread's next lookup of two more geometries (a call looks up at most two).
+template <class T> Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* geometry, Cooked<T>& out);
 
 template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* geometry);
 void clearCached();

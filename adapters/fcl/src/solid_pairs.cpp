@@ -363,10 +363,9 @@ template <class S> void writeOverlapping(DistanceResult<S>& out) {
 // the exact signed distance. Overlapping cores: FCL's answer, -1 with both nearest points at the origin (its GJK
 // path writes those); the depth would need EPA, which the request did not ask for.
 // A GJK stop above tolerance still writes its best answer (as core's distanceGjk, which reports it as a warning).
-template <class S> void distanceWithoutDepth(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S>& b,
-                                             const Transform<S>& pb, S tolerance, DistanceResult<S>& out) {
-  const k::GjkResult<S> g = k::gjkDistance(k::makeConvexShape(a, pa), k::makeConvexShape(b, pb),
-                                           static_cast<GjkCache<S>*>(nullptr), tolerance);
+template <class S>
+void distanceWithoutDepth(const k::ConvexShape<S>& a, const k::ConvexShape<S>& b, S tolerance, DistanceResult<S>& out) {
+  const k::GjkResult<S> g = k::gjkDistance(a, b, static_cast<GjkCache<S>*>(nullptr), tolerance);
   if (g.coresOverlap) return writeOverlapping(out);
   k::writeSeparated(g, out);
 }
@@ -385,7 +384,7 @@ Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S
   } else if constexpr (A == GT::Plane) {  // convex mesh or custom: through its support mapping
     k::distancePlaneConvex(as<A>(a), pa, b, pb, out);
   } else if (!ask.depth) {
-    distanceWithoutDepth(a, pa, b, pb, stopTolerance<S>(ask), out);
+    distanceWithoutDepth(k::makeConvexShape(a, pa), k::makeConvexShape(b, pb), stopTolerance<S>(ask), out);
   } else {
     if (!k::distanceGjk(a, pa, b, pb, static_cast<GjkCache<S>*>(nullptr), out, stopTolerance<S>(ask)).ok())
       return Answer::Unanswered;
@@ -437,20 +436,38 @@ k::OverlapCertificate convexCertificate(const Solid<S>& a, const Solid<S>& b, co
   return k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
 }
 
+// A hull is not symmetric: its linear part must be a rotation, det = x . (y x z) > 0 on the columns (Eigen's
+// determinant of the 4x4's block cost ~40 more instructions).
 template <class S> bool rotationPose(const Solid<S>& s) {
-  return rigidPose(s) && s.tf->linear().determinant() > S(0);
+  const S* m = s.tf->data();  // column-major 4x4: the columns start at 0, 4, 8
+  const S det = m[0] * (m[5] * m[10] - m[6] * m[9]) + m[1] * (m[6] * m[8] - m[4] * m[10]) +
+                m[2] * (m[4] * m[9] - m[5] * m[8]);
+  return rigidPose(s) && det > S(0);
+}
+
+// A Convex's support mapping (prepared by the cache at cooking) placed at (r, t).
+template <class S> k::ConvexShape<S> placedHull(const Converted<S>& c, const Mat3<S>& r, const Vec3<S>& t) {
+  k::ConvexShape<S> s = *c.cachedSupport();
+  s.rotation = r;
+  s.position = t;
+  return s;
 }
 
 template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
   Converted<S> ca, cb;
   if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
   const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
-  if (certificate == k::OverlapCertificate::Unknown) {  // core's GJK + SAT past its own (same) certificate
-    Transform<S> pa, pb;
-    const Answer r = posesOf(a, b, ca, cb, pa, pb);
-    if (r == Answer::Done)
-      hit = k::overlapConvexShapes(ca.geometry(), Transform<S>(), cb.geometry(), pb.relativeTo(pa));
-    return r;
+  if (certificate == k::OverlapCertificate::Unknown) {  // core's GJK, then its exact kernels within the band
+    if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
+    // b in a's frame, as the façade runs its kernels (precision far from the origin), placed by FCL's matrices
+    // as they are (a quaternion round trip cost ~400 instructions a call).
+    const Mat3<S> r = a.tf->linear().transpose() * b.tf->linear();
+    const Vec3<S> t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
+    const k::OverlapCertificate gjk = k::overlapByGjk(*ca.cachedSupport(), placedHull(cb, r, t));
+    hit = gjk == k::OverlapCertificate::Unknown
+              ? k::overlapConvexShapes(ca.geometry(), Transform<S>(), cb.geometry(), Transform<S>(t, Quat<S>(r)))
+              : gjk == k::OverlapCertificate::Overlapping;
+    return Answer::Done;
   }
   hit = certificate == k::OverlapCertificate::Overlapping;
   return validatedHit(hit || checkMiss, [&] { return rotationPose(a) && rotationPose(b); });
@@ -532,11 +549,17 @@ template <class S>
 Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
   if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
-  if (ask.depth || convexCertificate(a, b, ca, cb) != k::OverlapCertificate::Overlapping)
-    return distanceConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, ask, out);
+  if (ask.depth) return distanceConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, ask, out);
+  const bool overlapping = convexCertificate(a, b, ca, cb) == k::OverlapCertificate::Overlapping;
   if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
-  writeOverlapping(out);
-  return Answer::Done;
+  if (overlapping) {
+    writeOverlapping(out);
+    return Answer::Done;
+  }
+  // World frame, as the converted path: FCL's nearest points are world points.
+  distanceWithoutDepth(placedHull(ca, Mat3<S>(a.tf->linear()), Vec3<S>(a.tf->translation())),
+                       placedHull(cb, Mat3<S>(b.tf->linear()), Vec3<S>(b.tf->translation())), stopTolerance<S>(ask), out);
+  return finiteResult(out) ? Answer::Done : Answer::Unanswered;
 }
 
 // ---- the table ----

@@ -31,14 +31,14 @@ template <class T> std::vector<Vec3<T>> coreVertices(const detail::ConvexShape<T
   std::vector<Vec3<T>> out;
   if (a.kind == Kind::Box) {
     for (int c = 0; c < 8; ++c)
-      out.push_back(a.pose.transform(Vec3<T>((c & 1) ? a.halfExtents.x() : -a.halfExtents.x(),
-                                             (c & 2) ? a.halfExtents.y() : -a.halfExtents.y(),
-                                             (c & 4) ? a.halfExtents.z() : -a.halfExtents.z())));
+      out.push_back(a.toWorld(Vec3<T>((c & 1) ? a.halfExtents.x() : -a.halfExtents.x(),
+                                      (c & 2) ? a.halfExtents.y() : -a.halfExtents.y(),
+                                      (c & 4) ? a.halfExtents.z() : -a.halfExtents.z())));
   } else if (a.kind == Kind::Segment) {
-    out.push_back(a.pose.transform(Vec3<T>(a.halfExtents.x(), T(0), T(0))));
-    out.push_back(a.pose.transform(Vec3<T>(-a.halfExtents.x(), T(0), T(0))));
+    out.push_back(a.toWorld(Vec3<T>(a.halfExtents.x(), T(0), T(0))));
+    out.push_back(a.toWorld(Vec3<T>(-a.halfExtents.x(), T(0), T(0))));
   } else if (a.kind == Kind::Hull) {
-    for (const Vec3<T>& v : a.hull->vertices) out.push_back(a.pose.transform(a.hullScaled ? Vec3<T>(a.hullScale * v) : v));
+    for (const Vec3<T>& v : a.hull->vertices) out.push_back(a.toWorld(a.hullScaled ? Vec3<T>(a.hullScale * v) : v));
   }
   return out;
 }

@@ -24,11 +24,11 @@ namespace {
 
 // Rebuilds the cached simplex from its search directions (valid support points whatever the poses now are).
 template <class T>
-void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Transform<T>& poseA, const GjkCache<T>& cache, GjkSimplex<T>& s) {
+void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Mat3<T>& rotationA, const GjkCache<T>& cache, GjkSimplex<T>& s) {
   for (std::uint32_t k = 0; k < std::min<std::uint32_t>(cache.simplexSize, 4); ++k) {
     const Vec3<T>& local = cache.simplexDirections[k];
     if (!isFinite(local) || !(local.squaredNorm() > T(0))) continue;
-    const SupportPoint<T> p = supportOfDifference(a, b, Vec3<T>(poseA.rotate(local)));
+    const SupportPoint<T> p = supportOfDifference(a, b, Vec3<T>(rotationA * local));
     bool repeated = false;
     for (std::uint32_t j = 0; j < s.size; ++j) repeated = repeated || s.points[j].w == p.w;
     if (!repeated) s.points[s.size++] = p;
@@ -37,7 +37,7 @@ void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Transform<T>& poseA, 
 
 // First search direction: the cached one (a's local frame), else the centre difference, else +X.
 template <class T> Vec3<T> initialDirection(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkCache<T>* cache) {
-  if (cache && cache->direction.squaredNorm() > T(0) && isFinite(cache->direction)) return a.pose.rotate(cache->direction);
+  if (cache && cache->direction.squaredNorm() > T(0) && isFinite(cache->direction)) return a.rotation * cache->direction;
   const Vec3<T> d = a.center() - b.center();
   return d.squaredNorm() > T(0) ? d : Vec3<T>(Vec3<T>::UnitX());
 }
@@ -142,7 +142,7 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   Momentum<T> momentum;
   std::uint32_t stalls = 0;
   std::uint32_t it = 0;
-  if (cache) seedSimplex(sa, sb, a.pose, *cache, s);
+  if (cache) seedSimplex(sa, sb, a.rotation, *cache, s);
   if (s.size > 0) {
     const SimplexClosest<T> c = closestOnSimplex(s);
     r.coresOverlap = converged = c.containsOrigin || c.v.norm() <= tolerance;
@@ -228,9 +228,9 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   b.climbStart = sb.hint();
   if (cache) {
     cache->iterations = it;
-    if (!r.coresOverlap) cache->direction = a.pose.rotateInv(v);
+    if (!r.coresOverlap) cache->direction = a.rotation.transpose() * v;
     cache->simplexSize = s.size;
-    for (std::uint32_t k = 0; k < s.size; ++k) cache->simplexDirections[k] = a.pose.rotateInv(s.points[k].d);
+    for (std::uint32_t k = 0; k < s.size; ++k) cache->simplexDirections[k] = a.rotation.transpose() * s.points[k].d;
   }
   return r;
 }

@@ -54,7 +54,10 @@ template <class T> struct ConvexShape {
   enum class Kind : std::uint8_t { Point, Segment, Box, Hull, Custom };
 
   Kind kind = Kind::Point;
-  Transform<T> pose;
+  // Placement: world = position + rotation * local. A matrix, not a quaternion: every support call rotates twice,
+  // and hosts that hold matrices (FCL, Bullet) place a shape without a round trip through a quaternion.
+  Mat3<T> rotation = Mat3<T>::Identity();
+  Vec3<T> position = Vec3<T>::Zero();
   T margin = T(0);                              // radius of the rounded shell (sphere, capsule), else 0
   Vec3<T> halfExtents = Vec3<T>::Zero();        // box half extents; segment: (halfHeight, 0, 0)
   const ConvexMesh<T>* hull = nullptr;          // Kind::Hull
@@ -68,8 +71,9 @@ template <class T> struct ConvexShape {
 
   // Point of the core farthest along `dir` (world, need not be unit), in world space.
   Vec3<T> support(const Vec3<T>& dir) const {
-    return pose.transform(Vec3<T>(localScale * supportLocal(pose.rotateInv(dir))));
+    return toWorld(Vec3<T>(localScale * supportLocal(Vec3<T>(rotation.transpose() * dir))));
   }
+  Vec3<T> toWorld(const Vec3<T>& local) const { return position + rotation * local; }
   // Same in the shape's local frame, before localScale.
   Vec3<T> supportLocal(const Vec3<T>& dirLocal) const;
   // A point inside the core (world).
@@ -77,9 +81,11 @@ template <class T> struct ConvexShape {
 };
 
 // Sphere, capsule, box, convex mesh and convex custom geometry (check isConvexShapeType first; planes, meshes and
-// heightfields have no bounded support mapping).
+// heightfields have no bounded support mapping). The matrix form takes an orthonormal rotation (det +1) as given.
 bool isConvexShapeType(GeometryType type);
 template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Transform<T>& pose);
+template <class T>
+ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Mat3<T>& rotation, const Vec3<T>& position);
 
 // Support point of the Minkowski difference a - b, with the two points it came from (needed for witnesses).
 // No default member initializers on purpose: EPA keeps ~130 of these in a stack array per query, and zeroing them
@@ -159,7 +165,7 @@ template <class T> constexpr T gjkRelativeTolerance() {
 // points grows with their distance from the origin too), range-safe (an offset under 1e-154 in double has a square
 // that underflows: the pair would look smaller than it is, and its rescaled copy larger).
 template <class T> T gjkPairLength(const ConvexShape<T>& a, const ConvexShape<T>& b) {
-  return std::max({a.size, b.size, rangeSafeNorm(Vec3<T>(a.pose.p - b.pose.p))});
+  return std::max({a.size, b.size, rangeSafeNorm(Vec3<T>(a.position - b.position))});
 }
 // GJK/EPA stopping tolerance for a pair (see kGjkRoundoffUlps): gjkRelativeTolerance times the pair's length scale.
 template <class T> T gjkToleranceFor(T length) {

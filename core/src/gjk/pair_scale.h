@@ -30,7 +30,7 @@ template <class T> T rescaleFactor(T length) { return std::ldexp(T(1), -2 * (std
 // The shape with every length multiplied by `factor`: its place, its core (through localScale) and its margin.
 template <class T> ConvexShape<T> scaledShape(const ConvexShape<T>& s, T factor) {
   ConvexShape<T> out = s;
-  out.pose.p *= factor;
+  out.position *= factor;
   out.localScale *= factor;
   out.margin *= factor;
   out.size *= factor;

@@ -39,10 +39,9 @@ template <class T> Vec3<T> ConvexShape<T>::supportLocal(const Vec3<T>& d) const 
 
 template <class T> Vec3<T> ConvexShape<T>::center() const {
   switch (kind) {
-    case Kind::Hull:
-      return pose.transform(Vec3<T>(localScale * (hullScaled ? Vec3<T>(hullScale * hull->center) : hull->center)));
-    case Kind::Custom: return pose.transform(Vec3<T>(localScale * custom->localBounds().center()));
-    default: return pose.p;
+    case Kind::Hull: return toWorld(Vec3<T>(localScale * (hullScaled ? Vec3<T>(hullScale * hull->center) : hull->center)));
+    case Kind::Custom: return toWorld(Vec3<T>(localScale * custom->localBounds().center()));
+    default: return position;
   }
 }
 
@@ -57,10 +56,12 @@ bool isConvexShapeType(GeometryType type) {
   }
 }
 
-template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Transform<T>& pose) {
+template <class T>
+ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Mat3<T>& rotation, const Vec3<T>& position) {
   using Kind = typename ConvexShape<T>::Kind;
   ConvexShape<T> s;
-  s.pose = pose;
+  s.rotation = rotation;
+  s.position = position;
   if (const auto* g = geom.template getIf<SphereGeometry<T>>()) {
     s.kind = Kind::Point;
     s.margin = g->radius;
@@ -89,9 +90,15 @@ template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const
   return s;
 }
 
+template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Transform<T>& pose) {
+  return makeConvexShape(geom, Mat3<T>(pose.q.toRotationMatrix()), pose.p);
+}
+
 template struct ConvexShape<float>;
 template struct ConvexShape<double>;
 template ConvexShape<float> makeConvexShape<float>(const Geometry<float>&, const Transform<float>&);
 template ConvexShape<double> makeConvexShape<double>(const Geometry<double>&, const Transform<double>&);
+template ConvexShape<float> makeConvexShape<float>(const Geometry<float>&, const Mat3<float>&, const Vec3<float>&);
+template ConvexShape<double> makeConvexShape<double>(const Geometry<double>&, const Mat3<double>&, const Vec3<double>&);
 
 }  // namespace gq::detail

@@ -1,7 +1,7 @@
 #pragma once
-// Support mappings prepared for the GJK/EPA inner loops. A ConvexShape stores a pose (quaternion) and, for hulls, a
-// MeshScale matrix; rotating every search direction through the quaternion and the scale costs more than the support
-// itself on small shapes. SupportMap folds them once per query into two 3x3 matrices:
+// Support mappings prepared for the GJK/EPA inner loops. A ConvexShape stores a rotation and, for hulls, a MeshScale
+// matrix; rotating every search direction through both costs more than the support itself on small shapes.
+// SupportMap folds them once per query into two 3x3 matrices:
 //   hull:   s(d) = R S v* + t  with  v* = argmax_v (S R^T d) . v   (S symmetric, so d.(R S v) = (S R^T d).v)
 //   others: s(d) = R s_local(R^T d) + t
 // (times the shape's localScale on the local point, folded into the first matrix: a rescaled pair, pair_scale.h)
@@ -101,8 +101,8 @@ template <class T> class SupportMap {
   using Kind = typename ConvexShape<T>::Kind;
 
   explicit SupportMap(const ConvexShape<T>& s)
-      : kind_(s.kind), origin_(s.pose.p), halfExtents_(s.halfExtents), hull_(s.hull), table_(s.startTable), custom_(s.custom), hint_(s.climbStart), cold_(s.climbStart == 0) {
-    const Mat3<T> r = s.pose.q.toRotationMatrix();
+      : kind_(s.kind), origin_(s.position), halfExtents_(s.halfExtents), hull_(s.hull), table_(s.startTable), custom_(s.custom), hint_(s.climbStart), cold_(s.climbStart == 0) {
+    const Mat3<T>& r = s.rotation;
     if (kind_ == Kind::Hull && s.hullScaled) {
       toWorld_ = r * s.hullScale;
       toLocal_ = s.hullScale * r.transpose();

@@ -32,7 +32,7 @@ template <class T> ConvexShape<T> SurfaceTriangleSupport<T>::shape() const {
   ConvexShape<T> s;
   s.kind = ConvexShape<T>::Kind::Custom;
   s.custom = this;
-  s.pose = Transform<T>(centroid_);
+  s.position = centroid_;
   s.size = std::max({local_[0].norm(), local_[1].norm(), local_[2].norm()});
   return s;
 }

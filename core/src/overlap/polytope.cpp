@@ -517,27 +517,24 @@ template <class T> bool penetrationPolytopes(const Polytope<T>& a, const Polytop
 
 namespace {
 
-// Largest distance from the origin to the boundary of the tetrahedron `s` when the origin is inside it (a lower
-// bound of the penetration depth of the cores, since the tetrahedron lies in their Minkowski difference); 0 when
-// the simplex is not a tetrahedron or the origin is not strictly inside.
-template <class T> T originClearance(const GjkSimplex<T>& s) {
-  if (s.size != 4) return T(0);
-  T clearance = std::numeric_limits<T>::max();
+// Whether the origin lies inside the tetrahedron `s` deeper than `depth` below each of its faces. The tetrahedron
+// lies in the cores' Minkowski difference, so its clearance bounds their penetration depth from below; a clearance
+// is never negative, so any depth < 0 is exceeded. Not a tetrahedron, or the origin not strictly inside: false.
+// Division-free: |n.p0| > depth |n| for each face normal n.
+template <class T> bool originDeeperThan(const GjkSimplex<T>& s, T depth) {
+  if (depth < T(0)) return true;
+  if (s.size != 4) return false;
   for (int skip = 0; skip < 4; ++skip) {
     const Vec3<T>& p0 = s.points[(skip + 1) % 4].w;
     const Vec3<T>& p1 = s.points[(skip + 2) % 4].w;
     const Vec3<T>& p2 = s.points[(skip + 3) % 4].w;
     const Vec3<T>& opposite = s.points[skip].w;
-    Vec3<T> n = (p1 - p0).cross(p2 - p0);
-    const T len = n.norm();
-    if (!(len > T(0))) return T(0);
-    n /= len;
+    const Vec3<T> n = (p1 - p0).cross(p2 - p0);
     const T originSide = -n.dot(p0), oppositeSide = n.dot(opposite - p0);
-    // The origin must be on the same side as the opposite vertex; its distance to this face plane is |originSide|.
-    if (!(originSide * oppositeSide > T(0))) return T(0);
-    clearance = std::min(clearance, std::abs(originSide));
+    // The origin must be on the same side as the opposite vertex, farther than depth from this face's plane.
+    if (!(originSide * oppositeSide > T(0)) || !(std::abs(originSide) > depth * n.norm())) return false;
   }
-  return clearance;
+  return true;
 }
 
 template <class T> bool isRounded(GeometryType t) { return t == GeometryType::Sphere || t == GeometryType::Capsule; }
@@ -574,29 +571,33 @@ bool overlapConvexShapesExact(const Geometry<T>& g0, const Transform<T>& p0, con
 
 }  // namespace
 
-template <class T>
-bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
-  const ConvexShape<T> a = makeConvexShape(g0, p0), b = makeConvexShape(g1, p1);
+template <class T> OverlapCertificate overlapByGjk(const ConvexShape<T>& a, const ConvexShape<T>& b) {
   const T band = kGjkOverlapBand<T> * std::max(a.size, b.size);
   // Separated by more than the band: GJK's separating axis is conclusive.
   ConvexShape<T> grown = a;
   grown.margin += band;
   GjkOverlapWitness<T> witness;
-  if (!gjkOverlap(grown, b, &witness)) return false;
+  if (!gjkOverlap(grown, b, &witness)) return OverlapCertificate::Apart;
   // Overlapping by more than the band: the cores' distance (rounded shells) or the origin's clearance inside
   // GJK's final tetrahedron (cores overlapping) proves it. The boolean run's own evidence usually suffices
   // (|v| bounds the cores' distance from above); otherwise a full distance query decides.
   const T margins = a.margin + b.margin;
-  if (!witness.coresOverlap && witness.coreDistanceUpper - margins < -band) return true;
-  if (witness.coresOverlap && originClearance(witness.simplex) + margins > band) return true;
+  if (!witness.coresOverlap && witness.coreDistanceUpper - margins < -band) return OverlapCertificate::Overlapping;
+  if (witness.coresOverlap && originDeeperThan(witness.simplex, band - margins)) return OverlapCertificate::Overlapping;
   const GjkResult<T> g = gjkDistance(a, b);
   if (g.status.ok()) {
-    if (!g.coresOverlap && g.distance + g.errorBound < -band) return true;
-    if (g.coresOverlap && originClearance(g.simplex) + a.margin + b.margin > band) return true;
+    if (!g.coresOverlap && g.distance + g.errorBound < -band) return OverlapCertificate::Overlapping;
+    if (g.coresOverlap && originDeeperThan(g.simplex, band - margins)) return OverlapCertificate::Overlapping;
   }
-  return overlapConvexShapesExact(g0, p0, g1, p1);
+  return OverlapCertificate::Unknown;
 }
 
+template <class T>
+bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
+  const OverlapCertificate gjk = overlapByGjk(makeConvexShape(g0, p0), makeConvexShape(g1, p1));
+  if (gjk != OverlapCertificate::Unknown) return gjk == OverlapCertificate::Overlapping;
+  return overlapConvexShapesExact(g0, p0, g1, p1);
+}
 
 template std::shared_ptr<const PolytopeTopology> hullTopology<float>(const std::shared_ptr<const ConvexMesh<float>>&);
 template Polytope<float>& scratchPolytope<float>(int);
@@ -613,6 +614,7 @@ template bool overlapRoundedPolytope<float>(const RoundedCore<float>&, const Pol
 template bool penetrationRoundedPolytope<float>(const RoundedCore<float>&, const Polytope<float>&, Vec3<float>&, float&);
 template bool overlapPolytopes<float>(const Polytope<float>&, const Polytope<float>&);
 template bool penetrationPolytopes<float>(const Polytope<float>&, const Polytope<float>&, Vec3<float>&, float&);
+template OverlapCertificate overlapByGjk<float>(const ConvexShape<float>&, const ConvexShape<float>&);
 template bool overlapConvexShapes<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&);
 template std::shared_ptr<const PolytopeTopology> hullTopology<double>(const std::shared_ptr<const ConvexMesh<double>>&);
 template Polytope<double>& scratchPolytope<double>(int);
@@ -629,6 +631,7 @@ template bool overlapRoundedPolytope<double>(const RoundedCore<double>&, const P
 template bool penetrationRoundedPolytope<double>(const RoundedCore<double>&, const Polytope<double>&, Vec3<double>&, double&);
 template bool overlapPolytopes<double>(const Polytope<double>&, const Polytope<double>&);
 template bool penetrationPolytopes<double>(const Polytope<double>&, const Polytope<double>&, Vec3<double>&, double&);
+template OverlapCertificate overlapByGjk<double>(const ConvexShape<double>&, const ConvexShape<double>&);
 template bool overlapConvexShapes<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&);
 
 }  // namespace gq::detail

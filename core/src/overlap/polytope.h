@@ -18,9 +18,11 @@
 #include <type_traits>
 #include <vector>
 
+#include "gjk/gjk.h"
 #include "gq/cooking.h"
 #include "gq/geometry.h"
 #include "gq/transform.h"
+#include "overlap/overlap.h"
 #include "shapes/segment.h"
 
 namespace gq::detail {
@@ -111,5 +113,8 @@ template <class T> inline constexpr T kGjkOverlapBand = std::is_same_v<T, float>
 // there the exact kernels above decide. Touching counts as overlapping.
 template <class T>
 bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);
+// Its GJK part on prepared shapes: Apart or Overlapping when GJK decides beyond the band, else Unknown (the exact
+// kernels' turn).
+template <class T> OverlapCertificate overlapByGjk(const ConvexShape<T>& a, const ConvexShape<T>& b);
 
 }  // namespace gq::detail

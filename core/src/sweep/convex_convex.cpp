@@ -22,13 +22,13 @@ ToiResult<T> sweepConvexShapes(const ConvexShape<T>& a, const ConvexShape<T>& b,
                                bool testInitialOverlap) {
   // Rounding of the moved support points grows with the distance travelled: include it in the length scale.
   ConvexShape<T> moving = a;
-  moving.size = std::max(a.size, std::min(maxDist, T(a.size + b.size + (a.pose.p - b.pose.p).norm())));
+  moving.size = std::max(a.size, std::min(maxDist, T(a.size + b.size + (a.position - b.position).norm())));
   const T touch = T(kSweepTouchFactor) * gjkTolerance(moving, b);
   const T target = T(0.5) * touch;  // aim a little short of contact so that the normal stays defined
   GjkCache<T> cache;
   ToiResult<T> out;
   auto distanceAt = [&](T t, GjkCache<T>* c) {
-    moving.pose.p = a.pose.p + t * dir;
+    moving.position = a.position + t * dir;
     return gjkDistance(moving, b, c);
   };
   auto isTouching = [&](const GjkResult<T>& r) { return r.coresOverlap || r.distance <= touch; };

@@ -114,7 +114,7 @@ template <class T>
 Bounds3<T> sweptBoundsInFrame(const ConvexShape<T>& a, const Transform<T>& frame, const Vec3<T>& dir, T reach) {
   Bounds3<T> b;
   // Padding for the rounding of support points and of the frame change (relative to the extent involved).
-  const T pad = T(16) * std::numeric_limits<T>::epsilon() * (a.size + a.pose.p.norm() + frame.p.norm() + reach);
+  const T pad = T(16) * std::numeric_limits<T>::epsilon() * (a.size + a.position.norm() + frame.p.norm() + reach);
   for (int i = 0; i < 3; ++i) {
     const Vec3<T> axis = frame.rotate(Vec3<T>::Unit(i));
     const T origin = axis.dot(frame.p);
