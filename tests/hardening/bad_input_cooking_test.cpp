@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "hardening_fixtures.h"
+#include "scratch_dir.h"
 
 namespace gq::hardening {
 namespace {
@@ -16,12 +16,9 @@ namespace {
 template <class T> class BadInputCooking : public ::testing::Test {};
 TYPED_TEST_SUITE(BadInputCooking, Scalars);
 
-// Each test writes its files into its own folder under the system temp dir.
+// Each test process writes its files into its own scratch folder (scratch_dir.h), removed at exit.
 std::filesystem::path scratchFile(const std::string& name, const std::string& bytes) {
-  // Per process: ctest runs the float and double instances of a test at the same time.
-  const auto dir = std::filesystem::temp_directory_path() / ("gq_hardening_files_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = dir / name;
+  const auto path = gqtest::processScratchDir() / name;
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "robot_paths.h"
+#include "scratch_dir.h"
 
 namespace gq::urdf::test {
 namespace {
@@ -17,8 +17,7 @@ TYPED_TEST_SUITE(Approximation, Scalars);
 
 // A 0.4 x 0.2 x 0.1 box mesh centred at (1, 2, 3), as OBJ.
 std::string boxUrdf() {
-  const auto dir = std::filesystem::temp_directory_path() / ("gq_urdf_tests_" + std::to_string(::getpid()));  // per process: ctest runs tests in parallel
-  std::filesystem::create_directories(dir);
+  const auto& dir = gqtest::processScratchDir();
   std::ofstream obj(dir / "box.obj");
   for (int i = 0; i < 8; ++i)
     obj << "v " << 1 + ((i & 1) ? 0.2 : -0.2) << " " << 2 + ((i & 2) ? 0.1 : -0.1) << " " << 3 + ((i & 4) ? 0.05 : -0.05)

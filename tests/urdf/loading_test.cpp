@@ -5,11 +5,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "gq/cooking.h"
 #include "gq/custom_shapes.h"
 #include "robot_paths.h"
+#include "scratch_dir.h"
 
 namespace gq::urdf::test {
 namespace {
@@ -18,9 +18,7 @@ namespace fs = std::filesystem;
 
 // A scratch folder with a unit-cube OBJ (corners at 0 and 1) for hand-written URDFs.
 fs::path scratchDir() {
-  // One folder per process: ctest runs the float and double instances in parallel, and a shared file would be
-  // rewritten by one while the other reads it.
-  const fs::path dir = fs::temp_directory_path() / ("gq_urdf_tests_" + std::to_string(::getpid()));
+  const fs::path& dir = gqtest::processScratchDir();
   fs::create_directories(dir / "pkgroot" / "my_pkg" / "meshes");
   std::ofstream obj(dir / "pkgroot" / "my_pkg" / "meshes" / "cube.obj");
   obj << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
