@@ -87,9 +87,9 @@ template <class T> Conversion triangle(const ::fcl::TriangleP<T>& t, Converted<T
   return Conversion::Ok;
 }
 
-template <class T> Conversion cached(const ::fcl::CollisionGeometry<T>* g, Converted<T>& out) {
+template <class T> Conversion cached(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Converted<T>& out) {
   Cooked<T> cooked;
-  const Conversion conversion = cachedGeometry(g, cooked);
+  const Conversion conversion = cachedGeometry(g, type, cooked);
   if (conversion == Conversion::Ok) out.setCached(cooked);
   return conversion;
 }
@@ -98,7 +98,8 @@ template <class T> Conversion cached(const ::fcl::CollisionGeometry<T>* g, Conve
 
 template <class T> Conversion convert(const ::fcl::CollisionGeometry<T>* g, Converted<T>& out) {
   if (!g) return Conversion::Invalid;
-  switch (g->getNodeType()) {
+  const ::fcl::NODE_TYPE type = g->getNodeType();
+  switch (type) {
     case ::fcl::GEOM_SPHERE: return sphere(*static_cast<const ::fcl::Sphere<T>*>(g), out);
     case ::fcl::GEOM_BOX: return box(*static_cast<const ::fcl::Box<T>*>(g), out);
     case ::fcl::GEOM_CAPSULE: return capsule(*static_cast<const ::fcl::Capsule<T>*>(g), out);
@@ -121,7 +122,7 @@ template <class T> Conversion convert(const ::fcl::CollisionGeometry<T>* g, Conv
       return planeFrame<T>(FclShape::Plane, p->n, p->d, out);
     }
     case ::fcl::GEOM_OCTREE: return Conversion::NotModelled;
-    default: return cached(g, out);  // Convex and BVHModels
+    default: return cached(g, type, out);  // Convex and BVHModels
   }
 }
 

@@ -71,8 +71,8 @@ template <class BV> MeshView<typename BV::S> viewOf(const ::fcl::CollisionGeomet
   v.built = m->build_state == ::fcl::BVH_BUILD_STATE_PROCESSED || m->build_state == ::fcl::BVH_BUILD_STATE_UPDATED;
   return v;
 }
-template <class T> bool meshView(const ::fcl::CollisionGeometry<T>* g, MeshView<T>& v) {
-  switch (g->getNodeType()) {
+template <class T> bool meshView(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, MeshView<T>& v) {
+  switch (type) {
     case ::fcl::BV_AABB: v = viewOf<::fcl::AABB<T>>(g); return true;
     case ::fcl::BV_OBB: v = viewOf<::fcl::OBB<T>>(g); return true;
     case ::fcl::BV_RSS: v = viewOf<::fcl::RSS<T>>(g); return true;
@@ -222,12 +222,13 @@ template <class T> void clearShared() {
 
 }  // namespace
 
-template <class T> Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, Cooked<T>& out) {
-  Key<T> key{g, g->getNodeType() == ::fcl::GEOM_CONVEX, nullptr, {}, 0};
+template <class T>
+Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
+  Key<T> key{g, type == ::fcl::GEOM_CONVEX, nullptr, {}, 0};
   if (key.convex) {
     key.vertexArray = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
   } else {
-    if (!meshView(g, key.mesh)) return Conversion::NotModelled;
+    if (!meshView(g, type, key.mesh)) return Conversion::NotModelled;
     const Conversion conversion = classifyMesh(key.mesh);
     if (conversion != Conversion::Ok) return conversion;
     key.fingerprint = meshFingerprint(key.mesh);
@@ -253,8 +254,9 @@ void clearCached() {
   clearShared<double>();
 }
 
-template Conversion cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, Cooked<float>&);
-template Conversion cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, Cooked<double>&);
+template Conversion cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, ::fcl::NODE_TYPE, Cooked<float>&);
+template Conversion cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, ::fcl::NODE_TYPE,
+                                           Cooked<double>&);
 template void forgetCached<float>(const ::fcl::CollisionGeometry<float>*);
 template void forgetCached<double>(const ::fcl::CollisionGeometry<double>*);
 

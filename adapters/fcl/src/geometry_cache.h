@@ -10,14 +10,17 @@
 //    triangles sampled evenly. An edit that changes none of them needs forgetGeometry().
 // Lookups go through a small per-thread table in front of the shared map (no lock, no reference counting on a hit);
 // forget/clear bump a generation that turns every per-thread slot stale.
+#include <fcl/geometry/collision_geometry.h>
+
 #include "convert.h"
 
 namespace gq::fcl::detail {
 
-// The cooked geometry of a Convex or a triangle BVHModel (`out`), or the reason there is none: Invalid for an empty,
-// unfinished or uncookable model; NotModelled for point clouds and octrees. The pointers stay valid until this
-// thread's next lookup of two more geometries (a call looks up at most two).
-template <class T> Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* geometry, Cooked<T>& out);
+// The cooked geometry of a Convex or a triangle BVHModel (`out`; `type` is the geometry's node type), or the reason
+// there is none: Invalid for an empty, unfinished or uncookable model; NotModelled for point clouds and octrees. The
+// pointers stay valid until this thread's next lookup of two more geometries (a call looks up at most two).
+template <class T>
+Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* geometry, ::fcl::NODE_TYPE type, Cooked<T>& out);
 
 template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* geometry);
 void clearCached();
