@@ -177,43 +177,48 @@ TEST(FclSolidPairs, AScaledLinearPartIsRejectedForBoxAndCapsule) {
 // Two Convex decided by their hulls' balls (deeply overlapping, or far apart) still validate the transforms as the
 // GJK path does: a hull is not symmetric, so a reflection is rejected as a scaled linear part is. A miss on bad
 // input is told from a miss by the return value: 0 instead of the result's count.
-TEST(FclSolidPairs, ConvexPairsDecidedByTheirBallsRejectReflectedAndScaledLinearParts) {
-  std::mt19937 rng(23);
-  std::vector<Vector3d> vertices;
+// A Convex over 30 random points (seeded), with its vertices.
+std::shared_ptr<::fcl::Convexd> randomConvex(unsigned seed, std::vector<Vector3d>& vertices) {
+  std::mt19937 rng(seed);
   std::vector<std::vector<int>> faces;
   gq::fcltest::randomHull(rng, 30, vertices, faces);
-  const auto hull = gq::fcltest::convexGeometry(vertices, faces);
+  return gq::fcltest::convexGeometry(vertices, faces);
+}
+
+// collide's return for a pair, on a result pre-seeded with one contact: 1 on a miss, 2 on a hit, 0 on bad input.
+std::size_t collideOnSeededResult(const ::fcl::Convexd& hull, const ::fcl::Transform3d& at) {
+  ::fcl::CollisionRequestd request;
+  request.num_max_contacts = 4;  // room beside the pre-seeded contact
+  ::fcl::CollisionResultd c;
+  c.addContact(::fcl::Contactd());
+  const std::size_t count = gq::fcl::collide<double>(&hull, ::fcl::Transform3d::Identity(), &hull, at, request, c);
+  EXPECT_EQ(c.numContacts(), count == 0 ? 1u : count);  // bad input writes nothing
+  return count;
+}
+
+TEST(FclSolidPairs, ConvexPairsDecidedByTheirBallsRejectReflectedAndScaledLinearParts) {
+  std::vector<Vector3d> vertices;
+  const auto hull = randomConvex(23, vertices);
   const ::fcl::Transform3d origin = ::fcl::Transform3d::Identity();
   ::fcl::Transform3d far = origin;
   far.translation() = Vector3d(20, 0, 0);
-  ::fcl::CollisionRequestd request;
-  request.num_max_contacts = 4;  // room beside the pre-seeded contact
   for (const ::fcl::Transform3d& at : {origin, far}) {
     ::fcl::Transform3d reflected = at, scaled = at, rotated = at;
     reflected.linear() = Eigen::Vector3d(1, 1, -1).asDiagonal();
     scaled.linear() *= 1.01;
     rotated.linear() = Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
     const bool hit = at.translation().norm() == 0;
-    for (const ::fcl::Transform3d& bad : {reflected, scaled}) {
-      ::fcl::CollisionResultd c;
-      c.addContact(::fcl::Contactd());  // a miss returns the count (1), bad input 0
-      EXPECT_EQ(gq::fcl::collide<double>(hull.get(), origin, hull.get(), bad, request, c), 0u);
-      EXPECT_EQ(c.numContacts(), 1u);
-    }
-    ::fcl::CollisionResultd c;
-    c.addContact(::fcl::Contactd());
-    EXPECT_EQ(gq::fcl::collide<double>(hull.get(), origin, hull.get(), rotated, request, c), hit ? 2u : 1u);
+    EXPECT_EQ(collideOnSeededResult(*hull, reflected), 0u);
+    EXPECT_EQ(collideOnSeededResult(*hull, scaled), 0u);
+    EXPECT_EQ(collideOnSeededResult(*hull, rotated), hit ? 2u : 1u);
   }
 }
 
 // Two Convex their balls cannot decide (centres between the inner and the outer balls' reach) go to GJK, placed by
 // FCL's matrices as given: a reflection or a scaled linear part is rejected there too, in collide and in distance.
 TEST(FclSolidPairs, ConvexPairsLeftToGjkRejectReflectedAndScaledLinearParts) {
-  std::mt19937 rng(29);
   std::vector<Vector3d> vertices;
-  std::vector<std::vector<int>> faces;
-  gq::fcltest::randomHull(rng, 30, vertices, faces);
-  const auto hull = gq::fcltest::convexGeometry(vertices, faces);
+  const auto hull = randomConvex(29, vertices);
   std::shared_ptr<const gq::ConvexMesh<double>> cooked;
   ASSERT_TRUE(gq::cookConvexMesh(std::vector<gq::Vec3<double>>(vertices.begin(), vertices.end()), cooked).ok());
   const double reach = cooked->innerRadius + cooked->outerRadius;  // halfway between both balls' contact distances
@@ -228,22 +233,15 @@ TEST(FclSolidPairs, ConvexPairsLeftToGjkRejectReflectedAndScaledLinearParts) {
     ASSERT_GT(centres, 2 * cooked->innerRadius + 0.01);
     ASSERT_LT(centres, 2 * cooked->outerRadius - 0.01);
   }
-  ::fcl::CollisionRequestd request;
-  request.num_max_contacts = 4;  // room beside the pre-seeded contact
   for (const ::fcl::Transform3d& bad : {reflected, scaled}) {
-    ::fcl::CollisionResultd c;
-    c.addContact(::fcl::Contactd());  // a miss returns the count (1), bad input 0
-    EXPECT_EQ(gq::fcl::collide<double>(hull.get(), origin, hull.get(), bad, request, c), 0u);
-    EXPECT_EQ(c.numContacts(), 1u);
+    EXPECT_EQ(collideOnSeededResult(*hull, bad), 0u);
     ::fcl::DistanceResultd d;
     d.min_distance = 5;
     EXPECT_EQ(gq::fcl::distance<double>(hull.get(), origin, hull.get(), bad, ::fcl::DistanceRequestd(true), d),
               std::numeric_limits<double>::max());
     EXPECT_EQ(d.min_distance, 5);
   }
-  ::fcl::CollisionResultd c;
-  c.addContact(::fcl::Contactd());
-  EXPECT_NE(gq::fcl::collide<double>(hull.get(), origin, hull.get(), rotated, request, c), 0u);
+  EXPECT_NE(collideOnSeededResult(*hull, rotated), 0u);
   ::fcl::DistanceResultd d;
   EXPECT_LT(gq::fcl::distance<double>(hull.get(), origin, hull.get(), rotated, ::fcl::DistanceRequestd(true), d),
             std::numeric_limits<double>::max());
