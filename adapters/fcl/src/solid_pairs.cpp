@@ -445,7 +445,8 @@ template <class S> bool rotationPose(const Solid<S>& s) {
   return rigidPose(s) && det > S(0);
 }
 
-// A Convex's support mapping (prepared by the cache at cooking) placed at (r, t).
+// A Convex's support mapping (prepared by the cache at cooking) placed at (r, t): a copy, since the cached one is
+// shared between threads and GJK writes its climbing hints into the shapes it is given.
 template <class S> k::ConvexShape<S> placedHull(const Converted<S>& c, const Mat3<S>& r, const Vec3<S>& t) {
   k::ConvexShape<S> s = *c.cachedSupport();
   s.rotation = r;
@@ -463,7 +464,8 @@ template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>&
     // as they are (a quaternion round trip cost ~400 instructions a call).
     const Mat3<S> r = a.tf->linear().transpose() * b.tf->linear();
     const Vec3<S> t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
-    const k::OverlapCertificate gjk = k::overlapByGjk(*ca.cachedSupport(), placedHull(cb, r, t));
+    const k::ConvexShape<S> sa = *ca.cachedSupport();  // a copy: GJK writes its climbing hints into the shapes
+    const k::OverlapCertificate gjk = k::overlapByGjk(sa, placedHull(cb, r, t));
     hit = gjk == k::OverlapCertificate::Unknown
               ? k::overlapConvexShapes(ca.geometry(), Transform<S>(), cb.geometry(), Transform<S>(t, Quat<S>(r)))
               : gjk == k::OverlapCertificate::Overlapping;
@@ -558,7 +560,8 @@ Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk as
   }
   // World frame, as the converted path: FCL's nearest points are world points.
   distanceWithoutDepth(placedHull(ca, Mat3<S>(a.tf->linear()), Vec3<S>(a.tf->translation())),
-                       placedHull(cb, Mat3<S>(b.tf->linear()), Vec3<S>(b.tf->translation())), stopTolerance<S>(ask), out);
+                       placedHull(cb, Mat3<S>(b.tf->linear()), Vec3<S>(b.tf->translation())), stopTolerance<S>(ask),
+                       out);
   return finiteResult(out) ? Answer::Done : Answer::Unanswered;
 }
 

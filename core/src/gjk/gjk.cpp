@@ -24,7 +24,8 @@ namespace {
 
 // Rebuilds the cached simplex from its search directions (valid support points whatever the poses now are).
 template <class T>
-void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Mat3<T>& rotationA, const GjkCache<T>& cache, GjkSimplex<T>& s) {
+void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Mat3<T>& rotationA, const GjkCache<T>& cache,
+                 GjkSimplex<T>& s) {
   for (std::uint32_t k = 0; k < std::min<std::uint32_t>(cache.simplexSize, 4); ++k) {
     const Vec3<T>& local = cache.simplexDirections[k];
     if (!isFinite(local) || !(local.squaredNorm() > T(0))) continue;
@@ -37,7 +38,8 @@ void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Mat3<T>& rotationA, c
 
 // First search direction: the cached one (a's local frame), else the centre difference, else +X.
 template <class T> Vec3<T> initialDirection(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkCache<T>* cache) {
-  if (cache && cache->direction.squaredNorm() > T(0) && isFinite(cache->direction)) return a.rotation * cache->direction;
+  if (cache && cache->direction.squaredNorm() > T(0) && isFinite(cache->direction))
+    return a.rotation * cache->direction;
   const Vec3<T> d = a.center() - b.center();
   return d.squaredNorm() > T(0) ? d : Vec3<T>(Vec3<T>::UnitX());
 }

@@ -39,7 +39,8 @@ template <class T> Vec3<T> ConvexShape<T>::supportLocal(const Vec3<T>& d) const 
 
 template <class T> Vec3<T> ConvexShape<T>::center() const {
   switch (kind) {
-    case Kind::Hull: return toWorld(Vec3<T>(localScale * (hullScaled ? Vec3<T>(hullScale * hull->center) : hull->center)));
+    case Kind::Hull:
+      return toWorld(Vec3<T>(localScale * (hullScaled ? Vec3<T>(hullScale * hull->center) : hull->center)));
     case Kind::Custom: return toWorld(Vec3<T>(localScale * custom->localBounds().center()));
     default: return position;
   }

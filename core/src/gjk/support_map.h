@@ -101,7 +101,8 @@ template <class T> class SupportMap {
   using Kind = typename ConvexShape<T>::Kind;
 
   explicit SupportMap(const ConvexShape<T>& s)
-      : kind_(s.kind), origin_(s.position), halfExtents_(s.halfExtents), hull_(s.hull), table_(s.startTable), custom_(s.custom), hint_(s.climbStart), cold_(s.climbStart == 0) {
+      : kind_(s.kind), origin_(s.position), halfExtents_(s.halfExtents), hull_(s.hull), table_(s.startTable),
+        custom_(s.custom), hint_(s.climbStart), cold_(s.climbStart == 0) {
     const Mat3<T>& r = s.rotation;
     if (kind_ == Kind::Hull && s.hullScaled) {
       toWorld_ = r * s.hullScale;
