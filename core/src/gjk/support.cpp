@@ -91,8 +91,10 @@ ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Mat3<T>& rotation,
   return s;
 }
 
+// A sphere's rotation moves none of its points: its shape keeps the identity (no conversion).
 template <class T> ConvexShape<T> makeConvexShape(const Geometry<T>& geom, const Transform<T>& pose) {
-  return makeConvexShape(geom, Mat3<T>(pose.q.toRotationMatrix()), pose.p);
+  const bool sphere = geom.type() == GeometryType::Sphere;
+  return makeConvexShape(geom, sphere ? Mat3<T>(Mat3<T>::Identity()) : Mat3<T>(pose.q.toRotationMatrix()), pose.p);
 }
 
 template struct ConvexShape<float>;
