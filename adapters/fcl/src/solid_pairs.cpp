@@ -16,6 +16,7 @@
 
 #include "custom/callback_queries.h"
 #include "distance/distance.h"
+#include "geometry_cache.h"
 #include "gjk/gjk.h"
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
@@ -425,14 +426,21 @@ Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, 
 
 // Two Convex: core's certificate on the cooked hulls' balls, placed by FCL's matrices (a Convex keeps FCL's frame);
 // the converted path (GJK) when it decides nothing. A hull is not symmetric: its linear part must be a rotation.
-template <class S> k::HullBalls<S> hullBalls(const Solid<S>& s, const Converted<S>& c) {
-  const ConvexMesh<S>& m = *as<GT::ConvexMesh>(c.geometry()).mesh;
+// Both Convex straight from the cache, without Converted objects (their construction and the node-type switch cost
+// ~50 instructions a call); false when either has no cooked hull.
+template <class S> bool cookedHulls(const Solid<S>& a, const Solid<S>& b, Cooked<S>& ca, Cooked<S>& cb) {
+  return cachedGeometry(a.geometry, ::fcl::GEOM_CONVEX, ca) == Conversion::Ok &&
+         cachedGeometry(b.geometry, ::fcl::GEOM_CONVEX, cb) == Conversion::Ok;
+}
+
+template <class S> k::HullBalls<S> hullBalls(const Solid<S>& s, const Cooked<S>& c) {
+  const ConvexMesh<S>& m = *c.support->hull;
   return {s.tf->linear() * m.center + s.tf->translation(), m.innerRadius, m.outerRadius};
 }
 
 template <class S>
-k::OverlapCertificate convexCertificate(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca,
-                                        const Converted<S>& cb) {
+k::OverlapCertificate convexCertificate(const Solid<S>& a, const Solid<S>& b, const Cooked<S>& ca,
+                                        const Cooked<S>& cb) {
   return k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
 }
 
@@ -447,16 +455,16 @@ template <class S> bool rotationPose(const Solid<S>& s) {
 
 // A Convex's support mapping (prepared by the cache at cooking) placed at (r, t): a copy, since the cached one is
 // shared between threads and GJK writes its climbing hints into the shapes it is given.
-template <class S> k::ConvexShape<S> placedHull(const Converted<S>& c, const Mat3<S>& r, const Vec3<S>& t) {
-  k::ConvexShape<S> s = *c.cachedSupport();
+template <class S> k::ConvexShape<S> placedHull(const Cooked<S>& c, const Mat3<S>& r, const Vec3<S>& t) {
+  k::ConvexShape<S> s = *c.support;
   s.rotation = r;
   s.position = t;
   return s;
 }
 
 template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
-  Converted<S> ca, cb;
-  if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
+  Cooked<S> ca, cb;
+  if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
   const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
   if (certificate == k::OverlapCertificate::Unknown) {  // core's GJK, then its exact kernels within the band
     if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
@@ -464,10 +472,10 @@ template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>&
     // as they are (a quaternion round trip cost ~400 instructions a call).
     const Mat3<S> r = a.tf->linear().transpose() * b.tf->linear();
     const Vec3<S> t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
-    const k::ConvexShape<S> sa = *ca.cachedSupport();  // a copy: GJK writes its climbing hints into the shapes
+    const k::ConvexShape<S> sa = *ca.support;  // a copy: GJK writes its climbing hints into the shapes
     const k::OverlapCertificate gjk = k::overlapByGjk(sa, placedHull(cb, r, t));
     hit = gjk == k::OverlapCertificate::Unknown
-              ? k::overlapConvexShapes(ca.geometry(), Transform<S>(), cb.geometry(), Transform<S>(t, Quat<S>(r)))
+              ? k::overlapConvexShapes(*ca.geometry, Transform<S>(), *cb.geometry, Transform<S>(t, Quat<S>(r)))
               : gjk == k::OverlapCertificate::Overlapping;
     return Answer::Done;
   }
@@ -549,9 +557,9 @@ template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>&
 // Without a requested depth, overlapping inner balls are FCL's -1 at once; everything else is GJK's.
 template <class S>
 Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  Converted<S> ca, cb;
-  if (convertBoth(a, b, ca, cb) != Answer::Done) return Answer::Invalid;
-  if (ask.depth) return distanceConverted<S, FS::Convex, FS::Convex>(a, b, ca, cb, ask, out);
+  if (ask.depth) return convertedDistance<S, FS::Convex, FS::Convex>(a, b, ask, out);
+  Cooked<S> ca, cb;
+  if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
   const bool overlapping = convexCertificate(a, b, ca, cb) == k::OverlapCertificate::Overlapping;
   if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
   if (overlapping) {
