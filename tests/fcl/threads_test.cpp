@@ -31,7 +31,8 @@ Answers answersAt(const ::fcl::Convexd& a, const ::fcl::Convexd& b, const ::fcl:
   ::fcl::CollisionResultd c;
   out.contacts = gq::fcl::collide<double>(&a, ::fcl::Transform3d::Identity(), &b, pose, ::fcl::CollisionRequestd(), c);
   ::fcl::DistanceResultd d;
-  out.distance = gq::fcl::distance<double>(&a, ::fcl::Transform3d::Identity(), &b, pose, ::fcl::DistanceRequestd(true), d);
+  out.distance =
+      gq::fcl::distance<double>(&a, ::fcl::Transform3d::Identity(), &b, pose, ::fcl::DistanceRequestd(true), d);
   return out;
 }
 
