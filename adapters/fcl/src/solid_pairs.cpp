@@ -491,16 +491,33 @@ template <class S> bool cylinderSize(const Solid<S>& s, S& radius, S& halfHeight
   return positive(c->radius) && positive(c->lz);
 }
 
-// Box and cylinder: core's certificates in the box's frame (FCL's cylinder axis is its local Z); GJK when they find
-// none. Sizes are checked first (Invalid), the transforms by the callers.
+// The cylinder in the box's frame (FCL's cylinder axis is its local Z): centre, unit axis, radius, half height.
+template <class S> struct CylinderInBox {
+  Vec3<S> centre, axis;
+  S radius, halfHeight;
+};
+
+// Sizes are checked (false: Invalid), the transforms by the callers.
+template <class S> bool cylinderInBox(const Solid<S>& box, const Solid<S>& cylinder, Vec3<S>& h, CylinderInBox<S>& c) {
+  h = boxHalf(box);
+  if (!boxSized(h) || !cylinderSize(cylinder, c.radius, c.halfHeight)) return false;
+  const auto rt = box.tf->linear().transpose();
+  c.centre = rt * (cylinder.tf->translation() - box.tf->translation());
+  c.axis = rt * cylinder.tf->linear().col(2);
+  return true;
+}
+
+template <class S> k::OverlapCertificate boxCylinderCertificate(const Vec3<S>& h, const CylinderInBox<S>& c) {
+  return k::cylinderBoxCertificate<S>(c.centre, c.axis, c.radius, c.halfHeight, h);
+}
+
+// Box and cylinder: core's certificates in the box's frame; GJK when they find none.
 template <class S> bool boxCylinderCertificate(const Solid<S>& box, const Solid<S>& cylinder,
                                                k::OverlapCertificate& certificate) {
-  const Vec3<S> h = boxHalf(box);
-  S radius, halfHeight;
-  if (!boxSized(h) || !cylinderSize(cylinder, radius, halfHeight)) return false;
-  const auto rt = box.tf->linear().transpose();
-  certificate = k::cylinderBoxCertificate<S>(rt * (cylinder.tf->translation() - box.tf->translation()),
-                                             rt * cylinder.tf->linear().col(2), radius, halfHeight, h);
+  Vec3<S> h;
+  CylinderInBox<S> c;
+  if (!cylinderInBox(box, cylinder, h, c)) return false;
+  certificate = boxCylinderCertificate(h, c);
   return true;
 }
 
@@ -544,14 +561,33 @@ Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk 
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
 }
 
-// Without a requested depth, proven overlap is FCL's -1 at once; everything else is GJK's.
+// Box and cylinder distance: without a requested depth, proven overlap is FCL's -1 at once; a separated pair whose
+// closest feature on the cylinder is a cap or the side is core's closed form (certified within GJK's tolerance for
+// the pair, as the certificate's); the rest (rims, overlap with a requested depth) is GJK's.
 template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  k::OverlapCertificate certificate = k::OverlapCertificate::Unknown;
-  if (!ask.depth && !boxCylinderCertificate(a, b, certificate)) return Answer::Invalid;
-  if (certificate != k::OverlapCertificate::Overlapping) return convertedDistance<S, FS::Box, FS::Cylinder>(a, b, ask, out);
-  if (!rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
-  writeOverlapping(out);
-  return Answer::Done;
+  Vec3<S> h;
+  CylinderInBox<S> c;
+  if (!cylinderInBox(a, b, h, c)) return Answer::Invalid;
+  const auto overlapping = [&] {
+    if (!rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
+    writeOverlapping(out);
+    return Answer::Done;
+  };
+  if (!ask.depth && boxCylinderCertificate(h, c) == k::OverlapCertificate::Overlapping) return overlapping();
+  const S scale = std::max({Vec3<S>(c.halfHeight, c.radius, c.radius).norm(), h.norm(), c.centre.norm()});
+  DistanceResult<S> local;
+  switch (k::distanceBoxCylinderLocal<S>(h, c.centre, c.axis, c.radius, c.halfHeight,
+                                         k::gjkRelativeTolerance<S>() * scale, local)) {
+    case k::BoxCylinderDistance::Separated:
+      if (!rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
+      frameToWorld(*a.tf, ask.points, local, out);
+      return finiteResult(local) ? Answer::Done : Answer::Unanswered;
+    case k::BoxCylinderDistance::Overlapping:
+      if (!ask.depth) return overlapping();
+      break;
+    case k::BoxCylinderDistance::Unknown: break;
+  }
+  return convertedDistance<S, FS::Box, FS::Cylinder>(a, b, ask, out);
 }
 
 // Without a requested depth, overlapping inner balls are FCL's -1 at once; everything else is GJK's.

@@ -4,6 +4,8 @@
 // Conventions (as gq::DistanceResult): normal is unit from geom0 towards geom1, point0 on geom0, point1 on geom1,
 // point1 = point0 + distance * normal; when penetrating, translating geom1 by -distance * normal separates them.
 // When the normal is undefined (coincident centres, intersecting axes) the kernels pick a documented direction.
+#include <cstdint>
+
 #include "common/unit_vector.h"
 #include "gq/geometry.h"
 #include "gq/query.h"
@@ -58,6 +60,14 @@ template <class T> void distanceCapsuleCapsule(const CapsuleAxis<T>& capsule0, c
 // Capsule (segment c + s d, s in [-1, 1], radius r0) against the box [-h, h], exact (distance/capsule_box.cpp).
 template <class T>
 void distanceCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& dInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
+
+// Box [-h, h] against a cylinder (centre c, unit axis a, radius r, half height hh) in the box's frame, where a
+// closed form proves the answer within `tolerance` (distance/box_cylinder.cpp): Separated (local written: point0 on
+// the box, point1 on the cylinder), Overlapping (a common point found; local untouched) or Unknown (GJK answers).
+enum class BoxCylinderDistance : std::uint8_t { Separated, Overlapping, Unknown };
+template <class T>
+BoxCylinderDistance distanceBoxCylinderLocal(const Vec3<T>& h, const Vec3<T>& c, const Vec3<T>& a, T r, T hh,
+                                             T tolerance, DistanceResult<T>& local);
 
 // Boxes in box 0's frame (box 1: axes r01 as columns, centre t01), exact (distance/box_box.cpp): the closest points
 // of separated boxes, or the SAT depth and normal of overlapping ones with witnesses on both. False only in the rare

@@ -1,0 +1,163 @@
+// Box/cylinder distance closed forms (distance/box_cylinder.cpp): a cap or the side of the cylinder, or a face or
+// corner of the box, as the closest feature is answered exactly, each answer proven here by a separating plane whose
+// gap is the answer; common points are Overlapping; a rim against a box edge is left to GJK.
+#include "gjk_test_shapes.h"
+
+#include <cmath>
+#include <limits>
+
+#include "distance/distance.h"
+#include "gjk/gjk.h"
+#include "gq/custom_shapes.h"
+
+namespace {
+
+using namespace gjktest;
+using gq::detail::BoxCylinderDistance;
+
+template <class T> class BoxCylinderDistanceTest : public ::testing::Test {};
+TYPED_TEST_SUITE(BoxCylinderDistanceTest, Scalars);
+
+// A cylinder in the box's frame.
+template <class T> struct Cylinder {
+  gq::Vec3<T> c, a;
+  T r, hh;
+};
+
+// The gap between box and cylinder along the unit n (from the box towards the cylinder): the least of n.y over the
+// cylinder minus the most of n.x over the box. It never exceeds their distance.
+template <class T> long double gapAlong(const gq::Vec3<T>& h, const Cylinder<T>& s, const gq::Vec3<T>& n) {
+  using L = long double;
+  const L na = L(n.x()) * s.a.x() + L(n.y()) * s.a.y() + L(n.z()) * s.a.z();
+  const L nc = L(n.x()) * s.c.x() + L(n.y()) * s.c.y() + L(n.z()) * s.c.z();
+  // The rim's reach |n x a| from the cross product itself: sqrt(1 - (n.a)^2) has an infinite slope at n = a.
+  const L cx = L(n.y()) * s.a.z() - L(n.z()) * s.a.y(), cy = L(n.z()) * s.a.x() - L(n.x()) * s.a.z(),
+          cz = L(n.x()) * s.a.y() - L(n.y()) * s.a.x();
+  const L cylinderLeast = nc - L(s.hh) * std::abs(na) - L(s.r) * std::sqrt(cx * cx + cy * cy + cz * cz);
+  const L boxMost = L(h.x()) * std::abs(L(n.x())) + L(h.y()) * std::abs(L(n.y())) + L(h.z()) * std::abs(L(n.z()));
+  return cylinderLeast - boxMost;
+}
+
+template <class T> bool inCylinder(const Cylinder<T>& s, const gq::Vec3<T>& p, T slack) {
+  const gq::Vec3<T> d = p - s.c;
+  const T t = d.dot(s.a);
+  return std::abs(t) <= s.hh + slack && std::sqrt(std::max(T(0), d.squaredNorm() - t * t)) <= s.r + slack;
+}
+
+template <class T> T tolerance(const gq::Vec3<T>& h, const Cylinder<T>& s) {
+  return gq::detail::gjkRelativeTolerance<T>() * std::max({gq::Vec3<T>(s.hh, s.r, s.r).norm(), h.norm(), s.c.norm()});
+}
+
+template <class T> BoxCylinderDistance answer(const gq::Vec3<T>& h, const Cylinder<T>& s, gq::DistanceResult<T>& d) {
+  return gq::detail::distanceBoxCylinderLocal<T>(h, s.c, s.a, s.r, s.hh, tolerance(h, s), d);
+}
+
+TYPED_TEST(BoxCylinderDistanceTest, CapAndSideAnswersArePairsOfSurfacePointsAtTheGapOfASeparatingPlane) {
+  using T = TypeParam;
+  const T eps = std::is_same_v<T, float> ? T(2e-5) : T(1e-12);
+  Rng rng(2026);
+  int separated = 0, overlapping = 0, unknown = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const gq::Vec3<T> h = rng.vec(0.05, 1.0).cast<T>();
+    const gq::Transform<T> pose = randomPose<T>(rng, 1.5);
+    const Cylinder<T> s{pose.p, pose.rotate(gq::Vec3<T>::UnitX()), T(rng.uniform(0.1, 1.0)), T(rng.uniform(0.05, 1.5))};
+    gq::DistanceResult<T> d;
+    switch (answer(h, s, d)) {
+      case BoxCylinderDistance::Separated: {
+        ++separated;
+        ASSERT_GT(d.distance, T(0)) << "pose " << i;
+        EXPECT_LE((d.point0.cwiseAbs() - h).maxCoeff(), eps) << "point0 on the box, pose " << i;
+        EXPECT_TRUE(inCylinder(s, d.point1, eps)) << "point1 on the cylinder, pose " << i;
+        EXPECT_NEAR((d.point1 - d.point0).norm(), d.distance, eps) << "pose " << i;
+        EXPECT_LE((d.point1 - d.point0 - d.distance * d.normal).norm(), eps) << "pose " << i;
+        // The plane along the normal separates them by the answer: no closer pair exists. The normal is the
+        // witnesses' difference over the distance: off by ~eps_T |p| / distance, which lowers the box's gap at its
+        // edges to first order (slack of that angle times the shapes' size).
+        const T angle = T(8) * std::numeric_limits<T>::epsilon() * (d.point0.norm() + d.point1.norm() + T(1)) / d.distance;
+        const T slack = eps + angle * (h.norm() + s.r + s.hh);
+        EXPECT_GE(gapAlong(h, s, d.normal), (long double)(d.distance) - slack) << "pose " << i;
+        break;
+      }
+      case BoxCylinderDistance::Overlapping: {
+        ++overlapping;
+        const gq::Transform<T> identity;
+        gq::CustomGeometry<T> cylinder;
+        ASSERT_TRUE(gq::makeCylinder(s.r, s.hh, cylinder).ok());
+        EXPECT_TRUE(gq::detail::gjkOverlap(gq::detail::makeConvexShape(gq::Geometry<T>(cylinder), pose),
+                                           gq::detail::makeConvexShape(gq::Geometry<T>(gq::BoxGeometry<T>(h)), identity)))
+            << "pose " << i;
+        break;
+      }
+      case BoxCylinderDistance::Unknown: ++unknown; break;
+    }
+  }
+  EXPECT_GT(separated, 800);
+  EXPECT_GT(overlapping, 300);
+  EXPECT_GT(unknown, 20) << "rims against edges stay GJK's";
+}
+
+// Box [-0.2, 0.2]^3, cylinder of radius 0.5 and half height 0.25 with its axis along z.
+template <class T> Cylinder<T> uprightCylinder(const gq::Vec3<T>& centre) {
+  return {centre, gq::Vec3<T>::UnitZ(), T(0.5), T(0.25)};
+}
+
+TYPED_TEST(BoxCylinderDistanceTest, BoxAboveTheCapIsItsHeightAboveTheCap) {
+  using T = TypeParam;
+  const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
+  gq::DistanceResult<T> d;
+  ASSERT_EQ(answer(h, uprightCylinder<T>(gq::Vec3<T>(T(0.1), T(-0.2), T(-1))), d), BoxCylinderDistance::Separated);
+  EXPECT_NEAR(d.distance, T(0.55), T(1e-6));  // box bottom z = -0.2, cap z = -0.75
+  EXPECT_NEAR(d.normal.z(), T(-1), T(1e-6));
+  EXPECT_NEAR(d.point1.z(), T(-0.75), T(1e-6));
+}
+
+TYPED_TEST(BoxCylinderDistanceTest, BoxBesideTheSideIsTheAxisDistanceLessTheRadius) {
+  using T = TypeParam;
+  const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
+  gq::DistanceResult<T> d;
+  ASSERT_EQ(answer(h, uprightCylinder<T>(gq::Vec3<T>(T(1), T(0.1), T(0))), d), BoxCylinderDistance::Separated);
+  EXPECT_NEAR(d.distance, T(0.3), T(1e-6));  // box face x = 0.2, side at x = 0.5
+  EXPECT_NEAR(d.normal.x(), T(1), T(1e-6));
+}
+
+TYPED_TEST(BoxCylinderDistanceTest, RimAboveABoxFaceIsTheGapOfThatFace) {
+  using T = TypeParam;
+  const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
+  const T s = T(std::sqrt(0.5));
+  const Cylinder<T> tilted{gq::Vec3<T>(T(0), T(0), T(-1.5)), gq::Vec3<T>(s, T(0), s), T(0.5), T(0.25)};
+  gq::DistanceResult<T> d;
+  ASSERT_EQ(answer(h, tilted, d), BoxCylinderDistance::Separated);
+  // The highest cylinder point is on the upper rim, (hh + r) sqrt(1/2) above the centre.
+  EXPECT_NEAR(d.distance, T(1.3) - T(0.75) * s, T(1e-6));
+  EXPECT_NEAR(d.normal.z(), T(-1), T(1e-6));
+}
+
+TYPED_TEST(BoxCylinderDistanceTest, RimNearestABoxCornerIsTheCornersDistanceToTheCylinder) {
+  using T = TypeParam;
+  const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
+  gq::DistanceResult<T> d;
+  ASSERT_EQ(answer(h, uprightCylinder<T>(gq::Vec3<T>(T(1), T(1), T(1))), d), BoxCylinderDistance::Separated);
+  // Nearest the corner (0.2, 0.2, 0.2): the lower rim's point towards it, (1, 1, 0.75) - 0.5 (1, 1, 0) / sqrt(2).
+  const T across = T(0.8) - T(0.5) * T(std::sqrt(0.5));
+  EXPECT_NEAR(d.distance, std::sqrt(T(2) * across * across + T(0.55) * T(0.55)), T(1e-6));
+  EXPECT_NEAR(d.point0.x(), T(0.2), T(1e-6));
+}
+
+TYPED_TEST(BoxCylinderDistanceTest, RimAgainstABoxEdgeIsLeftToGjk) {
+  using T = TypeParam;
+  const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
+  gq::DistanceResult<T> d;
+  d.distance = T(7);
+  // The rim point (-0.5, 0, -0.75) is nearest the box edge x = z = -0.2, at its middle.
+  EXPECT_EQ(answer(h, uprightCylinder<T>(gq::Vec3<T>(T(-1), T(0), T(-1))), d), BoxCylinderDistance::Unknown);
+  EXPECT_EQ(d.distance, T(7)) << "nothing written";
+}
+
+TYPED_TEST(BoxCylinderDistanceTest, BoxCornerInsideTheCylinderIsOverlapping) {
+  using T = TypeParam;
+  const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
+  gq::DistanceResult<T> d;
+  EXPECT_EQ(answer(h, uprightCylinder<T>(gq::Vec3<T>(T(0.6), T(0), T(0))), d), BoxCylinderDistance::Overlapping);
+}
+
+}  // namespace
