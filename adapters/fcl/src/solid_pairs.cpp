@@ -561,9 +561,9 @@ Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk 
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
 }
 
-// Box and cylinder distance: without a requested depth, proven overlap is FCL's -1 at once; a separated pair whose
-// closest feature on the cylinder is a cap or the side is core's closed form (certified within GJK's tolerance for
-// the pair, as the certificate's); the rest (rims, overlap with a requested depth) is GJK's.
+// Box and cylinder distance: without a requested depth, proven overlap is FCL's -1 at once; a separated pair is
+// core's certified closest pair (distanceBoxCylinderLocal, within GJK's tolerance for the pair, as the overlap
+// certificate's); the rest (touching, overlap with a requested depth, nothing proven) is GJK's and EPA's.
 template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> h;
   CylinderInBox<S> c;

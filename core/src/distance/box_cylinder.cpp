@@ -1,6 +1,7 @@
 // Box vs cylinder distance certificates, in the box's frame (box [-h, h]; cylinder centre c, unit axis a, radius r,
-// half height hh). The cylinder is its axis segment grown by disks perpendicular to it, so two of its three kinds
-// of closest feature have closed forms, each proven by a lower bound that a witness pair attains:
+// half height hh). The cylinder is its axis segment grown by disks perpendicular to it. Each candidate below is a
+// box point and a cylinder point whose distance attains a lower bound (a separating plane's gap) within
+// `tolerance`, which proves it the answer:
 //  - cap: the cylinder lies below the plane of the cap facing the box, so the box's least height above that plane
 //    bounds the distance from below; a lowest box point whose foot on the plane lies in the cap disk attains it.
 //  - side: every cylinder point is within r of the axis, so dist(box, cylinder) >= dist(box, axis) - r. Where the
@@ -10,12 +11,13 @@
 //  - box face: the cylinder's least point along a face normal n (its support along -n) whose foot lies in that face
 //    is at the gap of the face's plane, which bounds the distance from below.
 //  - box corner: the cylinder point q nearest a corner v (a closed form) is the answer when v is the box's support
-//    along q - v: the plane through v normal to q - v then separates them by |q - v|. From the corner towards the
-//    cylinder's centre, the corner is moved to the box's support along q - v up to three times.
-// A candidate is accepted only when its witnesses' distance is within `tolerance` of its lower bound. What is left
-// is a rim against a box edge (a circle against a line leads to a quartic): Unknown, GJK answers.
+//    along q - v: the plane through v normal to q - v then separates them by |q - v|.
+//  - box edge (a rim against an edge: a circle against a line leads to a quartic): the distance along the edge is
+//    convex, its minimum found by a bracketed root search of its derivative, then proven as a corner's is.
+// Nothing proven (touching within the tolerance, or a search that ends short of it): Unknown, GJK answers.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "distance/distance.h"
 #include "gjk/support_map.h"
@@ -116,24 +118,93 @@ template <class T> Vec3<T> nearestOnCylinder(const Vec3<T>& c, const Vec3<T>& a,
   return rho > r ? Vec3<T>(onAxis + (r / rho) * radial) : onAxis + radial;
 }
 
+// A box point x and its nearest cylinder point q are the answer when x is the box's support along q - x: the plane
+// through x normal to q - x then separates them by |q - x| (the box's reach past it, h . |n| - n . x, within the
+// tolerance).
+template <class T>
+bool supportPairWitness(const Vec3<T>& h, const Vec3<T>& x, const Vec3<T>& q, T tolerance, DistanceResult<T>& local) {
+  const Vec3<T> towards = q - x;
+  const T dist = towards.norm();
+  if (!(dist > tolerance)) return false;
+  const Vec3<T> n = towards / dist;
+  if (!(h.dot(n.cwiseAbs()) - n.dot(x) <= tolerance)) return false;
+  writeSeparatedPair(x, q, dist, local);
+  return true;
+}
+
+// A box point x and a cylinder point q near a closest pair: alternating projections (the box point nearest a
+// cylinder point, and back) converge to a closest pair of disjoint shapes, and to a common point of overlapping
+// ones. A few steps settle the signs of q - x that pick the box's corner, and with it the edges, of the answer.
+template <class T>
+void approach(const Vec3<T>& h, const Vec3<T>& c, const Vec3<T>& a, T r, T hh, Vec3<T>& x, Vec3<T>& q) {
+  x = c.cwiseMax(-h).cwiseMin(h);
+  q = nearestOnCylinder(c, a, r, hh, x);
+  for (int step = 0; step < 6; ++step) {
+    x = q.cwiseMax(-h).cwiseMin(h);
+    q = nearestOnCylinder(c, a, r, hh, x);
+  }
+}
+
+template <class T> bool inCylinder(const Vec3<T>& c, const Vec3<T>& a, T r, T hh, const Vec3<T>& p) {
+  const Vec3<T> d = p - c;
+  const T t = d.dot(a);
+  return std::abs(t) <= hh && (d - t * a).squaredNorm() <= r * r;
+}
+
+// The corner along the approach, moved to the box's support along q - v up to three times; `start` is the first
+// corner (the edges of the answer meet there: the support steps may leave them). An approach that ends in the
+// cylinder found a common point.
 template <class T>
 BoxCylinderDistance cornerWitness(const Vec3<T>& h, const Vec3<T>& c, const Vec3<T>& a, T r, T hh, T tolerance,
-                                  DistanceResult<T>& local) {
-  Vec3<T> v = supportBox(h, c);
+                                  Vec3<T>& start, DistanceResult<T>& local) {
+  Vec3<T> x, q;
+  approach(h, c, a, r, hh, x, q);
+  if (inCylinder(c, a, r, hh, x)) return BoxCylinderDistance::Overlapping;
+  start = supportBox(h, Vec3<T>(q - x));
+  Vec3<T> v = start;
   for (int step = 0; step < 4; ++step) {
-    const Vec3<T> q = nearestOnCylinder(c, a, r, hh, v);
-    const Vec3<T> towards = q - v;
-    const T dist = towards.norm();
-    if (!(dist > tolerance)) return BoxCylinderDistance::Unknown;
-    // The box's gap along n = towards / dist: h . |n| at the support, n . v at v; equal (within the tolerance)
-    // when v is a support.
-    const Vec3<T> n = towards / dist;
-    const T lower = dist - (h.dot(n.cwiseAbs()) - n.dot(v));
-    if (dist - lower <= tolerance) {
-      writeSeparatedPair(v, q, dist, local);
-      return BoxCylinderDistance::Separated;
+    q = nearestOnCylinder(c, a, r, hh, v);
+    if (supportPairWitness(h, v, q, tolerance, local)) return BoxCylinderDistance::Separated;
+    const Vec3<T> next = supportBox(h, Vec3<T>(q - v));
+    if (next == v) break;
+    v = next;
+  }
+  return BoxCylinderDistance::Unknown;
+}
+
+// The edges at corner v (a rim against an edge: no closed form). Along an edge x(t) = v + t e, t in [0, 1], the
+// squared distance to the cylinder is convex with derivative 2 (x - q(t)).e, q(t) the nearest cylinder point: its
+// root is bracketed and found by regula falsi (Illinois), and the pair there is accepted by supportPairWitness.
+template <class T>
+BoxCylinderDistance edgeWitness(const Vec3<T>& h, const Vec3<T>& c, const Vec3<T>& a, T r, T hh, T tolerance,
+                                const Vec3<T>& v, DistanceResult<T>& local) {
+  for (int k = 0; k < 3; ++k) {
+    Vec3<T> e = Vec3<T>::Zero();
+    e[k] = T(-2) * v[k];
+    const auto slope = [&](T t) {
+      const Vec3<T> x = v + t * e;
+      return (x - nearestOnCylinder(c, a, r, hh, x)).dot(e);
+    };
+    T lo = T(0), hi = T(1), gLo = slope(lo), gHi = slope(hi);
+    if (!(gLo < T(0) && gHi > T(0))) continue;  // this edge's nearest point is an end: a corner's case
+    int side = 0;
+    for (int it = 0; it < 64 && hi - lo > std::numeric_limits<T>::epsilon(); ++it) {
+      const T t = std::clamp((lo * gHi - hi * gLo) / (gHi - gLo), lo, hi);
+      const T g = slope(t);
+      if (g == T(0)) { lo = hi = t; break; }
+      if (g < T(0)) {
+        lo = t, gLo = g;
+        if (side == -1) gHi /= T(2);  // Illinois: halve the stale end's value
+        side = -1;
+      } else {
+        hi = t, gHi = g;
+        if (side == 1) gLo /= T(2);
+        side = 1;
+      }
     }
-    v = supportBox(h, towards);
+    const Vec3<T> x = v + T(0.5) * (lo + hi) * e;
+    if (supportPairWitness(h, x, nearestOnCylinder(c, a, r, hh, x), tolerance, local))
+      return BoxCylinderDistance::Separated;
   }
   return BoxCylinderDistance::Unknown;
 }
@@ -146,8 +217,10 @@ BoxCylinderDistance distanceBoxCylinderLocal(const Vec3<T>& h, const Vec3<T>& c,
   BoxCylinderDistance answer = capWitness(h, c, a, r, hh, tolerance, local);
   if (answer == BoxCylinderDistance::Unknown) answer = sideWitness(h, c, a, r, hh, tolerance, local);
   if (answer == BoxCylinderDistance::Unknown) answer = faceWitness(h, c, a, r, hh, tolerance, local);
-  if (answer == BoxCylinderDistance::Unknown) answer = cornerWitness(h, c, a, r, hh, tolerance, local);
-  return answer;
+  if (answer != BoxCylinderDistance::Unknown) return answer;
+  Vec3<T> corner;
+  answer = cornerWitness(h, c, a, r, hh, tolerance, corner, local);
+  return answer == BoxCylinderDistance::Unknown ? edgeWitness(h, c, a, r, hh, tolerance, corner, local) : answer;
 }
 
 template BoxCylinderDistance distanceBoxCylinderLocal<float>(const Vec3<float>&, const Vec3<float>&,
