@@ -74,6 +74,17 @@ template <class T> class AnsweringBall final : public Ball<T> {
     direction = d > T(0) ? Vec3<T>(-pose.p / d) : Vec3<T>(Vec3<T>::UnitX());  // this ball leaves away from the sphere
     return true;
   }
+  bool distance(const Geometry<T>& other, const Transform<T>& pose, DistanceResult<T>& result) const override {
+    const auto* s = other.template getIf<SphereGeometry<T>>();
+    if (!s) return false;
+    ++calls;
+    const T d = pose.p.norm();
+    result.normal = d > T(0) ? Vec3<T>(pose.p / d) : Vec3<T>(Vec3<T>::UnitX());
+    result.distance = d - this->r_ - s->radius;
+    result.point0 = this->r_ * result.normal;
+    result.point1 = pose.p - s->radius * result.normal;
+    return true;
+  }
   bool sweep(const Vec3<T>& dir, T maxDist, const Geometry<T>& swept, const Transform<T>& pose, T inflation,
              SweepHit<T>& hit, bool& hasHit) const override {
     const auto* s = swept.template getIf<SphereGeometry<T>>();
@@ -102,10 +113,15 @@ template <class T> class AnsweringBall final : public Ball<T> {
   }
 };
 
-// Answers penetration with NaN: the query must report it instead of passing it on.
+// Answers penetration and distance with NaN: the query must report it instead of passing it on.
 template <class T> class BrokenBall final : public Ball<T> {
  public:
   using Ball<T>::Ball;
+  bool distance(const Geometry<T>&, const Transform<T>&, DistanceResult<T>& result) const override {
+    result.distance = std::numeric_limits<T>::quiet_NaN();
+    result.normal = Vec3<T>::UnitX();
+    return true;
+  }
   bool computePenetration(const Geometry<T>&, const Transform<T>&, bool& penetrating, Vec3<T>& direction,
                           T& depth) const override {
     penetrating = true;
@@ -206,6 +222,36 @@ TYPED_TEST(CustomCallbacks, PenetrationCallbackDirectionMovesGeom0InEitherOrder)
   }
 }
 
+TYPED_TEST(CustomCallbacks, DistanceCallbackAnswersInEitherOrderWithTheNormalFromGeom0) {
+  using T = TypeParam;
+  Rng rng(509);
+  for (const bool useAnswering : {true, false}) {
+    const Geometry<T> ball = useAnswering ? CustomGeometry<T>(this->answering) : CustomGeometry<T>(this->plain);
+    const double tol = useAnswering ? this->kExact : this->kGeneric;
+    const double normalTol = useAnswering ? 10 * this->kExact : this->kGenericNormal;
+    this->answering->calls = 0;
+    int checked = 0;
+    for (int i = 0; i < 200; ++i) {
+      const Transform<T> p0 = this->pose(rng, 1.5), p1 = this->pose(rng, 1.5);
+      const Vec3L between = toL(p1.p) - toL(p0.p);  // ball centre -> sphere centre
+      const LD d = between.norm();
+      if (d < LD(this->kR + this->kSphere + 0.01)) continue;  // separated pairs (penetration: the test above)
+      DistanceResult<T> r0, r1;
+      ASSERT_TRUE(distance(r0, ball, p0, this->sphere, p1).ok());
+      ASSERT_TRUE(distance(r1, this->sphere, p1, ball, p0).ok());
+      EXPECT_NEAR(double(r0.distance), double(d - LD(this->kR + this->kSphere)), tol);
+      EXPECT_NEAR(double(r1.distance), double(r0.distance), tol);
+      EXPECT_NEAR(double((toL(r0.normal) - between / d).norm()), 0.0, normalTol);
+      EXPECT_NEAR(double((toL(r1.normal) + between / d).norm()), 0.0, normalTol);
+      EXPECT_NEAR(double((toL(r0.point0) - toL(p0.p)).norm()), this->kR, tol) << "point0 on the ball";
+      EXPECT_NEAR(double((toL(r1.point1) - toL(p0.p)).norm()), this->kR, tol) << "point1 on the ball";
+      ++checked;
+    }
+    EXPECT_GT(checked, 100);
+    EXPECT_EQ(this->answering->calls.load(), useAnswering ? 2 * checked : 0);
+  }
+}
+
 TYPED_TEST(CustomCallbacks, SweepCallbackAnswersForACustomTargetElseConservativeAdvancement) {
   using T = TypeParam;
   Rng rng(504);
@@ -289,6 +335,12 @@ TYPED_TEST(CustomCallbacks, NonFiniteCallbackAnswerIsAnInternalErrorAndWritesNot
   EXPECT_EQ(s.code, StatusCode::InternalError);
   EXPECT_NE(s.message.find("ball"), std::string::npos);
   EXPECT_EQ(r.depth, T(42));
+  DistanceResult<T> d;
+  d.distance = T(42);
+  const Status sd = distance(d, ball, Transform<T>(), this->sphere, Transform<T>(Vec3<T>(T(2), T(0), T(0))));
+  EXPECT_EQ(sd.code, StatusCode::InternalError);
+  EXPECT_NE(sd.message.find("ball"), std::string::npos);
+  EXPECT_EQ(d.distance, T(42));
 }
 
 }  // namespace

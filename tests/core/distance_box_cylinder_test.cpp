@@ -9,6 +9,7 @@
 #include "distance/distance.h"
 #include "gjk/gjk.h"
 #include "gq/custom_shapes.h"
+#include "overlap/overlap.h"
 
 namespace {
 
@@ -45,7 +46,7 @@ template <class T> bool inCylinder(const Cylinder<T>& s, const gq::Vec3<T>& p, T
 }
 
 template <class T> T tolerance(const gq::Vec3<T>& h, const Cylinder<T>& s) {
-  return gq::detail::gjkRelativeTolerance<T>() * std::max({gq::Vec3<T>(s.hh, s.r, s.r).norm(), h.norm(), s.c.norm()});
+  return gq::detail::cylinderBoxTolerance(h, s.c, s.r, s.hh);
 }
 
 // GJK's boolean on the pair (the cylinder as core's custom cylinder at `pose`, the box at the origin).
@@ -57,7 +58,7 @@ template <class T> bool gjkOverlap(const gq::Vec3<T>& h, const Cylinder<T>& s, c
 }
 
 template <class T> BoxCylinderDistance answer(const gq::Vec3<T>& h, const Cylinder<T>& s, gq::DistanceResult<T>& d) {
-  return gq::detail::distanceBoxCylinderLocal<T>(h, s.c, s.a, s.r, s.hh, tolerance(h, s), d);
+  return gq::detail::distanceBoxCylinderLocal<T>(h, s.c, s.a, s.r, s.hh, d);
 }
 
 TYPED_TEST(BoxCylinderDistanceTest, CapAndSideAnswersArePairsOfSurfacePointsAtTheGapOfASeparatingPlane) {
@@ -172,11 +173,65 @@ TYPED_TEST(BoxCylinderDistanceTest, TouchingWithinTheToleranceIsLeftToGjk) {
   EXPECT_EQ(d.distance, T(7)) << "nothing written";
 }
 
+// Squared lengths of such pairs may leave T's range; GJK runs them rescaled (gjk/pair_scale.h) and the façade's
+// answer is then the scaled answer.
+TYPED_TEST(BoxCylinderDistanceTest, PairsBeyondGjksUnscaledRangeAreLeftToItsRescaling) {
+  using T = TypeParam;
+  const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
+  const Cylinder<T> beside = uprightCylinder<T>(gq::Vec3<T>(T(1), T(0.1), T(0)));
+  const bool single = std::is_same_v<T, float>;
+  for (const T factor : {single ? T(0x1p-24) : T(0x1p-110), single ? T(0x1p24) : T(0x1p110)}) {
+    const Cylinder<T> scaled{factor * beside.c, beside.a, factor * beside.r, factor * beside.hh};
+    gq::DistanceResult<T> d;
+    d.distance = T(7);
+    EXPECT_EQ(answer(gq::Vec3<T>(factor * h), scaled, d), BoxCylinderDistance::Unknown) << factor;
+    EXPECT_EQ(d.distance, T(7)) << "nothing written";
+    gq::CustomGeometry<T> cylinder;
+    ASSERT_TRUE(gq::makeCylinder(scaled.r, scaled.hh, cylinder).ok());
+    const gq::Transform<T> pose(scaled.c, gq::Quat<T>::FromTwoVectors(gq::Vec3<T>::UnitX(), gq::Vec3<T>::UnitZ()));
+    gq::DistanceResult<T> facade;
+    ASSERT_TRUE(gq::distance(facade, gq::Geometry<T>(gq::BoxGeometry<T>(gq::Vec3<T>(factor * h))), gq::Transform<T>(),
+                             gq::Geometry<T>(cylinder), pose).ok());
+    EXPECT_NEAR(double(facade.distance / factor), 0.3, 1e-5) << factor;
+  }
+}
+
 TYPED_TEST(BoxCylinderDistanceTest, BoxCornerInsideTheCylinderIsOverlapping) {
   using T = TypeParam;
   const gq::Vec3<T> h = gq::Vec3<T>::Constant(T(0.2));
   gq::DistanceResult<T> d;
   EXPECT_EQ(answer(h, uprightCylinder<T>(gq::Vec3<T>(T(0.6), T(0), T(0))), d), BoxCylinderDistance::Overlapping);
+}
+
+// gq::distance asks core's custom cylinder its distance callback against a box, which answers separated pairs by
+// the certified pair (no GJK iteration: the cache reports 0), in either order; GJK agrees within its tolerance.
+TYPED_TEST(BoxCylinderDistanceTest, FacadeAnswersACustomCylinderAndABoxByTheCertifiedPairInEitherOrder) {
+  using T = TypeParam;
+  const double tol = std::is_same_v<T, float> ? 2e-4 : 1e-9;
+  Rng rng(77);
+  int certified = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const gq::Vec3<T> h = rng.vec(0.05, 1.0).cast<T>();
+    const T radius = T(rng.uniform(0.1, 1.0)), halfHeight = T(rng.uniform(0.05, 1.5));
+    const gq::Transform<T> pc = randomPose<T>(rng, 1.5), pb = randomPose<T>(rng, 1.5);
+    gq::CustomGeometry<T> cylinder;
+    ASSERT_TRUE(gq::makeCylinder(radius, halfHeight, cylinder).ok());
+    const gq::Geometry<T> gc(cylinder), gb{gq::BoxGeometry<T>(h)};
+    gq::GjkCache<T> c0, c1;
+    gq::DistanceResult<T> r0, r1, gjk;
+    ASSERT_TRUE(gq::distance(r0, gc, pc, gb, pb, &c0).ok()) << "pose " << i;
+    ASSERT_TRUE(gq::distance(r1, gb, pb, gc, pc, &c1).ok()) << "pose " << i;
+    gq::detail::distanceGjk(gc, pc, gb, pb, static_cast<gq::GjkCache<T>*>(nullptr), gjk);
+    EXPECT_NEAR(double(r0.distance), double(gjk.distance), tol) << "pose " << i;
+    EXPECT_NEAR(double(r1.distance), double(r0.distance), tol) << "pose " << i;
+    if (c0.iterations > 0 || !(r0.distance > T(0))) continue;
+    ++certified;
+    EXPECT_EQ(c1.iterations, 0u) << "the box first asks the cylinder too, pose " << i;
+    EXPECT_LE((r1.normal + r0.normal).norm(), T(tol)) << "pose " << i;
+    EXPECT_LE((r1.point0 - r0.point1).norm(), T(tol)) << "pose " << i;
+    EXPECT_LE((r0.point1 - r0.point0 - r0.distance * r0.normal).norm(), T(tol)) << "pose " << i;
+  }
+  EXPECT_GT(certified, 300);
 }
 
 }  // namespace

@@ -574,10 +574,8 @@ template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>&
     return Answer::Done;
   };
   if (!ask.depth && boxCylinderCertificate(h, c) == k::OverlapCertificate::Overlapping) return overlapping();
-  const S scale = std::max({Vec3<S>(c.halfHeight, c.radius, c.radius).norm(), h.norm(), c.centre.norm()});
   DistanceResult<S> local;
-  switch (k::distanceBoxCylinderLocal<S>(h, c.centre, c.axis, c.radius, c.halfHeight,
-                                         k::gjkRelativeTolerance<S>() * scale, local)) {
+  switch (k::distanceBoxCylinderLocal<S>(h, c.centre, c.axis, c.radius, c.halfHeight, local)) {
     case k::BoxCylinderDistance::Separated:
       if (!rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
       frameToWorld(*a.tf, ask.points, local, out);

@@ -2,12 +2,14 @@
 // Custom geometry: a user shape that takes part in every query through callbacks (the spec's
 // PxCustomGeometry::Callbacks). Everything is in the shape's local frame. A convex custom shape needs only
 // localBounds, support and raycast: overlap, penetration, distance and sweeps then go through GJK/EPA. It may also
-// answer overlap, penetration and sweeps itself (exactly, or faster) by overriding the optional query callbacks.
+// answer overlap, penetration, distance and sweeps itself (exactly, or faster) by overriding the optional query
+// callbacks.
 #include <cstdint>
 
 #include "gq/geometry.h"
 #include "gq/hit.h"
 #include "gq/math.h"
+#include "gq/query.h"
 #include "gq/transform.h"
 
 namespace gq {
@@ -29,7 +31,8 @@ template <class T> class CustomGeometryCallbacks {
   // raycast and bounds; other queries report Unsupported.
   virtual bool isConvex() const { return true; }
 
-  // Optional queries against another geometry (the spec's Callbacks::overlap, computePenetration and sweep). The
+  // Optional queries against another geometry (the spec's Callbacks::overlap, computePenetration and sweep, and
+  // distance). The
   // other geometry's pose and every vector are in this shape's local frame. Return true when answered (outputs
   // written), false to let gq run its generic algorithm: GJK for overlap, GJK + EPA for penetration, conservative
   // advancement for sweeps. Only convex custom shapes are asked; when both shapes are custom, geom0's callbacks are
@@ -42,6 +45,12 @@ template <class T> class CustomGeometryCallbacks {
   // When `penetrating`: translating THIS shape by direction * depth separates the two (direction unit, depth >= 0).
   virtual bool computePenetration(const Geometry<T>& /*other*/, const Transform<T>& /*otherPose*/, bool& /*penetrating*/,
                                   Vec3<T>& /*direction*/, T& /*depth*/) const {
+    return false;
+  }
+  // distance: as gq::distance with this shape as geom0 (signed; normal unit from this shape towards the other,
+  // point0 on this shape, point1 on the other, all in this shape's frame). gq's generic path is GJK/EPA.
+  virtual bool distance(const Geometry<T>& /*other*/, const Transform<T>& /*otherPose*/,
+                        DistanceResult<T>& /*result*/) const {
     return false;
   }
   // `swept` (sphere, capsule, box or convex mesh, grown by the rounded shell `inflation`) moves from sweptPose along

@@ -27,6 +27,8 @@ template <class T> class CylinderCallbacks final : public CustomGeometryCallback
   // Against a sphere: closed form. Against a box: a separating axis or a common point when one is cheap to find,
   // else GJK (false).
   bool overlap(const Geometry<T>& other, const Transform<T>& otherPose, bool& overlapping) const override;
+  // Against a separated box: the certified closest pair of distance/box_cylinder.cpp; else GJK/EPA (false).
+  bool distance(const Geometry<T>& other, const Transform<T>& otherPose, DistanceResult<T>& result) const override;
   T radius() const { return radius_; }
   T halfHeight() const { return halfHeight_; }
 

@@ -1,4 +1,5 @@
-// Custom geometry's optional overlap and penetration callbacks, asked by the dispatch tables (see callback_queries.h).
+// Custom geometry's optional overlap, penetration and distance callbacks, asked by the dispatch tables (see
+// callback_queries.h).
 #include "custom/callback_queries.h"
 
 #include <cmath>
@@ -40,6 +41,25 @@ Status askPenetration(const CustomGeometryCallbacks<T>& self, const Transform<T>
   return {};
 }
 
+// The distance callback of `self` (at pSelf) against `other` (at pOther), brought to the caller's frame; `flip`
+// when self is geom1.
+template <class T>
+Status askDistance(const CustomGeometryCallbacks<T>& self, const Transform<T>& pSelf, const Geometry<T>& other,
+                   const Transform<T>& pOther, bool flip, bool& answered, DistanceResult<T>& out) {
+  DistanceResult<T> local;
+  answered = self.distance(other, pOther.relativeTo(pSelf), local);
+  if (!answered) return {};
+  const T unitError = std::abs(local.normal.norm() - T(1));
+  if (!std::isfinite(local.distance) || !isFinite(local.point0) || !isFinite(local.point1) ||
+      !(unitError <= T(tol::kUnitDirection)))
+    return badAnswer(self, "a non-finite distance or a normal that is not unit");
+  out.distance = local.distance;
+  out.normal = (flip ? T(-1) : T(1)) * pSelf.rotate(local.normal);
+  out.point0 = pSelf.transform(flip ? local.point1 : local.point0);
+  out.point1 = pSelf.transform(flip ? local.point0 : local.point1);
+  return {};
+}
+
 }  // namespace
 
 template <class T>
@@ -62,6 +82,16 @@ Status customPenetration(const Geometry<T>& g0, const Transform<T>& p0, const Ge
   return {};
 }
 
+template <class T>
+Status customDistance(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                      bool& answered, DistanceResult<T>& out) {
+  answered = false;
+  if (const auto* cb = callbacksIf(g0))
+    if (Status s = askDistance(*cb, p0, g1, p1, false, answered, out); !s.ok() || answered) return s;
+  if (const auto* cb = callbacksIf(g1)) return askDistance(*cb, p1, g0, p0, true, answered, out);
+  return {};
+}
+
 template bool customOverlap<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
                                    const Transform<float>&, bool&);
 template bool customOverlap<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
@@ -70,5 +100,10 @@ template Status customPenetration<float>(const Geometry<float>&, const Transform
                                          const Transform<float>&, bool&, bool&, Vec3<float>&, float&);
 template Status customPenetration<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
                                           const Transform<double>&, bool&, bool&, Vec3<double>&, double&);
+
+template Status customDistance<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
+                                      const Transform<float>&, bool&, DistanceResult<float>&);
+template Status customDistance<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
+                                       const Transform<double>&, bool&, DistanceResult<double>&);
 
 }  // namespace gq::detail

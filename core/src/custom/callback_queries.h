@@ -4,6 +4,7 @@
 // to the caller's frame here, once for every cell.
 #include "gq/custom.h"
 #include "gq/geometry.h"
+#include "gq/query.h"
 #include "gq/status.h"
 #include "gq/transform.h"
 
@@ -20,5 +21,12 @@ bool customOverlap(const Geometry<T>& g0, const Transform<T>& p0, const Geometry
 template <class T>
 Status customPenetration(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
                          bool& answered, bool& penetrating, Vec3<T>& direction, T& depth);
+
+// Same order for distance; `answered` false: neither answered, `out` untouched. The answer is brought to the
+// caller's frame and order (a custom geom1's answer flipped: witnesses exchanged, normal negated). A non-finite
+// answer or a normal that is not unit is an InternalError naming the callback.
+template <class T>
+Status customDistance(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                      bool& answered, DistanceResult<T>& out);
 
 }  // namespace gq::detail

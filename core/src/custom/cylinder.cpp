@@ -2,12 +2,13 @@
 // Support: (sign(d.x) h, r (d.y, d.z) / |(d.y, d.z)|). Raycast: the slab |x| <= h clipped with the infinite
 // cylinder, whose entry/exit are the roots of (o_yz + t d_yz)^2 = r^2. Overlap with a sphere: closed form
 // (overlap/sphere_cylinder.cpp); with a box: the certificates of overlap/cylinder_box.cpp, which decide most poses
-// without GJK.
+// without GJK. Distance to a separated box: the certified closest pairs of distance/box_cylinder.cpp.
 #include <cmath>
 #include <limits>
 
 #include "common/unit_vector.h"
 #include "custom/ray_interval.h"
+#include "distance/distance.h"
 #include "gq/custom_shapes.h"
 #include "overlap/overlap.h"
 
@@ -81,6 +82,22 @@ bool CylinderCallbacks<T>::overlap(const Geometry<T>& other, const Transform<T>&
     case detail::OverlapCertificate::Unknown: break;
   }
   return false;
+}
+
+template <class T>
+bool CylinderCallbacks<T>::distance(const Geometry<T>& other, const Transform<T>& otherPose,
+                                    DistanceResult<T>& result) const {
+  if (other.type() != GeometryType::Box) return false;
+  const Vec3<T>& h = other.template get<BoxGeometry<T>>().halfExtents;
+  DistanceResult<T> inBox;  // the box's frame, the box first
+  if (detail::distanceBoxCylinderLocal(h, otherPose.transformInv(Vec3<T>::Zero()), otherPose.rotateInv(Vec3<T>::UnitX()),
+                                       radius_, halfHeight_, inBox) != detail::BoxCylinderDistance::Separated)
+    return false;
+  result.distance = inBox.distance;
+  result.normal = -otherPose.rotate(inBox.normal);
+  result.point0 = otherPose.transform(inBox.point1);
+  result.point1 = otherPose.transform(inBox.point0);
+  return true;
 }
 
 template <class T> Status makeCylinder(T radius, T halfHeight, CustomGeometry<T>& out) {

@@ -1,12 +1,14 @@
 // Distance façade: validation, then one dispatch table indexed [type0][type1]. Closed forms are written for
 // a <= b in GeometryType order; the mirrored cells go through `swapped`, which exchanges the inputs and flips the
-// result (point0 <-> point1, normal -> -normal). Convex pairs without a closed form use GJK/EPA in either order.
+// result (point0 <-> point1, normal -> -normal). Convex pairs without a closed form use GJK/EPA in either order;
+// custom shapes are asked their own distance callback first.
 // Triangle meshes and heightfields are thin surfaces (distance >= 0, see distance/surface_distance.h). Unsupported:
 // plane-plane, plane-mesh/heightfield, mesh-heightfield, heightfield-heightfield, and non-convex custom shapes.
 #include <array>
 
 #include "common/pair_frame.h"
 #include "common/validate.h"
+#include "custom/callback_queries.h"
 #include "distance/distance.h"
 #include "distance/surface_distance.h"
 #include "gq/custom.h"
@@ -40,6 +42,18 @@ Status planeConvex(const Geometry<T>& g0, const Transform<T>& p0, const Geometry
 template <class T>
 Status gjk(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
            GjkCache<T>* cache, DistanceResult<T>& out) {
+  return detail::distanceGjk(g0, p0, g1, p1, cache, out);
+}
+
+// A cell with custom geometry: the shape's own distance callback when it answers (gq/custom.h), else GJK/EPA.
+template <class T>
+Status customFirst(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
+                   GjkCache<T>* cache, DistanceResult<T>& out) {
+  bool answered = false;
+  if (Status s = detail::customDistance(g0, p0, g1, p1, answered, out); !s.ok() || answered) {
+    if (cache && answered) cache->iterations = 0;
+    return s;
+  }
   return detail::distanceGjk(g0, p0, g1, p1, cache, out);
 }
 
@@ -121,19 +135,20 @@ template <class T> constexpr DistanceFn<T> kMeshMesh = detail::distanceTriangleM
 // Rows geom0, columns geom1, in GeometryType order: Sphere, Plane, Capsule, Box, Convex, Mesh, HeightField, Custom.
 template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTable = {{
     {kSphereSphere<T>, kSpherePlane<T>, kSphereCapsule<T>, kSphereBox<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>,
-     gjk<T>},
+     customFirst<T>},
     {swapped<T, kSpherePlane<T>>, unsupported<T>, kPlaneCapsule<T>, kPlaneBox<T>, planeConvex<T>, unsupported<T>,
      unsupported<T>, planeConvex<T>},
     {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, kCapsuleBox<T>, gjk<T>,
-     kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
+     kConvexSurface<T>, kConvexSurface<T>, customFirst<T>},
     {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, swapped<T, kCapsuleBox<T>>, boxBox<T>, gjk<T>,
-     kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
-    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
+     kConvexSurface<T>, kConvexSurface<T>, customFirst<T>},
+    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, customFirst<T>},
     {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kMeshMesh<T>,
      unsupported<T>, kSurfaceConvex<T>},
     {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, unsupported<T>,
      unsupported<T>, kSurfaceConvex<T>},
-    {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, gjk<T>},
+    {customFirst<T>, swapped<T, planeConvex<T>>, customFirst<T>, customFirst<T>, customFirst<T>, kConvexSurface<T>,
+     kConvexSurface<T>, customFirst<T>},
 }};
 static_assert(kDistanceTable<double>.size() == kGeometryTypeCount && kDistanceTable<double>[0].size() == kGeometryTypeCount,
               "one row and one column per GeometryType");

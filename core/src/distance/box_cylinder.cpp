@@ -20,7 +20,9 @@
 #include <limits>
 
 #include "distance/distance.h"
+#include "gjk/pair_scale.h"
 #include "gjk/support_map.h"
+#include "overlap/overlap.h"
 #include "overlap/segment_box.h"
 
 namespace gq::detail {
@@ -213,7 +215,11 @@ BoxCylinderDistance edgeWitness(const Vec3<T>& h, const Vec3<T>& c, const Vec3<T
 
 template <class T>
 BoxCylinderDistance distanceBoxCylinderLocal(const Vec3<T>& h, const Vec3<T>& c, const Vec3<T>& a, T r, T hh,
-                                             T tolerance, DistanceResult<T>& local) {
+                                             DistanceResult<T>& local) {
+  // Squared lengths of pairs outside the range GJK runs unscaled in may leave T's range: GJK rescales those.
+  const T length = cylinderBoxLength(h, c, r, hh);
+  if (!(length >= kPairScaleLow<T> && length <= kPairScaleHigh<T>)) return BoxCylinderDistance::Unknown;
+  const T tolerance = gjkRelativeTolerance<T>() * length;
   BoxCylinderDistance answer = capWitness(h, c, a, r, hh, tolerance, local);
   if (answer == BoxCylinderDistance::Unknown) answer = sideWitness(h, c, a, r, hh, tolerance, local);
   if (answer == BoxCylinderDistance::Unknown) answer = faceWitness(h, c, a, r, hh, tolerance, local);
@@ -224,10 +230,10 @@ BoxCylinderDistance distanceBoxCylinderLocal(const Vec3<T>& h, const Vec3<T>& c,
 }
 
 template BoxCylinderDistance distanceBoxCylinderLocal<float>(const Vec3<float>&, const Vec3<float>&,
-                                                             const Vec3<float>&, float, float, float,
+                                                             const Vec3<float>&, float, float,
                                                              DistanceResult<float>&);
 template BoxCylinderDistance distanceBoxCylinderLocal<double>(const Vec3<double>&, const Vec3<double>&,
-                                                              const Vec3<double>&, double, double, double,
+                                                              const Vec3<double>&, double, double,
                                                               DistanceResult<double>&);
 
 }  // namespace gq::detail

@@ -62,13 +62,14 @@ template <class T>
 void distanceCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& dInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
 
 // Box [-h, h] against a cylinder (centre c, unit axis a, radius r, half height hh) in the box's frame, where a
-// witness pair attaining a separating plane's gap proves the answer within `tolerance` (distance/box_cylinder.cpp):
+// witness pair attaining a separating plane's gap proves the answer within GJK's tolerance for the pair
+// (cylinderBoxTolerance; distance/box_cylinder.cpp):
 // Separated (local written: point0 on the box, point1 on the cylinder), Overlapping (a common point found; local
 // untouched) or Unknown (touching within the tolerance, or nothing proven: GJK answers).
 enum class BoxCylinderDistance : std::uint8_t { Separated, Overlapping, Unknown };
 template <class T>
 BoxCylinderDistance distanceBoxCylinderLocal(const Vec3<T>& h, const Vec3<T>& c, const Vec3<T>& a, T r, T hh,
-                                             T tolerance, DistanceResult<T>& local);
+                                             DistanceResult<T>& local);
 
 // Boxes in box 0's frame (box 1: axes r01 as columns, centre t01), exact (distance/box_box.cpp): the closest points
 // of separated boxes, or the SAT depth and normal of overlapping ones with witnesses on both. False only in the rare

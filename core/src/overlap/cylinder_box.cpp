@@ -62,18 +62,28 @@ template <class T> bool commonPoint(const CylinderInBox<T>& s) {
 
 }  // namespace
 
+template <class T> T cylinderBoxLength(const Vec3<T>& h, const Vec3<T>& c, T radius, T halfHeight) {
+  return std::max({Vec3<T>(halfHeight, radius, radius).norm(), h.norm(), c.norm()});
+}
+
+template <class T> T cylinderBoxTolerance(const Vec3<T>& h, const Vec3<T>& c, T radius, T halfHeight) {
+  return gjkRelativeTolerance<T>() * cylinderBoxLength(h, c, radius, halfHeight);
+}
+
 template <class T>
 OverlapCertificate cylinderBoxCertificate(const Vec3<T>& c, const Vec3<T>& a, T radius, T halfHeight,
                                           const Vec3<T>& h) {
   const CylinderInBox<T> s{c, a, radius, halfHeight, h};
-  // gjkTolerance's length scale: the larger bounding radius, or the centres' distance.
-  const T scale = std::max({Vec3<T>(halfHeight, radius, radius).norm(), h.norm(), c.norm()});
-  const T tolerance = gjkRelativeTolerance<T>() * scale;
+  const T tolerance = cylinderBoxTolerance(h, c, radius, halfHeight);
   if (separatingAxis(s, tolerance)) return OverlapCertificate::Apart;
   if (commonPoint(s)) return OverlapCertificate::Overlapping;
   return OverlapCertificate::Unknown;
 }
 
+template float cylinderBoxLength<float>(const Vec3<float>&, const Vec3<float>&, float, float);
+template double cylinderBoxLength<double>(const Vec3<double>&, const Vec3<double>&, double, double);
+template float cylinderBoxTolerance<float>(const Vec3<float>&, const Vec3<float>&, float, float);
+template double cylinderBoxTolerance<double>(const Vec3<double>&, const Vec3<double>&, double, double);
 template OverlapCertificate cylinderBoxCertificate<float>(const Vec3<float>&, const Vec3<float>&, float, float,
                                                           const Vec3<float>&);
 template OverlapCertificate cylinderBoxCertificate<double>(const Vec3<double>&, const Vec3<double>&, double, double,

@@ -44,6 +44,11 @@ template <class T> bool overlapSphereCylinder(const Vec3<T>& c, T radius, T cyli
 // centred at the origin, decided without GJK when a separating axis (a gap beyond GJK's tolerance) or a common
 // point is cheap to find (cylinder_box.cpp); Unknown otherwise.
 enum class OverlapCertificate : std::uint8_t { Apart, Overlapping, Unknown };
+// A cylinder/box pair's length scale in the box's frame (the larger bounding radius, or the centres' distance), and
+// GJK's tolerance for it (its relative tolerance times that): the certificates and the distance certificates
+// (distance/box_cylinder.cpp) work to it.
+template <class T> T cylinderBoxLength(const Vec3<T>& h, const Vec3<T>& c, T radius, T halfHeight);
+template <class T> T cylinderBoxTolerance(const Vec3<T>& h, const Vec3<T>& c, T radius, T halfHeight);
 template <class T>
 OverlapCertificate cylinderBoxCertificate(const Vec3<T>& c, const Vec3<T>& a, T radius, T halfHeight, const Vec3<T>& h);
 // Two convex hulls by their cooked balls (ConvexMesh::innerRadius / outerRadius about `center`, placed and
