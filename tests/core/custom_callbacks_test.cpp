@@ -144,6 +144,16 @@ template <class T> struct CustomCallbacks : ::testing::Test {
   const Geometry<T> sphere = SphereGeometry<T>(T(kSphere));
 
   static Transform<T> pose(Rng& rng, double half) { return rng.pose<T>(half); }
+  // The answering ball (its call count reset) or the plain one, with the tolerances of its answers and normals.
+  struct BallCase {
+    Geometry<T> ball;
+    double tol, normalTol;
+  };
+  BallCase ballOf(bool useAnswering) {
+    answering->calls = 0;
+    if (useAnswering) return {CustomGeometry<T>(answering), kExact, 10 * kExact};
+    return {CustomGeometry<T>(plain), kGeneric, kGenericNormal};
+  }
   // Distance between the two centres in long double.
   static LD centreDistance(const Transform<T>& a, const Transform<T>& b) { return (toL(a.p) - toL(b.p)).norm(); }
 };
@@ -196,10 +206,7 @@ TYPED_TEST(CustomCallbacks, PenetrationCallbackDirectionMovesGeom0InEitherOrder)
   using T = TypeParam;
   Rng rng(503);
   for (const bool useAnswering : {true, false}) {
-    const Geometry<T> ball = useAnswering ? CustomGeometry<T>(this->answering) : CustomGeometry<T>(this->plain);
-    const double tol = useAnswering ? this->kExact : this->kGeneric;
-    const double normalTol = useAnswering ? 10 * this->kExact : this->kGenericNormal;
-    this->answering->calls = 0;
+    const auto [ball, tol, normalTol] = this->ballOf(useAnswering);
     int checked = 0;
     for (int i = 0; i < 200; ++i) {
       const Transform<T> p0 = this->pose(rng, 0.3), p1 = this->pose(rng, 0.3);  // centres < 1.04 apart: overlapping
@@ -226,10 +233,7 @@ TYPED_TEST(CustomCallbacks, DistanceCallbackAnswersInEitherOrderWithTheNormalFro
   using T = TypeParam;
   Rng rng(509);
   for (const bool useAnswering : {true, false}) {
-    const Geometry<T> ball = useAnswering ? CustomGeometry<T>(this->answering) : CustomGeometry<T>(this->plain);
-    const double tol = useAnswering ? this->kExact : this->kGeneric;
-    const double normalTol = useAnswering ? 10 * this->kExact : this->kGenericNormal;
-    this->answering->calls = 0;
+    const auto [ball, tol, normalTol] = this->ballOf(useAnswering);
     int checked = 0;
     for (int i = 0; i < 200; ++i) {
       const Transform<T> p0 = this->pose(rng, 1.5), p1 = this->pose(rng, 1.5);
