@@ -148,8 +148,10 @@ template <class S> S stopTolerance(DistanceAsk ask) {
   return ask.tolerance > 0 && ask.tolerance <= double(std::numeric_limits<S>::max()) ? S(ask.tolerance) : S(0);
 }
 
+// Every number finite, by the x * 0 test on their sum (one comparison instead of ten classifications).
 template <class S> bool finiteResult(const DistanceResult<S>& r) {
-  return std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal);
+  const auto zeroed = r.point0.array() * S(0) + r.point1.array() * S(0) + r.normal.array() * S(0);
+  return r.distance * S(0) + zeroed.sum() == S(0);
 }
 
 // ---- primitive pairs, in core's order ----
