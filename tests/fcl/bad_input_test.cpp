@@ -108,6 +108,33 @@ TEST(FclBadInput, LinearPartThatIsNotARotationWritesNothing) {
   expectNothingWrittenEitherOrder(box(1, 1, 1), scaled, box(1, 1, 1), at(0, 0, 0));
 }
 
+TEST(FclBadInput, ShearedLinearPartWritesNothingWhicheverEntryIsSheared) {
+  // One off-diagonal entry at a time: each makes one off-diagonal entry of R^T R non-zero (the orthonormality test
+  // sums them lane by lane in double, solid_pairs.cpp). A deviation within the unit tolerance is accepted.
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) {
+      if (row == col) continue;
+      SCOPED_TRACE(testing::Message() << "entry " << row << ", " << col);
+      ::fcl::Transform3d sheared = at(0.3, 0, 0);
+      sheared.linear()(row, col) = 0.05;
+      {
+        SCOPED_TRACE("box-box");
+        expectNothingWrittenEitherOrder(box(1, 1, 1), sheared, box(1, 1, 1), at(0, 0, 0));
+      }
+      {
+        SCOPED_TRACE("box-sphere");
+        expectNothingWrittenEitherOrder(box(1, 1, 1), sheared, sphere(0.5), at(0, 0, 0));
+      }
+      ::fcl::Transform3d nearlyRotation = at(3, 0, 0);
+      nearlyRotation.linear()(row, col) = 1e-6;
+      ::fcl::DistanceResultd result;
+      EXPECT_NEAR(gq::fcl::distance(box(1, 1, 1).get(), nearlyRotation, sphere(0.5).get(), at(0, 0, 0),
+                                    ::fcl::DistanceRequestd(true), result),
+                  2.0, 1e-5)
+          << row << ", " << col;
+    }
+}
+
 TEST(FclBadInput, BadInputThatOverlapsAsReadWritesNothingIntoAnEmptyResult) {
   // collide checks the closed-form pairs' input only before reporting a hit (a miss writes nothing either way, and
   // the seeded results above make every call check). Each pair overlaps as read: with the pose made valid it collides.

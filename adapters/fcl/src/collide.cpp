@@ -92,8 +92,8 @@ template <class S>
   detail::Converted<S> a, b;
   const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
   if (ca == Conversion::Invalid || cb == Conversion::Invalid) return 0;
+  if (!detail::rotationUsable(a, tf1) || !detail::rotationUsable(b, tf2)) return 0;
   const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
-  if (!detail::isRotation(pa) || !detail::isRotation(pb)) return 0;
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost || fclContact ||
       (a.isSolid() && b.isSolid()))
     return detail::fclCollide(o1, tf1, o2, tf2, request, result);

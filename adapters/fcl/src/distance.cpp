@@ -92,8 +92,8 @@ S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf
   detail::Converted<S> a, b;
   const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
   if (ca == Conversion::Invalid || cb == Conversion::Invalid) return kNothing;
+  if (!detail::rotationUsable(a, tf1) || !detail::rotationUsable(b, tf2)) return kNothing;
   const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
-  if (!detail::isRotation(pa) || !detail::isRotation(pb)) return kNothing;
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled)
     return detail::fclDistance(o1, tf1, o2, tf2, request, result);
   detail::PairDistance<S> d;

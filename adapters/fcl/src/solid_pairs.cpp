@@ -14,6 +14,7 @@
 #include <limits>
 #include <utility>
 
+
 #include "custom/callback_queries.h"
 #include "distance/distance.h"
 #include "geometry_cache.h"
@@ -38,23 +39,6 @@ using FS = FclShape;
 template <class S> bool finiteTranslation(const Isometry<S>& tf) {
   const S* m = tf.data();  // column-major 4x4: the translation starts at 12
   return m[12] * S(0) + m[13] * S(0) + m[14] * S(0) == S(0);
-}
-
-// The linear part's columns are orthonormal: the Gram matrix R^T R = I within the façade's unit-quaternion tolerance
-// carried over to the matrix. A rotation scaled by 1 + e has Gram (1 + e)^2 I, about 2e on each diagonal entry, so
-// the Frobenius norm of R^T R - I may reach 2 sqrt(3) kUnitQuaternion. A reflection passes: sphere, box and capsule
-// are symmetric under flips of their local axes, so R and R diag(1, 1, -1) place the same set (no determinant).
-constexpr double kGramDeviationSq = 12 * tol::kUnitQuaternion * tol::kUnitQuaternion;
-
-template <class S> bool isOrthonormal(const Isometry<S>& tf) {
-  const S* m = tf.data();  // column-major 4x4: the columns start at 0, 4, 8
-  const S xx = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] - S(1);
-  const S yy = m[4] * m[4] + m[5] * m[5] + m[6] * m[6] - S(1);
-  const S zz = m[8] * m[8] + m[9] * m[9] + m[10] * m[10] - S(1);
-  const S xy = m[0] * m[4] + m[1] * m[5] + m[2] * m[6];
-  const S xz = m[0] * m[8] + m[1] * m[9] + m[2] * m[10];
-  const S yz = m[4] * m[8] + m[5] * m[9] + m[6] * m[10];
-  return xx * xx + yy * yy + zz * zz + S(2) * (xy * xy + xz * xz + yz * yz) <= S(kGramDeviationSq);
 }
 
 template <class S> bool positive(S v) { return v > S(0) && v <= std::numeric_limits<S>::max(); }
@@ -320,10 +304,11 @@ template <class S> Answer convertBoth(const Solid<S>& a, const Solid<S>& b, Conv
 
 template <class S> Answer posesOf(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb,
                                   Transform<S>& pa, Transform<S>& pb) {
-  if (!isFiniteTransforms(*a.tf, *b.tf)) return Answer::Invalid;
+  if (!isFiniteTransforms(*a.tf, *b.tf) || !rotationUsable(ca, *a.tf) || !rotationUsable(cb, *b.tf))
+    return Answer::Invalid;
   pa = shapePose(ca, *a.tf);
   pb = shapePose(cb, *b.tf);
-  return isRotation(pa) && isRotation(pb) ? Answer::Done : Answer::Invalid;
+  return Answer::Done;
 }
 
 // Overlap kernels run with a at the origin (b relative to it), as the façade does for precision far from it.
@@ -446,14 +431,8 @@ k::OverlapCertificate convexCertificate(const Solid<S>& a, const Solid<S>& b, co
   return k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
 }
 
-// A hull is not symmetric: its linear part must be a rotation, det = x . (y x z) > 0 on the columns (Eigen's
-// determinant of the 4x4's block cost ~40 more instructions).
-template <class S> bool rotationPose(const Solid<S>& s) {
-  const S* m = s.tf->data();  // column-major 4x4: the columns start at 0, 4, 8
-  const S det = m[0] * (m[5] * m[10] - m[6] * m[9]) + m[1] * (m[6] * m[8] - m[4] * m[10]) +
-                m[2] * (m[4] * m[9] - m[5] * m[8]);
-  return rigidPose(s) && det > S(0);
-}
+// A hull is not symmetric: its linear part must be a rotation, not a reflection.
+template <class S> bool rotationPose(const Solid<S>& s) { return rigidPose(s) && positiveDeterminant(*s.tf); }
 
 // A Convex's support mapping (prepared by the cache at cooking) placed at (r, t): a copy, since the cached one is
 // shared between threads and GJK writes its climbing hints into the shapes it is given.
