@@ -53,8 +53,9 @@ template <class T> T tolerance(const gq::Vec3<T>& h, const Cylinder<T>& s) {
 template <class T> bool gjkOverlap(const gq::Vec3<T>& h, const Cylinder<T>& s, const gq::Transform<T>& pose) {
   gq::CustomGeometry<T> cylinder;
   EXPECT_TRUE(gq::makeCylinder(s.r, s.hh, cylinder).ok());
+  const gq::Geometry<T> box{gq::BoxGeometry<T>(h)};
   return gq::detail::gjkOverlap(gq::detail::makeConvexShape(gq::Geometry<T>(cylinder), pose),
-                                gq::detail::makeConvexShape(gq::Geometry<T>(gq::BoxGeometry<T>(h)), gq::Transform<T>()));
+                                gq::detail::makeConvexShape(box, gq::Transform<T>()));
 }
 
 template <class T> BoxCylinderDistance answer(const gq::Vec3<T>& h, const Cylinder<T>& s, gq::DistanceResult<T>& d) {
@@ -82,7 +83,8 @@ TYPED_TEST(BoxCylinderDistanceTest, CapAndSideAnswersArePairsOfSurfacePointsAtTh
         // The plane along the normal separates them by the answer: no closer pair exists. The normal is the
         // witnesses' difference over the distance: off by ~eps_T |p| / distance, which lowers the box's gap at its
         // edges to first order (slack of that angle times the shapes' size).
-        const T angle = T(8) * std::numeric_limits<T>::epsilon() * (d.point0.norm() + d.point1.norm() + T(1)) / d.distance;
+        const T reach = d.point0.norm() + d.point1.norm() + T(1);
+        const T angle = T(8) * std::numeric_limits<T>::epsilon() * reach / d.distance;
         const T slack = eps + angle * (h.norm() + s.r + s.hh);
         EXPECT_GE(gapAlong(h, s, d.normal), (long double)(d.distance) - slack) << "pose " << i;
         break;

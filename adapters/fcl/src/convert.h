@@ -141,8 +141,8 @@ template <class T> Transform<T> shapePose(const Converted<T>& c, const Eigen::Tr
 // The linear part's columns are orthonormal: the Gram matrix R^T R = I within the façade's unit-quaternion tolerance
 // carried over to the matrix. A rotation scaled by 1 + e has Gram (1 + e)^2 I, about 2e on each diagonal entry, so
 // the Frobenius norm of R^T R - I may reach 2 sqrt(3) kUnitQuaternion. A reflection passes: sphere, box and capsule
-// are symmetric under flips of their local axes, so R and R diag(1, 1, -1) place the same set (no determinant; a
-// hull's entries test it, solid_pairs.cpp). A non-finite entry fails the test.
+// are symmetric under flips of their local axes, so R and R diag(1, 1, -1) place the same set (no determinant here:
+// rotationUsable and the hulls' entries add positiveDeterminant). A non-finite entry fails the test.
 constexpr double kGramDeviationSq = 12 * tol::kUnitQuaternion * tol::kUnitQuaternion;
 
 template <class S> bool isOrthonormal(const Eigen::Transform<S, 3, Eigen::Isometry>& tf) {

@@ -32,11 +32,11 @@ template <class T> class CustomGeometryCallbacks {
   virtual bool isConvex() const { return true; }
 
   // Optional queries against another geometry (the spec's Callbacks::overlap, computePenetration and sweep, and
-  // distance). The
-  // other geometry's pose and every vector are in this shape's local frame. Return true when answered (outputs
-  // written), false to let gq run its generic algorithm: GJK for overlap, GJK + EPA for penetration, conservative
-  // advancement for sweeps. Only convex custom shapes are asked; when both shapes are custom, geom0's callbacks are
-  // asked first. Answers must be finite (a non-finite answer makes the query return InternalError).
+  // distance). The other geometry's pose and every vector are in this shape's local frame. Return true when answered
+  // (outputs written), false to let gq run its generic algorithm: GJK for overlap, GJK + EPA for penetration and
+  // distance, conservative advancement for sweeps. Only convex custom shapes are asked; when both shapes are custom,
+  // geom0's callbacks are asked first. Answers must be finite (a non-finite answer makes the query return
+  // InternalError).
   //
   // overlap: touching counts as overlapping.
   virtual bool overlap(const Geometry<T>& /*other*/, const Transform<T>& /*otherPose*/, bool& /*overlapping*/) const {

@@ -89,9 +89,11 @@ bool CylinderCallbacks<T>::distance(const Geometry<T>& other, const Transform<T>
                                     DistanceResult<T>& result) const {
   if (other.type() != GeometryType::Box) return false;
   const Vec3<T>& h = other.template get<BoxGeometry<T>>().halfExtents;
-  DistanceResult<T> inBox;  // the box's frame, the box first
-  if (detail::distanceBoxCylinderLocal(h, otherPose.transformInv(Vec3<T>::Zero()), otherPose.rotateInv(Vec3<T>::UnitX()),
-                                       radius_, halfHeight_, inBox) != detail::BoxCylinderDistance::Separated)
+  // The cylinder (axis = local X) in the box's frame: centre R^T (0 - t), axis R^T e_x; the answer there, box first.
+  const Vec3<T> centre = otherPose.transformInv(Vec3<T>::Zero()), axis = otherPose.rotateInv(Vec3<T>::UnitX());
+  DistanceResult<T> inBox;
+  if (detail::distanceBoxCylinderLocal(h, centre, axis, radius_, halfHeight_, inBox) !=
+      detail::BoxCylinderDistance::Separated)
     return false;
   result.distance = inBox.distance;
   result.normal = -otherPose.rotate(inBox.normal);
