@@ -65,6 +65,19 @@ bool CylinderCallbacks<T>::raycast(const Vec3<T>& o, const Vec3<T>& d, T maxDist
   return detail::writeIntervalHit(r, o, d, maxDist, flags, normalAt, hit);
 }
 
+namespace {
+
+// The cylinder (axis = local X) in the frame of a box at `boxPose` (given in the cylinder's frame): centre
+// R^T (0 - t), axis R^T e_x, as the box/cylinder kernels take it.
+template <class T> struct CylinderInBox {
+  Vec3<T> centre, axis;
+};
+template <class T> CylinderInBox<T> inBoxFrame(const Transform<T>& boxPose) {
+  return {boxPose.transformInv(Vec3<T>::Zero()), boxPose.rotateInv(Vec3<T>::UnitX())};
+}
+
+}  // namespace
+
 template <class T>
 bool CylinderCallbacks<T>::overlap(const Geometry<T>& other, const Transform<T>& otherPose, bool& overlapping) const {
   if (other.type() == GeometryType::Sphere) {
@@ -74,9 +87,8 @@ bool CylinderCallbacks<T>::overlap(const Geometry<T>& other, const Transform<T>&
   }
   if (other.type() != GeometryType::Box) return false;
   const Vec3<T>& h = other.template get<BoxGeometry<T>>().halfExtents;
-  // The cylinder in the box's frame: centre R^T (0 - t), axis R^T e_x.
-  switch (detail::cylinderBoxCertificate(otherPose.transformInv(Vec3<T>::Zero()), otherPose.rotateInv(Vec3<T>::UnitX()),
-                                         radius_, halfHeight_, h)) {
+  const CylinderInBox<T> c = inBoxFrame(otherPose);
+  switch (detail::cylinderBoxCertificate(c.centre, c.axis, radius_, halfHeight_, h)) {
     case detail::OverlapCertificate::Apart: overlapping = false; return true;
     case detail::OverlapCertificate::Overlapping: overlapping = true; return true;
     case detail::OverlapCertificate::Unknown: break;
@@ -89,10 +101,9 @@ bool CylinderCallbacks<T>::distance(const Geometry<T>& other, const Transform<T>
                                     DistanceResult<T>& result) const {
   if (other.type() != GeometryType::Box) return false;
   const Vec3<T>& h = other.template get<BoxGeometry<T>>().halfExtents;
-  // The cylinder (axis = local X) in the box's frame: centre R^T (0 - t), axis R^T e_x; the answer there, box first.
-  const Vec3<T> centre = otherPose.transformInv(Vec3<T>::Zero()), axis = otherPose.rotateInv(Vec3<T>::UnitX());
-  DistanceResult<T> inBox;
-  if (detail::distanceBoxCylinderLocal(h, centre, axis, radius_, halfHeight_, inBox) !=
+  const CylinderInBox<T> c = inBoxFrame(otherPose);
+  DistanceResult<T> inBox;  // the box's frame, the box first
+  if (detail::distanceBoxCylinderLocal(h, c.centre, c.axis, radius_, halfHeight_, inBox) !=
       detail::BoxCylinderDistance::Separated)
     return false;
   result.distance = inBox.distance;
