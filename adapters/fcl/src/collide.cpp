@@ -34,7 +34,7 @@ bool fclContactIsClosedForm(FclShape a, FclShape b) {
 }
 
 // Contacts that stay FCL's own unless a correction is opted into (see Options).
-bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
+bool contactFromFcl(FclShape a, FclShape b, Options options) {
   if (options.minimumTranslation) return false;
   if (pairIs(a, b, FclShape::Box, FclShape::Box)) return !options.exactContainedBoxDepth;
   return !fclContactIsClosedForm(a, b);
@@ -43,17 +43,18 @@ bool contactFromFcl(FclShape a, FclShape b, const Options& options) {
 // Two closed solids, the fast path (solid_pairs.h): at most one contact, no buffer; contact geometry only when
 // asked for. With `resultHeldContacts` a miss returns their count and bad input 0: the table must tell them apart.
 template <class S>
-[[gnu::always_inline]] inline detail::Answer collideSolids(const detail::Solid<S>& a, const detail::Solid<S>& b,
-                                                          bool withContact, bool resultHeldContacts, bool& added,
+[[gnu::always_inline]] inline detail::Answer collideSolids(detail::FclShape sa, detail::Solid<S> a, detail::FclShape sb,
+                                                          detail::Solid<S> b, bool withContact,
+                                                          bool resultHeldContacts, bool& added,
                                                           ::fcl::CollisionResult<S>& result) {
   if (!withContact) {
-    const detail::Answer answer = detail::solidOverlap(a, b, resultHeldContacts, added);
+    const detail::Answer answer = detail::solidOverlap(sa, a, sb, b, resultHeldContacts, added);
     if (answer == detail::Answer::Done && added)
       result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive));
     return answer;
   }
   DistanceResult<S> d;
-  const detail::Answer answer = detail::solidDistance(a, b, detail::DistanceAsk{true, true}, d);
+  const detail::Answer answer = detail::solidDistance(sa, a, sb, b, detail::DistanceAsk{true, true}, d);
   added = answer == detail::Answer::Done && d.distance <= S(0);
   if (added)
     result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive,
@@ -110,7 +111,7 @@ template <class S>
                                                      const ::fcl::CollisionGeometry<S>* o2,
                                                      const ::fcl::Transform3<S>& tf2,
                                                      const ::fcl::CollisionRequest<S>& request,
-                                                     ::fcl::CollisionResult<S>& result, const Options& options) {
+                                                     ::fcl::CollisionResult<S>& result, Options options) {
   if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
   // FCL's CollisionRequest::isSatisfied (no cost sources, a collision, num_max_contacts reached) on one count.
   const std::size_t before = result.numContacts();
@@ -121,7 +122,7 @@ template <class S>
   const bool fclContact = request.enable_contact && contactFromFcl(s1, s2, options);
   if (detail::isSolid(s1) && detail::isSolid(s2) && !request.enable_cost && !fclContact) {
     bool added = false;
-    switch (collideSolids(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, request.enable_contact,
+    switch (collideSolids(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request.enable_contact,
                           before > 0, added, result)) {
       case detail::Answer::Done: detail::countGq(); return before + added;
       case detail::Answer::Invalid: return 0;

@@ -55,39 +55,45 @@ void keepSmaller(S distance, const ::fcl::CollisionGeometry<S>* o1, const ::fcl:
   result.nearest_points[1] = points->point1;
 }
 
+// Pairs the fast path leaves unanswered (FCL answers them) and everything off it: meshes, planes, converted shapes.
+// Out of line, as collide's: inline, the converted path's frame and saved registers cost the fast path every call.
+template <class S>
+[[gnu::noinline]] S solidUnanswered(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1,
+                                    const ::fcl::Transform3<S>& tf1, detail::FclShape s2,
+                                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                    const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  // FCL 0.7 crashes on these (libccd's GJK calls a null support function for a Halfspace): nothing written.
+  if (s1 == detail::FclShape::Halfspace || s2 == detail::FclShape::Halfspace) return std::numeric_limits<S>::max();
+  return detail::fclDistance(o1, tf1, o2, tf2, request, result);
+}
+
 // Two closed solids, the fast path (solid_pairs.h).
 template <class S>
-S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
-                detail::FclShape s2, const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-                const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+[[gnu::always_inline]] inline S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1,
+                                              const ::fcl::Transform3<S>& tf1, detail::FclShape s2,
+                                              const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                              const ::fcl::DistanceRequest<S>& request,
+                                              ::fcl::DistanceResult<S>& result) {
   DistanceResult<S> d;
   const bool withPoints = request.enable_nearest_points;
   const detail::DistanceAsk ask{withPoints, request.enable_signed_distance, double(request.distance_tolerance)};
-  switch (detail::solidDistance(detail::Solid<S>{s1, o1, &tf1}, detail::Solid<S>{s2, o2, &tf2}, ask, d)) {
+  switch (detail::solidDistance(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, ask, d)) {
     case detail::Answer::Done: break;
     case detail::Answer::Invalid: return std::numeric_limits<S>::max();
-    case detail::Answer::Unanswered:
-      // FCL 0.7 crashes on these (libccd's GJK calls a null support function for a Halfspace): nothing written.
-      if (s1 == detail::FclShape::Halfspace || s2 == detail::FclShape::Halfspace) return std::numeric_limits<S>::max();
-      return detail::fclDistance(o1, tf1, o2, tf2, request, result);
+    case detail::Answer::Unanswered: return solidUnanswered(s1, o1, tf1, s2, o2, tf2, request, result);
   }
   detail::countGq();
   keepSmaller(d.distance, o1, o2, withPoints ? &d : nullptr, result);
   return result.min_distance;
 }
 
-}  // namespace
-
-template <typename S>
-S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
-           const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+// Everything but two solids: meshes, planes and what gq does not model.
+template <class S>
+[[gnu::noinline]] S distanceOthers(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                                   const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                   const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
   using detail::Conversion;
-  // Bad input writes nothing and returns what FCL returns for a pair it cannot answer (docs/fcl.md).
   constexpr S kNothing = std::numeric_limits<S>::max();
-  if (satisfied(result)) return result.min_distance;  // request.isSatisfied(result)
-  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
-  if (detail::isSolid(s1) && detail::isSolid(s2)) return solidDistance(s1, o1, tf1, s2, o2, tf2, request, result);
   if (!detail::isFiniteTransforms(tf1, tf2)) return kNothing;
   detail::Converted<S> a, b;
   const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
@@ -109,12 +115,34 @@ S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf
   return result.min_distance;
 }
 
+// The whole of distance; each public overload is this function. Bad input writes nothing and returns what FCL
+// returns for a pair it cannot answer (docs/fcl.md).
+template <class S>
+[[gnu::always_inline]] inline S distancePair(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                                             const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                             const ::fcl::DistanceRequest<S>& request,
+                                             ::fcl::DistanceResult<S>& result) {
+  if (satisfied(result)) return result.min_distance;  // request.isSatisfied(result)
+  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
+  if (detail::isSolid(s1) && detail::isSolid(s2)) return solidDistance(s1, o1, tf1, s2, o2, tf2, request, result);
+  return distanceOthers(o1, tf1, o2, tf2, request, result);
+}
+
+}  // namespace
+
+template <typename S>
+S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+           const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  return distancePair(o1, tf1, o2, tf2, request, result);
+}
+
 template <typename S>
 S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
            const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
   if (!o1 || !o2) return std::numeric_limits<S>::max();  // bad input: nothing written
-  return distance(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
-                  o2->getTransform(), request, result);
+  return distancePair(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
+                      o2->getTransform(), request, result);
 }
 
 template float distance<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,

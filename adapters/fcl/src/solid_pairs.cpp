@@ -45,10 +45,10 @@ template <class S> bool positive(S v) { return v > S(0) && v <= std::numeric_lim
 
 // Sizes are checked before any kernel runs (a few comparisons; the kernels' clamps need ordered bounds). The
 // transforms' checks, the costly part, run in the readers or, for collide, only before a hit (validatedHit).
-template <class S> S sphereRadius(const Solid<S>& s) {
+template <class S> S sphereRadius(Solid<S> s) {
   return static_cast<const ::fcl::Sphere<S>*>(s.geometry)->radius;
 }
-template <class S> Vec3<S> boxHalf(const Solid<S>& s) {
+template <class S> Vec3<S> boxHalf(Solid<S> s) {
   return static_cast<const ::fcl::Box<S>*>(s.geometry)->side * S(0.5);
 }
 template <class S> bool boxSized(const Vec3<S>& half) {
@@ -56,11 +56,11 @@ template <class S> bool boxSized(const Vec3<S>& half) {
 }
 
 // FCL's capsule: radius and full length lz along local Z; its centre is taken relative to `origin`.
-template <class S> k::CapsuleAxis<S> capsuleAxis(const Solid<S>& s, const Vec3<S>& origin) {
+template <class S> k::CapsuleAxis<S> capsuleAxis(Solid<S> s, const Vec3<S>& origin) {
   const auto* c = static_cast<const ::fcl::Capsule<S>*>(s.geometry);
   return k::CapsuleAxis<S>{s.tf->translation() - origin, s.tf->linear().col(2), c->lz * S(0.5), c->radius};
 }
-template <class S> bool capsuleSized(const Solid<S>& s) {
+template <class S> bool capsuleSized(Solid<S> s) {
   const auto* c = static_cast<const ::fcl::Capsule<S>*>(s.geometry);
   return positive(c->radius) && c->lz >= S(0) && c->lz <= std::numeric_limits<S>::max();
 }
@@ -69,19 +69,19 @@ template <class S> bool capsuleSized(const Solid<S>& s) {
 // orthonormal linear part. Two spheres' transforms are checked finite in one reduction (half the instructions of
 // two); a sphere and another shape: the sphere's reduced alone, the other's translation and linear part as above (the
 // orthonormality test fails on a non-finite entry; reducing both transforms cost sphere-box 3-14 more instructions).
-template <class S> bool rigidPose(const Solid<S>& s) { return finiteTranslation(*s.tf) && isOrthonormal(*s.tf); }
-template <class S> bool spherePoses(const Solid<S>& a, const Solid<S>& b) { return isFiniteTransforms(*a.tf, *b.tf); }
-template <class S> bool sphereRigidPoses(const Solid<S>& sphere, const Solid<S>& rigid) {
-  return (sphere.tf->matrix().array() * S(0)).sum() == S(0) && finiteTranslation(*rigid.tf) &&
-         isOrthonormal(*rigid.tf);
+template <class S> bool rigidPose(Solid<S> s) { return finiteTranslation(*s.tf) && isOrthonormal(*s.tf); }
+// Out of line: it runs on hits only, and inline its registers cost every call of sphereSphereOverlap.
+template <class S> [[gnu::noinline]] bool spherePoses(Solid<S> a, Solid<S> b) { return isFiniteTransforms(*a.tf, *b.tf); }
+template <class S> bool sphereRigidPoses(Solid<S> sphere, Solid<S> rigid) {
+  return isFiniteTransform(*sphere.tf) && finiteTranslation(*rigid.tf) && isOrthonormal(*rigid.tf);
 }
 
-template <class S> bool readBox(const Solid<S>& s, Vec3<S>& half) {
+template <class S> bool readBox(Solid<S> s, Vec3<S>& half) {
   half = boxHalf(s);
   return boxSized(half) && rigidPose(s);
 }
 
-template <class S> bool readCapsule(const Solid<S>& s, const Vec3<S>& origin, k::CapsuleAxis<S>& capsule) {
+template <class S> bool readCapsule(Solid<S> s, const Vec3<S>& origin, k::CapsuleAxis<S>& capsule) {
   capsule = capsuleAxis(s, origin);
   return capsuleSized(s) && rigidPose(s);
 }
@@ -97,7 +97,7 @@ template <class Valid> Answer validatedHit(bool check, Valid valid) {
 
 // x (world) in the frame of the pose tf: R^T (x - t), the dot products of x - t with R's columns (Eigen's
 // transposed product of the 4x4's block cost the sphere-cylinder pairs ~15 more instructions).
-template <class S> Vec3<S> inFrame(const Isometry<S>& tf, const Vec3<S>& x) {
+template <class S> [[gnu::always_inline]] inline Vec3<S> inFrame(const Isometry<S>& tf, const Vec3<S>& x) {
   const S* m = tf.data();  // column-major 4x4: the columns start at 0, 4, 8, the translation at 12
   const S dx = x.x() - m[12], dy = x.y() - m[13], dz = x.z() - m[14];
   return Vec3<S>(m[0] * dx + m[1] * dy + m[2] * dz, m[4] * dx + m[5] * dy + m[6] * dz,
@@ -140,23 +140,21 @@ template <class S> bool finiteResult(const DistanceResult<S>& r) {
 
 // ---- primitive pairs, in core's order ----
 
-template <class S> Answer sphereSphereOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer sphereSphereOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   const S ra = sphereRadius(a), rb = sphereRadius(b);
   if (!positive(ra) || !positive(rb)) return Answer::Invalid;
-  hit = k::overlapSphereSphere<S>(Vec3<S>::Zero(), ra, b.tf->translation() - a.tf->translation(), rb);
+  hit = k::overlapSphereSphere<S>(a.tf->translation(), ra, b.tf->translation(), rb);
   return validatedHit(hit || checkMiss, [&] { return spherePoses(a, b); });
 }
 
-template <class S> Answer sphereSphereDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> Answer sphereSphereDistance(Solid<S> a, Solid<S> b, DistanceAsk, DistanceResult<S>& out) {
   const S ra = sphereRadius(a), rb = sphereRadius(b);
-  if (!positive(ra) || !positive(rb) || !spherePoses(a, b)) return Answer::Invalid;
-  const Vec3<S> origin = a.tf->translation();
-  k::ballsDistance<S>(Vec3<S>::Zero(), ra, b.tf->translation() - origin, rb, Vec3<S>::UnitX(), out);
-  shiftPoints(origin, ask.points, out);
+  if (!positive(ra) || !positive(rb) || !isFiniteTransforms(*a.tf, *b.tf)) return Answer::Invalid;
+  k::ballsDistance<S>(a.tf->translation(), ra, b.tf->translation(), rb, out);
   return Answer::Done;
 }
 
-template <class S> Answer sphereCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer sphereCapsuleOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   const S ra = sphereRadius(a);
   if (!positive(ra) || !capsuleSized(b)) return Answer::Invalid;
   const k::CapsuleAxis<S> cb = capsuleAxis(b, Vec3<S>(a.tf->translation()));
@@ -164,7 +162,7 @@ template <class S> Answer sphereCapsuleOverlap(const Solid<S>& a, const Solid<S>
   return validatedHit(hit || checkMiss, [&] { return sphereRigidPoses(a, b); });
 }
 
-template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> Answer sphereCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const S ra = sphereRadius(a);
   if (!positive(ra) || !capsuleSized(b) || !sphereRigidPoses(a, b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
@@ -174,7 +172,7 @@ template <class S> Answer sphereCapsuleDistance(const Solid<S>& a, const Solid<S
   return Answer::Done;
 }
 
-template <class S> Answer sphereBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer sphereBoxOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   const S ra = sphereRadius(a);
   const Vec3<S> hb = boxHalf(b);
   if (!positive(ra) || !boxSized(hb)) return Answer::Invalid;
@@ -182,7 +180,7 @@ template <class S> Answer sphereBoxOverlap(const Solid<S>& a, const Solid<S>& b,
   return validatedHit(hit || checkMiss, [&] { return sphereRigidPoses(a, b); });
 }
 
-template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> Answer sphereBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const S ra = sphereRadius(a);
   const Vec3<S> hb = boxHalf(b);
   if (!positive(ra) || !boxSized(hb) || !sphereRigidPoses(a, b)) return Answer::Invalid;
@@ -192,7 +190,7 @@ template <class S> Answer sphereBoxDistance(const Solid<S>& a, const Solid<S>& b
   return Answer::Done;
 }
 
-template <class S> Answer capsuleCapsuleOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer capsuleCapsuleOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   if (!capsuleSized(a) || !capsuleSized(b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
   const k::CapsuleAxis<S> ca = capsuleAxis(a, origin), cb = capsuleAxis(b, origin);
@@ -202,7 +200,7 @@ template <class S> Answer capsuleCapsuleOverlap(const Solid<S>& a, const Solid<S
 }
 
 template <class S>
-Answer capsuleCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+Answer capsuleCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   k::CapsuleAxis<S> ca, cb;
   const Vec3<S> origin = a.tf->translation();
   if (!readCapsule(a, origin, ca) || !readCapsule(b, origin, cb)) return Answer::Invalid;
@@ -212,14 +210,14 @@ Answer capsuleCapsuleDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk 
 }
 
 // The capsule's segment in the box's frame: centre c and half-axis d.
-template <class S> void capsuleInBox(const Solid<S>& capsule, const Solid<S>& box, k::CapsuleAxis<S>& c, Vec3<S>& d) {
+template <class S> void capsuleInBox(Solid<S> capsule, Solid<S> box, k::CapsuleAxis<S>& c, Vec3<S>& d) {
   c = capsuleAxis(capsule, Vec3<S>(box.tf->translation()));
   const auto rt = box.tf->linear().transpose();
   c.centre = rt * c.centre;
   d = rt * (c.halfHeight * c.axis);
 }
 
-template <class S> Answer capsuleBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer capsuleBoxOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   const Vec3<S> h = boxHalf(b);
   if (!capsuleSized(a) || !boxSized(h)) return Answer::Invalid;
   k::CapsuleAxis<S> c;
@@ -229,7 +227,7 @@ template <class S> Answer capsuleBoxOverlap(const Solid<S>& a, const Solid<S>& b
   return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
 
-template <class S> Answer capsuleBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> Answer capsuleBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const Vec3<S> h = boxHalf(b);
   if (!capsuleSized(a) || !boxSized(h) || !rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
   k::CapsuleAxis<S> c;
@@ -242,12 +240,12 @@ template <class S> Answer capsuleBoxDistance(const Solid<S>& a, const Solid<S>& 
 }
 
 // Box b in box a's frame: axes R_a^T R_b, centre R_a^T (t_b - t_a).
-template <class S> void boxInBox(const Solid<S>& a, const Solid<S>& b, Mat3<S>& r, Vec3<S>& t) {
+template <class S> void boxInBox(Solid<S> a, Solid<S> b, Mat3<S>& r, Vec3<S>& t) {
   r.noalias() = a.tf->linear().transpose() * b.tf->linear();
   t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
 }
 
-template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer boxBoxOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   const Vec3<S> ha = boxHalf(a), hb = boxHalf(b);
   if (!boxSized(ha) || !boxSized(hb)) return Answer::Invalid;
   Vec3<S> t;
@@ -258,7 +256,7 @@ template <class S> Answer boxBoxOverlap(const Solid<S>& a, const Solid<S>& b, bo
 }
 
 // In box a's frame, core's closed form (distanceBoxBoxLocal); GJK/EPA in its rare overlapping parallel-face case.
-template <class S> Answer boxBoxDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> Answer boxBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> ha, hb, t;
   Mat3<S> r;
   if (!readBox(a, ha) || !readBox(b, hb)) return Answer::Invalid;
@@ -297,12 +295,12 @@ template <GT G, class S> const auto& as(const Geometry<S>& g) {
   else return g.template get<CustomGeometry<S>>();
 }
 
-template <class S> Answer convertBoth(const Solid<S>& a, const Solid<S>& b, Converted<S>& ca, Converted<S>& cb) {
+template <class S> Answer convertBoth(Solid<S> a, Solid<S> b, Converted<S>& ca, Converted<S>& cb) {
   const bool ok = convert(a.geometry, ca) == Conversion::Ok && convert(b.geometry, cb) == Conversion::Ok;
   return ok ? Answer::Done : Answer::Invalid;
 }
 
-template <class S> Answer posesOf(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb,
+template <class S> Answer posesOf(Solid<S> a, Solid<S> b, const Converted<S>& ca, const Converted<S>& cb,
                                   Transform<S>& pa, Transform<S>& pb) {
   if (!isFiniteTransforms(*a.tf, *b.tf) || !rotationUsable(ca, *a.tf) || !rotationUsable(cb, *b.tf))
     return Answer::Invalid;
@@ -381,7 +379,7 @@ Answer distanceGq(const Geometry<S>& a, const Transform<S>& pa, const Geometry<S
 }
 
 template <class S, FS A, FS B>
-Answer overlapConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb,
+Answer overlapConverted(Solid<S> a, Solid<S> b, const Converted<S>& ca, const Converted<S>& cb,
                         bool& hit) {
   Transform<S> pa, pb;
   const Answer r = posesOf(a, b, ca, cb, pa, pb);
@@ -389,14 +387,14 @@ Answer overlapConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S>
   return overlapGq<S, gqType(A), gqType(B)>(ca.geometry(), cb.geometry(), pb.relativeTo(pa), hit);
 }
 
-template <class S, FS A, FS B> Answer convertedOverlap(const Solid<S>& a, const Solid<S>& b, bool& hit) {
+template <class S, FS A, FS B> Answer convertedOverlap(Solid<S> a, Solid<S> b, bool& hit) {
   Converted<S> ca, cb;
   const Answer r = convertBoth(a, b, ca, cb);
   return r == Answer::Done ? overlapConverted<S, A, B>(a, b, ca, cb, hit) : r;
 }
 
 template <class S, FS A, FS B>
-Answer distanceConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S>& ca, const Converted<S>& cb,
+Answer distanceConverted(Solid<S> a, Solid<S> b, const Converted<S>& ca, const Converted<S>& cb,
                          DistanceAsk ask, DistanceResult<S>& out) {
   Transform<S> pa, pb;
   const Answer r = posesOf(a, b, ca, cb, pa, pb);
@@ -405,7 +403,7 @@ Answer distanceConverted(const Solid<S>& a, const Solid<S>& b, const Converted<S
 }
 
 template <class S, FS A, FS B>
-Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+Answer convertedDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   Converted<S> ca, cb;
   const Answer r = convertBoth(a, b, ca, cb);
   return r == Answer::Done ? distanceConverted<S, A, B>(a, b, ca, cb, ask, out) : r;
@@ -415,24 +413,24 @@ Answer convertedDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, 
 // the converted path (GJK) when it decides nothing. A hull is not symmetric: its linear part must be a rotation.
 // Both Convex straight from the cache, without Converted objects (their construction and the node-type switch cost
 // ~50 instructions a call); false when either has no cooked hull.
-template <class S> bool cookedHulls(const Solid<S>& a, const Solid<S>& b, Cooked<S>& ca, Cooked<S>& cb) {
+template <class S> bool cookedHulls(Solid<S> a, Solid<S> b, Cooked<S>& ca, Cooked<S>& cb) {
   return cachedGeometry(a.geometry, ::fcl::GEOM_CONVEX, ca) == Conversion::Ok &&
          cachedGeometry(b.geometry, ::fcl::GEOM_CONVEX, cb) == Conversion::Ok;
 }
 
-template <class S> k::HullBalls<S> hullBalls(const Solid<S>& s, const Cooked<S>& c) {
+template <class S> k::HullBalls<S> hullBalls(Solid<S> s, const Cooked<S>& c) {
   const ConvexMesh<S>& m = *c.support->hull;
   return {s.tf->linear() * m.center + s.tf->translation(), m.innerRadius, m.outerRadius};
 }
 
 template <class S>
-k::OverlapCertificate convexCertificate(const Solid<S>& a, const Solid<S>& b, const Cooked<S>& ca,
+k::OverlapCertificate convexCertificate(Solid<S> a, Solid<S> b, const Cooked<S>& ca,
                                         const Cooked<S>& cb) {
   return k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
 }
 
 // A hull is not symmetric: its linear part must be a rotation, not a reflection.
-template <class S> bool rotationPose(const Solid<S>& s) { return rigidPose(s) && positiveDeterminant(*s.tf); }
+template <class S> bool rotationPose(Solid<S> s) { return rigidPose(s) && positiveDeterminant(*s.tf); }
 
 // A Convex's support mapping (prepared by the cache at cooking) placed at (r, t): a copy, since the cached one is
 // shared between threads and GJK writes its climbing hints into the shapes it is given.
@@ -443,7 +441,7 @@ template <class S> k::ConvexShape<S> placedHull(const Cooked<S>& c, const Mat3<S
   return s;
 }
 
-template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   Cooked<S> ca, cb;
   if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
   const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
@@ -465,7 +463,7 @@ template <class S> Answer convexConvexOverlap(const Solid<S>& a, const Solid<S>&
 }
 
 // FCL's cylinder: radius and full length lz along local Z, valid as the conversion takes it (both positive).
-template <class S> bool cylinderSize(const Solid<S>& s, S& radius, S& halfHeight) {
+template <class S> bool cylinderSize(Solid<S> s, S& radius, S& halfHeight) {
   const auto* c = static_cast<const ::fcl::Cylinder<S>*>(s.geometry);
   radius = c->radius;
   halfHeight = c->lz * S(0.5);
@@ -479,7 +477,7 @@ template <class S> struct CylinderInBox {
 };
 
 // Sizes are checked (false: Invalid), the transforms by the callers.
-template <class S> bool cylinderInBox(const Solid<S>& box, const Solid<S>& cylinder, Vec3<S>& h, CylinderInBox<S>& c) {
+template <class S> bool cylinderInBox(Solid<S> box, Solid<S> cylinder, Vec3<S>& h, CylinderInBox<S>& c) {
   h = boxHalf(box);
   if (!boxSized(h) || !cylinderSize(cylinder, c.radius, c.halfHeight)) return false;
   const auto rt = box.tf->linear().transpose();
@@ -493,7 +491,7 @@ template <class S> k::OverlapCertificate boxCylinderCertificate(const Vec3<S>& h
 }
 
 // Box and cylinder: core's certificates in the box's frame; GJK when they find none.
-template <class S> bool boxCylinderCertificate(const Solid<S>& box, const Solid<S>& cylinder,
+template <class S> bool boxCylinderCertificate(Solid<S> box, Solid<S> cylinder,
                                                k::OverlapCertificate& certificate) {
   Vec3<S> h;
   CylinderInBox<S> c;
@@ -502,7 +500,7 @@ template <class S> bool boxCylinderCertificate(const Solid<S>& box, const Solid<
   return true;
 }
 
-template <class S> Answer boxCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer boxCylinderOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   k::OverlapCertificate certificate;
   if (!boxCylinderCertificate(a, b, certificate)) return Answer::Invalid;
   if (certificate == k::OverlapCertificate::Unknown) return convertedOverlap<S, FS::Box, FS::Cylinder>(a, b, hit);
@@ -515,12 +513,12 @@ template <class S> Answer boxCylinderOverlap(const Solid<S>& a, const Solid<S>& 
 template <class S> Vec3<S> fclFromAxisX(const Vec3<S>& v) { return Vec3<S>(v.y(), v.z(), v.x()); }
 
 // The sphere's centre in the cylinder's frame, in core's axes.
-template <class S> Vec3<S> sphereInCylinder(const Solid<S>& sphere, const Solid<S>& cylinder) {
+template <class S> Vec3<S> sphereInCylinder(Solid<S> sphere, Solid<S> cylinder) {
   const Vec3<S> c = inFrame(*cylinder.tf, Vec3<S>(sphere.tf->translation()));
   return Vec3<S>(c.z(), c.x(), c.y());
 }
 
-template <class S> Answer sphereCylinderOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S> Answer sphereCylinderOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   const S ra = sphereRadius(a);
   S radius, halfHeight;
   if (!positive(ra) || !cylinderSize(b, radius, halfHeight)) return Answer::Invalid;
@@ -529,7 +527,7 @@ template <class S> Answer sphereCylinderOverlap(const Solid<S>& a, const Solid<S
 }
 
 template <class S>
-Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+Answer sphereCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const S ra = sphereRadius(a);
   S radius, halfHeight;
   if (!positive(ra) || !cylinderSize(b, radius, halfHeight) || !sphereRigidPoses(a, b)) return Answer::Invalid;
@@ -545,7 +543,7 @@ Answer sphereCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk 
 // Box and cylinder distance: without a requested depth, proven overlap is FCL's -1 at once; a separated pair is
 // core's certified closest pair (distanceBoxCylinderLocal, within GJK's tolerance for the pair, as the overlap
 // certificate's); the rest (touching, overlap with a requested depth, nothing proven) is GJK's and EPA's.
-template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> Answer boxCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> h;
   CylinderInBox<S> c;
   if (!cylinderInBox(a, b, h, c)) return Answer::Invalid;
@@ -571,7 +569,7 @@ template <class S> Answer boxCylinderDistance(const Solid<S>& a, const Solid<S>&
 
 // Without a requested depth, overlapping inner balls are FCL's -1 at once; everything else is GJK's.
 template <class S>
-Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+Answer convexConvexDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   if (ask.depth) return convertedDistance<S, FS::Convex, FS::Convex>(a, b, ask, out);
   Cooked<S> ca, cb;
   if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
@@ -590,7 +588,7 @@ Answer convexConvexDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk as
 
 // ---- the table ----
 
-template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
+template <class S, FS A, FS B> Answer overlapEntry(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   if constexpr (gqType(A) > gqType(B)) return overlapEntry<S, B, A>(b, a, checkMiss, hit);
   else if constexpr (A == FS::Sphere && B == FS::Sphere) return sphereSphereOverlap(a, b, checkMiss, hit);
   else if constexpr (A == FS::Sphere && B == FS::Capsule) return sphereCapsuleOverlap(a, b, checkMiss, hit);
@@ -605,7 +603,7 @@ template <class S, FS A, FS B> Answer overlapEntry(const Solid<S>& a, const Soli
 }
 
 template <class S, FS A, FS B>
-Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
+Answer distanceEntry(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   if constexpr (gqType(A) > gqType(B)) {
     const Answer r = distanceEntry<S, B, A>(b, a, ask, out);
     if (r == Answer::Done) flip(out);
@@ -633,36 +631,18 @@ Answer distanceEntry(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, Dist
   }
 }
 
-template <class S> struct PairEntry {
-  Answer (*overlap)(const Solid<S>&, const Solid<S>&, bool, bool&);
-  Answer (*distance)(const Solid<S>&, const Solid<S>&, DistanceAsk, DistanceResult<S>&);
-};
-
-constexpr std::size_t kSolids = std::size_t(FS::Halfspace) + 1;
-
 template <class S, std::size_t... I> constexpr std::array<PairEntry<S>, sizeof...(I)> makeTable(std::index_sequence<I...>) {
   return {{PairEntry<S>{&overlapEntry<S, FS(I / kSolids), FS(I % kSolids)>,
                         &distanceEntry<S, FS(I / kSolids), FS(I % kSolids)>}...}};
 }
 
-template <class S> constexpr std::array<PairEntry<S>, kSolids * kSolids> kTable =
-    makeTable<S>(std::make_index_sequence<kSolids * kSolids>());
-
-template <class S> const PairEntry<S>& entry(FS a, FS b) { return kTable<S>[std::size_t(a) * kSolids + std::size_t(b)]; }
-
 }  // namespace
 
-template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit) {
-  return entry<S>(a.shape, b.shape).overlap(a, b, checkMiss, hit);
-}
+template <class S>
+const std::array<PairEntry<S>, kSolids * kSolids> SolidPairs<S>::table =
+    makeTable<S>(std::make_index_sequence<kSolids * kSolids>());
 
-template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out) {
-  return entry<S>(a.shape, b.shape).distance(a, b, ask, out);
-}
-
-template Answer solidOverlap<float>(const Solid<float>&, const Solid<float>&, bool, bool&);
-template Answer solidOverlap<double>(const Solid<double>&, const Solid<double>&, bool, bool&);
-template Answer solidDistance<float>(const Solid<float>&, const Solid<float>&, DistanceAsk, DistanceResult<float>&);
-template Answer solidDistance<double>(const Solid<double>&, const Solid<double>&, DistanceAsk, DistanceResult<double>&);
+template struct SolidPairs<float>;
+template struct SolidPairs<double>;
 
 }  // namespace gq::fcl::detail

@@ -11,6 +11,8 @@
 //    for their gq geometry types, chosen at compile time.
 // Semantics are the façade's: touching overlaps; distance is signed with the normal from a to b, in world space
 // (without a requested depth, GJK pairs answer FCL's -1 when overlapping: solidDistance).
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include <fcl/geometry/collision_geometry.h>
@@ -41,17 +43,12 @@ template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* geometry)
 }
 inline bool isSolid(FclShape s) { return s <= FclShape::Halfspace && s != FclShape::Unsupported; }
 
-// One side of a query: an FCL geometry, its shapeOf and its pose.
+// One side of a query: an FCL geometry and its pose (two pointers: passed by value, in registers). The table is
+// indexed by the two sides' shapeOf; each entry knows its shapes.
 template <class S> struct Solid {
-  FclShape shape;
   const ::fcl::CollisionGeometry<S>* geometry;
   const Isometry<S>* tf;
 };
-
-// Both sides solid (isSolid) is a precondition; the transforms are validated here (Invalid: not finite, or a
-// linear part that is not a rotation). A miss writes nothing, as bad input must not: the closed-form pairs validate
-// only before reporting a hit, or on a miss too when `checkMiss` (the caller tells the two apart).
-template <class S> Answer solidOverlap(const Solid<S>& a, const Solid<S>& b, bool checkMiss, bool& hit);
 
 // What a distance request asks for: the world witnesses (enable_nearest_points), the penetration depth
 // (enable_signed_distance) and GJK's stop tolerance (DistanceRequest::distance_tolerance as the host set it; only
@@ -62,9 +59,37 @@ struct DistanceAsk {
   double tolerance = 0;
 };
 
+// The table behind solidOverlap and solidDistance: one entry per ordered pair of solids (solid_pairs.cpp). Declared
+// here so that both calls index it inline (an out-of-line lookup cost each call ~5 instructions).
+template <class S> struct PairEntry {
+  Answer (*overlap)(Solid<S>, Solid<S>, bool, bool&);
+  Answer (*distance)(Solid<S>, Solid<S>, DistanceAsk, DistanceResult<S>&);
+};
+inline constexpr std::size_t kSolids = std::size_t(FclShape::Halfspace) + 1;
+template <class S> struct SolidPairs {
+  static const std::array<PairEntry<S>, kSolids * kSolids> table;
+};
+extern template struct SolidPairs<float>;
+extern template struct SolidPairs<double>;
+
+template <class S> const PairEntry<S>& solidPair(FclShape a, FclShape b) {
+  return SolidPairs<S>::table[std::size_t(a) * kSolids + std::size_t(b)];
+}
+
+// Both sides solid (isSolid) is a precondition; the transforms are validated here (Invalid: not finite, or a
+// linear part that is not a rotation). A miss writes nothing, as bad input must not: the closed-form pairs validate
+// only before reporting a hit, or on a miss too when `checkMiss` (the caller tells the two apart).
+template <class S>
+inline Answer solidOverlap(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, bool checkMiss, bool& hit) {
+  return solidPair<S>(sa, sb).overlap(a, b, checkMiss, hit);
+}
+
 // Signed distance, normal from a to b; the world witnesses point0 (on a) and point1 (on b) only `ask.points`.
 // Without `ask.depth`, a pair whose depth needs EPA (a converted side other than a plane) answers FCL's -1 when the
 // shapes overlap; closed-form pairs keep their exact signed distance, which costs nothing more.
-template <class S> Answer solidDistance(const Solid<S>& a, const Solid<S>& b, DistanceAsk ask, DistanceResult<S>& out);
+template <class S>
+inline Answer solidDistance(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+  return solidPair<S>(sa, sb).distance(a, b, ask, out);
+}
 
 }  // namespace gq::fcl::detail

@@ -4,7 +4,9 @@
 // Conventions (as gq::DistanceResult): normal is unit from geom0 towards geom1, point0 on geom0, point1 on geom1,
 // point1 = point0 + distance * normal; when penetrating, translating geom1 by -distance * normal separates them.
 // When the normal is undefined (coincident centres, intersecting axes) the kernels pick a documented direction.
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "common/unit_vector.h"
 #include "gq/geometry.h"
@@ -85,8 +87,43 @@ template <class T>
 Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
                    GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance = T(0));
 
-// Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide.
+// |d| and the unit normal d / |d| when |d|^2 over- or underflows (rangeSafeNorm, tryUnit), `fallback` when d is zero
+// or not finite. Out of line, taking d by value (it is built only on this path): the common case needs none of it.
 template <class T>
-void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback, DistanceResult<T>& out);
+[[gnu::cold, gnu::noinline]] T ballsNormalOutOfRange(Vec3<T> d, const Vec3<T>* fallback, Vec3<T>& unit) {
+  unit = unitOr(d, fallback ? *fallback : Vec3<T>(Vec3<T>::UnitX()));
+  return rangeSafeNorm(d);
+}
+
+// Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide (+X when
+// not given). d = |c1 - c0| - r0 - r1 along n = (c1 - c0) / |c1 - c0|; witnesses c0 + r0 n and c1 - r1 n. Inline:
+// the building block of sphere/sphere, sphere/capsule and capsule/capsule, where a call and its spills cost ~20
+// instructions. The inputs are read before `out` is written (the caller's centres may live in it).
+template <class T>
+inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>* fallback,
+                          DistanceResult<T>& out) {
+  const Vec3<T> p0 = c0, p1 = c1, delta = p1 - p0;
+  const T len2 = delta.squaredNorm();
+  Vec3<T> n;
+  T len;
+  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) [[likely]] {
+    len = std::sqrt(len2);
+    n = delta / len;
+  } else {
+    len = ballsNormalOutOfRange(delta, fallback, n);
+  }
+  out.distance = len - r0 - r1;
+  out.normal = n;
+  out.point0 = p0 + r0 * n;
+  out.point1 = p1 - r1 * n;
+}
+template <class T>
+inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback,
+                          DistanceResult<T>& out) {
+  ballsDistance(c0, r0, c1, r1, &fallback, out);
+}
+template <class T> inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, DistanceResult<T>& out) {
+  ballsDistance(c0, r0, c1, r1, static_cast<const Vec3<T>*>(nullptr), out);
+}
 
 }  // namespace gq::detail

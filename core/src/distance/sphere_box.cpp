@@ -26,7 +26,7 @@ template <class T> void insideBox(const Vec3<T>& c, const Vec3<T>& h, T r, Dista
 template <class T> void distanceSphereBox(const Vec3<T>& c, T r0, const Vec3<T>& h, DistanceResult<T>& local) {
   const Vec3<T> q = c.cwiseMax(-h).cwiseMin(h);
   if (q != c) {
-    ballsDistance(c, r0, q, T(0), Vec3<T>(Vec3<T>::UnitX()), local);
+    ballsDistance(c, r0, q, T(0), local);
   } else {
     insideBox(c, h, r0, local);
   }

@@ -14,7 +14,7 @@ template <class T> void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh
   const T axialRoom = hh - std::abs(c.x()), radialRoom = r - rho;
   if (axialRoom < T(0) || radialRoom < T(0)) {
     const Vec3<T> q = Vec3<T>(std::clamp(c.x(), -hh, hh), T(0), T(0)) + std::min(rho, r) * radial;
-    ballsDistance(c, r0, q, T(0), Vec3<T>(Vec3<T>::UnitX()), local);
+    ballsDistance(c, r0, q, T(0), local);
     return;
   }
   Vec3<T> exit = c;

@@ -6,7 +6,7 @@ namespace gq::detail {
 template <class T>
 void distanceSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& pose0, const SphereGeometry<T>& g1,
                           const Transform<T>& pose1, DistanceResult<T>& out) {
-  ballsDistance(pose0.p, g0.radius, pose1.p, g1.radius, Vec3<T>(Vec3<T>::UnitX()), out);
+  ballsDistance(pose0.p, g0.radius, pose1.p, g1.radius, out);
 }
 
 template void distanceSphereSphere<float>(const SphereGeometry<float>&, const Transform<float>&, const SphereGeometry<float>&, const Transform<float>&, DistanceResult<float>&);

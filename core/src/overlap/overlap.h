@@ -2,6 +2,8 @@
 // Boolean overlap kernels, one per pair (overlap/<a>_<b>.cpp, a <= b in GeometryType order). Touching counts as
 // overlapping. Inputs are validated by the façade (dispatch/overlap.cpp), which also expresses both poses relative
 // to pose0 so that far-from-origin poses keep their precision.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "gq/geometry.h"
@@ -31,15 +33,29 @@ namespace gq::detail {
 // them). A capsule is its centre c, half-axis vector a (segment [c - a, c + a]) and radius; a box is centred at the
 // origin of the frame the other shape is given in, with half extents h. Box/box: box 1 has axes r01 (columns) and
 // centre t01 in box 0's frame.
-template <class T> bool overlapSphereSphere(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1);
+// The sphere pairs' closed forms are a few instructions: inline (as calls, with the centre spilled to pass it, they
+// cost the adapter's sphere rows 10-20 instructions each).
+template <class T> inline bool overlapSphereSphere(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1) {
+  const T r = r0 + r1;
+  return (c0 - c1).squaredNorm() <= r * r;
+}
 template <class T> bool overlapSphereCapsule(const Vec3<T>& c0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1);
-template <class T> bool overlapSphereBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h);
+template <class T> inline bool overlapSphereBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h) {
+  const Vec3<T> q = cInBox.cwiseMax(-h).cwiseMin(h);  // the box point nearest the centre
+  return (cInBox - q).squaredNorm() <= r0 * r0;
+}
 template <class T> bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& a0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1);
 template <class T> bool overlapCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& aInBox, T r0, const Vec3<T>& h);
 template <class T> bool overlapBoxBox(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01);
 template <class T> bool overlapPlaneCustom(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CustomGeometry<T>& g1, const Transform<T>& p1);
-// A sphere (centre c in the cylinder's frame, whose axis is X) against a cylinder: closed form (sphere_cylinder.cpp).
-template <class T> bool overlapSphereCylinder(const Vec3<T>& c, T radius, T cylinderRadius, T halfHeight);
+// A sphere (centre c in the cylinder's frame, whose axis is X, radius r, half height hh) against a cylinder: the solid
+// cylinder's point nearest the centre clamps its axial coordinate to [-hh, hh] and its distance from the axis to
+// [0, r], so the centre's distance to the cylinder is |(axial excess, radial excess)|.
+template <class T> inline bool overlapSphereCylinder(const Vec3<T>& c, T radius, T cylinderRadius, T halfHeight) {
+  const T axial = std::max(std::abs(c.x()) - halfHeight, T(0));
+  const T radial = std::max(std::sqrt(c.y() * c.y() + c.z() * c.z()) - cylinderRadius, T(0));
+  return axial * axial + radial * radial <= radius * radius;
+}
 // A cylinder (centre c, unit axis a, radius, half height, in the box's frame) against a box of half extents h
 // centred at the origin, decided without GJK when a separating axis (a gap beyond GJK's tolerance) or a common
 // point is cheap to find (cylinder_box.cpp); Unknown otherwise.

@@ -3,11 +3,6 @@
 
 namespace gq::detail {
 
-template <class T> bool overlapSphereBox(const Vec3<T>& c, T r0, const Vec3<T>& h) {
-  const Vec3<T> q = c.cwiseMax(-h).cwiseMin(h);
-  return (c - q).squaredNorm() <= r0 * r0;
-}
-
 template <class T>
 bool overlapSphereBox(const SphereGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1) {
   return overlapSphereBox<T>(p1.transformInv(p0.p), g0.radius, g1.halfExtents);
@@ -15,7 +10,5 @@ bool overlapSphereBox(const SphereGeometry<T>& g0, const Transform<T>& p0, const
 
 template bool overlapSphereBox<float>(const SphereGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&);
 template bool overlapSphereBox<double>(const SphereGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&);
-template bool overlapSphereBox<float>(const Vec3<float>&, float, const Vec3<float>&);
-template bool overlapSphereBox<double>(const Vec3<double>&, double, const Vec3<double>&);
 
 }  // namespace gq::detail

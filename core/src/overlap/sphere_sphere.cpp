@@ -3,11 +3,6 @@
 
 namespace gq::detail {
 
-template <class T> bool overlapSphereSphere(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1) {
-  const T r = r0 + r1;
-  return (c0 - c1).squaredNorm() <= r * r;
-}
-
 template <class T>
 bool overlapSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0, const SphereGeometry<T>& g1, const Transform<T>& p1) {
   return overlapSphereSphere<T>(p0.p, g0.radius, p1.p, g1.radius);
@@ -15,7 +10,5 @@ bool overlapSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0, co
 
 template bool overlapSphereSphere<float>(const SphereGeometry<float>&, const Transform<float>&, const SphereGeometry<float>&, const Transform<float>&);
 template bool overlapSphereSphere<double>(const SphereGeometry<double>&, const Transform<double>&, const SphereGeometry<double>&, const Transform<double>&);
-template bool overlapSphereSphere<float>(const Vec3<float>&, float, const Vec3<float>&, float);
-template bool overlapSphereSphere<double>(const Vec3<double>&, double, const Vec3<double>&, double);
 
 }  // namespace gq::detail
