@@ -101,6 +101,25 @@ TEST(FclBadInput, InfiniteTranslationWritesNothing) {
   expectNothingWrittenEitherOrder(box(1, 1, 1), at(0, -kInf, 0), box(1, 1, 1), at(0, 0, 0));
 }
 
+TEST(FclBadInput, OppositeInfinitiesInTheTwoPosesWriteNothing) {
+  // The finiteness test sums the two transforms' entries first: +inf and -inf at one entry sum to NaN, not to a
+  // finite value.
+  expectNothingWrittenEitherOrder(sphere(0.5), at(kInf, 0, 0), sphere(0.5), at(-kInf, 0, 0));
+  expectNothingWrittenEitherOrder(sphere(0.5), at(0, kInf, 0), box(1, 1, 1), at(0, -kInf, 0));
+}
+
+TEST(FclBadInput, FinitePosesWhoseEntriesSumPastTheLargestDoubleAreAnswered) {
+  // Valid input, though the plain sum of the entries overflows: the exact test decides, and the pair is answered.
+  const Geom a = sphere(1), b = sphere(1);
+  ::fcl::DistanceResultd d;
+  const double answer = gq::fcl::distance(a.get(), at(1e308, 0, 0), b.get(), at(1.6e308, 0, 0),
+                                          ::fcl::DistanceRequestd(true), d);
+  EXPECT_NEAR(answer, 6e307, 6e307 * 1e-12);
+  EXPECT_EQ(d.min_distance, answer);
+  ::fcl::CollisionResultd c;
+  EXPECT_EQ(gq::fcl::collide(a.get(), at(1e308, 0, 0), b.get(), at(1e308, 0.5, 0), ::fcl::CollisionRequestd(), c), 1u);
+}
+
 TEST(FclBadInput, LinearPartThatIsNotARotationWritesNothing) {
   // A scaled or sheared "rotation" (FCL would silently scale the shape in some pairs and not in others).
   ::fcl::Transform3d scaled = at(0.3, 0, 0);
