@@ -152,7 +152,26 @@ TEST(FclConventions, WithoutSignedDistanceOverlappingConvexHullsAreMinusOneAsFcl
   }
 }
 
-// Closed-form pairs give their exact signed distance without the request: it costs them nothing more.
+// Boxes as FCL 0.7 (libccd's GJK on them): overlapping without the request is -1 with nearest points at the origin
+// (their witnesses would cost a search); with it, the exact depth; separated, the distance either way.
+TEST(FclConventions, WithoutSignedDistanceOverlappingBoxesAreMinusOneAsFcl) {
+  ::fcl::Boxd a(2, 2, 2), b(2, 2, 2);
+  const ::fcl::DistanceRequestd unsignedRequest(true);
+  ::fcl::DistanceResultd gqResult, fclResult;
+  EXPECT_EQ(gq::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), unsignedRequest, gqResult), -1.0);
+  ::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), unsignedRequest, fclResult);
+  EXPECT_EQ(fclResult.min_distance, -1.0);
+  for (int i : {0, 1}) EXPECT_EQ(gqResult.nearest_points[i], Vector3d::Zero());
+  ::fcl::DistanceRequestd signedRequest(true);
+  signedRequest.enable_signed_distance = true;
+  ::fcl::DistanceResultd withDepth;
+  EXPECT_NEAR(gq::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), signedRequest, withDepth), -0.3, 1e-12);
+  ::fcl::DistanceResultd apart;
+  EXPECT_NEAR(gq::fcl::distance(&a, at(0, 0, 0), &b, at(2.5, 0.2, 0), unsignedRequest, apart), 0.5, 1e-12);
+}
+
+// Closed-form pairs other than two boxes give their exact signed distance without the request: it costs them
+// nothing more.
 TEST(FclConventions, WithoutSignedDistanceClosedFormPairsStillGiveTheDepth) {
   ::fcl::Sphered a(1), b(1);
   ::fcl::DistanceResultd result;

@@ -2,9 +2,10 @@
 //  - DistanceResult::update keeps the smaller distance (pre-seeded results stay when the pair is farther);
 //  - a result already at min_distance <= 0 is satisfied: nothing is computed (as FCL's isSatisfied);
 //  - shapes: the signed distance with enable_signed_distance. Without it (FCL: the penetrating value is
-//    "implementation defined", mostly -1) closed-form pairs (sphere, capsule, box among themselves, sphere-cylinder,
-//    and against a plane or half-space) still give the exact signed distance, which costs them nothing more, and
-//    GJK pairs answer FCL's -1 with nearest points at the origin when they overlap (no EPA); nearest points (world
+//    "implementation defined", mostly -1) closed-form pairs (sphere and capsule against sphere, capsule or box,
+//    sphere-cylinder, and against a plane or half-space) still give the exact signed distance, which costs them
+//    nothing more, and GJK pairs and two boxes answer FCL's -1 with nearest points at the origin when they overlap
+//    (no EPA, no witness search); nearest points (world
 //    frame) are written when enable_nearest_points is set, and always for BVHModel and plane pairs;
 //  - BVHModel sides are thin surfaces: 0 when touching or crossing; with enable_signed_distance the deepest
 //    triangle contact's depth is reported negated, with both nearest points at its position (FCL's workaround).

@@ -85,8 +85,9 @@ inline Answer solidOverlap(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, boo
 }
 
 // Signed distance, normal from a to b; the world witnesses point0 (on a) and point1 (on b) only `ask.points`.
-// Without `ask.depth`, a pair whose depth needs EPA (a converted side other than a plane) answers FCL's -1 when the
-// shapes overlap; closed-form pairs keep their exact signed distance, which costs nothing more.
+// Without `ask.depth`, a pair whose depth needs EPA (a converted side other than a plane) or a witness search (two
+// boxes) answers FCL's -1 when the shapes overlap; other closed-form pairs keep their exact signed distance, which
+// costs nothing more.
 template <class S>
 inline Answer solidDistance(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   return solidPair<S>(sa, sb).distance(a, b, ask, out);

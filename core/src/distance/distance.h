@@ -79,6 +79,12 @@ BoxCylinderDistance distanceBoxCylinderLocal(const Vec3<T>& h, const Vec3<T>& c,
 template <class T>
 bool distanceBoxBoxLocal(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01,
                          DistanceResult<T>& local);
+// The same without an overlap's witnesses: separated boxes' closest points (true), or false for overlapping boxes
+// with nothing written (the witnesses of a depth cost a search the caller may not want: the FCL adapter's distance
+// without enable_signed_distance answers FCL's -1).
+template <class T>
+bool separatedBoxBoxLocal(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r01, const Vec3<T>& t01,
+                          DistanceResult<T>& local);
 
 // Any two of sphere, capsule, box, convex mesh, convex custom: GJK on the cores, EPA when they overlap. Returns Ok,
 // or Warning when GJK/EPA stopped with an error bound above tolerance (the best answer is still written).
