@@ -161,8 +161,10 @@ template <class T> std::shared_ptr<const Entry<T>> cookMesh(const MeshView<T>& v
 template <class T> struct SharedCache {
   std::shared_mutex mutex;
   std::unordered_map<const void*, std::shared_ptr<const Entry<T>>> entries;
-  std::atomic<std::uint64_t> generation{1};
 };
+// Bumped by forget and clear: every per-thread slot older than it is stale. At namespace scope (constant
+// initialisation, no guard to check on the hit path).
+template <class T> std::atomic<std::uint64_t> gGeneration{1};
 template <class T> SharedCache<T>& shared() {
   static SharedCache<T> c;
   return c;
@@ -200,30 +202,54 @@ template <class T> ThreadSlots<T>& threadSlots() {
   return t;
 }
 
+// What a Convex hit compares, per thread slot, mirrored from ThreadSlots (which owns the entries): trivially
+// destructible, so reading it needs no thread_local initialisation wrapper (ThreadSlots' shared_ptrs make it one),
+// and the hit path does not build a Key. ~75 instructions a lookup -> ~25.
+template <class T> struct ConvexHit {
+  const void* geometry = nullptr;
+  const void* vertexArray = nullptr;
+  std::uint64_t generation = 0;
+  const Entry<T>* entry = nullptr;
+};
+template <class T> thread_local std::array<ConvexHit<T>, kThreadSlots> tConvexHits{};
+
+template <class T> std::size_t slotOf(const void* geometry) {
+  return (reinterpret_cast<std::uintptr_t>(geometry) >> 4) & (kThreadSlots - 1);
+}
+
 template <class T> const Entry<T>* lookup(const Key<T>& key) {
   ThreadSlots<T>& t = threadSlots<T>();
-  const std::uint64_t generation = shared<T>().generation.load(std::memory_order_acquire);
-  Slot<T>& slot = t.slots[(reinterpret_cast<std::uintptr_t>(key.geometry) >> 4) & (kThreadSlots - 1)];
+  const std::uint64_t generation = gGeneration<T>.load(std::memory_order_acquire);
+  const std::size_t index = slotOf<T>(key.geometry);
+  Slot<T>& slot = t.slots[index];
   if (slot.geometry == key.geometry && slot.generation == generation && key.matches(*slot.entry)) return slot.entry.get();
   std::shared_ptr<const Entry<T>> entry = sharedLookup(key);
   t.evicted[t.nextEvicted++ & 1u] = std::move(slot.entry);
   slot.geometry = key.geometry;
   slot.generation = generation;
   slot.entry = std::move(entry);
+  tConvexHits<T>[index] = key.convex ? ConvexHit<T>{key.geometry, key.vertexArray, generation, slot.entry.get()}
+                                     : ConvexHit<T>{};
   return slot.entry.get();
+}
+
+template <class T> void fill(const Entry<T>& e, Cooked<T>& out) {
+  out.shape = e.shape;
+  out.geometry = &e.geometry;
+  out.candidate = e.candidate ? &*e.candidate : nullptr;
+  out.support = e.support ? &*e.support : nullptr;
 }
 
 template <class T> void clearShared() {
   SharedCache<T>& c = shared<T>();
   std::unique_lock<std::shared_mutex> lock(c.mutex);
   c.entries.clear();
-  c.generation.fetch_add(1, std::memory_order_acq_rel);
+  gGeneration<T>.fetch_add(1, std::memory_order_acq_rel);
 }
 
-}  // namespace
-
+// The lookup through the per-thread table and the shared map (out of line: its frame would cost every Convex hit).
 template <class T>
-Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
+[[gnu::noinline]] Conversion slowLookup(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
   Key<T> key{g, type == ::fcl::GEOM_CONVEX, nullptr, {}, 0};
   if (key.convex) {
     key.vertexArray = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
@@ -235,18 +261,31 @@ Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE
   }
   const Entry<T>* e = lookup(key);
   if (e->conversion != Conversion::Ok) return e->conversion;
-  out.shape = e->shape;
-  out.geometry = &e->geometry;
-  out.candidate = e->candidate ? &*e->candidate : nullptr;
-  out.support = e->support ? &*e->support : nullptr;
+  fill(*e, out);
   return Conversion::Ok;
+}
+
+}  // namespace
+
+template <class T>
+Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
+  if (type == ::fcl::GEOM_CONVEX) {
+    const ConvexHit<T>& hit = tConvexHits<T>[slotOf<T>(g)];
+    if (hit.geometry == g && hit.vertexArray == &static_cast<const ::fcl::Convex<T>*>(g)->getVertices() &&
+        hit.generation == gGeneration<T>.load(std::memory_order_acquire) &&
+        hit.entry->conversion == Conversion::Ok) {
+      fill(*hit.entry, out);
+      return Conversion::Ok;
+    }
+  }
+  return slowLookup(g, type, out);
 }
 
 template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* g) {
   SharedCache<T>& c = shared<T>();
   std::unique_lock<std::shared_mutex> lock(c.mutex);
   c.entries.erase(g);
-  c.generation.fetch_add(1, std::memory_order_acq_rel);
+  gGeneration<T>.fetch_add(1, std::memory_order_acq_rel);
 }
 
 void clearCached() {

@@ -9,7 +9,9 @@
 //    reused while a fingerprint matches: counts, array addresses and up to kFingerprintSamples vertices and
 //    triangles sampled evenly. An edit that changes none of them needs forgetGeometry().
 // Lookups go through a small per-thread table in front of the shared map (no lock, no reference counting on a hit);
-// forget/clear bump a generation that turns every per-thread slot stale.
+// forget/clear bump a generation that turns every per-thread slot stale. A Convex hit reads a trivially
+// destructible mirror of that table (geometry, vertex vector, generation, entry) in a small function of its own:
+// ~20 instructions a lookup where the general path's frame and thread_local wrapper cost ~75.
 #include <fcl/geometry/collision_geometry.h>
 
 #include "convert.h"
