@@ -326,3 +326,18 @@ TEST(FuzzPairFindings, SweepOfATinySphereAgainstATinyMeshTerminates) {
   ASSERT_TRUE(hasHit);
   EXPECT_LE(hit.distance, 1e-222);
 }
+
+// A float capsule (radius 1.4e-23) 3.5e-23 off the edge of a cube mesh 6.4 wide: in the mesh's frame its offsets round
+// away and it touches, 5e-23 deep. The push's squared norm (~3e-45) is subnormal, and total / |total| came out 3 %
+// long (direction length 1.031). The iteration's sum is now normalised range-safely (tryUnit, rangeSafeNorm).
+TEST(FuzzPairFindings, CapsuleTouchingAMeshAtASubnormalSquaredDepthGetsAUnitDirection) {
+  const FloatPair f = knownPair<float>("fuzz_pair_queries_float_capsule_mesh_tiny_depth_non_unit_direction.bin");
+  ASSERT_EQ(f.g0.type(), gq::GeometryType::Capsule);
+  ASSERT_EQ(f.g1.type(), gq::GeometryType::TriangleMesh);
+  gq::PenetrationResult<float> r;
+  const gq::Status s = gq::computePenetration(r, f.g0, f.p0, f.g1, f.p1);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  ASSERT_TRUE(r.penetrating);
+  EXPECT_LT(r.depth, 1e-22f);
+  EXPECT_NEAR(r.direction.norm(), 1.0f, 1e-5f);
+}

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "common/validate.h"
+#include "common/unit_vector.h"
 #include "cook/height_field_layout.h"
 #include "gjk/gjk.h"
 #include "gq/mesh_query.h"
@@ -65,9 +66,10 @@ void iteratePenetration(PenetrationResult<T>& result, const Geometry<T>& geom, c
     ++moves;
   }
   result.penetrating = penetrating;
-  const T depth = total.norm();
-  result.depth = depth;
-  result.direction = depth > T(0) ? Vec3<T>(total / depth) : firstDirection;
+  // Range-safe: a push of ~1e-23 in float has a subnormal squared norm, and total / |total| came out 3 % long.
+  result.depth = detail::rangeSafeNorm(total);
+  Vec3<T> unit;
+  result.direction = result.depth > T(0) && detail::tryUnit(total, unit) ? unit : firstDirection;
 }
 
 }  // namespace
