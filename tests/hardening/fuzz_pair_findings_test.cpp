@@ -2,6 +2,7 @@
 // (also replayed by scripts/sanitize's smoke).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -340,4 +341,37 @@ TEST(FuzzPairFindings, CapsuleTouchingAMeshAtASubnormalSquaredDepthGetsAUnitDire
   ASSERT_TRUE(r.penetrating);
   EXPECT_LT(r.depth, 1e-22f);
   EXPECT_NEAR(r.direction.norm(), 1.0f, 1e-5f);
+}
+
+// Two float hulls (8 vertices each, 5.5 apart in x) overlapping 1.71 deep. EPA's closest face could not be expanded
+// in float (the new faces came out as rounding slivers) and was kept as final, while a face 2.125 deep converged:
+// `distance` answered -2.125 where `computePenetration` (SAT) answered 1.71. EPA now reports a converged face only
+// when it is the closest of all, and two hulls whose EPA does not converge take the SAT's exact depth. Exact: the
+// closest face of the Minkowski difference's hull, in double.
+TEST(FuzzPairFindings, HullPairDistanceIsMinusTheExactDepthWhenEpaCannotExpandItsClosestFace) {
+  const FloatPair f = knownPair<float>("fuzz_pair_queries_float_hull_pair_penetration_vs_distance.bin");
+  ASSERT_EQ(f.g0.type(), gq::GeometryType::ConvexMesh);
+  ASSERT_EQ(f.g1.type(), gq::GeometryType::ConvexMesh);
+  const auto worldVertices = [](const gq::Geometry<float>& g, const gq::Transform<float>& p) {
+    const auto& h = g.get<gq::ConvexMeshGeometry<float>>();
+    std::vector<gq::Vec3<double>> out;
+    for (const auto& v : h.mesh->vertices) out.push_back(p.transform(gq::Vec3<float>(h.scale.toMatrix() * v)).cast<double>());
+    return out;
+  };
+  std::vector<gq::Vec3<double>> difference;  // B - A: holds the origin when they overlap
+  for (const auto& a : worldVertices(f.g0, f.p0))
+    for (const auto& b : worldVertices(f.g1, f.p1)) difference.push_back(b - a);
+  std::shared_ptr<const gq::ConvexMesh<double>> hull;
+  ASSERT_TRUE(gq::cookConvexMesh(difference, hull).ok());
+  double exact = std::numeric_limits<double>::infinity();
+  for (const auto& face : hull->polygons) exact = std::min(exact, -face.d);
+  gq::DistanceResult<float> d;
+  const gq::Status s = gq::distance(d, f.g0, f.p0, f.g1, f.p1);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  EXPECT_NEAR(d.distance, -exact, 1e-5 * exact);
+  EXPECT_NEAR(d.normal.norm(), 1.0f, 1e-5f);
+  EXPECT_NEAR((d.point1 - d.point0 - d.distance * d.normal).norm(), 0.0f, 1e-5f);
+  gq::PenetrationResult<float> pen;
+  ASSERT_TRUE(gq::computePenetration(pen, f.g0, f.p0, f.g1, f.p1).ok());
+  EXPECT_NEAR(pen.depth, exact, 1e-5 * exact);
 }

@@ -1,8 +1,32 @@
-// Every other convex pair: GJK on the cores; when they overlap, EPA for depth, normal and witnesses.
+// Every other convex pair: GJK on the cores; when they overlap, EPA for depth, normal and witnesses (two hulls whose
+// EPA does not converge: the exact SAT depth instead).
 #include "distance/distance.h"
 #include "gjk/gjk.h"
+#include "gjk/support_map.h"
+#include "penetration/penetration.h"
 
 namespace gq::detail {
+namespace {
+
+// Two overlapping hulls whose EPA did not converge (slivers near the minimum that float cannot expand): the exact
+// SAT depth over both hulls' faces and edge pairs (as computePenetration), with witnesses B's deepest point along
+// the normal and its translate by the depth, which lies on A's support plane. False: the SAT found them apart.
+template <class T>
+bool exactHullDepth(const ConvexMeshGeometry<T>& h0, const Transform<T>& p0, const ConvexMeshGeometry<T>& h1,
+                    const Transform<T>& p1, const ConvexShape<T>& b, DistanceResult<T>& out) {
+  Vec3<T> direction;  // moves geom0 out: the normal from 0 to 1 is its opposite
+  T depth;
+  if (!penetrationConvexConvex(h0, p0, h1, p1, direction, depth)) return false;
+  const Vec3<T> n = -direction;
+  SupportMap<T> sb(b);
+  out.distance = -depth;
+  out.normal = n;
+  out.point1 = sb(Vec3<T>(-n));
+  out.point0 = out.point1 + depth * n;
+  return true;
+}
+
+}  // namespace
 
 template <class T>
 Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
@@ -15,6 +39,9 @@ Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geome
     return g.status.ok() ? Status() : Status::warning(g.status.message);
   }
   const EpaResult<T> e = epaPenetration(a, b, &g.simplex);
+  const auto* h0 = g0.template getIf<ConvexMeshGeometry<T>>();
+  const auto* h1 = g1.template getIf<ConvexMeshGeometry<T>>();
+  if (!e.status.ok() && h0 && h1 && exactHullDepth(*h0, pose0, *h1, pose1, b, out)) return Status();
   out.distance = -e.depth;
   out.normal = e.normal;
   out.point0 = e.point0;
