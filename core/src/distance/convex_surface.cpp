@@ -22,11 +22,14 @@ template <class T> struct Best {
   T boundSq() const { return found ? result.distance * result.distance : std::numeric_limits<T>::infinity(); }
 };
 
-// Best-first over the BVH: children nearest to the shape's box first, pruned by the best distance found.
+// Best-first over the BVH: children nearest to the shape's box first, pruned by the best distance found; a triangle
+// whose box passes is pruned by the shape's ball too before its GJK (hulls and boxes: mesh-convex30 distance in the
+// FCL adapter 205,827 -> 164,660 instructions, session 21).
 template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const MeshSurface<T>& mesh, Best<T>& best) {
   const Bvh4& bvh = mesh.mesh().bvh;
   if (bvh.rootChild == Bvh4Node::kEmpty) return;
   const Bounds3<T> box = shape.worldBounds();
+  const bool ballBound = shape.distanceRunsGjk();  // a triangle's ball bound before its GJK
   struct Entry {
     std::uint32_t ref;
     T lower;
@@ -42,6 +45,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
       for (std::uint32_t k = 0; k < Bvh4Node::leafCount(e.ref); ++k) {
         const Triangle<T> tri = mesh.triangle(Bvh4Node::leafFirst(e.ref) + k);
         if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) continue;
+        if (ballBound && best.found && shape.distanceLowerBound(tri) > best.result.distance) continue;
         DistanceResult<T> r;
         shape.distanceTo(tri, r);
         best.offer(r);
@@ -69,8 +73,10 @@ void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldS
   const Bounds3<T> fieldBox = field.worldBounds();
   const T span = (fieldBox.max - fieldBox.min).norm();
   T radius = std::max(std::sqrt(boxDistanceSq(box, fieldBox)), std::max(shape.size(), span * T(1e-3)));
+  const bool ballBound = shape.distanceRunsGjk();
   const auto visit = [&](std::uint32_t, const Triangle<T>& tri) {
     if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) return false;
+    if (ballBound && best.found && shape.distanceLowerBound(tri) > best.result.distance) return false;
     DistanceResult<T> r;
     shape.distanceTo(tri, r);
     best.offer(r);

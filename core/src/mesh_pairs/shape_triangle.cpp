@@ -69,7 +69,28 @@ TriangleQueryShape<T>::TriangleQueryShape(const Geometry<T>& geom, const Transfo
     segA_ = pose.p - axis;
     segB_ = pose.p + axis;
   }
-  if (const auto* b = geom.template getIf<BoxGeometry<T>>()) halfExtents_ = b->halfExtents;
+  if (const auto* b = geom.template getIf<BoxGeometry<T>>()) {
+    halfExtents_ = b->halfExtents;
+    ballCentre_ = pose.p;
+    ballRadius_ = b->halfExtents.norm();
+  }
+  hull_ = geom.template getIf<ConvexMeshGeometry<T>>();
+  ballPending_ = hull_ != nullptr;
+}
+
+template <class T> T TriangleQueryShape<T>::distanceLowerBound(const Triangle<T>& tri) const {
+  if (ballPending_) {  // the hull's vertices' farthest from their centroid
+    const Mat3<T> scale = hull_->scale.toMatrix();
+    const Vec3<T> centre = scale * hull_->mesh->center;
+    T r2 = T(0);
+    for (const Vec3<T>& v : hull_->mesh->vertices) r2 = std::max(r2, (scale * v - centre).squaredNorm());
+    ballCentre_ = pose_.transform(centre);
+    ballRadius_ = std::sqrt(r2) * (T(1) + T(8) * std::numeric_limits<T>::epsilon());  // rounding: never inside
+    ballPending_ = false;
+  }
+  if (!(ballRadius_ < std::numeric_limits<T>::infinity())) return -std::numeric_limits<T>::infinity();
+  const Vec3<T> q = closestPointOnTriangle(ballCentre_, tri.verts[0], tri.verts[1], tri.verts[2]);
+  return (q - ballCentre_).norm() - ballRadius_;
 }
 
 template <class T> Bounds3<T> TriangleQueryShape<T>::cullBounds() const {
@@ -116,7 +137,7 @@ template <class T> void TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri
   }
   const SurfaceTriangleSupport<T> support(tri);
   const ConvexShape<T> triShape = support.shape();
-  const GjkResult<T> g = gjkDistance(convex_, triShape);
+  const GjkResult<T> g = gjkDistance(convex_, triShape, &warm_);
   if (!g.coresOverlap && g.distance > T(0)) {
     out.distance = g.distance;
     out.point0 = g.point0;

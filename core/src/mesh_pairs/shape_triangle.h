@@ -3,6 +3,8 @@
 // world triangles: exact overlap (closed forms for sphere/capsule, 13-axis SAT for the box, GJK for hulls and custom
 // shapes), distance (closed forms for sphere/capsule, GJK otherwise) and the per-triangle depenetration used by the
 // iterative mesh penetration.
+#include <limits>
+
 #include "gjk/gjk.h"
 #include "gq/custom.h"
 #include "gq/mesh_query.h"
@@ -48,6 +50,11 @@ template <class T> class TriangleQueryShape {
   // Distance to the triangle, >= 0 (0 in contact); point0 on the shape, point1 on the triangle, normal shape->triangle.
   // In contact the witnesses are the triangle point of deepest contact (point0 = point1).
   void distanceTo(const Triangle<T>& tri, DistanceResult<T>& out) const;
+  // A lower bound of distanceTo from a ball around the shape (its centre's distance to the triangle less the ball's
+  // radius): ~100 instructions where distanceTo runs GJK on hulls and custom shapes. -inf when there is no ball.
+  T distanceLowerBound(const Triangle<T>& tri) const;
+  // Whether distanceTo runs GJK (hulls, boxes, custom shapes), so that distanceLowerBound is worth asking first.
+  bool distanceRunsGjk() const { return type_ != GeometryType::Sphere && type_ != GeometryType::Capsule; }
   // MTD of the shape against the triangle (call only when overlaps(tri)); with `oneSided`, a push towards the
   // triangle's back is replaced by the push along its normal that puts the whole shape in front of its plane.
   TrianglePush<T> pushOut(const Triangle<T>& tri, bool oneSided) const;
@@ -60,6 +67,15 @@ template <class T> class TriangleQueryShape {
   Vec3<T> segA_, segB_;              // capsule segment (world); sphere: both are the centre
   Vec3<T> halfExtents_;              // box
   Bounds3<T> bounds_;
+  const ConvexMeshGeometry<T>* hull_ = nullptr;
+  // A ball holding the shape (world), for distanceLowerBound: a box's at once, a hull's on the first ask (its
+  // vertices' farthest from their centroid; overlap queries never need it).
+  mutable Vec3<T> ballCentre_ = Vec3<T>::Zero();
+  mutable T ballRadius_ = std::numeric_limits<T>::infinity();
+  mutable bool ballPending_ = false;
+  // Warm start of distanceTo's GJK from the previous triangle: a surface query visits neighbouring triangles in
+  // turn, whose closest features lie close (the cache is safe for any shapes: seedSimplex re-evaluates supports).
+  mutable GjkCache<T> warm_;
 };
 
 }  // namespace gq::detail
