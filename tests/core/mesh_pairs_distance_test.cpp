@@ -95,6 +95,46 @@ TYPED_TEST(MeshDistance, ConvexVsScaledIcosphereEqualsBruteForceMinimumOverTrian
   EXPECT_LT(contacts, 1150);
 }
 
+// Hulls, whose triangle distances run GJK after a ball bound prunes them (distance/convex_surface.cpp), against the
+// icosphere: the least distance between a hull face and a mesh triangle, in long double, wherever the answer is
+// positive (a hull apart from every triangle: then its faces' distance is the solid's).
+TYPED_TEST(MeshDistance, ConvexHullVsScaledIcosphereEqualsBruteForceMinimumOverFaceTrianglePairs) {
+  using T = TypeParam;
+  const MeshData<T> data = meshtest::icosphere<T>(2);
+  const MeshScale<T> scale(Vec3<T>(T(1.1), T(0.8), T(-1.2)), Quat<T>(Eigen::AngleAxis<T>(T(0.5), Vec3<T>::UnitZ())));
+  const Geometry<T> mesh = TriangleMeshGeometry<T>(meshtest::cook(data.vertices, data.triangles), scale);
+  const Transform<T> meshPose(Vec3<T>(T(0.3), T(0.2), T(-0.1)), Quat<T>(Eigen::AngleAxis<T>(T(0.7), Vec3<T>(1, 1, 0).normalized())));
+  const std::vector<TriL> tris = worldTriangles(data, scale, meshPose);
+  test::Rng rng(62);
+  std::vector<Vec3<T>> points;
+  for (int i = 0; i < 12; ++i)
+    points.push_back(Vec3<T>(rng.unitVector<double>().cwiseProduct(Eigen::Vector3d(0.35, 0.25, 0.15)).cast<T>()));
+  std::shared_ptr<const ConvexMesh<T>> hull;
+  ASSERT_TRUE(cookConvexMesh(points, hull).ok());
+  const Geometry<T> shape = ConvexMeshGeometry<T>(hull);
+  int apart = 0;
+  for (int i = 0; i < 120; ++i) {
+    const Transform<T> pose = rng.pose<T>(2.0);
+    const Mat3L rot = test::rotationLD(pose.q);
+    const auto world = [&](std::uint32_t v) { return Vec3L(rot * hull->vertices[v].template cast<LD>() + test::toLD(pose.p)); };
+    LD expectedSq = std::numeric_limits<LD>::infinity();
+    for (const auto& poly : hull->polygons)
+      for (std::uint32_t k = 1; k + 1 < poly.indexCount; ++k) {  // the polygon as a fan of triangles
+        const TriL face{world(hull->polygonVertices[poly.indexBase]), world(hull->polygonVertices[poly.indexBase + k]),
+                        world(hull->polygonVertices[poly.indexBase + k + 1])};
+        for (const auto& t : tris) expectedSq = std::min(expectedSq, triangleTriangleDistSq(face, t));
+      }
+    DistanceResult<T> r;
+    ASSERT_TRUE(distance(r, shape, pose, mesh, meshPose).ok());
+    if (!(r.distance > T(0))) continue;
+    ++apart;
+    const LD expected = std::sqrt(expectedSq), tol = tolerance<T>(true);
+    ASSERT_NEAR(double(r.distance), double(expected), double(tol * std::max<LD>(1, expected))) << "pose " << i;
+    expectWitnessesConsistent(r, tol);
+  }
+  EXPECT_GT(apart, 60);
+}
+
 TYPED_TEST(MeshDistance, MeshVsMeshEqualsBruteForceMinimumOverTrianglePairs) {
   using T = TypeParam;
   const MeshData<T> data = meshtest::icosphere<T>(0);
