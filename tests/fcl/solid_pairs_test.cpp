@@ -247,6 +247,42 @@ TEST(FclSolidPairs, ConvexPairsLeftToGjkRejectReflectedAndScaledLinearParts) {
             std::numeric_limits<double>::max());
 }
 
+// Two Convex with their centres in the band the hulls' balls cannot decide, in random orientations: collide agrees
+// with the exact SAT answer on every pose. The band is where the adapter's centre-line certificate (a point of one
+// inner ball inside the other hull) answers before GJK, so a wrong certificate shows here as a false hit.
+TEST(FclSolidPairs, ConvexPairsInTheBallsBandMatchTheExactAnswer) {
+  std::mt19937 rng(31);
+  const gq::fcltest::TestShape a = gq::fcltest::makeShape(gq::fcltest::Kind::Convex, rng);
+  const gq::fcltest::TestShape b = gq::fcltest::makeShape(gq::fcltest::Kind::Convex, rng);
+  std::shared_ptr<const gq::ConvexMesh<double>> ha, hb;
+  ASSERT_TRUE(gq::cookConvexMesh(std::vector<gq::Vec3<double>>(a.vertices.begin(), a.vertices.end()), ha).ok());
+  ASSERT_TRUE(gq::cookConvexMesh(std::vector<gq::Vec3<double>>(b.vertices.begin(), b.vertices.end()), hb).ok());
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::normal_distribution<double> normal(0, 1);
+  int hits = 0, misses = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Quaterniond qa(normal(rng), normal(rng), normal(rng), normal(rng));
+    const Eigen::Quaterniond qb(normal(rng), normal(rng), normal(rng), normal(rng));
+    ::fcl::Transform3d pa = ::fcl::Transform3d::Identity(), pb = ::fcl::Transform3d::Identity();
+    pa.linear() = qa.normalized().toRotationMatrix();
+    pb.linear() = qb.normalized().toRotationMatrix();
+    // Centres apart by a distance between the inner balls' and the outer balls' reach, in a random direction.
+    const double lo = ha->innerRadius + hb->innerRadius, hi = ha->outerRadius + hb->outerRadius;
+    const Vector3d dir = Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    const Vector3d ca = pa.linear() * ha->center, cb = pb.linear() * hb->center;
+    pa.translation() = -ca;
+    pb.translation() = (lo + (hi - lo) * unit(rng)) * dir - cb;
+    const gq::fcltest::ExactAnswer exact = gq::fcltest::exactAnswer(a, pa, b, pb);
+    ASSERT_TRUE(exact.known);
+    ::fcl::CollisionResultd result;
+    const bool hit = gq::fcl::collide(a.geometry.get(), pa, b.geometry.get(), pb, ::fcl::CollisionRequestd(), result) > 0;
+    EXPECT_EQ(hit, exact.colliding) << "pose " << i;
+    (exact.colliding ? hits : misses) += 1;
+  }
+  EXPECT_GT(hits, 200);
+  EXPECT_GT(misses, 200);
+}
+
 TEST(FclSolidPairs, NearestPointsAreWrittenOnlyWhenRequested) {
   ::fcl::Sphered sphere(0.5);
   ::fcl::Boxd box(1.0, 1.0, 1.0);

@@ -213,16 +213,32 @@ template <class T> struct ConvexHit {
 };
 template <class T> thread_local std::array<ConvexHit<T>, kThreadSlots> tConvexHits{};
 
-template <class T> std::size_t slotOf(const void* geometry) {
-  return (reinterpret_cast<std::uintptr_t>(geometry) >> 4) & (kThreadSlots - 1);
+// The slots form sets of two ways (a call looks up two geometries: direct-mapped, two hot geometries whose slots
+// collided evicted each other on every call, each lookup then taking the shared map's lock). A set's recent way is
+// kept; a miss replaces the other one. Fibonacci hashing of the address spreads sequential allocations.
+constexpr std::size_t kThreadSets = kThreadSlots / 2;
+thread_local std::array<std::uint8_t, kThreadSets> tRecentWay{};
+
+inline std::size_t setOf(const void* geometry) {
+  const std::uint64_t h = (std::uint64_t(reinterpret_cast<std::uintptr_t>(geometry)) >> 4) * 0x9E3779B97F4A7C15ull;
+  return std::size_t(h >> 61);  // kThreadSets = 8: the top three bits
 }
+static_assert(kThreadSets == 8, "setOf takes three bits");
 
 template <class T> const Entry<T>* lookup(const Key<T>& key) {
   ThreadSlots<T>& t = threadSlots<T>();
   const std::uint64_t generation = gGeneration<T>.load(std::memory_order_acquire);
-  const std::size_t index = slotOf<T>(key.geometry);
+  const std::size_t set = setOf(key.geometry);
+  for (std::size_t way = 0; way < 2; ++way) {
+    const Slot<T>& slot = t.slots[2 * set + way];
+    if (slot.geometry == key.geometry && slot.generation == generation && key.matches(*slot.entry)) {
+      tRecentWay[set] = std::uint8_t(way);
+      return slot.entry.get();
+    }
+  }
+  const std::size_t way = 1u - tRecentWay[set], index = 2 * set + way;
+  tRecentWay[set] = std::uint8_t(way);
   Slot<T>& slot = t.slots[index];
-  if (slot.geometry == key.geometry && slot.generation == generation && key.matches(*slot.entry)) return slot.entry.get();
   std::shared_ptr<const Entry<T>> entry = sharedLookup(key);
   t.evicted[t.nextEvicted++ & 1u] = std::move(slot.entry);
   slot.geometry = key.geometry;
@@ -270,12 +286,17 @@ template <class T>
 template <class T>
 Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
   if (type == ::fcl::GEOM_CONVEX) {
-    const ConvexHit<T>& hit = tConvexHits<T>[slotOf<T>(g)];
-    if (hit.geometry == g && hit.vertexArray == &static_cast<const ::fcl::Convex<T>*>(g)->getVertices() &&
-        hit.generation == gGeneration<T>.load(std::memory_order_acquire) &&
-        hit.entry->conversion == Conversion::Ok) {
-      fill(*hit.entry, out);
-      return Conversion::Ok;
+    const std::size_t set = setOf(g);
+    const void* vertices = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
+    for (std::size_t way = 0; way < 2; ++way) {
+      const ConvexHit<T>& hit = tConvexHits<T>[2 * set + way];
+      if (hit.geometry == g && hit.vertexArray == vertices &&
+          hit.generation == gGeneration<T>.load(std::memory_order_acquire) &&
+          hit.entry->conversion == Conversion::Ok) {
+        tRecentWay[set] = std::uint8_t(way);
+        fill(*hit.entry, out);
+        return Conversion::Ok;
+      }
     }
   }
   return slowLookup(g, type, out);

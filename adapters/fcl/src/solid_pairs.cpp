@@ -448,6 +448,31 @@ template <class S> k::ConvexShape<S> placedHull(const Cooked<S>& c, const Mat3<S
   return s;
 }
 
+// Whether point p (the hull's frame) lies inside `hull` by a margin: every face plane n.x + d <= -margin.
+template <class S> bool insideHull(const ConvexMesh<S>& hull, const Vec3<S>& p, S margin) {
+  for (const HullPolygon<S>& f : hull.polygons)
+    if (!(f.normal.dot(p) + f.d <= -margin)) return false;
+  return true;
+}
+
+// A point of each hull's inner ball towards the other hull's centre, inside the other hull (b's frame is (r, t) in
+// a's): a common point, beyond the inner balls' reach (hullBallsCertificate), without GJK. ~150 instructions on
+// 30-vertex hulls against GJK's ~3,000: collide convex30 2,180 -> 1,901 (session 21). The same line's vertex extents
+// as a separating plane (an Apart certificate) cost more than the GJK runs it saved (convex30 1,963, convex100
+// 1,617 -> 2,018): GJK's first support pair already separates most apart pairs.
+template <class S>
+bool innerPointInside(const ConvexMesh<S>& a, const ConvexMesh<S>& b, const Mat3<S>& r, const Vec3<S>& t) {
+  const Vec3<S> cb = r * b.center + t, d = cb - a.center;
+  const S len = d.norm();
+  if (!(len > S(0))) return false;
+  const Vec3<S> u = d / len;
+  const S margin = S(64) * std::numeric_limits<S>::epsilon() * (a.outerRadius + b.outerRadius + t.norm());
+  const Vec3<S> pa = a.center + a.innerRadius * u;  // in a, a's frame
+  if (insideHull(b, Vec3<S>(r.transpose() * (pa - t)), margin)) return true;
+  const Vec3<S> pb = cb - b.innerRadius * u;  // in b, a's frame
+  return insideHull(a, pb, margin);
+}
+
 template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   Cooked<S> ca, cb;
   if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
@@ -458,6 +483,10 @@ template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool check
     // as they are (a quaternion round trip cost ~400 instructions a call).
     const Mat3<S> r = a.tf->linear().transpose() * b.tf->linear();
     const Vec3<S> t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
+    if (innerPointInside(*ca.support->hull, *cb.support->hull, r, t)) {
+      hit = true;
+      return Answer::Done;
+    }
     const k::ConvexShape<S> sa = *ca.support;  // a copy: GJK writes its climbing hints into the shapes
     const k::OverlapCertificate gjk = k::overlapByGjk(sa, placedHull(cb, r, t));
     hit = gjk == k::OverlapCertificate::Unknown
