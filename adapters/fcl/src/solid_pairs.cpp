@@ -448,6 +448,13 @@ template <class S> k::ConvexShape<S> placedHull(const Cooked<S>& c, const Mat3<S
   return s;
 }
 
+// Hulls with more faces than this together skip innerPointInside: its plane tests then cost about what the GJK runs
+// it saves (convex100 distance 5,201 -> 5,246 with it; two 30-vertex hulls have ~110 faces).
+constexpr std::size_t kInnerPointFaces = 160;
+template <class S> bool fewFaces(const Cooked<S>& a, const Cooked<S>& b) {
+  return a.support->hull->polygons.size() + b.support->hull->polygons.size() <= kInnerPointFaces;
+}
+
 // Whether point p (the hull's frame) lies inside `hull` by a margin: every face plane n.x + d <= -margin.
 template <class S> bool insideHull(const ConvexMesh<S>& hull, const Vec3<S>& p, S margin) {
   for (const HullPolygon<S>& f : hull.polygons)
@@ -483,7 +490,7 @@ template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool check
     // as they are (a quaternion round trip cost ~400 instructions a call).
     const Mat3<S> r = a.tf->linear().transpose() * b.tf->linear();
     const Vec3<S> t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
-    if (innerPointInside(*ca.support->hull, *cb.support->hull, r, t)) {
+    if (fewFaces(ca, cb) && innerPointInside(*ca.support->hull, *cb.support->hull, r, t)) {
       hit = true;
       return Answer::Done;
     }
@@ -609,8 +616,14 @@ Answer convexConvexDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceRes
   if (ask.depth) return convertedDistance<S, FS::Convex, FS::Convex>(a, b, ask, out);
   Cooked<S> ca, cb;
   if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
-  const bool overlapping = convexCertificate(a, b, ca, cb) == k::OverlapCertificate::Overlapping;
+  const k::OverlapCertificate balls = convexCertificate(a, b, ca, cb);
   if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
+  // Overlapping by the inner balls, or by a point of one inner ball inside the other hull (b in a's frame).
+  bool overlapping = balls == k::OverlapCertificate::Overlapping;
+  if (balls == k::OverlapCertificate::Unknown && fewFaces(ca, cb))
+    overlapping = innerPointInside(*ca.support->hull, *cb.support->hull,
+                                   Mat3<S>(a.tf->linear().transpose() * b.tf->linear()),
+                                   inFrame(*a.tf, Vec3<S>(b.tf->translation())));
   if (overlapping) {
     writeOverlapping(out);
     return Answer::Done;
