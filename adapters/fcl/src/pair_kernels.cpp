@@ -28,7 +28,12 @@
 namespace gq::fcl::detail {
 namespace {
 
-constexpr std::uint32_t kTrianglePage = 64;  // triangles fetched per findOverlapTriangleMesh call
+// Triangles fetched per findOverlapTriangleMesh call: a first page of kFirstTrianglePage, then pages four times as
+// large up to kTrianglePage. A further page re-runs the query (it skips the triangles already returned), while a
+// large first page makes the query gather candidates a request for one contact never tests: mesh-convex30 collide
+// (one contact) 44,129 instructions with pages of 64, 35,752 with 16, 38,872 with 8, 48,474 with 4, 59,991 with 256.
+constexpr std::uint32_t kFirstTrianglePage = 16;
+constexpr std::uint32_t kTrianglePage = 256;
 
 template <class T> Vec3<T> midpoint(const Vec3<T>& a, const Vec3<T>& b) { return (a + b) * T(0.5); }
 
@@ -114,14 +119,15 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   std::optional<gq::detail::MeshInstance<T>> instance;
   std::optional<gq::detail::TriangleQueryShape<T>> boolean;
   std::uint32_t page[kTrianglePage];
-  std::uint32_t start = 0;
+  std::uint32_t start = 0, nextPage = kFirstTrianglePage;
   const std::size_t first = out.size();
   for (;;) {
     bool overflow = false;
     std::uint32_t count = 0;
     // Exact candidates are contacts themselves: fetch no more than the result has room for (the query stops there).
     const std::uint32_t pageSize =
-        exactCandidates && !withGeometry && room < kTrianglePage ? std::uint32_t(room) : kTrianglePage;
+        exactCandidates && !withGeometry && room < nextPage ? std::uint32_t(room) : nextPage;
+    nextPage = std::min(kTrianglePage, 4 * nextPage);
     Status s = findOverlapTriangleMesh(query, queryPose, mesh, meshPose, page, pageSize, start, overflow, count);
     if (!s.ok()) return s;
     for (std::uint32_t i = 0; i < count; ++i) {
