@@ -5,8 +5,8 @@
 //    "implementation defined", mostly -1) closed-form pairs (sphere and capsule against sphere, capsule or box,
 //    sphere-cylinder, and against a plane or half-space) still give the exact signed distance, which costs them
 //    nothing more, and GJK pairs and two boxes answer FCL's -1 with nearest points at the origin when they overlap
-//    (no EPA, no witness search); nearest points (world
-//    frame) are written when enable_nearest_points is set, and always for BVHModel and plane pairs;
+//    (no EPA, no witness search); nearest points (world frame) are written when enable_nearest_points is set, and
+//    always for BVHModel and plane pairs;
 //  - BVHModel sides are thin surfaces: 0 when touching or crossing; with enable_signed_distance the deepest
 //    triangle contact's depth is reported negated, with both nearest points at its position (FCL's workaround).
 #include <algorithm>

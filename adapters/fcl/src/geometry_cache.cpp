@@ -217,7 +217,7 @@ template <class T> thread_local std::array<ConvexHit<T>, kThreadSlots> tConvexHi
 // collided evicted each other on every call, each lookup then taking the shared map's lock). A set's recent way is
 // kept; a miss replaces the other one. Fibonacci hashing of the address spreads sequential allocations.
 constexpr std::size_t kThreadSets = kThreadSlots / 2;
-thread_local std::array<std::uint8_t, kThreadSets> tRecentWay{};
+template <class T> thread_local std::array<std::uint8_t, kThreadSets> tRecentWay{};
 
 inline std::size_t setOf(const void* geometry) {
   const std::uint64_t h = (std::uint64_t(reinterpret_cast<std::uintptr_t>(geometry)) >> 4) * 0x9E3779B97F4A7C15ull;
@@ -232,12 +232,12 @@ template <class T> const Entry<T>* lookup(const Key<T>& key) {
   for (std::size_t way = 0; way < 2; ++way) {
     const Slot<T>& slot = t.slots[2 * set + way];
     if (slot.geometry == key.geometry && slot.generation == generation && key.matches(*slot.entry)) {
-      tRecentWay[set] = std::uint8_t(way);
+      tRecentWay<T>[set] = std::uint8_t(way);
       return slot.entry.get();
     }
   }
-  const std::size_t way = 1u - tRecentWay[set], index = 2 * set + way;
-  tRecentWay[set] = std::uint8_t(way);
+  const std::size_t way = 1u - tRecentWay<T>[set], index = 2 * set + way;
+  tRecentWay<T>[set] = std::uint8_t(way);
   Slot<T>& slot = t.slots[index];
   std::shared_ptr<const Entry<T>> entry = sharedLookup(key);
   t.evicted[t.nextEvicted++ & 1u] = std::move(slot.entry);
@@ -293,7 +293,7 @@ Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE
       if (hit.geometry == g && hit.vertexArray == vertices &&
           hit.generation == gGeneration<T>.load(std::memory_order_acquire) &&
           hit.entry->conversion == Conversion::Ok) {
-        tRecentWay[set] = std::uint8_t(way);
+        tRecentWay<T>[set] = std::uint8_t(way);
         fill(*hit.entry, out);
         return Conversion::Ok;
       }

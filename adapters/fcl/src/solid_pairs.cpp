@@ -245,8 +245,8 @@ template <class S> Answer capsuleBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
 }
 
-// Box b in box a's frame: axes R_a^T R_b, centre R_a^T (t_b - t_a).
-template <class S> [[gnu::always_inline]] inline void boxInBox(Solid<S> a, Solid<S> b, Mat3<S>& r, Vec3<S>& t) {
+// Shape b in shape a's frame: axes R_a^T R_b, centre R_a^T (t_b - t_a) (box pairs, hull pairs).
+template <class S> [[gnu::always_inline]] inline void bInFrameOfA(Solid<S> a, Solid<S> b, Mat3<S>& r, Vec3<S>& t) {
   r.noalias() = a.tf->linear().transpose() * b.tf->linear();
   t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
 }
@@ -256,7 +256,7 @@ template <class S> Answer boxBoxOverlap(Solid<S> a, Solid<S> b, bool checkMiss, 
   if (!boxSized(ha) || !boxSized(hb)) return Answer::Invalid;
   Vec3<S> t;
   Mat3<S> r;
-  boxInBox(a, b, r, t);
+  bInFrameOfA(a, b, r, t);
   hit = k::overlapBoxBox<S>(ha, hb, r, t);
   return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
@@ -268,7 +268,7 @@ template <class S> Answer boxBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask
   Vec3<S> ha, hb, t;
   Mat3<S> r;
   if (!readBox(a, ha) || !readBox(b, hb)) return Answer::Invalid;
-  boxInBox(a, b, r, t);
+  bInFrameOfA(a, b, r, t);
   DistanceResult<S> local;
   if (!ask.depth) {
     if (!k::separatedBoxBoxLocal<S>(ha, hb, r, t, local)) {
@@ -488,8 +488,9 @@ template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool check
     if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
     // b in a's frame, as the façade runs its kernels (precision far from the origin), placed by FCL's matrices
     // as they are (a quaternion round trip cost ~400 instructions a call).
-    const Mat3<S> r = a.tf->linear().transpose() * b.tf->linear();
-    const Vec3<S> t = inFrame(*a.tf, Vec3<S>(b.tf->translation()));
+    Mat3<S> r;
+    Vec3<S> t;
+    bInFrameOfA(a, b, r, t);
     if (fewFaces(ca, cb) && innerPointInside(*ca.support->hull, *cb.support->hull, r, t)) {
       hit = true;
       return Answer::Done;
@@ -610,7 +611,8 @@ template <class S> Answer boxCylinderDistance(Solid<S> a, Solid<S> b, DistanceAs
   return convertedDistance<S, FS::Box, FS::Cylinder>(a, b, ask, out);
 }
 
-// Without a requested depth, overlapping inner balls are FCL's -1 at once; everything else is GJK's.
+// Without a requested depth, a proven overlap (inner balls, or innerPointInside) is FCL's -1 at once; everything
+// else is GJK's.
 template <class S>
 Answer convexConvexDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   if (ask.depth) return convertedDistance<S, FS::Convex, FS::Convex>(a, b, ask, out);
@@ -620,10 +622,12 @@ Answer convexConvexDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceRes
   if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
   // Overlapping by the inner balls, or by a point of one inner ball inside the other hull (b in a's frame).
   bool overlapping = balls == k::OverlapCertificate::Overlapping;
-  if (balls == k::OverlapCertificate::Unknown && fewFaces(ca, cb))
-    overlapping = innerPointInside(*ca.support->hull, *cb.support->hull,
-                                   Mat3<S>(a.tf->linear().transpose() * b.tf->linear()),
-                                   inFrame(*a.tf, Vec3<S>(b.tf->translation())));
+  if (balls == k::OverlapCertificate::Unknown && fewFaces(ca, cb)) {
+    Mat3<S> r;
+    Vec3<S> t;
+    bInFrameOfA(a, b, r, t);
+    overlapping = innerPointInside(*ca.support->hull, *cb.support->hull, r, t);
+  }
   if (overlapping) {
     writeOverlapping(out);
     return Answer::Done;
