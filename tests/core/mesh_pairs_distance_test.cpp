@@ -63,13 +63,22 @@ template <class T> void expectWitnessesConsistent(const DistanceResult<T>& r, LD
   }
 }
 
+// A level-2 icosphere under a non-uniform, rotated scale (one factor negative) at a rotated pose, and its world
+// triangles in long double.
+template <class T> struct ScaledIcosphere {
+  MeshData<T> data = meshtest::icosphere<T>(2);
+  MeshScale<T> scale{Vec3<T>(T(1.1), T(0.8), T(-1.2)), Quat<T>(Eigen::AngleAxis<T>(T(0.5), Vec3<T>::UnitZ()))};
+  Geometry<T> mesh = TriangleMeshGeometry<T>(meshtest::cook(data.vertices, data.triangles), scale);
+  Transform<T> pose{Vec3<T>(T(0.3), T(0.2), T(-0.1)), Quat<T>(Eigen::AngleAxis<T>(T(0.7), Vec3<T>(1, 1, 0).normalized()))};
+  std::vector<TriL> triangles = worldTriangles(data, scale, pose);
+};
+
 TYPED_TEST(MeshDistance, ConvexVsScaledIcosphereEqualsBruteForceMinimumOverTriangles) {
   using T = TypeParam;
-  const MeshData<T> data = meshtest::icosphere<T>(2);
-  const MeshScale<T> scale(Vec3<T>(T(1.1), T(0.8), T(-1.2)), Quat<T>(Eigen::AngleAxis<T>(T(0.5), Vec3<T>::UnitZ())));
-  const Geometry<T> mesh = TriangleMeshGeometry<T>(meshtest::cook(data.vertices, data.triangles), scale);
-  const Transform<T> meshPose(Vec3<T>(T(0.3), T(0.2), T(-0.1)), Quat<T>(Eigen::AngleAxis<T>(T(0.7), Vec3<T>(1, 1, 0).normalized())));
-  const std::vector<TriL> tris = worldTriangles(data, scale, meshPose);
+  const ScaledIcosphere<T> scene;
+  const Geometry<T>& mesh = scene.mesh;
+  const Transform<T>& meshPose = scene.pose;
+  const std::vector<TriL>& tris = scene.triangles;
   test::Rng rng(61);
   int contacts = 0;
   for (int i = 0; i < 1200; ++i) {
@@ -100,11 +109,10 @@ TYPED_TEST(MeshDistance, ConvexVsScaledIcosphereEqualsBruteForceMinimumOverTrian
 // positive (a hull apart from every triangle: then its faces' distance is the solid's).
 TYPED_TEST(MeshDistance, ConvexHullVsScaledIcosphereEqualsBruteForceMinimumOverFaceTrianglePairs) {
   using T = TypeParam;
-  const MeshData<T> data = meshtest::icosphere<T>(2);
-  const MeshScale<T> scale(Vec3<T>(T(1.1), T(0.8), T(-1.2)), Quat<T>(Eigen::AngleAxis<T>(T(0.5), Vec3<T>::UnitZ())));
-  const Geometry<T> mesh = TriangleMeshGeometry<T>(meshtest::cook(data.vertices, data.triangles), scale);
-  const Transform<T> meshPose(Vec3<T>(T(0.3), T(0.2), T(-0.1)), Quat<T>(Eigen::AngleAxis<T>(T(0.7), Vec3<T>(1, 1, 0).normalized())));
-  const std::vector<TriL> tris = worldTriangles(data, scale, meshPose);
+  const ScaledIcosphere<T> scene;
+  const Geometry<T>& mesh = scene.mesh;
+  const Transform<T>& meshPose = scene.pose;
+  const std::vector<TriL>& tris = scene.triangles;
   test::Rng rng(62);
   std::vector<Vec3<T>> points;
   for (int i = 0; i < 12; ++i)

@@ -108,21 +108,29 @@ TEST(FclConventions, SignedDistanceIsMinusThePenetrationDepth) {
   EXPECT_NEAR(gq::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), request, result), -0.3, 1e-12);
 }
 
+// Without enable_signed_distance (nearest points requested), gq::fcl and FCL both answer the overlapping pair with -1
+// and both nearest points at the origin.
+void expectMinusOneWithPointsAtTheOriginAsFcl(const ::fcl::CollisionGeometryd* g1, const ::fcl::Transform3d& tf1,
+                                              const ::fcl::CollisionGeometryd* g2, const ::fcl::Transform3d& tf2) {
+  const ::fcl::DistanceRequestd unsignedRequest(true);
+  ::fcl::DistanceResultd gqResult, fclResult;
+  EXPECT_EQ(gq::fcl::distance(g1, tf1, g2, tf2, unsignedRequest, gqResult), -1.0);
+  ::fcl::distance(g1, tf1, g2, tf2, unsignedRequest, fclResult);
+  EXPECT_EQ(fclResult.min_distance, -1.0);
+  for (int i : {0, 1}) {
+    EXPECT_EQ(gqResult.nearest_points[i], fclResult.nearest_points[i]);
+    EXPECT_EQ(gqResult.nearest_points[i], Vector3d::Zero());
+  }
+}
+
 // Without enable_signed_distance FCL answers a penetrating GJK pair with -1 and nearest points at the origin (its
 // GJK path stops at the overlap); gq::fcl does the same instead of running EPA. A cylinder (radius 1, length 2)
 // 0.25 into a box face: the exact depth is 0.25 (signed request).
 TEST(FclConventions, WithoutSignedDistanceAPenetratingGjkPairIsMinusOneAsFcl) {
   ::fcl::Cylinderd cylinder(1, 2);
   ::fcl::Boxd box(2, 2, 2);
-  ::fcl::DistanceRequestd unsignedRequest(true);
-  ::fcl::DistanceResultd gqResult, fclResult;
-  EXPECT_EQ(gq::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 1.75), unsignedRequest, gqResult), -1.0);
-  ::fcl::distance(&cylinder, at(0, 0, 0), &box, at(0, 0, 1.75), unsignedRequest, fclResult);
-  EXPECT_EQ(fclResult.min_distance, -1.0);
-  for (int i : {0, 1}) {
-    EXPECT_EQ(gqResult.nearest_points[i], fclResult.nearest_points[i]);
-    EXPECT_EQ(gqResult.nearest_points[i], Vector3d::Zero());
-  }
+  expectMinusOneWithPointsAtTheOriginAsFcl(&cylinder, at(0, 0, 0), &box, at(0, 0, 1.75));
+  const ::fcl::DistanceRequestd unsignedRequest(true);
   ::fcl::DistanceRequestd signedRequest(true);
   signedRequest.enable_signed_distance = true;
   ::fcl::DistanceResultd withDepth;
@@ -140,12 +148,8 @@ TEST(FclConventions, WithoutSignedDistanceOverlappingConvexHullsAreMinusOneAsFcl
   auto faces = std::make_shared<std::vector<int>>(std::vector<int>{4, 0, 4, 6, 2, 4, 1, 3, 7, 5, 4, 0, 1, 5, 4,
                                                                    4, 2, 6, 7, 3, 4, 0, 2, 3, 1, 4, 4, 5, 7, 6});
   const ::fcl::Convexd cube(corners, 6, faces);
+  expectMinusOneWithPointsAtTheOriginAsFcl(&cube, at(0, 0, 0), &cube, at(0, 0, 1.75));
   const ::fcl::DistanceRequestd unsignedRequest(true);
-  ::fcl::DistanceResultd gqResult, fclResult;
-  EXPECT_EQ(gq::fcl::distance(&cube, at(0, 0, 0), &cube, at(0, 0, 1.75), unsignedRequest, gqResult), -1.0);
-  ::fcl::distance(&cube, at(0, 0, 0), &cube, at(0, 0, 1.75), unsignedRequest, fclResult);
-  EXPECT_EQ(fclResult.min_distance, -1.0);
-  for (int i : {0, 1}) EXPECT_EQ(gqResult.nearest_points[i], Vector3d::Zero());
   for (const double gap : {0.5, 2.0}) {
     ::fcl::DistanceResultd apart;
     EXPECT_NEAR(gq::fcl::distance(&cube, at(0, 0, 0), &cube, at(0, 0, 2 + gap), unsignedRequest, apart), gap, 1e-9);
@@ -156,12 +160,8 @@ TEST(FclConventions, WithoutSignedDistanceOverlappingConvexHullsAreMinusOneAsFcl
 // (their witnesses would cost a search); with it, the exact depth; separated, the distance either way.
 TEST(FclConventions, WithoutSignedDistanceOverlappingBoxesAreMinusOneAsFcl) {
   ::fcl::Boxd a(2, 2, 2), b(2, 2, 2);
+  expectMinusOneWithPointsAtTheOriginAsFcl(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0));
   const ::fcl::DistanceRequestd unsignedRequest(true);
-  ::fcl::DistanceResultd gqResult, fclResult;
-  EXPECT_EQ(gq::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), unsignedRequest, gqResult), -1.0);
-  ::fcl::distance(&a, at(0, 0, 0), &b, at(1.7, 0.2, 0), unsignedRequest, fclResult);
-  EXPECT_EQ(fclResult.min_distance, -1.0);
-  for (int i : {0, 1}) EXPECT_EQ(gqResult.nearest_points[i], Vector3d::Zero());
   ::fcl::DistanceRequestd signedRequest(true);
   signedRequest.enable_signed_distance = true;
   ::fcl::DistanceResultd withDepth;
