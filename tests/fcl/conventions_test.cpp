@@ -349,6 +349,38 @@ TEST(FclConventions, PrimitivePairsAreAnsweredByGq) {
   EXPECT_NEAR(d.min_distance, 1.5, 1e-9);  // ellipsoid tip at x = 1, box face at x = 2.5
 }
 
+// A host's own subclass of an FCL shape has another type_info than the class: the type_info fast path does not know
+// it, and the node type classifies it (a sphere stays a sphere, answered by gq exactly as the class itself).
+struct HostSphere : ::fcl::Sphered {
+  using ::fcl::Sphered::Sphered;
+};
+struct HostBox : ::fcl::Boxd {
+  using ::fcl::Boxd::Boxd;
+};
+
+TEST(FclConventions, SubclassesOfFclShapesAreAnsweredAsTheirNodeType) {
+  HostSphere hostSphere(0.5);
+  HostBox hostBox(2, 2, 2);
+  ::fcl::Sphered sphere(0.5);
+  ::fcl::Boxd box(2, 2, 2);
+  gq::fcl::resetAdapterCounters();
+  ::fcl::DistanceResultd hostDistance, classDistance;
+  gq::fcl::distance<double>(&hostSphere, at(3, 0.2, 0), &hostBox, at(0, 0, 0), ::fcl::DistanceRequestd(true),
+                            hostDistance);
+  gq::fcl::distance<double>(&sphere, at(3, 0.2, 0), &box, at(0, 0, 0), ::fcl::DistanceRequestd(true), classDistance);
+  ::fcl::CollisionResultd hostContact;
+  gq::fcl::collide<double>(&hostSphere, at(1.2, 0, 0), &hostBox, at(0, 0, 0), ::fcl::CollisionRequestd(1, true),
+                           hostContact);
+  EXPECT_EQ(gq::fcl::adapterCounters().gq, 3u);
+  EXPECT_EQ(gq::fcl::adapterCounters().fallback, 0u);
+  EXPECT_NEAR(hostDistance.min_distance, 1.5, 1e-12);  // centre 3 - half extent 1 - radius 0.5
+  EXPECT_EQ(hostDistance.min_distance, classDistance.min_distance);
+  EXPECT_EQ(hostDistance.nearest_points[0], classDistance.nearest_points[0]);
+  EXPECT_EQ(hostDistance.nearest_points[1], classDistance.nearest_points[1]);
+  ASSERT_EQ(hostContact.numContacts(), 1u);
+  EXPECT_NEAR(hostContact.getContact(0).penetration_depth, 0.3, 1e-12);  // 1 + 0.5 - 1.2
+}
+
 TEST(FclConventions, NonFinitePoseWritesNothingAndDoesNotThrow) {
   ::fcl::Sphered a(1), b(1);
   const double nan = std::numeric_limits<double>::quiet_NaN();

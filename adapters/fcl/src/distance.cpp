@@ -39,54 +39,9 @@ Status deepestContact(const detail::Converted<S>& a, const Transform<S>& pa, con
   return s;
 }
 
-// FCL's DistanceRequest::isSatisfied and DistanceResult::update (the smaller distance wins), on the result's public
-// fields as FCL 0.7 defines them: the library's out-of-line copies cost a call each on the fast path.
+// FCL's DistanceRequest::isSatisfied, on the result's public field as FCL 0.7 defines it (the library's out-of-line
+// copy costs a call on the fast path).
 template <class S> bool satisfied(const ::fcl::DistanceResult<S>& result) { return result.min_distance <= S(0); }
-
-template <class S>
-void keepSmaller(S distance, const ::fcl::CollisionGeometry<S>* o1, const ::fcl::CollisionGeometry<S>* o2,
-                 const DistanceResult<S>* points, ::fcl::DistanceResult<S>& result) {
-  if (!(result.min_distance > distance)) return;
-  result.min_distance = distance;
-  result.o1 = o1;
-  result.o2 = o2;
-  result.b1 = result.b2 = detail::kNoPrimitive;
-  if (!points) return;
-  result.nearest_points[0] = points->point0;
-  result.nearest_points[1] = points->point1;
-}
-
-// Pairs the fast path leaves unanswered (FCL answers them) and everything off it: meshes, planes, converted shapes.
-// Out of line, as collide's: inline, the converted path's frame and saved registers cost the fast path every call.
-template <class S>
-[[gnu::noinline]] S solidUnanswered(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1,
-                                    const ::fcl::Transform3<S>& tf1, detail::FclShape s2,
-                                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-                                    const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
-  // FCL 0.7 crashes on these (libccd's GJK calls a null support function for a Halfspace): nothing written.
-  if (s1 == detail::FclShape::Halfspace || s2 == detail::FclShape::Halfspace) return std::numeric_limits<S>::max();
-  return detail::fclDistance(o1, tf1, o2, tf2, request, result);
-}
-
-// Two closed solids, the fast path (solid_pairs.h).
-template <class S>
-[[gnu::always_inline]] inline S solidDistance(detail::FclShape s1, const ::fcl::CollisionGeometry<S>* o1,
-                                              const ::fcl::Transform3<S>& tf1, detail::FclShape s2,
-                                              const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-                                              const ::fcl::DistanceRequest<S>& request,
-                                              ::fcl::DistanceResult<S>& result) {
-  DistanceResult<S> d;
-  const bool withPoints = request.enable_nearest_points;
-  const detail::DistanceAsk ask{withPoints, request.enable_signed_distance, double(request.distance_tolerance)};
-  switch (detail::solidDistance(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, ask, d)) {
-    case detail::Answer::Done: break;
-    case detail::Answer::Invalid: return std::numeric_limits<S>::max();
-    case detail::Answer::Unanswered: return solidUnanswered(s1, o1, tf1, s2, o2, tf2, request, result);
-  }
-  detail::countGq();
-  keepSmaller(d.distance, o1, o2, withPoints ? &d : nullptr, result);
-  return result.min_distance;
-}
 
 // Everything but two solids: meshes, planes and what gq does not model.
 template <class S>
@@ -116,17 +71,31 @@ template <class S>
   return result.min_distance;
 }
 
+// Shapes classified by their node types (virtual calls): a pair that is not two common solids.
+template <class S>
+[[gnu::noinline]] S distanceClassified(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                                       const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                       const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
+  if (detail::isSolid(s1) && detail::isSolid(s2))
+    return detail::solidFclDistance(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result);
+  return distanceOthers(o1, tf1, o2, tf2, request, result);
+}
+
 // The whole of distance; each public overload is this function. Bad input writes nothing and returns what FCL
-// returns for a pair it cannot answer (docs/fcl.md).
+// returns for a pair it cannot answer (docs/fcl.md). Two common solids jump to their pair's entry without a call.
 template <class S>
 [[gnu::always_inline]] inline S distancePair(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
                                              const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
                                              const ::fcl::DistanceRequest<S>& request,
                                              ::fcl::DistanceResult<S>& result) {
   if (satisfied(result)) return result.min_distance;  // request.isSatisfied(result)
-  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
-  if (detail::isSolid(s1) && detail::isSolid(s2)) return solidDistance(s1, o1, tf1, s2, o2, tf2, request, result);
-  return distanceOthers(o1, tf1, o2, tf2, request, result);
+  if (o1 && o2) {
+    const detail::FclShape s1 = detail::commonSolidOf<S>(typeid(*o1)), s2 = detail::commonSolidOf<S>(typeid(*o2));
+    if (s1 != detail::FclShape::Unsupported && s2 != detail::FclShape::Unsupported)
+      return detail::solidFclDistance(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result);
+  }
+  return distanceClassified(o1, tf1, o2, tf2, request, result);
 }
 
 }  // namespace

@@ -8,17 +8,11 @@
 #include "gq/fcl/collision.h"
 
 namespace gq::fcl {
-namespace {
-thread_local AdapterCounters tCounters;
-}
 
-AdapterCounters adapterCounters() { return tCounters; }
-void resetAdapterCounters() { tCounters = AdapterCounters(); }
+AdapterCounters adapterCounters() { return detail::tCounters; }
+void resetAdapterCounters() { detail::tCounters = AdapterCounters(); }
 
 namespace detail {
-
-void countGq() { ++tCounters.gq; }
-void countFallback() { ++tCounters.fallback; }
 
 // FCL reports its own errors on std::cerr and returns; an exception (rare: Eigen or allocation) must not cross the
 // adapter's API, so it is swallowed and the result left as FCL left it.

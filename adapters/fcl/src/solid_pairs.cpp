@@ -16,8 +16,10 @@
 
 
 #include "custom/callback_queries.h"
+#include "fallback.h"
 #include "distance/distance.h"
 #include "geometry_cache.h"
+#include "pair_kernels.h"
 #include "gjk/gjk.h"
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
@@ -153,7 +155,7 @@ template <class S> Answer sphereSphereOverlap(Solid<S> a, Solid<S> b, bool check
   return validatedHit(hit || checkMiss, [&] { return spherePoses(a, b); });
 }
 
-template <class S> Answer sphereSphereDistance(Solid<S> a, Solid<S> b, DistanceAsk, DistanceResult<S>& out) {
+template <class S> [[gnu::always_inline]] inline Answer sphereSphereDistance(Solid<S> a, Solid<S> b, DistanceAsk, DistanceResult<S>& out) {
   const S ra = sphereRadius(a), rb = sphereRadius(b);
   if (!positive(ra) || !positive(rb) || !isFiniteTransforms(*a.tf, *b.tf)) return Answer::Invalid;
   k::ballsDistance<S>(a.tf->translation(), ra, b.tf->translation(), rb, out);
@@ -168,7 +170,7 @@ template <class S> Answer sphereCapsuleOverlap(Solid<S> a, Solid<S> b, bool chec
   return validatedHit(hit || checkMiss, [&] { return sphereRigidPoses(a, b); });
 }
 
-template <class S> Answer sphereCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> [[gnu::always_inline]] inline Answer sphereCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const S ra = sphereRadius(a);
   if (!positive(ra) || !capsuleSized(b) || !sphereRigidPoses(a, b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
@@ -186,7 +188,7 @@ template <class S> Answer sphereBoxOverlap(Solid<S> a, Solid<S> b, bool checkMis
   return validatedHit(hit || checkMiss, [&] { return sphereRigidPoses(a, b); });
 }
 
-template <class S> Answer sphereBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> [[gnu::always_inline]] inline Answer sphereBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const S ra = sphereRadius(a);
   const Vec3<S> hb = boxHalf(b);
   if (!positive(ra) || !boxSized(hb) || !sphereRigidPoses(a, b)) return Answer::Invalid;
@@ -206,7 +208,7 @@ template <class S> Answer capsuleCapsuleOverlap(Solid<S> a, Solid<S> b, bool che
 }
 
 template <class S>
-Answer capsuleCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+[[gnu::always_inline]] inline Answer capsuleCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   k::CapsuleAxis<S> ca, cb;
   const Vec3<S> origin = a.tf->translation();
   if (!readCapsule(a, origin, ca) || !readCapsule(b, origin, cb)) return Answer::Invalid;
@@ -233,7 +235,7 @@ template <class S> Answer capsuleBoxOverlap(Solid<S> a, Solid<S> b, bool checkMi
   return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
 }
 
-template <class S> Answer capsuleBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> [[gnu::always_inline]] inline Answer capsuleBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const Vec3<S> h = boxHalf(b);
   if (!capsuleSized(a) || !boxSized(h) || !rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
   k::CapsuleAxis<S> c;
@@ -264,7 +266,7 @@ template <class S> Answer boxBoxOverlap(Solid<S> a, Solid<S> b, bool checkMiss, 
 // In box a's frame, core's closed form (distanceBoxBoxLocal); GJK/EPA in its rare overlapping parallel-face case.
 // Without a requested depth, overlapping boxes answer FCL's -1 (FCL 0.7 runs libccd's GJK on boxes): their depth is
 // free from the SAT, its witnesses are a search (a third of the calls of bench_fcl_adapter's box pairs overlap).
-template <class S> Answer boxBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> [[gnu::always_inline]] inline Answer boxBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> ha, hb, t;
   Mat3<S> r;
   if (!readBox(a, ha) || !readBox(b, hb)) return Answer::Invalid;
@@ -571,7 +573,7 @@ template <class S> Answer sphereCylinderOverlap(Solid<S> a, Solid<S> b, bool che
 }
 
 template <class S>
-Answer sphereCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+[[gnu::always_inline]] inline Answer sphereCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const S ra = sphereRadius(a);
   S radius, halfHeight;
   if (!positive(ra) || !cylinderSize(b, radius, halfHeight) || !sphereRigidPoses(a, b)) return Answer::Invalid;
@@ -587,7 +589,7 @@ Answer sphereCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceR
 // Box and cylinder distance: without a requested depth, proven overlap is FCL's -1 at once; a separated pair is
 // core's certified closest pair (distanceBoxCylinderLocal, within GJK's tolerance for the pair, as the overlap
 // certificate's); the rest (touching, overlap with a requested depth, nothing proven) is GJK's and EPA's.
-template <class S> Answer boxCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+template <class S> [[gnu::always_inline]] inline Answer boxCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> h;
   CylinderInBox<S> c;
   if (!cylinderInBox(a, b, h, c)) return Answer::Invalid;
@@ -656,7 +658,7 @@ template <class S, FS A, FS B> Answer overlapEntry(Solid<S> a, Solid<S> b, bool 
 }
 
 template <class S, FS A, FS B>
-Answer distanceEntry(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+[[gnu::always_inline]] inline Answer distanceEntry(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   if constexpr (gqType(A) > gqType(B)) {
     const Answer r = distanceEntry<S, B, A>(b, a, ask, out);
     if (r == Answer::Done) flip(out);
@@ -684,9 +686,49 @@ Answer distanceEntry(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>&
   }
 }
 
+// FCL's DistanceResult::update (the smaller distance wins), on the result's public fields as FCL 0.7 defines them:
+// the library's out-of-line copy costs a call on the fast path.
+template <class S>
+void keepSmaller(S distance, const ::fcl::CollisionGeometry<S>* o1, const ::fcl::CollisionGeometry<S>* o2,
+                 const DistanceResult<S>* points, ::fcl::DistanceResult<S>& result) {
+  if (!(result.min_distance > distance)) return;
+  result.min_distance = distance;
+  result.o1 = o1;
+  result.o2 = o2;
+  result.b1 = result.b2 = kNoPrimitive;
+  if (!points) return;
+  result.nearest_points[0] = points->point0;
+  result.nearest_points[1] = points->point1;
+}
+
+// A pair gq leaves unanswered goes to FCL. Out of line: inline, its frame would cost the answered path every call.
+template <class S, FS A, FS B>
+[[gnu::noinline]] S unansweredDistance(Solid<S> a, Solid<S> b, const ::fcl::DistanceRequest<S>& request,
+                                       ::fcl::DistanceResult<S>& result) {
+  // FCL 0.7 crashes on these (libccd's GJK calls a null support function for a Halfspace): nothing written.
+  if constexpr (A == FS::Halfspace || B == FS::Halfspace) return std::numeric_limits<S>::max();
+  else return fclDistance(a.geometry, *a.tf, b.geometry, *b.tf, request, result);
+}
+
+template <class S, FS A, FS B>
+S fclDistanceEntry(Solid<S> a, Solid<S> b, const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
+  DistanceResult<S> d;
+  const bool withPoints = request.enable_nearest_points;
+  const DistanceAsk ask{withPoints, request.enable_signed_distance, double(request.distance_tolerance)};
+  switch (distanceEntry<S, A, B>(a, b, ask, d)) {
+    case Answer::Done: break;
+    case Answer::Invalid: return std::numeric_limits<S>::max();  // bad input: nothing written
+    case Answer::Unanswered: return unansweredDistance<S, A, B>(a, b, request, result);
+  }
+  keepSmaller(d.distance, a.geometry, b.geometry, withPoints ? &d : nullptr, result);
+  countGq();  // after the result is written: nothing of the answer stays live across the call
+  return result.min_distance;
+}
+
 template <class S, std::size_t... I> constexpr std::array<PairEntry<S>, sizeof...(I)> makeTable(std::index_sequence<I...>) {
   return {{PairEntry<S>{&overlapEntry<S, FS(I / kSolids), FS(I % kSolids)>,
-                        &distanceEntry<S, FS(I / kSolids), FS(I % kSolids)>}...}};
+                        &distanceEntry<S, FS(I / kSolids), FS(I % kSolids)>,
+                        &fclDistanceEntry<S, FS(I / kSolids), FS(I % kSolids)>}...}};
 }
 
 }  // namespace

@@ -14,8 +14,16 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <typeinfo>
 
 #include <fcl/geometry/collision_geometry.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/convex.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/distance_request.h>
+#include <fcl/narrowphase/distance_result.h>
 
 #include "convert.h"
 #include "gq/query.h"
@@ -28,7 +36,20 @@ template <class S> using Isometry = Eigen::Transform<S, 3, Eigen::Isometry>;
 // Unanswered: gq has no usable answer (half-space against half-space, GJK/EPA not converged): FCL answers.
 enum class Answer : std::uint8_t { Done, Invalid, Unanswered };
 
-// The FclShape of an FCL geometry from its node type alone (null: Unsupported). Inline: every call asks it twice.
+// The FclShape of a geometry whose dynamic type is exactly one of FCL's common solid classes, from its type_info
+// alone (no virtual call: a caller that needs none keeps no frame), else Unsupported (ask shapeOf). Equal type_info
+// addresses prove the type; a host whose objects refer to another copy of a class's type_info only takes shapeOf.
+template <class S> FclShape commonSolidOf(const std::type_info& type) {
+  if (&type == &typeid(::fcl::Sphere<S>)) return FclShape::Sphere;
+  if (&type == &typeid(::fcl::Box<S>)) return FclShape::Box;
+  if (&type == &typeid(::fcl::Capsule<S>)) return FclShape::Capsule;
+  if (&type == &typeid(::fcl::Cylinder<S>)) return FclShape::Cylinder;
+  if (&type == &typeid(::fcl::Convex<S>)) return FclShape::Convex;
+  return FclShape::Unsupported;
+}
+
+// The FclShape of an FCL geometry (null: Unsupported): a common solid from its type_info, the rest from its node type
+// (a virtual call). Inline: every call asks it twice.
 template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* geometry) {
   using FS = FclShape;
   // Indexed by FCL's NODE_TYPE: BV_UNKNOWN, the eight BVHModel bounding volumes, then the shapes in FCL's order.
@@ -38,6 +59,7 @@ template <class S> FclShape shapeOf(const ::fcl::CollisionGeometry<S>* geometry)
       FS::Cylinder,    FS::Convex,    FS::Plane,  FS::Halfspace, FS::TriangleP, FS::Unsupported};
   static_assert(::fcl::GEOM_BOX == 9 && ::fcl::GEOM_TRIANGLE == 18 && ::fcl::NODE_COUNT == 20, "FCL 0.7's NODE_TYPE");
   if (!geometry) return FS::Unsupported;
+  if (const FS common = commonSolidOf<S>(typeid(*geometry)); common != FS::Unsupported) return common;
   const int type = geometry->getNodeType();
   return type >= 0 && type < ::fcl::NODE_COUNT ? kShapeOf[type] : FS::Unsupported;
 }
@@ -64,6 +86,9 @@ struct DistanceAsk {
 template <class S> struct PairEntry {
   Answer (*overlap)(Solid<S>, Solid<S>, bool, bool&);
   Answer (*distance)(Solid<S>, Solid<S>, DistanceAsk, DistanceResult<S>&);
+  // The whole of gq::fcl::distance for the pair: FCL's request and result semantics, FCL itself answering what gq
+  // leaves unanswered. The public call jumps here once it knows both shapes (no result copied in between).
+  S (*fclDistance)(Solid<S>, Solid<S>, const ::fcl::DistanceRequest<S>&, ::fcl::DistanceResult<S>&);
 };
 inline constexpr std::size_t kSolids = std::size_t(FclShape::Halfspace) + 1;
 template <class S> struct SolidPairs {
@@ -91,6 +116,13 @@ inline Answer solidOverlap(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, boo
 template <class S>
 inline Answer solidDistance(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   return solidPair<S>(sa, sb).distance(a, b, ask, out);
+}
+
+// gq::fcl::distance on two solids (see PairEntry::fclDistance).
+template <class S>
+inline S solidFclDistance(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, const ::fcl::DistanceRequest<S>& request,
+                          ::fcl::DistanceResult<S>& result) {
+  return solidPair<S>(sa, sb).fclDistance(a, b, request, result);
 }
 
 }  // namespace gq::fcl::detail
