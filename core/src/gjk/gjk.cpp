@@ -6,11 +6,9 @@
 // d.w/|d| (every point z of D has d.z >= d.w), so |v| - max_k d_k.w_k/|d_k| bounds the error; GJK stops once it is
 // below tolerance. With d = v this is the usual duality gap v.(v - w)/|v|.
 //
-// Nesterov acceleration (Montaut, Le Lidec, Petrik, Sivic, Carpentier, RSS 2022): the search direction is
-// d_k = delta_k v_k + (1 - delta_k) w_{k-1} with delta_k = (k+1)/(k+3), a momentum on the support points. Momentum is
-// switched off for the rest of the query (plain GJK, whose termination proof then applies) as soon as it stops
-// paying: when the momentum support would pass the duality-gap test at v (it proves nothing about v), when it
-// repeats a simplex point, when |v| fails to decrease, or after kGjkMomentumIterations iterations.
+// Plain GJK, no momentum: Nesterov acceleration (Montaut, Le Lidec, Petrik, Sivic, Carpentier, RSS 2022) cost 13-25%
+// more instructions in the boolean GJK and ~8% in distance on hull pairs (docs/convex_speed.md: its supports seldom
+// pass the gap test and are retried without it), and plain GJK is what the termination argument covers.
 #include <cmath>
 
 #include "gjk/boolean_simplex.h"
@@ -66,21 +64,6 @@ void finishSeparated(const ConvexShape<T>& a, const ConvexShape<T>& b, const Vec
   r.point0 = coreA + a.margin * r.normal;
   r.point1 = coreB - b.margin * r.normal;
 }
-
-// Nesterov momentum state: the last support point and whether momentum is still on.
-template <class T> struct Momentum {
-  bool on = kGjkNesterov;
-  Vec3<T> lastW = Vec3<T>::Zero();
-  std::uint32_t step = 0;  // k in delta_k = (k+1)/(k+3)
-
-  // Search direction: v itself without momentum (or before the first support point), else the Nesterov mix.
-  Vec3<T> direction(const Vec3<T>& v) const {
-    if (!on || step == 0) return v;
-    const T delta = T(step + 1) / T(step + 3);
-    const Vec3<T> d = delta * v + (T(1) - delta) * lastW;
-    return d.squaredNorm() > T(0) ? d : v;
-  }
-};
 
 // A pair outside the scales GJK squares safely runs rescaled (pair_scale.h), its answer back in the caller's frame.
 template <class T> void unscale(GjkResult<T>& r, T back) {
@@ -141,7 +124,6 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   } best;
   T bestSquared = std::numeric_limits<T>::infinity();
   bool saved = false;
-  Momentum<T> momentum;
   std::uint32_t stalls = 0;
   std::uint32_t it = 0;
   if (cache) seedSimplex(sa, sb, a.rotation, *cache, s);
@@ -154,28 +136,18 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   }
   while (!r.coresOverlap && it < kGjkMaxIterations) {
     ++it;
-    if (it > kGjkMomentumIterations) momentum.on = false;
-    const Vec3<T> d = s.size > 0 ? momentum.direction(v) : v;
-    const bool accelerated = d != v;
-    const SupportPoint<T> p = supportOfDifference(sa, sb, Vec3<T>(-d));
+    // The support point along -v, written in the simplex's next slot: it joins the simplex unless GJK stops here.
+    SupportPoint<T>& p = s.points[s.size];
+    p = supportOfDifference(sa, sb, Vec3<T>(-v));
     if (s.size > 0) {
       const T vNorm = v.norm();
-      // Duality gap at v only (a momentum direction's lower bound, though valid, broke sweep accuracy tests).
-      if (!accelerated) lowerBound = std::max(lowerBound, d.dot(p.w) / d.norm());
+      lowerBound = std::max(lowerBound, v.dot(p.w) / vNorm);
       gapBound = std::max(T(0), vNorm - lowerBound);
       if (gapBound <= gapTolerance) { converged = true; break; }
-      const bool repeated = alreadyInSimplex(s, p.w);
-      // Momentum support that passes v's gap test, or repeats a point: no information, retry without momentum.
-      if (accelerated && (repeated || v.dot(v - p.w) <= tolerance * vNorm)) {
-        momentum.on = false;
-        continue;
-      }
       // A repeated support point along -v means D has no point closer along -v: v is optimal up to rounding.
-      if (repeated) { converged = true; break; }
+      if (alreadyInSimplex(s, p.w)) { converged = true; break; }
     }
-    momentum.lastW = p.w;
-    ++momentum.step;
-    s.points[s.size++] = p;
+    ++s.size;
     const SimplexChoice<T> choice = chooseOnSimplex(s);
     const SimplexClosest<T>& c = choice.closest;
     if (c.containsOrigin || c.v.norm() <= tolerance) {
@@ -186,9 +158,9 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
       converged = true;
       break;
     }
-    // |v| must decrease strictly. Momentum steps may not: they fall back to plain GJK. Near the origin rounding can
-    // stall plain GJK too (the simplex is then nearly flat around the origin): keep going from the new simplex,
-    // which usually closes around the origin next, and give up after kGjkMaxStalls with the best simplex seen.
+    // |v| must decrease strictly. Near the origin rounding can stall GJK (the simplex is then nearly flat around
+    // the origin): keep going from the new simplex, which usually closes around the origin next, and give up after
+    // kGjkMaxStalls with the best simplex seen.
     const T squared = c.v.squaredNorm();
     if (!(squared < bestSquared)) {
       if (!saved) {  // the state before this step is the best: keep it (the simplex without p)
@@ -196,8 +168,7 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
         --best.s.size;
         saved = true;
       }
-      if (accelerated) momentum.on = false;
-      else if (++stalls > kGjkMaxStalls) break;
+      if (++stalls > kGjkMaxStalls) break;
     }
     reduceSimplex(s, choice);
     v = c.v;
@@ -268,38 +239,24 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
     s.size = 0;
   }
   T bestSquared = std::numeric_limits<T>::infinity();
-  Momentum<T> momentum;
   std::uint32_t stalls = 0;
   for (std::uint32_t it = 0; it < kGjkMaxIterations; ++it) {
-    if (it >= kGjkMomentumIterations) momentum.on = false;
-    const Vec3<T> d = s.size > 0 ? momentum.direction(v) : v;
-    const bool accelerated = d != v;
-    const SupportPoint<T> p = supportOfDifference(sa, sb, Vec3<T>(-d));
-    // Separating axis: the lower bound d.w/|d| of the core distance already exceeds the margins.
-    if (d.dot(p.w) > (margins + tolerance) * d.norm()) return false;
+    const SupportPoint<T> p = supportOfDifference(sa, sb, Vec3<T>(-v));
+    // Separating axis: the lower bound v.w/|v| of the core distance already exceeds the margins.
+    if (v.dot(p.w) > (margins + tolerance) * v.norm()) return false;
     if (s.size > 0) {
       const T vNorm = v.norm();
-      const bool repeated = alreadyInSimplex(s, p.w);
-      const bool gapClosed = v.dot(v - p.w) <= tolerance * vNorm;
-      if (accelerated && (repeated || gapClosed)) {
-        momentum.on = false;
-        continue;
-      }
       // Converged: |v| is the core distance within tolerance.
-      if (gapClosed || repeated) return vNorm <= margins + tolerance && overlapping(s, false, vNorm);
+      if (v.dot(v - p.w) <= tolerance * vNorm || alreadyInSimplex(s, p.w))
+        return vNorm <= margins + tolerance && overlapping(s, false, vNorm);
     }
-    momentum.lastW = p.w;
-    ++momentum.step;
     s.points[s.size++] = p;
     const SimplexClosest<T> c = closestOnSimplex(s);
     if (c.containsOrigin) return overlapping(s, true, T(0));
     if (c.v.norm() <= margins + tolerance) return overlapping(s, false, c.v.norm());
-    // No progress: drop momentum; plain GJK stalls only by rounding (see gjkDistance), at most kGjkMaxStalls times.
-    if (!(c.v.squaredNorm() < bestSquared)) {
-      if (accelerated) momentum.on = false;
-      else if (++stalls > kGjkMaxStalls)
-        return std::sqrt(bestSquared) <= margins + tolerance && overlapping(s, false, std::sqrt(bestSquared));
-    }
+    // No progress: rounding stalls GJK (see gjkDistance), at most kGjkMaxStalls times.
+    if (!(c.v.squaredNorm() < bestSquared) && ++stalls > kGjkMaxStalls)
+      return std::sqrt(bestSquared) <= margins + tolerance && overlapping(s, false, std::sqrt(bestSquared));
     v = c.v;
     bestSquared = std::min(bestSquared, v.squaredNorm());
   }

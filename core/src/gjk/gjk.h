@@ -37,15 +37,6 @@ inline constexpr std::uint32_t kGjkMaxIterations = 128;
 inline constexpr std::uint32_t kEpaMaxIterations = 128;
 // GJK steps without a strict decrease of |v| tolerated before stopping (rounding stalls near the origin).
 inline constexpr std::uint32_t kGjkMaxStalls = 4;
-// Nesterov momentum on the GJK search direction (gjk.cpp); false gives plain GJK. Off: on hull pairs of 30/100
-// vertices and cylinder-box it cost 13-25% more instructions in the boolean GJK and ~8% in distance (callgrind,
-// docs/convex_speed.md): the momentum supports seldom pass the gap test and are often retried without momentum.
-inline constexpr bool kGjkNesterov = false;
-// Iterations after which momentum is switched off for good. On curved support maps (cylinders, cones) momentum
-// could keep |v| creeping down without ever passing the duality-gap test and exhaust kGjkMaxIterations (measured:
-// stopped 0.004-0.19 short, where plain GJK converges in ~10 iterations).
-inline constexpr std::uint32_t kGjkMomentumIterations = 24;
-
 template <class T> class SupportStartTable;  // gjk/support_table.h
 
 // A support mapping for one convex Geometry<T> at a pose. Holds raw pointers into the geometry's cooked data or
