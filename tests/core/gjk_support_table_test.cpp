@@ -1,5 +1,6 @@
 // Support start tables (gjk/support_table.h): every cell stores the exhaustive support vertex of its centre
-// direction, a lookup lands in the cell that contains the direction (cube-map cell computed here in long double),
+// direction, a settled cell's vertex is the support of its whole cell, a lookup lands in the cell that contains the
+// direction (cube-map cell computed here in long double),
 // hull supports through the table stay exact, and the per-mesh registry hands out one table per live mesh, also
 // under concurrent first use and when a new mesh reuses a freed mesh's address.
 #include <atomic>
@@ -109,6 +110,54 @@ TYPED_TEST(GjkSupportTable, LookupReturnsTheVertexOfTheCellContainingTheDirectio
     ASSERT_EQ(table.lookup(d), table.startOfCell(c.face, c.i, c.j)) << "direction " << u.transpose() << " x " << length;
   }
   EXPECT_GT(checked, 19000);
+}
+
+// A direction of face f at cube-map coordinates (u, v) (the same definition as cellCentre, unnormalised).
+VL faceDirection(std::uint32_t face, L u, L v) {
+  const int axis = int(face / 2);
+  const std::array<int, 2> others = axis == 0 ? std::array<int, 2>{1, 2} : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
+  VL d;
+  d[axis] = face % 2 == 0 ? 1 : -1;
+  d[others[0]] = u;
+  d[others[1]] = v;
+  return d;
+}
+
+// A settled cell answers its vertex without a neighbour scan: that must be what the climb from it answers, for every
+// direction the lookup places in the cell (corners and edges of the cell included, where rounding decides the cell),
+// and the exhaustive support. Fails if settling ignores a neighbour or a corner, or if its margin is dropped.
+TYPED_TEST(GjkSupportTable, ASettledCellsVertexIsTheClimbsAndTheExhaustiveSupportOfEveryDirectionInIt) {
+  using T = TypeParam;
+  Rng rng(406);
+  for (const int n : {12, 30, 100, 300}) {
+    const auto hull = cookedHull<T>(rng, n);
+    ASSERT_TRUE(hull);
+    const SupportStartTable<T> table(*hull);
+    const std::uint32_t k = table.cellsPerSide();
+    int settledCells = 0, settledLookups = 0;
+    for (std::uint32_t f = 0; f < 6; ++f)
+      for (std::uint32_t i = 0; i < k; ++i)
+        for (std::uint32_t j = 0; j < k; ++j) {
+          settledCells += table.cellSettled(f, i, j);
+          for (int sample = 0; sample < 12; ++sample) {
+            // The four corners, then points of the cell's edges and interior.
+            const L a = sample < 4 ? L(sample / 2) : sample < 8 ? L(rng.uniform(0, 1)) * (sample % 2) : L(rng.uniform(0, 1));
+            const L b = sample < 4 ? L(sample % 2) : sample < 8 ? L(sample % 4 < 2) : L(rng.uniform(0, 1));
+            const VL dl = faceDirection(f, (L(2 * i) + 2 * a) / L(k) - 1, (L(2 * j) + 2 * b) / L(k) - 1);
+            const gq::Vec3<T> d = (dl * L(rng.uniform(0.01, 100))).template cast<T>();
+            const std::uint32_t entry = table.lookupEntry(d);
+            if (!SupportStartTable<T>::settled(entry)) continue;
+            ++settledLookups;
+            const std::uint32_t v = SupportStartTable<T>::vertexOf(entry);
+            ASSERT_EQ(table.climb(*hull, d, v), v) << "hull of " << n << ", cell " << f << "/" << i << "/" << j;
+            ASSERT_GE(toL(hull->vertices[v]).dot(toL(d)), exhaustiveMaximum(*hull, toL(d)) - supportSlack<T>() * toL(d).norm())
+                << "hull of " << n << ", cell " << f << "/" << i << "/" << j;
+          }
+        }
+    // Most cells of these hulls are settled (their speed depends on it).
+    EXPECT_GT(settledCells, int(6 * k * k) / 2) << "hull of " << n;
+    EXPECT_GT(settledLookups, 0);
+  }
 }
 
 TYPED_TEST(GjkSupportTable, LookupOfZeroOrNonFiniteDirectionIsVertexZero) {

@@ -148,10 +148,9 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
       if (alreadyInSimplex(s, p.w)) { converged = true; break; }
     }
     ++s.size;
-    const SimplexChoice<T> choice = chooseOnSimplex(s);
-    const SimplexClosest<T>& c = choice.closest;
+    const SimplexChoice<T> c = chooseOnSimplex(s);
     if (c.containsOrigin || c.v.norm() <= tolerance) {
-      reduceSimplex(s, choice);
+      reduceSimplex(s, c);
       r.coresOverlap = true;
       lambda = c.lambda;
       v = c.v;
@@ -170,7 +169,7 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
       }
       if (++stalls > kGjkMaxStalls) break;
     }
-    reduceSimplex(s, choice);
+    reduceSimplex(s, c);
     v = c.v;
     lambda = c.lambda;
     if (squared < bestSquared) {

@@ -8,14 +8,8 @@
 namespace gq::detail {
 namespace {
 
-// A sub-simplex candidate: indices into the simplex, weights and the closest point.
-template <class T> struct Candidate {
-  std::array<std::uint32_t, 4> index = {0, 0, 0, 0};
-  std::array<T, 4> lambda = {T(1), T(0), T(0), T(0)};
-  std::uint32_t count = 1;
-  Vec3<T> v = Vec3<T>::Zero();
-  bool containsOrigin = false;
-};
+// A sub-simplex candidate (simplex.h).
+template <class T> using Candidate = SimplexChoice<T>;
 
 template <class T> constexpr T kDegenerate = T(16) * std::numeric_limits<T>::epsilon();
 
@@ -214,13 +208,18 @@ template <class T> SimplexChoice<T> chooseOnSimplex(const GjkSimplex<T>& s) {
     case 3: c = triangleCandidate(s, 0, 1, 2); break;
     default: c = tetrahedronCandidate(s); break;
   }
-  return SimplexChoice<T>{SimplexClosest<T>{c.v, c.lambda, c.containsOrigin}, c.index, c.count};
+  return c;
 }
 
+// Increasing indices (all but one edge order of the solver) move in place: index[k] >= k, so slot k is filled from a
+// slot not yet overwritten, and slots already in place are not copied.
 template <class T> void reduceSimplex(GjkSimplex<T>& s, const SimplexChoice<T>& choice) {
-  bool identity = true;
-  for (std::uint32_t k = 0; k < choice.count; ++k) identity = identity && choice.index[k] == k;
-  if (!identity) {
+  bool increasing = true;
+  for (std::uint32_t k = 1; k < choice.count; ++k) increasing = increasing && choice.index[k] > choice.index[k - 1];
+  if (increasing) {
+    for (std::uint32_t k = 0; k < choice.count; ++k)
+      if (choice.index[k] != k) s.points[k] = s.points[choice.index[k]];
+  } else {
     std::array<SupportPoint<T>, 4> kept;
     for (std::uint32_t k = 0; k < choice.count; ++k) kept[k] = s.points[choice.index[k]];
     for (std::uint32_t k = 0; k < choice.count; ++k) s.points[k] = kept[k];
@@ -229,9 +228,9 @@ template <class T> void reduceSimplex(GjkSimplex<T>& s, const SimplexChoice<T>& 
 }
 
 template <class T> SimplexClosest<T> closestOnSimplex(GjkSimplex<T>& s) {
-  const SimplexChoice<T> choice = chooseOnSimplex(s);
-  reduceSimplex(s, choice);
-  return choice.closest;
+  const SimplexChoice<T> c = chooseOnSimplex(s);
+  reduceSimplex(s, c);
+  return SimplexClosest<T>{c.v, c.lambda, c.containsOrigin};
 }
 
 template <class T> void simplexWitnesses(const GjkSimplex<T>& s, const std::array<T, 4>& lambda, Vec3<T>& a, Vec3<T>& b) {

@@ -12,11 +12,14 @@ template <class T> struct SimplexClosest {
   bool containsOrigin = false;                            // a full tetrahedron with the origin inside
 };
 
-// The sub-simplex supporting the closest point, as indices into the simplex (in order), with its weights.
+// The sub-simplex supporting the closest point: indices into the simplex, weights (in the indices' order) and the
+// closest point. The solver's own candidate type: chooseOnSimplex returns it without a conversion.
 template <class T> struct SimplexChoice {
-  SimplexClosest<T> closest;
-  std::array<std::uint32_t, 4> index = {0, 1, 2, 3};
+  std::array<std::uint32_t, 4> index = {0, 0, 0, 0};
+  std::array<T, 4> lambda = {T(1), T(0), T(0), T(0)};
   std::uint32_t count = 1;
+  Vec3<T> v = Vec3<T>::Zero();
+  bool containsOrigin = false;
 };
 
 // Finds the closest sub-simplex and leaves `s` as it is (GJK keeps the simplex for a step that does not progress).

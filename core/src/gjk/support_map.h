@@ -88,7 +88,11 @@ template <class T>
 inline std::uint32_t hullVertex(const ConvexMesh<T>& hull, const SupportStartTable<T>* table, bool climb, const Vec3<T>& d,
                                 std::uint32_t& hint, bool& cold) {
   if (!climb) return bruteForceVertex(hull, d);
-  if (table && table->hasClimbGraph()) return hint = table->climb(hull, d, table->lookup(d));
+  if (table && table->hasClimbGraph()) {
+    const std::uint32_t entry = table->lookupEntry(d);
+    hint = SupportStartTable<T>::vertexOf(entry);
+    return SupportStartTable<T>::settled(entry) ? hint : hint = table->climb(hull, d, hint);
+  }
   if (table) hint = table->lookup(d);
   else if (cold) hint = sampledStart(hull, d);
   cold = false;

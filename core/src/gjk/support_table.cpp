@@ -63,7 +63,7 @@ template <class T> struct StartTableFront {
 
 }  // namespace
 
-std::uint32_t startTableCells(std::size_t vertexCount) { return vertexCount <= 64 ? 8u : 16u; }
+std::uint32_t startTableCells(std::size_t vertexCount) { return vertexCount <= 64 ? 16u : 32u; }
 
 template <class T> SupportStartTable<T>::SupportStartTable(const ConvexMesh<T>& hull)
     : cells_(startTableCells(hull.vertices.size())), halfCells_(T(cells_) / T(2)), start_(6 * cells_ * cells_, 0) {
@@ -77,7 +77,37 @@ template <class T> SupportStartTable<T>::SupportStartTable(const ConvexMesh<T>& 
         previous = climb ? climbVertex(hull, d, previous) : bruteForceVertex(hull, d);
         start_[(f * cells_ + i) * cells_ + j] = previous;
       }
-  if (climb) buildClimbGraph(hull);
+  if (climb) {
+    buildClimbGraph(hull);
+    settleCells(hull);
+  }
+}
+
+// A cell is the convex cone spanned by its four corner directions c. Its vertex w is the support along every d of the
+// cone with margin m |d| (|w| + |n|) over each neighbour n when c.(w - n) >= m |c| (|w| + |n|) at every corner (d is a
+// non-negative combination of the corners, and |d| <= the combination of their norms). The climb compares dot products
+// rounded within 3 eps |d| |.| each, and the lookup may place d a few eps outside its cell's cone: m = 64 eps leaves the
+// climb no neighbour to move to, with room for the test's own rounding (~6 eps; in double).
+template <class T> void SupportStartTable<T>::settleCells(const ConvexMesh<T>& hull) {
+  using W = double;
+  const W margin = W(64) * W(std::numeric_limits<T>::epsilon());
+  const auto wide = [](const Vec3<T>& x) { return Eigen::Matrix<W, 3, 1>(W(x.x()), W(x.y()), W(x.z())); };
+  for (std::uint32_t f = 0; f < 6; ++f)
+    for (std::uint32_t i = 0; i < cells_; ++i)
+      for (std::uint32_t j = 0; j < cells_; ++j) {
+        std::uint32_t& entry = start_[(f * cells_ + i) * cells_ + j];
+        const Eigen::Matrix<W, 3, 1> w = wide(hull.vertices[entry]);
+        bool everyCorner = true;
+        for (std::uint32_t corner = 0; corner < 4 && everyCorner; ++corner) {
+          const T u = T(2 * (i + corner / 2)) / T(cells_) - T(1), v = T(2 * (j + corner % 2)) / T(cells_) - T(1);
+          const Eigen::Matrix<W, 3, 1> c = wide(faceDirection(f, u, v));
+          for (std::uint32_t k = hull.adjacencyOffsets[entry]; k < hull.adjacencyOffsets[entry + 1] && everyCorner; ++k) {
+            const Eigen::Matrix<W, 3, 1> n = wide(hull.vertices[hull.adjacency[k]]);
+            everyCorner = c.dot(w - n) >= margin * c.norm() * (w.norm() + n.norm());
+          }
+        }
+        if (everyCorner) entry |= kSettled;
+      }
 }
 
 template <class T> void SupportStartTable<T>::buildClimbGraph(const ConvexMesh<T>& hull) {
@@ -113,14 +143,18 @@ template <class T> void SupportStartTable<T>::buildClimbGraph(const ConvexMesh<T
   }
 }
 
-template <class T> Vec3<T> SupportStartTable<T>::cellDirection(std::uint32_t face, std::uint32_t i, std::uint32_t j) const {
-  const T u = (T(2 * i + 1) / T(cells_)) - T(1), v = (T(2 * j + 1) / T(cells_)) - T(1);
+template <class T> Vec3<T> SupportStartTable<T>::faceDirection(std::uint32_t face, T u, T v) const {
   const T major = face % 2 == 0 ? T(1) : T(-1);
   switch (face / 2) {
-    case 0: return Vec3<T>(major, u, v).normalized();
-    case 1: return Vec3<T>(u, major, v).normalized();
-    default: return Vec3<T>(u, v, major).normalized();
+    case 0: return Vec3<T>(major, u, v);
+    case 1: return Vec3<T>(u, major, v);
+    default: return Vec3<T>(u, v, major);
   }
+}
+
+template <class T> Vec3<T> SupportStartTable<T>::cellDirection(std::uint32_t face, std::uint32_t i, std::uint32_t j) const {
+  const T u = (T(2 * i + 1) / T(cells_)) - T(1), v = (T(2 * j + 1) / T(cells_)) - T(1);
+  return faceDirection(face, u, v).normalized();
 }
 
 template <class T> const SupportStartTable<T>* supportStartTable(const std::shared_ptr<const ConvexMesh<T>>& mesh) {

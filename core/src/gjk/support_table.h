@@ -38,8 +38,17 @@ template <class T> class SupportStartTable {
   // Builds the table of `hull` (which needs vertex adjacency or is scanned exhaustively per cell).
   explicit SupportStartTable(const ConvexMesh<T>& hull);
 
+  // A cell's entry is its start vertex, with kSettled set when that vertex is the support along every direction of
+  // the cell by a margin above the climb's rounding (settleCells): the climb from it would not move, so the support
+  // is the entry itself, without a neighbour scan.
+  static constexpr std::uint32_t kSettled = 1u << 31;
+  static bool settled(std::uint32_t entry) { return (entry & kSettled) != 0; }
+  static std::uint32_t vertexOf(std::uint32_t entry) { return entry & ~kSettled; }
+
   // Start vertex for direction d (need not be unit); 0 for a zero or non-finite direction.
-  std::uint32_t lookup(const Vec3<T>& d) const {
+  std::uint32_t lookup(const Vec3<T>& d) const { return vertexOf(lookupEntry(d)); }
+  // The same with the cell's kSettled flag.
+  std::uint32_t lookupEntry(const Vec3<T>& d) const {
     const T ax = d.x() < T(0) ? -d.x() : d.x(), ay = d.y() < T(0) ? -d.y() : d.y(), az = d.z() < T(0) ? -d.z() : d.z();
     const T sum = ax + ay + az;  // NaN or inf when any component is
     if (!(sum > T(0)) || !(sum < std::numeric_limits<T>::infinity())) return 0;
@@ -78,7 +87,10 @@ template <class T> class SupportStartTable {
   // Unit centre direction of cell (face, i, j) (what the stored vertex is extreme along).
   Vec3<T> cellDirection(std::uint32_t face, std::uint32_t i, std::uint32_t j) const;
   std::uint32_t startOfCell(std::uint32_t face, std::uint32_t i, std::uint32_t j) const {
-    return start_[(face * cells_ + i) * cells_ + j];
+    return vertexOf(start_[(face * cells_ + i) * cells_ + j]);
+  }
+  bool cellSettled(std::uint32_t face, std::uint32_t i, std::uint32_t j) const {
+    return settled(start_[(face * cells_ + i) * cells_ + j]);
   }
 
  private:
@@ -97,6 +109,9 @@ template <class T> class SupportStartTable {
   std::uint32_t bestNeighbourSlot(std::uint32_t vertex, const Vec3<T>& d, T& best) const;
 
   void buildClimbGraph(const ConvexMesh<T>& hull);
+  void settleCells(const ConvexMesh<T>& hull);
+  // Direction (major, u, v) of a face's cube-map coordinates (u, v in [-1, 1]), unnormalised.
+  Vec3<T> faceDirection(std::uint32_t face, T u, T v) const;
 
   std::uint32_t cells_;
   T halfCells_;
