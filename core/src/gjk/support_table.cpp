@@ -66,7 +66,8 @@ template <class T> struct StartTableFront {
 std::uint32_t startTableCells(std::size_t vertexCount) { return vertexCount <= 64 ? 16u : 32u; }
 
 template <class T> SupportStartTable<T>::SupportStartTable(const ConvexMesh<T>& hull)
-    : cells_(startTableCells(hull.vertices.size())), halfCells_(T(cells_) / T(2)), start_(6 * cells_ * cells_, 0) {
+    : cells_(startTableCells(hull.vertices.size())), cellsT_(T(cells_)), halfCells_(T(cells_) / T(2)),
+      start_(6 * cells_ * cells_, 0) {
   const bool climb = hasAdjacency(hull);
   std::uint32_t previous = 0;
   for (std::uint32_t f = 0; f < 6; ++f)

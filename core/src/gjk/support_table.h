@@ -12,6 +12,7 @@
 // alive (a weak reference tells a live mesh from a dead one at a reused address). A small per-thread table in front
 // of the registry makes the usual lookup lock-free. Like every cooked-data cache in core, it assumes a mesh is not
 // modified after its first query.
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -49,7 +50,7 @@ template <class T> class SupportStartTable {
   std::uint32_t lookup(const Vec3<T>& d) const { return vertexOf(lookupEntry(d)); }
   // The same with the cell's kSettled flag.
   std::uint32_t lookupEntry(const Vec3<T>& d) const {
-    const T ax = d.x() < T(0) ? -d.x() : d.x(), ay = d.y() < T(0) ? -d.y() : d.y(), az = d.z() < T(0) ? -d.z() : d.z();
+    const T ax = std::abs(d.x()), ay = std::abs(d.y()), az = std::abs(d.z());
     const T sum = ax + ay + az;  // NaN or inf when any component is
     if (!(sum > T(0)) || !(sum < std::numeric_limits<T>::infinity())) return 0;
     // Face f = 2 * axis + (component < 0); (u, v) = the two other components.
@@ -99,7 +100,7 @@ template <class T> class SupportStartTable {
   std::uint32_t cellIndex(T c) const {
     const T x = c + halfCells_;
     if (!(x > T(0))) return 0;
-    if (!(x < T(cells_))) return cells_ - 1;
+    if (!(x < cellsT_)) return cells_ - 1;
     return static_cast<std::uint32_t>(x);
   }
 
@@ -114,6 +115,7 @@ template <class T> class SupportStartTable {
   Vec3<T> faceDirection(std::uint32_t face, T u, T v) const;
 
   std::uint32_t cells_;
+  T cellsT_;  // cells_ as T (the lookup compares with it)
   T halfCells_;
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> offsets_;    // padded CSR offsets, one run per vertex
