@@ -17,6 +17,8 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "gq/cooking.h"
 #include "gq/mesh_query.h"
@@ -94,6 +96,27 @@ Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const
   return s;
 }
 
+// The candidates of a boolean test in the order of their centroids' distance from the candidate volume's centre,
+// nearest first: they overlap the shape most often, and a test that wants one contact stops at the first hit (in the
+// bench's hull/sphere-mesh pairs the first hit came after ~5.7 exact GJK tests in the query's order). Distances are
+// taken in mesh space (the cooked triangles' vertex copies; a non-uniform scale only changes the order); ties keep
+// the query's order.
+template <class T>
+void nearestFirst(const gq::detail::MeshInstance<T>& instance, const Vec3<T>& centre, std::uint32_t* page,
+                  std::uint32_t count) {
+  if (count < 2) return;
+  thread_local std::vector<std::pair<T, std::uint32_t>> keyed;
+  keyed.clear();
+  const TriangleMesh<T>& m = instance.mesh;
+  const Vec3<T> c = T(3) * (instance.invScale * instance.pose.transformInv(centre));
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const Vec3<T>* v = &m.triangleVertices[3 * std::size_t(m.cookedIndex[page[i]])];
+    keyed.emplace_back((v[0] + v[1] + v[2] - c).squaredNorm(), page[i]);  // 9 |centroid - centre|^2
+  }
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (std::uint32_t i = 0; i < count; ++i) page[i] = keyed[i].second;
+}
+
 // Mesh first: b1 = triangle, normal from the mesh to the shape.
 template <class T>
 Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose,
@@ -130,6 +153,10 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
     nextPage = std::min(kTrianglePage, 4 * nextPage);
     Status s = findOverlapTriangleMesh(query, queryPose, mesh, meshPose, page, pageSize, start, overflow, count);
     if (!s.ok()) return s;
+    if (!withGeometry && !exactCandidates) {
+      if (!instance) instance.emplace(mesh, meshPose);
+      nearestFirst(*instance, queryPose.p, page, count);
+    }
     for (std::uint32_t i = 0; i < count; ++i) {
       PairContact<T> c;
       bool hit = true;
