@@ -138,7 +138,7 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
     ++it;
     // The support point along -v, written in the simplex's next slot: it joins the simplex unless GJK stops here.
     SupportPoint<T>& p = s.points[s.size];
-    p = supportOfDifference(sa, sb, Vec3<T>(-v));
+    supportOfDifference(sa, sb, Vec3<T>(-v), p);
     if (s.size > 0) {
       const T vNorm = v.norm();
       lowerBound = std::max(lowerBound, v.dot(p.w) / vNorm);

@@ -120,7 +120,9 @@ template <class T> class SupportMap {
   }
 
   // Point of the core farthest along the world direction d (need not be unit), in world space.
-  Vec3<T> operator()(const Vec3<T>& d) {
+  Vec3<T> operator()(const Vec3<T>& d) { return at(d); }
+  // The same, inline (supportOfDifference's one call does both shapes).
+  [[gnu::always_inline]] Vec3<T> at(const Vec3<T>& d) {
     switch (kind_) {
       case Kind::Point: return origin_;
       case Kind::Segment: {
@@ -154,13 +156,18 @@ template <class T> class SupportMap {
   bool cold_;  // no warm start given (ConvexShape::climbStart == 0): the first climb starts from sampledStart
 };
 
-// Support point of the Minkowski difference a - b along d: a = s_A(d), b = s_B(-d).
-template <class T> inline SupportPoint<T> supportOfDifference(SupportMap<T>& a, SupportMap<T>& b, const Vec3<T>& d) {
-  SupportPoint<T> p;
-  p.a = a(d);
-  p.b = b(-d);
+// Support point of the Minkowski difference a - b along d: a = s_A(d), b = s_B(-d), written to p. One call for both
+// shapes (GJK's and EPA's inner loops call it every step; two calls cost their frames and argument traffic twice).
+template <class T>
+[[gnu::noinline]] void supportOfDifference(SupportMap<T>& a, SupportMap<T>& b, const Vec3<T>& d, SupportPoint<T>& p) {
+  p.a = a.at(d);
+  p.b = b.at(Vec3<T>(-d));
   p.w = p.a - p.b;
   p.d = d;
+}
+template <class T> inline SupportPoint<T> supportOfDifference(SupportMap<T>& a, SupportMap<T>& b, const Vec3<T>& d) {
+  SupportPoint<T> p;
+  supportOfDifference(a, b, d, p);
   return p;
 }
 
