@@ -85,7 +85,7 @@ template <class T> inline std::uint32_t sampledStart(const ConvexMesh<T>& hull, 
 // Hull vertex extreme along the (scaled, local) direction: climb on large hulls with adjacency (from the start table's
 // vertex for d when there is a table, else from `hint`, or from a sampled start when `cold`), else scan.
 template <class T>
-inline std::uint32_t hullVertex(const ConvexMesh<T>& hull, const SupportStartTable<T>* table, bool climb, const Vec3<T>& d,
+[[gnu::always_inline]] inline std::uint32_t hullVertex(const ConvexMesh<T>& hull, const SupportStartTable<T>* table, bool climb, const Vec3<T>& d,
                                 std::uint32_t& hint, bool& cold) {
   if (!climb) return bruteForceVertex(hull, d);
   if (table && table->hasClimbGraph()) {
