@@ -476,10 +476,12 @@ bool innerPointInside(const ConvexMesh<S>& a, const ConvexMesh<S>& b, const Mat3
   if (!(len > S(0))) return false;
   const Vec3<S> u = d / len;
   const S margin = S(64) * std::numeric_limits<S>::epsilon() * (a.outerRadius + b.outerRadius + t.norm());
-  const Vec3<S> pa = a.center + a.innerRadius * u;  // in a, a's frame
-  if (insideHull(b, Vec3<S>(r.transpose() * (pa - t)), margin)) return true;
-  const Vec3<S> pb = cb - b.innerRadius * u;  // in b, a's frame
-  return insideHull(a, pb, margin);
+  // A point farther from a hull's centre than its outer ball is outside it: no plane to test (a false "outside" only
+  // leaves the pair to GJK).
+  const Vec3<S> pa = a.center + a.innerRadius * u;  // in a, a's frame, len - a.innerRadius from b's centre
+  if (len - a.innerRadius <= b.outerRadius && insideHull(b, Vec3<S>(r.transpose() * (pa - t)), margin)) return true;
+  const Vec3<S> pb = cb - b.innerRadius * u;  // in b, a's frame, len - b.innerRadius from a's centre
+  return len - b.innerRadius <= a.outerRadius && insideHull(a, pb, margin);
 }
 
 template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
