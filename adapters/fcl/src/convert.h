@@ -7,6 +7,7 @@
 // them. Convex (-> cookConvexMesh of its vertices) and triangle BVHModels (-> cookTriangleMesh, faceIndex = FCL's
 // triangle id) come from the cache (geometry_cache.h). Octrees and point clouds are not converted.
 #include <cstdint>
+#include <vector>
 #include <variant>
 
 #if defined(__SSE2__)
@@ -53,11 +54,19 @@ template <class T> struct CandidateVolume {
 
 // What the cache (geometry_cache.h) cooked once for a Convex or a BVHModel: the gq geometry and, for a Convex, its
 // candidate volume and its GJK support mapping at the identity pose (the table of start vertices found).
+// A hull's face planes packed two at a time (nx0 nx1 ny0 ny1 nz0 nz1 d0 d1; an odd count repeats the last plane):
+// the point-in-hull test of the Convex pairs reads them with packed loads.
+template <class T> struct HullPlanes {
+  std::vector<T> packed;
+  std::uint32_t pairs = 0;
+};
+
 template <class T> struct Cooked {
   FclShape shape = FclShape::Unsupported;
   const Geometry<T>* geometry = nullptr;
   const CandidateVolume<T>* candidate = nullptr;
   const gq::detail::ConvexShape<T>* support = nullptr;
+  const HullPlanes<T>* planes = nullptr;  // Convex: its face planes, packed for the point-in-hull test
 };
 
 template <class T> class Converted {

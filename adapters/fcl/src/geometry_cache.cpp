@@ -107,6 +107,7 @@ template <class T> struct Entry {
   Geometry<T> geometry;
   std::optional<CandidateVolume<T>> candidate;  // Convex
   std::optional<k::ConvexShape<T>> support;     // Convex: at the identity pose
+  HullPlanes<T> planes;                         // Convex: its face planes, packed
   const void* vertexArray = nullptr;            // Convex: its vertex vector (identity)
   std::optional<::fcl::Convex<T>> convexAlive;  // Convex: a copy sharing that vector keeps it alive
   std::uint64_t fingerprint = 0;                // BVHModel
@@ -124,6 +125,23 @@ template <class T> struct Key {
   }
 };
 
+template <class T> HullPlanes<T> packedPlanes(const ConvexMesh<T>& hull) {
+  HullPlanes<T> out;
+  const std::size_t n = hull.polygons.size();
+  out.pairs = std::uint32_t((n + 1) / 2);
+  out.packed.resize(8 * std::size_t(out.pairs));
+  for (std::size_t i = 0; i < 2 * std::size_t(out.pairs); ++i) {
+    const HullPolygon<T>& f = hull.polygons[std::min(i, n - 1)];
+    T* pair = &out.packed[8 * (i / 2)];
+    const std::size_t lane = i % 2;
+    pair[lane] = f.normal.x();
+    pair[2 + lane] = f.normal.y();
+    pair[4 + lane] = f.normal.z();
+    pair[6 + lane] = f.d;
+  }
+  return out;
+}
+
 template <class T> std::shared_ptr<const Entry<T>> cookConvex(const ::fcl::Convex<T>& convex) {
   auto e = std::make_shared<Entry<T>>();
   const auto& vertices = convex.getVertices();
@@ -137,6 +155,7 @@ template <class T> std::shared_ptr<const Entry<T>> cookConvex(const ::fcl::Conve
     CandidateVolume<T> candidate;
     if (candidateVolume(e->geometry, candidate).ok()) e->candidate = candidate;
     e->support = k::makeConvexShape(e->geometry, Transform<T>());
+    e->planes = packedPlanes(*hull);
   }
   return e;
 }
@@ -254,6 +273,7 @@ template <class T> void fill(const Entry<T>& e, Cooked<T>& out) {
   out.geometry = &e.geometry;
   out.candidate = e.candidate ? &*e.candidate : nullptr;
   out.support = e.support ? &*e.support : nullptr;
+  out.planes = &e.planes;
 }
 
 template <class T> void clearShared() {

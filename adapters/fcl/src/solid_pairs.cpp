@@ -14,6 +14,10 @@
 #include <limits>
 #include <utility>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 
 #include "custom/callback_queries.h"
 #include "fallback.h"
@@ -457,12 +461,28 @@ template <class S> bool fewFaces(const Cooked<S>& a, const Cooked<S>& b) {
   return a.support->hull->polygons.size() + b.support->hull->polygons.size() <= kInnerPointFaces;
 }
 
-// Whether point p (the hull's frame) lies inside `hull` by a margin: every face plane n.x + d <= -margin.
-template <class S> bool insideHull(const ConvexMesh<S>& hull, const Vec3<S>& p, S margin) {
-  for (const HullPolygon<S>& f : hull.polygons)
-    if (!(f.normal.dot(p) + f.d <= -margin)) return false;
+// Whether point p (the hull's frame) lies inside the hull of `planes` by a margin: every face plane n.x + d <= -margin,
+// the dot product formed as ConvexMesh's planes are, (nx px + ny py) + nz pz, then + d. Two planes a step.
+template <class S> bool insideHull(const HullPlanes<S>& planes, const Vec3<S>& p, S margin) {
+  const S* q = planes.packed.data();
+  for (std::uint32_t k = 0; k < planes.pairs; ++k, q += 8)
+    for (int lane = 0; lane < 2; ++lane)
+      if (!((q[lane] * p.x() + q[2 + lane] * p.y()) + q[4 + lane] * p.z() + q[6 + lane] <= -margin)) return false;
   return true;
 }
+#if defined(__SSE2__)
+template <> bool insideHull<double>(const HullPlanes<double>& planes, const Vec3<double>& p, double margin) {
+  const __m128d px = _mm_set1_pd(p.x()), py = _mm_set1_pd(p.y()), pz = _mm_set1_pd(p.z()), limit = _mm_set1_pd(-margin);
+  const double* q = planes.packed.data();
+  for (std::uint32_t k = 0; k < planes.pairs; ++k, q += 8) {
+    const __m128d s = _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_loadu_pd(q), px), _mm_mul_pd(_mm_loadu_pd(q + 2), py)),
+                                            _mm_mul_pd(_mm_loadu_pd(q + 4), pz)),
+                                 _mm_loadu_pd(q + 6));
+    if (_mm_movemask_pd(_mm_cmple_pd(s, limit)) != 3) return false;  // a NaN compares false: not inside
+  }
+  return true;
+}
+#endif
 
 // A point of each hull's inner ball towards the other hull's centre, inside the other hull (b's frame is (r, t) in
 // a's): a common point, beyond the inner balls' reach (hullBallsCertificate), without GJK. ~150 instructions on
@@ -470,7 +490,8 @@ template <class S> bool insideHull(const ConvexMesh<S>& hull, const Vec3<S>& p, 
 // as a separating plane (an Apart certificate) cost more than the GJK runs it saved (convex30 1,963, convex100
 // 1,617 -> 2,018): GJK's first support pair already separates most apart pairs.
 template <class S>
-bool innerPointInside(const ConvexMesh<S>& a, const ConvexMesh<S>& b, const Mat3<S>& r, const Vec3<S>& t) {
+bool innerPointInside(const Cooked<S>& hullA, const Cooked<S>& hullB, const Mat3<S>& r, const Vec3<S>& t) {
+  const ConvexMesh<S>&a = *hullA.support->hull, &b = *hullB.support->hull;
   const Vec3<S> cb = r * b.center + t, d = cb - a.center;
   const S len = d.norm();
   if (!(len > S(0))) return false;
@@ -479,9 +500,10 @@ bool innerPointInside(const ConvexMesh<S>& a, const ConvexMesh<S>& b, const Mat3
   // A point farther from a hull's centre than its outer ball is outside it: no plane to test (a false "outside" only
   // leaves the pair to GJK).
   const Vec3<S> pa = a.center + a.innerRadius * u;  // in a, a's frame, len - a.innerRadius from b's centre
-  if (len - a.innerRadius <= b.outerRadius && insideHull(b, Vec3<S>(r.transpose() * (pa - t)), margin)) return true;
+  if (len - a.innerRadius <= b.outerRadius && insideHull(*hullB.planes, Vec3<S>(r.transpose() * (pa - t)), margin))
+    return true;
   const Vec3<S> pb = cb - b.innerRadius * u;  // in b, a's frame, len - b.innerRadius from a's centre
-  return len - b.innerRadius <= a.outerRadius && insideHull(a, pb, margin);
+  return len - b.innerRadius <= a.outerRadius && insideHull(*hullA.planes, pb, margin);
 }
 
 template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
@@ -495,7 +517,7 @@ template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool check
     Mat3<S> r;
     Vec3<S> t;
     bInFrameOfA(a, b, r, t);
-    if (fewFaces(ca, cb) && innerPointInside(*ca.support->hull, *cb.support->hull, r, t)) {
+    if (fewFaces(ca, cb) && innerPointInside(ca, cb, r, t)) {
       hit = true;
       return Answer::Done;
     }
@@ -630,7 +652,7 @@ Answer convexConvexDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceRes
     Mat3<S> r;
     Vec3<S> t;
     bInFrameOfA(a, b, r, t);
-    overlapping = innerPointInside(*ca.support->hull, *cb.support->hull, r, t);
+    overlapping = innerPointInside(ca, cb, r, t);
   }
   if (overlapping) {
     writeOverlapping(out);
