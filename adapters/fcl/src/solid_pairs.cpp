@@ -431,7 +431,7 @@ template <class S> bool cookedHulls(Solid<S> a, Solid<S> b, Cooked<S>& ca, Cooke
          cachedGeometry(b.geometry, ::fcl::GEOM_CONVEX, cb) == Conversion::Ok;
 }
 
-template <class S> k::HullBalls<S> hullBalls(Solid<S> s, const Cooked<S>& c) {
+template <class S> [[gnu::always_inline]] inline k::HullBalls<S> hullBalls(Solid<S> s, const Cooked<S>& c) {
   const ConvexMesh<S>& m = *c.support->hull;
   return {s.tf->linear() * m.center + s.tf->translation(), m.innerRadius, m.outerRadius};
 }
