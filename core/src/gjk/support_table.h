@@ -204,7 +204,7 @@ inline std::uint32_t SupportStartTable<T>::bestNeighbourSlot(std::uint32_t verte
 }
 #endif
 
-// Cells per cube face for a hull of n vertices: a few cells per vertex on every face, 4 x 4 up to 8 x 8.
+// Cells per side of a cube face for a hull of n vertices (support_table.cpp).
 std::uint32_t startTableCells(std::size_t vertexCount);
 
 // The shared table of `mesh`, built on first use; nullptr for hulls of <= kStartTableMinVertices vertices.
