@@ -521,8 +521,8 @@ template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool check
       hit = true;
       return Answer::Done;
     }
-    const k::ConvexShape<S> sa = *ca.support;  // a copy: GJK writes its climbing hints into the shapes
-    const k::OverlapCertificate gjk = k::overlapByGjk(sa, placedHull(cb, r, t));
+    // overlapByGjk takes its own copy of a (GJK writes its climbing hints into the shapes it is given).
+    const k::OverlapCertificate gjk = k::overlapByGjk(*ca.support, placedHull(cb, r, t));
     hit = gjk == k::OverlapCertificate::Unknown
               ? k::overlapConvexShapes(*ca.geometry, Transform<S>(), *cb.geometry, Transform<S>(t, Quat<S>(r)))
               : gjk == k::OverlapCertificate::Overlapping;

@@ -571,13 +571,15 @@ bool overlapConvexShapesExact(const Geometry<T>& g0, const Transform<T>& p0, con
 
 }  // namespace
 
-template <class T> OverlapCertificate overlapByGjk(const ConvexShape<T>& a, const ConvexShape<T>& b) {
+template <class T> OverlapCertificate overlapByGjk(ConvexShape<T> a, const ConvexShape<T>& b) {
   const T band = kGjkOverlapBand<T> * std::max(a.size, b.size);
-  // Separated by more than the band: GJK's separating axis is conclusive.
-  ConvexShape<T> grown = a;
-  grown.margin += band;
+  // Separated by more than the band: GJK's separating axis is conclusive (a's own copy grown by the band).
+  const T margin = a.margin;
+  a.margin += band;
   GjkOverlapWitness<T> witness;
-  if (!gjkOverlap(grown, b, &witness)) return OverlapCertificate::Apart;
+  const bool grownOverlap = gjkOverlap(a, b, &witness);
+  a.margin = margin;
+  if (!grownOverlap) return OverlapCertificate::Apart;
   // Overlapping by more than the band: the cores' distance (rounded shells) or the origin's clearance inside
   // GJK's final tetrahedron (cores overlapping) proves it. The boolean run's own evidence usually suffices
   // (|v| bounds the cores' distance from above); otherwise a full distance query decides.
@@ -614,7 +616,7 @@ template bool overlapRoundedPolytope<float>(const RoundedCore<float>&, const Pol
 template bool penetrationRoundedPolytope<float>(const RoundedCore<float>&, const Polytope<float>&, Vec3<float>&, float&);
 template bool overlapPolytopes<float>(const Polytope<float>&, const Polytope<float>&);
 template bool penetrationPolytopes<float>(const Polytope<float>&, const Polytope<float>&, Vec3<float>&, float&);
-template OverlapCertificate overlapByGjk<float>(const ConvexShape<float>&, const ConvexShape<float>&);
+template OverlapCertificate overlapByGjk<float>(ConvexShape<float>, const ConvexShape<float>&);
 template bool overlapConvexShapes<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&);
 template std::shared_ptr<const PolytopeTopology> hullTopology<double>(const std::shared_ptr<const ConvexMesh<double>>&);
 template Polytope<double>& scratchPolytope<double>(int);
@@ -631,7 +633,7 @@ template bool overlapRoundedPolytope<double>(const RoundedCore<double>&, const P
 template bool penetrationRoundedPolytope<double>(const RoundedCore<double>&, const Polytope<double>&, Vec3<double>&, double&);
 template bool overlapPolytopes<double>(const Polytope<double>&, const Polytope<double>&);
 template bool penetrationPolytopes<double>(const Polytope<double>&, const Polytope<double>&, Vec3<double>&, double&);
-template OverlapCertificate overlapByGjk<double>(const ConvexShape<double>&, const ConvexShape<double>&);
+template OverlapCertificate overlapByGjk<double>(ConvexShape<double>, const ConvexShape<double>&);
 template bool overlapConvexShapes<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&);
 
 }  // namespace gq::detail

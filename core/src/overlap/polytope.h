@@ -114,7 +114,7 @@ template <class T> inline constexpr T kGjkOverlapBand = std::is_same_v<T, float>
 template <class T>
 bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);
 // Its GJK part on prepared shapes: Apart or Overlapping when GJK decides beyond the band, else Unknown (the exact
-// kernels' turn).
-template <class T> OverlapCertificate overlapByGjk(const ConvexShape<T>& a, const ConvexShape<T>& b);
+// kernels' turn). `a` is taken by value: the function grows its own copy by the band (a temporary is not copied).
+template <class T> OverlapCertificate overlapByGjk(ConvexShape<T> a, const ConvexShape<T>& b);
 
 }  // namespace gq::detail
