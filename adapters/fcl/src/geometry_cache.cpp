@@ -301,25 +301,39 @@ template <class T>
   return Conversion::Ok;
 }
 
+// A cooked Convex from this thread's mirror of its slots (false: not there, or stale).
+template <class T>
+[[gnu::always_inline]] inline bool convexHit(const ::fcl::CollisionGeometry<T>* g, std::uint64_t generation,
+                                             Cooked<T>& out) {
+  const std::size_t set = setOf(g);
+  const void* vertices = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
+  for (std::size_t way = 0; way < 2; ++way) {
+    const ConvexHit<T>& hit = tConvexHits<T>[2 * set + way];
+    if (hit.geometry == g && hit.vertexArray == vertices && hit.generation == generation &&
+        hit.entry->conversion == Conversion::Ok) {
+      tRecentWay<T>[set] = std::uint8_t(way);
+      fill(*hit.entry, out);
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 template <class T>
 Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
-  if (type == ::fcl::GEOM_CONVEX) {
-    const std::size_t set = setOf(g);
-    const void* vertices = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
-    for (std::size_t way = 0; way < 2; ++way) {
-      const ConvexHit<T>& hit = tConvexHits<T>[2 * set + way];
-      if (hit.geometry == g && hit.vertexArray == vertices &&
-          hit.generation == gGeneration<T>.load(std::memory_order_acquire) &&
-          hit.entry->conversion == Conversion::Ok) {
-        tRecentWay<T>[set] = std::uint8_t(way);
-        fill(*hit.entry, out);
-        return Conversion::Ok;
-      }
-    }
-  }
+  if (type == ::fcl::GEOM_CONVEX && convexHit(g, gGeneration<T>.load(std::memory_order_acquire), out))
+    return Conversion::Ok;
   return slowLookup(g, type, out);
+}
+
+template <class T>
+bool cachedHulls(const ::fcl::CollisionGeometry<T>* a, const ::fcl::CollisionGeometry<T>* b, Cooked<T>& ca,
+                 Cooked<T>& cb) {
+  const std::uint64_t generation = gGeneration<T>.load(std::memory_order_acquire);
+  return (convexHit(a, generation, ca) || slowLookup(a, ::fcl::GEOM_CONVEX, ca) == Conversion::Ok) &&
+         (convexHit(b, generation, cb) || slowLookup(b, ::fcl::GEOM_CONVEX, cb) == Conversion::Ok);
 }
 
 template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* g) {
@@ -334,6 +348,10 @@ void clearCached() {
   clearShared<double>();
 }
 
+template bool cachedHulls<float>(const ::fcl::CollisionGeometry<float>*, const ::fcl::CollisionGeometry<float>*,
+                                 Cooked<float>&, Cooked<float>&);
+template bool cachedHulls<double>(const ::fcl::CollisionGeometry<double>*, const ::fcl::CollisionGeometry<double>*,
+                                  Cooked<double>&, Cooked<double>&);
 template Conversion cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, ::fcl::NODE_TYPE, Cooked<float>&);
 template Conversion cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, ::fcl::NODE_TYPE,
                                            Cooked<double>&);

@@ -24,6 +24,11 @@ namespace gq::fcl::detail {
 template <class T>
 Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* geometry, ::fcl::NODE_TYPE type, Cooked<T>& out);
 
+// Two Convex geometries' cooked data at once (the Convex pairs): true when both are cooked hulls.
+template <class T>
+bool cachedHulls(const ::fcl::CollisionGeometry<T>* a, const ::fcl::CollisionGeometry<T>* b, Cooked<T>& ca,
+                 Cooked<T>& cb);
+
 template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* geometry);
 void clearCached();
 

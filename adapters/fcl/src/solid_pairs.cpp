@@ -427,8 +427,7 @@ Answer convertedDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult
 // Both Convex straight from the cache, without Converted objects (their construction and the node-type switch cost
 // ~50 instructions a call); false when either has no cooked hull.
 template <class S> bool cookedHulls(Solid<S> a, Solid<S> b, Cooked<S>& ca, Cooked<S>& cb) {
-  return cachedGeometry(a.geometry, ::fcl::GEOM_CONVEX, ca) == Conversion::Ok &&
-         cachedGeometry(b.geometry, ::fcl::GEOM_CONVEX, cb) == Conversion::Ok;
+  return cachedHulls(a.geometry, b.geometry, ca, cb);
 }
 
 template <class S> [[gnu::always_inline]] inline k::HullBalls<S> hullBalls(Solid<S> s, const Cooked<S>& c) {
