@@ -436,7 +436,7 @@ template <class S> [[gnu::always_inline]] inline k::HullBalls<S> hullBalls(Solid
 }
 
 template <class S>
-k::OverlapCertificate convexCertificate(Solid<S> a, Solid<S> b, const Cooked<S>& ca,
+[[gnu::always_inline]] inline k::OverlapCertificate convexCertificate(Solid<S> a, Solid<S> b, const Cooked<S>& ca,
                                         const Cooked<S>& cb) {
   return k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
 }
