@@ -225,11 +225,12 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
   if (hasSharpCore(a) && hasSharpCore(b)) {
     Vec3<T> dir = -v;  // towards the origin from the centre difference
     for (std::uint32_t it = 0; it < kGjkBooleanFastIterations; ++it) {
-      const SupportPoint<T> p = supportOfDifference(sa, sb, dir);
+      SupportPoint<T>& p = s.points[s.size];  // the simplex's next slot (booleanStep leaves at most three points)
+      supportOfDifference(sa, sb, dir, p);
       // Separating axis: h_D(dir) = dir.w below -(margins + tolerance) |dir|.
       if (dir.dot(p.w) < -(margins + tolerance) * dir.norm()) return false;
       if (alreadyInSimplex(s, p.w)) break;
-      s.points[s.size++] = p;
+      ++s.size;
       const BooleanStep<T> step = s.size == 1 ? BooleanStep<T>{Vec3<T>(-p.w), false} : booleanStep(s);
       if (step.enclosed) return overlapping(s, true, T(0));
       if (!(step.dir.squaredNorm() > T(0)) || !isFinite(step.dir)) break;

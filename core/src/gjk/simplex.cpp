@@ -109,9 +109,10 @@ template <class T>
 template <class T>
 Candidate<T> triangleCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
   const Vec3<T>&p0 = s.points[i].w, &p1 = s.points[j].w, &p2 = s.points[k].w;
-  const Vec3<T> n = (p1 - p0).cross(p2 - p0);
+  const Vec3<T> e1 = p1 - p0, e2 = p2 - p0;  // |p0 - p2| = |e2| exactly
+  const Vec3<T> n = e1.cross(e2);
   const T nn = n.squaredNorm();
-  const T edge2 = std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()});
+  const T edge2 = std::max({e1.squaredNorm(), (p2 - p1).squaredNorm(), e2.squaredNorm()});
   if (!(nn > kDegenerate<T> * edge2 * edge2 * kDegenerate<T>)) return bestEdge(s, i, j, k);
   PlaneProjection<T> pr = projectOrigin(p0, p1, p2, n, nn);
   // Past GJK's relative tolerance and past |p| itself (gjk/wide.h): recomputed from the widened points.
