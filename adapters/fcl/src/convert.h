@@ -61,12 +61,14 @@ template <class T> struct HullPlanes {
   std::uint32_t pairs = 0;
 };
 
+// No initialisers on purpose: cachedGeometry / cachedHulls write every field before a caller may read one (on Ok),
+// and the Convex pairs' two a call cost them as much as their last certificate saved.
 template <class T> struct Cooked {
-  FclShape shape = FclShape::Unsupported;
-  const Geometry<T>* geometry = nullptr;
-  const CandidateVolume<T>* candidate = nullptr;
-  const gq::detail::ConvexShape<T>* support = nullptr;
-  const HullPlanes<T>* planes = nullptr;  // Convex: its face planes, packed for the point-in-hull test
+  FclShape shape;
+  const Geometry<T>* geometry;
+  const CandidateVolume<T>* candidate;
+  const gq::detail::ConvexShape<T>* support;
+  const HullPlanes<T>* planes;  // Convex: its face planes, packed for the point-in-hull test
 };
 
 template <class T> class Converted {

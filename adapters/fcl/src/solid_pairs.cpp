@@ -505,7 +505,8 @@ bool innerPointInside(const Cooked<S>& hullA, const Cooked<S>& hullB, const Mat3
   return len - b.innerRadius <= a.outerRadius && insideHull(*hullA.planes, pb, margin);
 }
 
-template <class S> Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
+template <class S>
+[[gnu::always_inline]] inline Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   Cooked<S> ca, cb;
   if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
   const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
