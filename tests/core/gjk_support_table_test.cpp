@@ -33,16 +33,32 @@ template <class T> L exhaustiveMaximum(const gq::ConvexMesh<T>& hull, const VL& 
   return best;
 }
 
-// Cell centre of (face, i, j), written from the cube-map definition: face 2a + s is axis a with sign (-1)^s, the
-// other two axes in increasing order carry the cell's centre coordinates in [-1, 1].
-VL cellCentre(std::uint32_t face, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+// A direction of face f at cube-map coordinates (u, v) in [-1, 1], unnormalised, written from the cube-map
+// definition: face 2a + s is axis a with sign (-1)^s, the other two axes in increasing order carry u and v.
+VL faceDirection(std::uint32_t face, L u, L v) {
   const int axis = int(face / 2);
+  const std::array<int, 2> others = axis == 0 ? std::array<int, 2>{1, 2} : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
   VL d;
   d[axis] = face % 2 == 0 ? 1 : -1;
-  const std::array<int, 2> others = axis == 0 ? std::array<int, 2>{1, 2} : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
-  d[others[0]] = L(2 * i + 1) / L(k) - 1;
-  d[others[1]] = L(2 * j + 1) / L(k) - 1;
-  return d.normalized();
+  d[others[0]] = u;
+  d[others[1]] = v;
+  return d;
+}
+
+// Cell centre of (face, i, j) of a table with k cells a side (unit).
+VL cellCentre(std::uint32_t face, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+  return faceDirection(face, L(2 * i + 1) / L(k) - 1, L(2 * j + 1) / L(k) - 1).normalized();
+}
+
+// Calls visit(face, i, j) for every cell of a table with k cells a side; stops at the first fatal failure (an ASSERT
+// in visit ends the walk as it would end a loop in the test body).
+template <class Visit> void forEachCell(std::uint32_t k, Visit visit) {
+  for (std::uint32_t f = 0; f < 6; ++f)
+    for (std::uint32_t i = 0; i < k; ++i)
+      for (std::uint32_t j = 0; j < k; ++j) {
+        visit(f, i, j);
+        if (::testing::Test::HasFatalFailure()) return;
+      }
 }
 
 // Tolerance of a support value compared in long double: rounding of the vertices' dot products in T.
@@ -57,15 +73,14 @@ TYPED_TEST(GjkSupportTable, EveryCellStoresTheExhaustiveSupportOfItsCentreDirect
     const SupportStartTable<T> table(*hull);
     const std::uint32_t k = table.cellsPerSide();
     ASSERT_EQ(k, gq::detail::startTableCells(hull->vertices.size()));
-    for (std::uint32_t f = 0; f < 6; ++f)
-      for (std::uint32_t i = 0; i < k; ++i)
-        for (std::uint32_t j = 0; j < k; ++j) {
-          const VL d = cellCentre(f, i, j, k);
-          const std::uint32_t v = table.startOfCell(f, i, j);
-          ASSERT_LT(v, hull->vertices.size());
-          EXPECT_GE(toL(hull->vertices[v]).dot(d), exhaustiveMaximum(*hull, d) - supportSlack<T>())
-              << "hull of " << n << " points, cell " << f << "/" << i << "/" << j;
-        }
+    forEachCell(k, [&](std::uint32_t f, std::uint32_t i, std::uint32_t j) {
+      const VL d = cellCentre(f, i, j, k);
+      const std::uint32_t v = table.startOfCell(f, i, j);
+      ASSERT_LT(v, hull->vertices.size());
+      EXPECT_GE(toL(hull->vertices[v]).dot(d), exhaustiveMaximum(*hull, d) - supportSlack<T>())
+          << "hull of " << n << " points, cell " << f << "/" << i << "/" << j;
+    });
+    if (this->HasFatalFailure()) return;
   }
 }
 
@@ -112,17 +127,6 @@ TYPED_TEST(GjkSupportTable, LookupReturnsTheVertexOfTheCellContainingTheDirectio
   EXPECT_GT(checked, 19000);
 }
 
-// A direction of face f at cube-map coordinates (u, v) (the same definition as cellCentre, unnormalised).
-VL faceDirection(std::uint32_t face, L u, L v) {
-  const int axis = int(face / 2);
-  const std::array<int, 2> others = axis == 0 ? std::array<int, 2>{1, 2} : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
-  VL d;
-  d[axis] = face % 2 == 0 ? 1 : -1;
-  d[others[0]] = u;
-  d[others[1]] = v;
-  return d;
-}
-
 // A settled cell answers its vertex without a neighbour scan: that must be what the climb from it answers, for every
 // direction the lookup places in the cell (corners and edges of the cell included, where rounding decides the cell),
 // and the exhaustive support. Fails if settling ignores a neighbour or a corner, or if its margin is dropped.
@@ -135,25 +139,24 @@ TYPED_TEST(GjkSupportTable, ASettledCellsVertexIsTheClimbsAndTheExhaustiveSuppor
     const SupportStartTable<T> table(*hull);
     const std::uint32_t k = table.cellsPerSide();
     int settledCells = 0, settledLookups = 0;
-    for (std::uint32_t f = 0; f < 6; ++f)
-      for (std::uint32_t i = 0; i < k; ++i)
-        for (std::uint32_t j = 0; j < k; ++j) {
-          settledCells += table.cellSettled(f, i, j);
-          for (int sample = 0; sample < 12; ++sample) {
-            // The four corners, then points of the cell's edges and interior.
-            const L a = sample < 4 ? L(sample / 2) : sample < 8 ? L(rng.uniform(0, 1)) * (sample % 2) : L(rng.uniform(0, 1));
-            const L b = sample < 4 ? L(sample % 2) : sample < 8 ? L(sample % 4 < 2) : L(rng.uniform(0, 1));
-            const VL dl = faceDirection(f, (L(2 * i) + 2 * a) / L(k) - 1, (L(2 * j) + 2 * b) / L(k) - 1);
-            const gq::Vec3<T> d = (dl * L(rng.uniform(0.01, 100))).template cast<T>();
-            const std::uint32_t entry = table.lookupEntry(d);
-            if (!SupportStartTable<T>::settled(entry)) continue;
-            ++settledLookups;
-            const std::uint32_t v = SupportStartTable<T>::vertexOf(entry);
-            ASSERT_EQ(table.climb(*hull, d, v), v) << "hull of " << n << ", cell " << f << "/" << i << "/" << j;
-            ASSERT_GE(toL(hull->vertices[v]).dot(toL(d)), exhaustiveMaximum(*hull, toL(d)) - supportSlack<T>() * toL(d).norm())
-                << "hull of " << n << ", cell " << f << "/" << i << "/" << j;
-          }
-        }
+    forEachCell(k, [&](std::uint32_t f, std::uint32_t i, std::uint32_t j) {
+      settledCells += table.cellSettled(f, i, j);
+      for (int sample = 0; sample < 12; ++sample) {
+        // The four corners, then points of the cell's edges and interior.
+        const L a = sample < 4 ? L(sample / 2) : sample < 8 ? L(rng.uniform(0, 1)) * (sample % 2) : L(rng.uniform(0, 1));
+        const L b = sample < 4 ? L(sample % 2) : sample < 8 ? L(sample % 4 < 2) : L(rng.uniform(0, 1));
+        const VL dl = faceDirection(f, (L(2 * i) + 2 * a) / L(k) - 1, (L(2 * j) + 2 * b) / L(k) - 1);
+        const gq::Vec3<T> d = (dl * L(rng.uniform(0.01, 100))).template cast<T>();
+        const std::uint32_t entry = table.lookupEntry(d);
+        if (!SupportStartTable<T>::settled(entry)) continue;
+        ++settledLookups;
+        const std::uint32_t v = SupportStartTable<T>::vertexOf(entry);
+        ASSERT_EQ(table.climb(*hull, d, v), v) << "hull of " << n << ", cell " << f << "/" << i << "/" << j;
+        ASSERT_GE(toL(hull->vertices[v]).dot(toL(d)), exhaustiveMaximum(*hull, toL(d)) - supportSlack<T>() * toL(d).norm())
+            << "hull of " << n << ", cell " << f << "/" << i << "/" << j;
+      }
+    });
+    if (this->HasFatalFailure()) return;
     // Most cells of these hulls are settled (their speed depends on it).
     EXPECT_GT(settledCells, int(6 * k * k) / 2) << "hull of " << n;
     EXPECT_GT(settledLookups, 0);
@@ -330,14 +333,13 @@ TYPED_TEST(GjkSupportTable, NewMeshAtAFreedMeshAddressGetsItsOwnTable) {
     const SupportStartTable<T>* table = gq::detail::supportStartTable(hull);
     ASSERT_NE(table, nullptr);
     const std::uint32_t k = table->cellsPerSide();
-    for (std::uint32_t f = 0; f < 6; ++f)
-      for (std::uint32_t i = 0; i < k; ++i)
-        for (std::uint32_t j = 0; j < k; ++j) {
-          const VL d = cellCentre(f, i, j, k);
-          const std::uint32_t v = table->startOfCell(f, i, j);
-          ASSERT_LT(v, hull->vertices.size());
-          ASSERT_GE(toL(hull->vertices[v]).dot(d), exhaustiveMaximum(*hull, d) - supportSlack<T>()) << "round " << round;
-        }
+    forEachCell(k, [&](std::uint32_t f, std::uint32_t i, std::uint32_t j) {
+      const VL d = cellCentre(f, i, j, k);
+      const std::uint32_t v = table->startOfCell(f, i, j);
+      ASSERT_LT(v, hull->vertices.size());
+      ASSERT_GE(toL(hull->vertices[v]).dot(d), exhaustiveMaximum(*hull, d) - supportSlack<T>()) << "round " << round;
+    });
+    if (this->HasFatalFailure()) return;
   }
 }
 
