@@ -54,7 +54,8 @@ template <class T> struct CapsuleAxis {
 };
 template <class T>
 void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
-template <class T> void distanceSphereBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
+// The sphere's centre inside the box (sphere_box.cpp); distanceSphereBox below answers every centre.
+template <class T> [[gnu::cold]] void distanceSphereInsideBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
 // A sphere (centre c in the cylinder's frame, whose axis is X) against a cylinder of radius r and half height hh
 // (sphere_cylinder.cpp); the result is in that frame.
 template <class T> void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local);
@@ -102,11 +103,12 @@ template <class T>
 }
 
 // Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide (+X when
-// not given). d = |c1 - c0| - r0 - r1 along n = (c1 - c0) / |c1 - c0|; witnesses c0 + r0 n and c1 - r1 n. Inline:
-// the building block of sphere/sphere, sphere/capsule and capsule/capsule, where a call and its spills cost ~20
-// instructions. The inputs are read before `out` is written (the caller's centres may live in it).
+// not given). d = |c1 - c0| - r0 - r1 along n = (c1 - c0) / |c1 - c0|; witnesses c0 + r0 n and c1 - r1 n. Always
+// inline: the building block of sphere/sphere, sphere/capsule, sphere/box and capsule/capsule, where a call and its
+// spills cost ~20 instructions (plain `inline` was dropped by GCC once it had four callers). The inputs are read
+// before `out` is written (the caller's centres may live in it).
 template <class T>
-inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>* fallback,
+[[gnu::always_inline]] inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>* fallback,
                           DistanceResult<T>& out) {
   const Vec3<T> p0 = c0, p1 = c1, delta = p1 - p0;
   const T len2 = delta.squaredNorm();
@@ -124,12 +126,25 @@ inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, cons
   out.point1 = p1 - r1 * n;
 }
 template <class T>
-inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback,
+[[gnu::always_inline]] inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback,
                           DistanceResult<T>& out) {
   ballsDistance(c0, r0, c1, r1, &fallback, out);
 }
-template <class T> inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, DistanceResult<T>& out) {
+template <class T>
+[[gnu::always_inline]] inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, DistanceResult<T>& out) {
   ballsDistance(c0, r0, c1, r1, static_cast<const Vec3<T>*>(nullptr), out);
+}
+
+// Sphere (centre c in the box's frame) vs box [-h, h], in that frame: outside, the closest box point is the
+// clamped centre. Inline: the FCL adapter's sphere-box distance is a few dozen instructions around it.
+template <class T>
+[[gnu::always_inline]] inline void distanceSphereBox(const Vec3<T>& c, T r0, const Vec3<T>& h, DistanceResult<T>& local) {
+  const Vec3<T> q = c.cwiseMax(-h).cwiseMin(h);
+  if (q != c) [[likely]] {
+    ballsDistance(c, r0, q, T(0), local);
+  } else {
+    distanceSphereInsideBox(c, r0, h, local);
+  }
 }
 
 }  // namespace gq::detail

@@ -5,10 +5,9 @@
 #include "distance/distance.h"
 
 namespace gq::detail {
-namespace {
 
 // Centre c inside the box: the face axis with the least room h_i - |c_i|.
-template <class T> void insideBox(const Vec3<T>& c, const Vec3<T>& h, T r, DistanceResult<T>& local) {
+template <class T> void distanceSphereInsideBox(const Vec3<T>& c, T r, const Vec3<T>& h, DistanceResult<T>& local) {
   Eigen::Index axis;
   const Vec3<T> room = h - c.cwiseAbs();
   room.minCoeff(&axis);
@@ -19,17 +18,6 @@ template <class T> void insideBox(const Vec3<T>& c, const Vec3<T>& h, T r, Dista
   local.distance = -(room[axis] + r);
   local.point0 = c + r * local.normal;
   local.point1 = face;
-}
-
-}  // namespace
-
-template <class T> void distanceSphereBox(const Vec3<T>& c, T r0, const Vec3<T>& h, DistanceResult<T>& local) {
-  const Vec3<T> q = c.cwiseMax(-h).cwiseMin(h);
-  if (q != c) {
-    ballsDistance(c, r0, q, T(0), local);
-  } else {
-    insideBox(c, h, r0, local);
-  }
 }
 
 template <class T>
@@ -45,7 +33,7 @@ void distanceSphereBox(const SphereGeometry<T>& g0, const Transform<T>& pose0, c
 
 template void distanceSphereBox<float>(const SphereGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distanceSphereBox<double>(const SphereGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
-template void distanceSphereBox<float>(const Vec3<float>&, float, const Vec3<float>&, DistanceResult<float>&);
-template void distanceSphereBox<double>(const Vec3<double>&, double, const Vec3<double>&, DistanceResult<double>&);
+template void distanceSphereInsideBox<float>(const Vec3<float>&, float, const Vec3<float>&, DistanceResult<float>&);
+template void distanceSphereInsideBox<double>(const Vec3<double>&, double, const Vec3<double>&, DistanceResult<double>&);
 
 }  // namespace gq::detail

@@ -35,10 +35,11 @@ void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Mat3<T>& rotationA, c
 }
 
 // First search direction: the cached one (a's local frame), else the centre difference, else +X.
-template <class T> Vec3<T> initialDirection(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkCache<T>* cache) {
+template <class T>
+Vec3<T> initialDirection(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkCache<T>* cache, const Vec3<T>* start) {
   if (cache && cache->direction.squaredNorm() > T(0) && isFinite(cache->direction))
     return a.rotation * cache->direction;
-  const Vec3<T> d = a.center() - b.center();
+  const Vec3<T> d = start ? *start : Vec3<T>(a.center() - b.center());
   return d.squaredNorm() > T(0) ? d : Vec3<T>(Vec3<T>::UnitX());
 }
 
@@ -76,9 +77,9 @@ template <class T> void unscale(GjkResult<T>& r, T back) {
 
 template <class T>
 [[gnu::noinline]] void distanceRescaled(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache,
-                                        T stopTolerance, T factor, GjkResult<T>& r) {
+                                        T stopTolerance, const Vec3<T>* start, T factor, GjkResult<T>& r) {
   const ConvexShape<T> sa = scaledShape(a, factor), sb = scaledShape(b, factor);
-  r = gjkDistance(sa, sb, cache, stopTolerance * factor);
+  r = gjkDistance(sa, sb, cache, stopTolerance * factor, start);  // a direction: the same at every scale
   unscale(r, T(1) / factor);
   keepHints(sa, a), keepHints(sb, b);
 }
@@ -99,18 +100,19 @@ template <class T>
 }  // namespace
 
 template <class T>
-GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache, T stopTolerance) {
+GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache, T stopTolerance,
+                         const Vec3<T>* start) {
   const T length = gjkPairLength(a, b);
   GjkResult<T> r;
   if (needsRescale(length)) {
-    distanceRescaled(a, b, cache, stopTolerance, rescaleFactor(length), r);
+    distanceRescaled(a, b, cache, stopTolerance, start, rescaleFactor(length), r);
     return r;
   }
   const T tolerance = gjkToleranceFor(length);
   const T gapTolerance = std::max(tolerance, stopTolerance);  // overlap is still decided at `tolerance`
   SupportMap<T> sa(a), sb(b);
   GjkSimplex<T>& s = r.simplex;
-  Vec3<T> v = initialDirection(a, b, cache);
+  Vec3<T> v = initialDirection(a, b, cache, start);
   std::array<T, 4> lambda = {T(1), T(0), T(0), T(0)};
   T lowerBound = T(0);  // best lower bound of the core distance seen so far
   T gapBound = std::numeric_limits<T>::infinity();
@@ -219,7 +221,7 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
   const T margins = a.margin + b.margin;
   SupportMap<T> sa(a), sb(b);
   GjkSimplex<T> s;
-  Vec3<T> v = initialDirection<T>(a, b, nullptr);
+  Vec3<T> v = initialDirection<T>(a, b, nullptr, nullptr);
   // Polytope-like cores (no rounded shell of their own): the direction-only loop decides almost every pair; what it
   // cannot decide (cores within the margins, degenerate simplices) goes to the full loop below, from scratch.
   if (hasSharpCore(a) && hasSharpCore(b)) {
@@ -264,9 +266,9 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
 }
 
 template GjkResult<float> gjkDistance<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkCache<float>*,
-                                             float);
+                                             float, const Vec3<float>*);
 template GjkResult<double> gjkDistance<double>(const ConvexShape<double>&, const ConvexShape<double>&,
-                                               GjkCache<double>*, double);
+                                               GjkCache<double>*, double, const Vec3<double>*);
 template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkOverlapWitness<float>*);
 template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkOverlapWitness<double>*);
 

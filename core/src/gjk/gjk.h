@@ -117,9 +117,11 @@ template <class T> void writeSeparated(const GjkResult<T>& g, DistanceResult<T>&
 // `stopTolerance` (optional, absolute): stop once the certified error bound (the duality gap) is below
 // max(gjkTolerance(a, b), stopTolerance), for a caller that asked for less (FCL's DistanceRequest::distance_tolerance);
 // whether the cores overlap is still decided at gjkTolerance. The default 0 leaves the stop rule as it is.
+// `start` (optional, world): the first search direction when there is no cache, for a caller that has the shapes'
+// centres at hand (a's minus b's); without it GJK places both shapes' centres itself.
 template <class T>
 GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache = nullptr,
-                         T stopTolerance = T(0));
+                         T stopTolerance = T(0), const Vec3<T>* start = nullptr);
 
 // What a positive gjkOverlap saw of the cores when it stopped: either a simplex enclosing the origin (cores
 // overlap) or a point of the cores' Minkowski difference, whose norm bounds the core distance from above.

@@ -41,7 +41,7 @@ template <class T> [[gnu::noinline]] void widenSegment(const Vec3<T>& p, const V
 }
 
 // Segment i-j: t = -p_i.(p_j - p_i) / |p_j - p_i|^2, clamped to the end points.
-template <class T> Candidate<T> segmentCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j) {
+template <class T> [[gnu::always_inline]] inline Candidate<T> segmentCandidate(const GjkSimplex<T>& s, std::uint32_t i, std::uint32_t j) {
   const Vec3<T>& p = s.points[i].w;
   const Vec3<T> e = s.points[j].w - p;
   const T ee = e.squaredNorm();
@@ -88,7 +88,7 @@ template <class W> struct PlaneProjection {
   W l0, l1;
 };
 template <class W>
-PlaneProjection<W> projectOrigin(const Eigen::Matrix<W, 3, 1>& p0, const Eigen::Matrix<W, 3, 1>& p1,
+[[gnu::always_inline]] inline PlaneProjection<W> projectOrigin(const Eigen::Matrix<W, 3, 1>& p0, const Eigen::Matrix<W, 3, 1>& p1,
                                  const Eigen::Matrix<W, 3, 1>& p2, const Eigen::Matrix<W, 3, 1>& n, W nn) {
   const Eigen::Matrix<W, 3, 1> p = n * (n.dot(p0) / nn);
   return {p, n.dot((p1 - p).cross(p2 - p)) / nn, n.dot((p2 - p).cross(p0 - p)) / nn};
