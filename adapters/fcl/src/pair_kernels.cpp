@@ -100,21 +100,30 @@ Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const
 // nearest first: they overlap the shape most often, and a test that wants one contact stops at the first hit (in the
 // bench's hull/sphere-mesh pairs the first hit came after ~5.7 exact GJK tests in the query's order). Distances are
 // taken in mesh space (the cooked triangles' vertex copies; a non-uniform scale only changes the order); ties keep
-// the query's order.
+// the query's order (the page position is the second key: std::sort then orders as a stable sort would, without
+// the temporary buffer std::stable_sort allocates on every call).
 template <class T>
 void nearestFirst(const gq::detail::MeshInstance<T>& instance, const Vec3<T>& centre, std::uint32_t* page,
                   std::uint32_t count) {
   if (count < 2) return;
-  thread_local std::vector<std::pair<T, std::uint32_t>> keyed;
+  struct Keyed {
+    T distanceSq;  // 9 |centroid - centre|^2
+    std::uint32_t position, triangle;
+  };
+  thread_local std::vector<Keyed> keyed;
   keyed.clear();
   const TriangleMesh<T>& m = instance.mesh;
   const Vec3<T> c = T(3) * (instance.invScale * instance.pose.transformInv(centre));
   for (std::uint32_t i = 0; i < count; ++i) {
     const Vec3<T>* v = &m.triangleVertices[3 * std::size_t(m.cookedIndex[page[i]])];
-    keyed.emplace_back((v[0] + v[1] + v[2] - c).squaredNorm(), page[i]);  // 9 |centroid - centre|^2
+    const T d = (v[0] + v[1] + v[2] - c).squaredNorm();
+    // NaN (an overflowing centre) would break the sort's ordering: such keys go last, as +inf.
+    keyed.push_back({d <= std::numeric_limits<T>::max() ? d : std::numeric_limits<T>::infinity(), i, page[i]});
   }
-  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (std::uint32_t i = 0; i < count; ++i) page[i] = keyed[i].second;
+  std::sort(keyed.begin(), keyed.end(), [](const Keyed& x, const Keyed& y) {
+    return x.distanceSq < y.distanceSq || (x.distanceSq == y.distanceSq && x.position < y.position);
+  });
+  for (std::uint32_t i = 0; i < count; ++i) page[i] = keyed[i].triangle;
 }
 
 // Mesh first: b1 = triangle, normal from the mesh to the shape.

@@ -86,9 +86,9 @@ template <class T>
 
 template <class T>
 [[gnu::noinline]] bool overlapRescaled(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness,
-                                       T factor) {
+                                       const Vec3<T>* start, T factor) {
   const ConvexShape<T> sa = scaledShape(a, factor), sb = scaledShape(b, factor);
-  const bool overlapping = gjkOverlap(sa, sb, witness);
+  const bool overlapping = gjkOverlap(sa, sb, witness, start);
   if (overlapping && witness) {
     scaleSimplex(witness->simplex, T(1) / factor);
     witness->coreDistanceUpper /= factor;
@@ -209,9 +209,10 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   return r;
 }
 
-template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness) {
+template <class T>
+bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness, const Vec3<T>* start) {
   const T length = gjkPairLength(a, b);
-  if (needsRescale(length)) return overlapRescaled(a, b, witness, rescaleFactor(length));
+  if (needsRescale(length)) return overlapRescaled(a, b, witness, start, rescaleFactor(length));
   // Positive answers leave the evidence: an enclosing simplex, or |v| (an upper bound of the cores' distance).
   const auto overlapping = [&](const GjkSimplex<T>& simplex, bool enclosing, T upper) {
     if (witness) *witness = {enclosing, simplex, upper};
@@ -221,7 +222,7 @@ template <class T> bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>
   const T margins = a.margin + b.margin;
   SupportMap<T> sa(a), sb(b);
   GjkSimplex<T> s;
-  Vec3<T> v = initialDirection<T>(a, b, nullptr, nullptr);
+  Vec3<T> v = initialDirection<T>(a, b, nullptr, start);
   // Polytope-like cores (no rounded shell of their own): the direction-only loop decides almost every pair; what it
   // cannot decide (cores within the margins, degenerate simplices) goes to the full loop below, from scratch.
   if (hasSharpCore(a) && hasSharpCore(b)) {
@@ -269,7 +270,9 @@ template GjkResult<float> gjkDistance<float>(const ConvexShape<float>&, const Co
                                              float, const Vec3<float>*);
 template GjkResult<double> gjkDistance<double>(const ConvexShape<double>&, const ConvexShape<double>&,
                                                GjkCache<double>*, double, const Vec3<double>*);
-template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkOverlapWitness<float>*);
-template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkOverlapWitness<double>*);
+template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkOverlapWitness<float>*,
+                                const Vec3<float>*);
+template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkOverlapWitness<double>*,
+                                 const Vec3<double>*);
 
 }  // namespace gq::detail

@@ -132,9 +132,11 @@ template <class T> struct GjkOverlapWitness {
 };
 
 // Boolean overlap of the full shapes (margins included); returns as soon as a separating axis is found.
-// Touching counts as overlapping. `witness` (optional) is written when the answer is true.
+// Touching counts as overlapping. `witness` (optional) is written when the answer is true. `start` (optional, world):
+// the first search direction, as gjkDistance's.
 template <class T>
-bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness = nullptr);
+bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitness<T>* witness = nullptr,
+                const Vec3<T>* start = nullptr);
 
 template <class T> struct EpaResult {
   Status status;                     // Ok, or NotConverged (best face found is reported)

@@ -60,7 +60,7 @@ template <class T> Vec3<T> unitNormal(const Triangle<T>& tri) {
 
 template <class T>
 TriangleQueryShape<T>::TriangleQueryShape(const Geometry<T>& geom, const Transform<T>& pose)
-    : type_(geom.type()), pose_(pose), convex_(makeConvexShape(geom, pose)), bounds_(shapeBounds(geom, pose)) {
+    : type_(geom.type()), pose_(pose), convex_(makeConvexShape(geom, pose)) {
   segA_ = segB_ = pose.p;
   if (const auto* s = geom.template getIf<SphereGeometry<T>>()) radius_ = s->radius;
   if (const auto* c = geom.template getIf<CapsuleGeometry<T>>()) {
@@ -75,7 +75,17 @@ TriangleQueryShape<T>::TriangleQueryShape(const Geometry<T>& geom, const Transfo
     ballRadius_ = b->halfExtents.norm();
   }
   hull_ = geom.template getIf<ConvexMeshGeometry<T>>();
-  ballPending_ = hull_ != nullptr;
+  ballPending_ = boundsPending_ = hull_ != nullptr;
+  if (!boundsPending_) bounds_ = shapeBounds(geom, pose);
+  if (type_ == GeometryType::ConvexMesh || type_ == GeometryType::Custom) centre_ = convex_.center();
+}
+
+template <class T> const Bounds3<T>& TriangleQueryShape<T>::worldBounds() const {
+  if (boundsPending_) {
+    bounds_ = boundsConvex(*hull_, pose_);
+    boundsPending_ = false;
+  }
+  return bounds_;
 }
 
 template <class T> T TriangleQueryShape<T>::distanceLowerBound(const Triangle<T>& tri) const {
@@ -94,9 +104,10 @@ template <class T> T TriangleQueryShape<T>::distanceLowerBound(const Triangle<T>
 }
 
 template <class T> Bounds3<T> TriangleQueryShape<T>::cullBounds() const {
-  const T scale = std::max({size(), bounds_.min.cwiseAbs().maxCoeff(), bounds_.max.cwiseAbs().maxCoeff()});
-  return Bounds3<T>::fromMinMax(bounds_.min.array() - T(tol::Rel<T>::kEpsilon) * scale,
-                                bounds_.max.array() + T(tol::Rel<T>::kEpsilon) * scale);
+  const Bounds3<T>& b = worldBounds();
+  const T scale = std::max({size(), b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()});
+  return Bounds3<T>::fromMinMax(b.min.array() - T(tol::Rel<T>::kEpsilon) * scale,
+                                b.max.array() + T(tol::Rel<T>::kEpsilon) * scale);
 }
 
 template <class T> bool TriangleQueryShape<T>::overlaps(const Triangle<T>& tri) const {
@@ -110,7 +121,9 @@ template <class T> bool TriangleQueryShape<T>::overlaps(const Triangle<T>& tri) 
     }
     default: {
       const SurfaceTriangleSupport<T> support(tri);
-      return gjkOverlap(convex_, support.shape());
+      const ConvexShape<T> triangle = support.shape();
+      const Vec3<T> start = centre_ - triangle.position;  // the shape's centre minus the triangle's centroid
+      return gjkOverlap(convex_, triangle, static_cast<GjkOverlapWitness<T>*>(nullptr), &start);
     }
   }
 }

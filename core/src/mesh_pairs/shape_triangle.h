@@ -37,10 +37,11 @@ template <class T> struct TrianglePush {
 
 template <class T> class TriangleQueryShape {
  public:
-  // geom must be a sphere, capsule, box, convex mesh or convex custom shape (checked by the façades).
+  // geom must be a sphere, capsule, box, convex mesh or convex custom shape (checked by the façades), and outlive
+  // this object: a hull's bounds and ball are read from it on the first ask.
   TriangleQueryShape(const Geometry<T>& geom, const Transform<T>& pose);
 
-  const Bounds3<T>& worldBounds() const { return bounds_; }
+  const Bounds3<T>& worldBounds() const;
   // Culling box: the world bounds grown by a relative epsilon, so touching triangles are never culled by rounding.
   Bounds3<T> cullBounds() const;
   T size() const { return convex_.size; }
@@ -66,8 +67,13 @@ template <class T> class TriangleQueryShape {
   T radius_ = T(0);                  // sphere, capsule
   Vec3<T> segA_, segB_;              // capsule segment (world); sphere: both are the centre
   Vec3<T> halfExtents_;              // box
-  Bounds3<T> bounds_;
   const ConvexMeshGeometry<T>* hull_ = nullptr;
+  // World bounds: a hull's on the first ask (a pass over its vertices that overlap tests never need), else at once.
+  mutable Bounds3<T> bounds_;
+  mutable bool boundsPending_ = false;
+  // GJK's first direction for a hull or custom shape against a triangle: from the shape's centre (world, placed
+  // once) to the triangle's centroid.
+  Vec3<T> centre_ = Vec3<T>::Zero();
   // A ball holding the shape (world), for distanceLowerBound: a box's at once, a hull's on the first ask (its
   // vertices' farthest from their centroid; overlap queries never need it).
   mutable Vec3<T> ballCentre_ = Vec3<T>::Zero();

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -20,6 +21,20 @@
 
 namespace gq::detail {
 
+// The next float below f: std::nextafter(f, -inf), inline (the libm call cost ~25 instructions, six a mesh query).
+// On the bits of a finite nonzero float, one step towards -inf is one less for a positive value and one more for a
+// negative one (+inf steps to the largest float, the largest negative float to -inf); -inf and NaN stay.
+inline float floatBelow(float f) {
+  if (!(f > -std::numeric_limits<float>::infinity())) return f;
+  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  bits = f > 0.0f ? bits - 1u : bits + 1u;
+  std::memcpy(&f, &bits, sizeof bits);
+  return f;
+}
+inline float floatAbove(float f) { return -floatBelow(-f); }
+
 // A float box containing the T box (rounded outward), for tests against the BVH's float node boxes.
 struct FloatBounds {
   float lo[3], hi[3];
@@ -27,8 +42,8 @@ struct FloatBounds {
 template <class T> FloatBounds toFloatBounds(const Bounds3<T>& b) {
   FloatBounds f;
   for (int i = 0; i < 3; ++i) {
-    f.lo[i] = std::nextafter(static_cast<float>(b.min[i]), -std::numeric_limits<float>::infinity());
-    f.hi[i] = std::nextafter(static_cast<float>(b.max[i]), std::numeric_limits<float>::infinity());
+    f.lo[i] = floatBelow(static_cast<float>(b.min[i]));
+    f.hi[i] = floatAbove(static_cast<float>(b.max[i]));
   }
   return f;
 }
@@ -73,16 +88,23 @@ template <class T> class MeshSurface {
       : geom_(g),
         inst_(g, pose),
         linear_(pose.q.toRotationMatrix() * inst_.scale),
-        invLinear_(inst_.invScale * pose.q.toRotationMatrix().transpose()) {}
+        invLinear_(inst_.invScale * pose.q.toRotationMatrix().transpose()),
+        translationOnly_(linear_ == Mat3<T>::Identity()) {}
 
   const TriangleMesh<T>& mesh() const { return inst_.mesh; }
   Bounds3<T> worldBounds() const { return boundsTriangleMesh(geom_, inst_.pose); }
   std::uint32_t inputIndex(std::uint32_t cooked) const { return inst_.mesh.inputIndex[cooked]; }
 
   // World triangle of a cooked triangle (vertices 1 and 2 swapped under a mirrored scale, as getTriangle).
+  // Without rotation or scale (the mesh queries' surface sits at the identity) the vertices are only moved: the
+  // same values as the product with the identity, without its ~50 instructions a triangle.
   Triangle<T> triangle(std::uint32_t cooked) const {
     const Vec3<T>* v = &inst_.mesh.triangleVertices[3 * std::size_t(cooked)];
     Triangle<T> t;
+    if (translationOnly_) {  // R S = I: det S = 1, no mirror
+      for (int k = 0; k < 3; ++k) t.verts[k] = v[k] + inst_.pose.p;
+      return t;
+    }
     t.verts[0] = linear_ * v[0] + inst_.pose.p;
     t.verts[1] = linear_ * v[inst_.flips ? 2 : 1] + inst_.pose.p;
     t.verts[2] = linear_ * v[inst_.flips ? 1 : 2] + inst_.pose.p;
@@ -143,6 +165,7 @@ template <class T> class MeshSurface {
   MeshInstance<T> inst_;
   Mat3<T> linear_;     // rotation * S: mesh space -> world, before translation
   Mat3<T> invLinear_;  // S^-1 * rotation^T
+  bool translationOnly_;  // linear_ is the identity
 };
 
 template <class T> class HeightFieldSurface {
