@@ -9,6 +9,11 @@
 #include <cstring>
 #include <limits>
 
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "fcl_scenes.h"
 #include "gq/fcl/fcl.h"
 
 namespace {
@@ -53,15 +58,17 @@ void expectNothingWritten(const ::fcl::CollisionGeometryd* g1, const ::fcl::Tran
     EXPECT_EQ(c.penetration_depth, 0.25);
     EXPECT_EQ(c.pos, Vector3d(1, 2, 3));
   }
-  Seeded s;
-  ::fcl::DistanceRequestd request(true);
-  request.enable_signed_distance = true;
-  EXPECT_EQ(gq::fcl::distance(g1, tf1, g2, tf2, request, s.distance), kNothing);
-  EXPECT_EQ(s.distance.min_distance, 5.0);
-  EXPECT_EQ(s.distance.b1, 7);
-  EXPECT_EQ(s.distance.b2, 8);
-  EXPECT_EQ(s.distance.nearest_points[0], Vector3d(1, 1, 1));
-  EXPECT_EQ(s.distance.nearest_points[1], Vector3d(2, 2, 2));
+  for (const bool signedDistance : {true, false}) {  // with a depth (GJK/EPA pairs convert) and without (fast paths)
+    Seeded s;
+    ::fcl::DistanceRequestd request(true);
+    request.enable_signed_distance = signedDistance;
+    EXPECT_EQ(gq::fcl::distance(g1, tf1, g2, tf2, request, s.distance), kNothing);
+    EXPECT_EQ(s.distance.min_distance, 5.0);
+    EXPECT_EQ(s.distance.b1, 7);
+    EXPECT_EQ(s.distance.b2, 8);
+    EXPECT_EQ(s.distance.nearest_points[0], Vector3d(1, 1, 1));
+    EXPECT_EQ(s.distance.nearest_points[1], Vector3d(2, 2, 2));
+  }
 }
 
 // Both argument orders, so that either side being bad is covered.
@@ -152,6 +159,40 @@ TEST(FclBadInput, ShearedLinearPartWritesNothingWhicheverEntryIsSheared) {
                   2.0, 1e-5)
           << row << ", " << col;
     }
+}
+
+TEST(FclBadInput, ADefectInEitherOfTwoCheckedTransformsWritesNothing) {
+  // Boxes, capsules, cylinders and hulls have both transforms checked in one pass, a lane each (bothRigid in
+  // adapters/fcl/src/convert.h): each defect in either transform, of either shape of the pair, writes nothing. Hulls
+  // also reject a reflection, which the symmetric shapes accept.
+  std::mt19937 rng(5);
+  std::vector<Vector3d> vertices;
+  std::vector<std::vector<int>> faces;
+  gq::fcltest::randomHull(rng, 30, vertices, faces);
+  const Geom hull = gq::fcltest::convexGeometry(vertices, faces), cube = box(1, 1, 1);
+  const Geom capsule = std::make_shared<::fcl::Capsuled>(0.3, 1), cylinder = std::make_shared<::fcl::Cylinderd>(0.4, 1);
+  const std::vector<std::pair<Geom, Geom>> pairs = {
+      {cube, cube}, {capsule, capsule}, {capsule, cube}, {cube, cylinder}, {hull, hull}};
+  std::vector<std::pair<const char*, ::fcl::Transform3d>> defects;
+  defects.emplace_back("NaN translation", at(0.3, kNaN, 0));
+  defects.emplace_back("infinite translation", at(0.3, 0, -kInf));
+  defects.emplace_back("NaN linear entry", at(0.3, 0, 0));
+  defects.back().second.linear()(2, 0) = kNaN;
+  defects.emplace_back("scaled", at(0.3, 0, 0));
+  defects.back().second.linear() *= 1.01;
+  defects.emplace_back("sheared", at(0.3, 0, 0));
+  defects.back().second.linear()(0, 1) = 0.05;
+  ::fcl::Transform3d reflected = at(0.3, 0, 0);
+  reflected.linear() = Eigen::Vector3d(1, -1, 1).asDiagonal();
+  for (const auto& [a, b] : pairs) {
+    for (const auto& [name, bad] : defects) {
+      SCOPED_TRACE(name);
+      expectNothingWrittenEitherOrder(a, bad, b, at(0, 0, 0));
+      expectNothingWrittenEitherOrder(b, bad, a, at(0, 0, 0));
+    }
+  }
+  SCOPED_TRACE("reflected hull");
+  expectNothingWrittenEitherOrder(hull, reflected, hull, at(0, 0, 0));
 }
 
 TEST(FclBadInput, BadInputThatOverlapsAsReadWritesNothingIntoAnEmptyResult) {

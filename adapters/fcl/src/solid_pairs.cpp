@@ -41,12 +41,6 @@ using FS = FclShape;
 // the translation is finite; a sphere's rotation is only checked finite (it does not move the sphere); other
 // linear parts must be orthonormal, which also rejects a non-finite entry (any NaN or inf makes the test false).
 
-// x * 0 is 0 for a finite x and NaN otherwise.
-template <class S> bool finiteTranslation(const Isometry<S>& tf) {
-  const S* m = tf.data();  // column-major 4x4: the translation starts at 12
-  return m[12] * S(0) + m[13] * S(0) + m[14] * S(0) == S(0);
-}
-
 template <class S> bool positive(S v) { return v > S(0) && v <= std::numeric_limits<S>::max(); }
 
 // Sizes are checked before any kernel runs (a few comparisons; the kernels' clamps need ordered bounds). The
@@ -76,20 +70,26 @@ template <class S> bool capsuleSized(Solid<S> s) {
 // two); a sphere and another shape: the sphere's reduced alone, the other's translation and linear part as above (the
 // orthonormality test fails on a non-finite entry; reducing both transforms cost sphere-box 3-14 more instructions).
 template <class S> bool rigidPose(Solid<S> s) { return finiteTranslation(*s.tf) && isOrthonormal(*s.tf); }
+// Two boxes, capsules, cylinders or hulls: both transforms in one pass (bothRigid).
+template <class S> bool rigidPoses(Solid<S> a, Solid<S> b) { return bothRigid<false>(*a.tf, *b.tf); }
 // Out of line: it runs on hits only, and inline its registers cost every call of sphereSphereOverlap.
 template <class S> [[gnu::noinline]] bool spherePoses(Solid<S> a, Solid<S> b) { return isFiniteTransforms(*a.tf, *b.tf); }
 template <class S> bool sphereRigidPoses(Solid<S> sphere, Solid<S> rigid) {
   return isFiniteTransform(*sphere.tf) && finiteTranslation(*rigid.tf) && isOrthonormal(*rigid.tf);
 }
 
-template <class S> bool readBox(Solid<S> s, Vec3<S>& half) {
-  half = boxHalf(s);
-  return boxSized(half) && rigidPose(s);
+template <class S> bool readBoxes(Solid<S> a, Solid<S> b, Vec3<S>& ha, Vec3<S>& hb) {
+  ha = boxHalf(a);
+  hb = boxHalf(b);
+  return boxSized(ha) && boxSized(hb) && rigidPoses(a, b);
 }
 
-template <class S> bool readCapsule(Solid<S> s, const Vec3<S>& origin, k::CapsuleAxis<S>& capsule) {
-  capsule = capsuleAxis(s, origin);
-  return capsuleSized(s) && rigidPose(s);
+// Both capsules, centred relative to `origin`.
+template <class S>
+bool readCapsules(Solid<S> a, Solid<S> b, const Vec3<S>& origin, k::CapsuleAxis<S>& ca, k::CapsuleAxis<S>& cb) {
+  ca = capsuleAxis(a, origin);
+  cb = capsuleAxis(b, origin);
+  return capsuleSized(a) && capsuleSized(b) && rigidPoses(a, b);
 }
 
 // collide writes only on a hit, and bad input must write nothing: a miss writes nothing whatever the transforms
@@ -208,14 +208,14 @@ template <class S> Answer capsuleCapsuleOverlap(Solid<S> a, Solid<S> b, bool che
   const k::CapsuleAxis<S> ca = capsuleAxis(a, origin), cb = capsuleAxis(b, origin);
   hit = k::overlapCapsuleCapsule<S>(ca.centre, ca.halfHeight * ca.axis, ca.radius, cb.centre, cb.halfHeight * cb.axis,
                                     cb.radius);
-  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return rigidPoses(a, b); });
 }
 
 template <class S>
 [[gnu::always_inline]] inline Answer capsuleCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   k::CapsuleAxis<S> ca, cb;
   const Vec3<S> origin = a.tf->translation();
-  if (!readCapsule(a, origin, ca) || !readCapsule(b, origin, cb)) return Answer::Invalid;
+  if (!readCapsules(a, b, origin, ca, cb)) return Answer::Invalid;
   k::distanceCapsuleCapsule<S>(ca, cb, out);
   shiftPoints(origin, ask.points, out);
   return Answer::Done;
@@ -236,12 +236,12 @@ template <class S> Answer capsuleBoxOverlap(Solid<S> a, Solid<S> b, bool checkMi
   Vec3<S> d;
   capsuleInBox(a, b, c, d);
   hit = k::overlapCapsuleBox<S>(c.centre, d, c.radius, h);
-  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return rigidPoses(a, b); });
 }
 
 template <class S> [[gnu::always_inline]] inline Answer capsuleBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   const Vec3<S> h = boxHalf(b);
-  if (!capsuleSized(a) || !boxSized(h) || !rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
+  if (!capsuleSized(a) || !boxSized(h) || !rigidPoses(a, b)) return Answer::Invalid;
   k::CapsuleAxis<S> c;
   Vec3<S> d;
   capsuleInBox(a, b, c, d);
@@ -269,7 +269,7 @@ template <class S> Answer boxBoxOverlap(Solid<S> a, Solid<S> b, bool checkMiss, 
   Mat3<S> r;
   bInFrameOfA(a, b, r, t);
   hit = k::overlapBoxBox<S>(ha, hb, r, t);
-  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return rigidPoses(a, b); });
 }
 
 // In box a's frame, core's closed form (distanceBoxBoxLocal); GJK/EPA in its rare overlapping parallel-face case.
@@ -278,7 +278,7 @@ template <class S> Answer boxBoxOverlap(Solid<S> a, Solid<S> b, bool checkMiss, 
 template <class S> [[gnu::always_inline]] inline Answer boxBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   Vec3<S> ha, hb, t;
   Mat3<S> r;
-  if (!readBox(a, ha) || !readBox(b, hb)) return Answer::Invalid;
+  if (!readBoxes(a, b, ha, hb)) return Answer::Invalid;
   bInFrameOfA(a, b, r, t);
   DistanceResult<S> local;
   if (!ask.depth) {
@@ -448,8 +448,8 @@ template <class S>
   return k::hullBallsCertificate(hullBalls(a, ca), hullBalls(b, cb));
 }
 
-// A hull is not symmetric: its linear part must be a rotation, not a reflection.
-template <class S> bool rotationPose(Solid<S> s) { return rigidPose(s) && positiveDeterminant(*s.tf); }
+// A hull is not symmetric: its linear part must be a rotation, not a reflection (both hulls' in one pass).
+template <class S> bool rotationPoses(Solid<S> a, Solid<S> b) { return bothRigid<true>(*a.tf, *b.tf); }
 
 // A Convex's support mapping (prepared by the cache at cooking) placed at (r, t): a copy, since the cached one is
 // shared between threads and GJK writes its climbing hints into the shapes it is given.
@@ -518,7 +518,7 @@ template <class S>
   if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
   const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
   if (certificate == k::OverlapCertificate::Unknown) {  // core's GJK, then its exact kernels within the band
-    if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
+    if (!rotationPoses(a, b)) return Answer::Invalid;
     // b in a's frame, as the façade runs its kernels (precision far from the origin), placed by FCL's matrices
     // as they are (a quaternion round trip cost ~400 instructions a call).
     Mat3<S> r;
@@ -536,7 +536,7 @@ template <class S>
     return Answer::Done;
   }
   hit = certificate == k::OverlapCertificate::Overlapping;
-  return validatedHit(hit || checkMiss, [&] { return rotationPose(a) && rotationPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return rotationPoses(a, b); });
 }
 
 // FCL's cylinder: radius and full length lz along local Z, valid as the conversion takes it (both positive).
@@ -582,7 +582,7 @@ template <class S> Answer boxCylinderOverlap(Solid<S> a, Solid<S> b, bool checkM
   if (!boxCylinderCertificate(a, b, certificate)) return Answer::Invalid;
   if (certificate == k::OverlapCertificate::Unknown) return convertedOverlap<S, FS::Box, FS::Cylinder>(a, b, hit);
   hit = certificate == k::OverlapCertificate::Overlapping;
-  return validatedHit(hit || checkMiss, [&] { return rigidPose(a) && rigidPose(b); });
+  return validatedHit(hit || checkMiss, [&] { return rigidPoses(a, b); });
 }
 
 // Sphere and cylinder: core's closed forms in the cylinder's frame, FCL's axis Z taken as core's X: core's
@@ -625,7 +625,7 @@ template <class S> [[gnu::always_inline]] inline Answer boxCylinderDistance(Soli
   CylinderInBox<S> c;
   if (!cylinderInBox(a, b, h, c)) return Answer::Invalid;
   const auto overlapping = [&] {
-    if (!rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
+    if (!rigidPoses(a, b)) return Answer::Invalid;
     writeOverlapping(out);
     return Answer::Done;
   };
@@ -633,7 +633,7 @@ template <class S> [[gnu::always_inline]] inline Answer boxCylinderDistance(Soli
   DistanceResult<S> local;
   switch (k::distanceBoxCylinderLocal<S>(h, c.centre, c.axis, c.radius, c.halfHeight, local)) {
     case k::BoxCylinderDistance::Separated:
-      if (!rigidPose(a) || !rigidPose(b)) return Answer::Invalid;
+      if (!rigidPoses(a, b)) return Answer::Invalid;
       frameToWorld(*a.tf, ask.points, local, out);
       return finiteResult(local) ? Answer::Done : Answer::Unanswered;
     case k::BoxCylinderDistance::Overlapping:
@@ -653,7 +653,7 @@ Answer convexConvexDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceRes
   if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
   const k::HullBalls<S> ba = hullBalls(a, ca), bb = hullBalls(b, cb);
   const k::OverlapCertificate balls = k::hullBallsCertificate(ba, bb);
-  if (!rotationPose(a) || !rotationPose(b)) return Answer::Invalid;
+  if (!rotationPoses(a, b)) return Answer::Invalid;
   // Overlapping by the inner balls, or by a point of one inner ball inside the other hull (b in a's frame).
   bool overlapping = balls == k::OverlapCertificate::Overlapping;
   if (balls == k::OverlapCertificate::Unknown && fewFaces(ca, cb)) {
