@@ -112,6 +112,18 @@ template <class S> [[gnu::always_inline]] inline Vec3<S> inFrame(const Isometry<
 
 // ---- results back to world ----
 
+// R v and R v + t on the 4x4's entries, inline (Eigen's products of its blocks ran out of line here, ~25 instructions
+// each with the call); the same sums, column by column.
+template <class S> [[gnu::always_inline]] inline Vec3<S> rotated(const Isometry<S>& tf, const Vec3<S>& v) {
+  const S* m = tf.data();  // column-major 4x4: the columns start at 0, 4, 8, the translation at 12
+  return Vec3<S>(m[0] * v.x() + m[4] * v.y() + m[8] * v.z(), m[1] * v.x() + m[5] * v.y() + m[9] * v.z(),
+                 m[2] * v.x() + m[6] * v.y() + m[10] * v.z());
+}
+template <class S> [[gnu::always_inline]] inline Vec3<S> placed(const Isometry<S>& tf, const Vec3<S>& v) {
+  const S* m = tf.data();
+  return rotated(tf, v) + Vec3<S>(m[12], m[13], m[14]);
+}
+
 template <class S> void frameToWorld(const Isometry<S>& tf, bool withPoints, const DistanceResult<S>& local,
                                      DistanceResult<S>& out) {
   out.distance = local.distance;
@@ -119,6 +131,18 @@ template <class S> void frameToWorld(const Isometry<S>& tf, bool withPoints, con
   if (!withPoints) return;
   out.point0 = tf * local.point0;
   out.point1 = tf * local.point1;
+}
+
+// A sphere (world centre c, radius r) against a shape whose frame is tf, the result in that frame: every sphere kernel
+// writes point0 = c_local + r n, so the world point0 is c + r (R n), one transform fewer than frameToWorld.
+template <class S>
+[[gnu::always_inline]] inline void sphereResultToWorld(const Isometry<S>& tf, const Vec3<S>& c, S r, bool withPoints,
+                                                       const DistanceResult<S>& local, DistanceResult<S>& out) {
+  out.distance = local.distance;
+  out.normal = rotated(tf, local.normal);
+  if (!withPoints) return;
+  out.point0 = c + r * out.normal;
+  out.point1 = placed(tf, local.point1);
 }
 
 template <class S> void shiftPoints(const Vec3<S>& origin, bool withPoints, DistanceResult<S>& out) {
@@ -144,10 +168,15 @@ template <class S> S stopTolerance(DistanceAsk ask) {
   return ask.tolerance > 0 && ask.tolerance <= double(std::numeric_limits<S>::max()) ? S(ask.tolerance) : S(0);
 }
 
-// Every number finite, by the x * 0 test on their sum (one comparison instead of ten classifications).
-template <class S> bool finiteResult(const DistanceResult<S>& r) {
+// Every number finite, by the x * 0 test on their sum (one comparison instead of ten classifications); a sum that
+// overflows (finite numbers near the largest double) fails it, and then each number is tested.
+template <class S> [[gnu::cold, gnu::noinline]] bool everyNumberFinite(const DistanceResult<S>& r) {
   const auto zeroed = r.point0.array() * S(0) + r.point1.array() * S(0) + r.normal.array() * S(0);
   return r.distance * S(0) + zeroed.sum() == S(0);
+}
+template <class S> bool finiteResult(const DistanceResult<S>& r) {
+  if ((r.distance + r.point0.sum() + r.point1.sum() + r.normal.sum()) * S(0) == S(0)) [[likely]] return true;
+  return everyNumberFinite(r);
 }
 
 // ---- primitive pairs, in core's order ----
@@ -197,8 +226,9 @@ template <class S> [[gnu::always_inline]] inline Answer sphereBoxDistance(Solid<
   const Vec3<S> hb = boxHalf(b);
   if (!positive(ra) || !boxSized(hb) || !sphereRigidPoses(a, b)) return Answer::Invalid;
   DistanceResult<S> local;
-  k::distanceSphereBox<S>(inFrame(*b.tf, Vec3<S>(a.tf->translation())), ra, hb, local);
-  frameToWorld(*b.tf, ask.points, local, out);
+  const Vec3<S> centre = a.tf->translation();
+  k::distanceSphereBox<S>(inFrame(*b.tf, centre), ra, hb, local);
+  sphereResultToWorld(*b.tf, centre, ra, ask.points, local, out);
   return Answer::Done;
 }
 
@@ -611,9 +641,8 @@ template <class S>
   DistanceResult<S> local;
   k::distanceSphereCylinder<S>(sphereInCylinder(a, b), ra, radius, halfHeight, local);
   local.normal = fclFromAxisX(local.normal);
-  local.point0 = fclFromAxisX(local.point0);
   local.point1 = fclFromAxisX(local.point1);
-  frameToWorld(*b.tf, ask.points, local, out);
+  sphereResultToWorld(*b.tf, Vec3<S>(a.tf->translation()), ra, ask.points, local, out);
   return finiteResult(local) ? Answer::Done : Answer::Unanswered;
 }
 
