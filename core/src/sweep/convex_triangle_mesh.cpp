@@ -11,31 +11,14 @@
 #include "gq/cooking.h"
 #include "bvh/traverse.h"
 #include "mesh/mesh_instance.h"
+#include "mesh_pairs/surface.h"
 #include "sweep/sweep.h"
 
 namespace gq::detail {
 namespace {
 
-// Float bounds of a T box, rounded outward, for the BVH's float node boxes.
-struct FloatBox {
-  float lo[3], hi[3];
-};
-template <class T> FloatBox toFloatBox(const Bounds3<T>& b) {
-  FloatBox f;
-  for (int i = 0; i < 3; ++i) {
-    f.lo[i] = std::nextafter(static_cast<float>(b.min[i]), -std::numeric_limits<float>::infinity());
-    f.hi[i] = std::nextafter(static_cast<float>(b.max[i]), std::numeric_limits<float>::infinity());
-  }
-  return f;
-}
-
-bool childOverlaps(const Bvh4Node& n, int lane, const FloatBox& q) {
-  return n.minX[lane] <= q.hi[0] && n.maxX[lane] >= q.lo[0] && n.minY[lane] <= q.hi[1] && n.maxY[lane] >= q.lo[1] &&
-         n.minZ[lane] <= q.hi[2] && n.maxZ[lane] >= q.lo[2];
-}
-
 // Cooked triangle indices in leaves whose boxes overlap `q`.
-void collectTriangles(const Bvh4& bvh, const FloatBox& q, std::vector<std::uint32_t>& out) {
+void collectTriangles(const Bvh4& bvh, const FloatBounds& q, std::vector<std::uint32_t>& out) {
   if (bvh.rootChild == Bvh4Node::kEmpty) return;
   std::vector<std::uint32_t> stack{bvh.rootChild};
   while (!stack.empty()) {
@@ -47,7 +30,7 @@ void collectTriangles(const Bvh4& bvh, const FloatBox& q, std::vector<std::uint3
     }
     const Bvh4Node& node = bvh.nodes[ref];
     for (int lane = 0; lane < 4; ++lane)
-      if (node.child[lane] != Bvh4Node::kEmpty && childOverlaps(node, lane, q)) stack.push_back(node.child[lane]);
+      if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q)) stack.push_back(node.child[lane]);
   }
 }
 
@@ -137,7 +120,7 @@ void sweepConvexTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, cons
   if (!(out.initialOverlap && q.mtd)) return;
   // The triangles overlapping at the start: those whose boxes meet the start box.
   std::vector<std::uint32_t> candidates;
-  collectTriangles(inst.mesh.bvh, toFloatBox(startBox), candidates);
+  collectTriangles(inst.mesh.bvh, toFloatBounds(startBox), candidates);
   TriangleMtdPicker<T> mtd;
   for (const std::uint32_t cooked : candidates) {
     const Triangle<T> tri = inst.worldTriangle(cooked);
