@@ -39,7 +39,8 @@ template <class T> struct SegmentClosest {
 // eps / sin^2 of the angle instead of eps / sin), which in float moved closest points by ~1e-3 along the segments.
 // Parallel segments (n = 0): any s on the common range is a minimiser; s = 0 is taken before the clamping.
 template <class T>
-SegmentClosest<T> closestSegmentSegment(const Vec3<T>& p0, const Vec3<T>& q0, const Vec3<T>& p1, const Vec3<T>& q1) {
+[[gnu::always_inline]] inline SegmentClosest<T> closestSegmentSegment(const Vec3<T>& p0, const Vec3<T>& q0,
+                                                                      const Vec3<T>& p1, const Vec3<T>& q1) {
   const Vec3<T> d0 = q0 - p0, d1 = q1 - p1, r = p0 - p1;
   const T a = d0.squaredNorm(), e = d1.squaredNorm(), f = d1.dot(r);
   T s = T(0), t = T(0);
