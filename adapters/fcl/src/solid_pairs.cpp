@@ -174,7 +174,7 @@ template <class S> [[gnu::cold, gnu::noinline]] bool everyNumberFinite(const Dis
   const auto zeroed = r.point0.array() * S(0) + r.point1.array() * S(0) + r.normal.array() * S(0);
   return r.distance * S(0) + zeroed.sum() == S(0);
 }
-template <class S> bool finiteResult(const DistanceResult<S>& r) {
+template <class S> [[gnu::always_inline]] inline bool finiteResult(const DistanceResult<S>& r) {
   if ((r.distance + r.point0.sum() + r.point1.sum() + r.normal.sum()) * S(0) == S(0)) [[likely]] return true;
   return everyNumberFinite(r);
 }
@@ -620,7 +620,7 @@ template <class S> Answer boxCylinderOverlap(Solid<S> a, Solid<S> b, bool checkM
 template <class S> Vec3<S> fclFromAxisX(const Vec3<S>& v) { return Vec3<S>(v.y(), v.z(), v.x()); }
 
 // The sphere's centre in the cylinder's frame, in core's axes.
-template <class S> Vec3<S> sphereInCylinder(Solid<S> sphere, Solid<S> cylinder) {
+template <class S> [[gnu::always_inline]] inline Vec3<S> sphereInCylinder(Solid<S> sphere, Solid<S> cylinder) {
   const Vec3<S> c = inFrame(*cylinder.tf, Vec3<S>(sphere.tf->translation()));
   return Vec3<S>(c.z(), c.x(), c.y());
 }
