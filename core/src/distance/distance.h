@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "common/unit_vector.h"
+#include "shapes/segment.h"
 #include "gq/geometry.h"
 #include "gq/query.h"
 #include "gq/transform.h"
@@ -59,7 +60,10 @@ template <class T> [[gnu::cold]] void distanceSphereInsideBox(const Vec3<T>& cIn
 // A sphere (centre c in the cylinder's frame, whose axis is X) against a cylinder of radius r and half height hh
 // (sphere_cylinder.cpp); the result is in that frame.
 template <class T> void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local);
-template <class T> void distanceCapsuleCapsule(const CapsuleAxis<T>& capsule0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
+// The normal of two capsules whose axes intersect (capsule_capsule.cpp): the minimum translation is along the common
+// perpendicular d0 x d1, oriented along `towards` (the Minkowski difference of two segments is flat), or orthogonal
+// to the axis when they are parallel.
+template <class T> [[gnu::cold]] Vec3<T> intersectingAxesNormal(const Vec3<T>& d0, const Vec3<T>& d1, const Vec3<T>& towards);
 // Capsule (segment c + s d, s in [-1, 1], radius r0) against the box [-h, h], exact (distance/capsule_box.cpp).
 template <class T>
 void distanceCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& dInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
@@ -145,6 +149,19 @@ template <class T>
   } else {
     distanceSphereInsideBox(c, r0, h, local);
   }
+}
+
+// Capsule vs capsule: balls at the closest points of the two segments (inline: the FCL adapter's capsule-capsule
+// distance is a few dozen instructions around it). The fallback normal is used only when the closest points
+// coincide (ballsDistance's |c1 - c0| = 0).
+template <class T>
+[[gnu::always_inline]] inline void distanceCapsuleCapsule(const CapsuleAxis<T>& k0, const CapsuleAxis<T>& k1,
+                                                          DistanceResult<T>& out) {
+  const Vec3<T> a0 = k0.halfHeight * k0.axis, a1 = k1.halfHeight * k1.axis;
+  const SegmentClosest<T> c = closestSegmentSegment<T>(k0.centre - a0, k0.centre + a0, k1.centre - a1, k1.centre + a1);
+  const bool coincide = !((c.c1 - c.c0).squaredNorm() > T(0));
+  const Vec3<T> fallback = coincide ? intersectingAxesNormal<T>(k0.axis, k1.axis, k1.centre - k0.centre) : Vec3<T>(Vec3<T>::UnitX());
+  ballsDistance(c.c0, k0.radius, c.c1, k1.radius, fallback, out);
 }
 
 }  // namespace gq::detail
