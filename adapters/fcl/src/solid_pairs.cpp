@@ -65,12 +65,11 @@ template <class S> bool capsuleSized(Solid<S> s) {
   return positive(c->radius) && c->lz >= S(0) && c->lz <= std::numeric_limits<S>::max();
 }
 
-// A sphere's transform: finite (its rotation does not move it). A box's or capsule's: a finite translation and an
-// orthonormal linear part. Two spheres' transforms are checked finite in one reduction (half the instructions of
-// two); a sphere and another shape: the sphere's reduced alone, the other's translation and linear part as above (the
-// orthonormality test fails on a non-finite entry; reducing both transforms cost sphere-box 3-14 more instructions).
-template <class S> bool rigidPose(Solid<S> s) { return finiteTranslation(*s.tf) && isOrthonormal(*s.tf); }
-// Two boxes, capsules, cylinders or hulls: both transforms in one pass (bothRigid).
+// A sphere's transform: finite (its rotation does not move it). A box's, capsule's or cylinder's: a finite
+// translation and an orthonormal linear part. Two spheres' transforms are checked finite in one reduction (half the
+// instructions of two); a sphere and another shape: the sphere's reduced alone, the other's translation and linear
+// part as above (the orthonormality test fails on a non-finite entry; reducing both transforms cost sphere-box 3-14
+// more instructions); two of the others: both in one pass (bothRigid, a lane each).
 template <class S> bool rigidPoses(Solid<S> a, Solid<S> b) { return bothRigid<false>(*a.tf, *b.tf); }
 // Out of line: it runs on hits only, and inline its registers cost every call of sphereSphereOverlap.
 template <class S> [[gnu::noinline]] bool spherePoses(Solid<S> a, Solid<S> b) { return isFiniteTransforms(*a.tf, *b.tf); }
