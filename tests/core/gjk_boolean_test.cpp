@@ -138,4 +138,41 @@ TYPED_TEST(GjkBoolean, OverlapAgreesWithTheExactSeparatingAxisAnswerOnRandomHull
   EXPECT_GT(separated, 300);
 }
 
+// The caller's first direction (gjkOverlap / gjkDistance `start`) is a hint: any direction (the centres' difference,
+// its opposite, a random one, zero, NaN, a huge one) gives the exact separating-axis answer and the exact distance of
+// separated hulls (brute force over feature pairs, long double).
+TYPED_TEST(GjkBoolean, AnyFirstDirectionGivesTheExactAnswer) {
+  using T = TypeParam;
+  Rng rng(811);
+  const double band = std::is_same_v<T, float> ? 1e-4 : 1e-9;
+  const double distanceTolerance = std::is_same_v<T, float> ? 2e-4 : 1e-9;
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  int separated = 0;
+  for (int i = 0; i < 300; ++i) {
+    const auto hullA = makeHull<T>(pointsOnEllipsoid<T>(rng, 16, Eigen::Vector3d(1, 0.8, 0.6)));
+    const auto hullB = makeHull<T>(pointsOnEllipsoid<T>(rng, 16, Eigen::Vector3d(0.7, 0.7, 0.4)));
+    const gq::Geometry<T> ga{gq::ConvexMeshGeometry<T>(hullA)}, gb{gq::ConvexMeshGeometry<T>(hullB)};
+    const gq::Transform<T> pa = randomPose<T>(rng, 1.2), pb = randomPose<T>(rng, 1.2);
+    const Polytope A = hullPolytope(*hullA, pa), B = hullPolytope(*hullB, pb);
+    const L exact = polytopePenetration(A, B);
+    if (std::abs(exact) < L(band)) continue;
+    const gq::detail::ConvexShape<T> a = gq::detail::makeConvexShape(ga, pa), b = gq::detail::makeConvexShape(gb, pb);
+    const gq::Vec3<T> centres = a.center() - b.center();
+    const std::vector<gq::Vec3<T>> starts = {centres, -centres, rng.vec(-1, 1).template cast<T>(), gq::Vec3<T>::Zero(),
+                                            gq::Vec3<T>(nan, T(0), T(0)), T(1e30) * centres};
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      SCOPED_TRACE(testing::Message() << "pose " << i << ", start " << k);
+      EXPECT_EQ(gq::detail::gjkOverlap(a, b, static_cast<gq::detail::GjkOverlapWitness<T>*>(nullptr), &starts[k]),
+                exact > 0);
+      if (exact > 0) continue;
+      const gq::detail::GjkResult<T> g = gq::detail::gjkDistance(a, b, static_cast<gq::GjkCache<T>*>(nullptr), T(0),
+                                                                 &starts[k]);
+      EXPECT_FALSE(g.coresOverlap);
+      EXPECT_NEAR(double(g.distance), double(polytopeDistance(A, B)), distanceTolerance);
+    }
+    if (exact < 0) ++separated;
+  }
+  EXPECT_GT(separated, 50);
+}
+
 }  // namespace
