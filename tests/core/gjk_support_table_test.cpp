@@ -72,7 +72,7 @@ TYPED_TEST(GjkSupportTable, EveryCellStoresTheExhaustiveSupportOfItsCentreDirect
     ASSERT_TRUE(hull);
     const SupportStartTable<T> table(*hull);
     const std::uint32_t k = table.cellsPerSide();
-    ASSERT_EQ(k, gq::detail::startTableCells(hull->vertices.size()));
+    ASSERT_EQ(k, gq::detail::kStartTableCells);
     forEachCell(k, [&](std::uint32_t f, std::uint32_t i, std::uint32_t j) {
       const VL d = cellCentre(f, i, j, k);
       const std::uint32_t v = table.startOfCell(f, i, j);

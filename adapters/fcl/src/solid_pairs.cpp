@@ -460,11 +460,8 @@ Answer convertedDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult
 
 // Two Convex: core's certificate on the cooked hulls' balls, placed by FCL's matrices (a Convex keeps FCL's frame);
 // the converted path (GJK) when it decides nothing. A hull is not symmetric: its linear part must be a rotation.
-// Both Convex straight from the cache, without Converted objects (their construction and the node-type switch cost
-// ~50 instructions a call); false when either has no cooked hull.
-template <class S> bool cookedHulls(Solid<S> a, Solid<S> b, Cooked<S>& ca, Cooked<S>& cb) {
-  return cachedHulls(a.geometry, b.geometry, ca, cb);
-}
+// Both Convex come straight from the cache (cachedHulls), without Converted objects (their construction and the
+// node-type switch cost ~50 instructions a call).
 
 template <class S> [[gnu::always_inline]] inline k::HullBalls<S> hullBalls(Solid<S> s, const Cooked<S>& c) {
   const ConvexMesh<S>& m = *c.support->hull;
@@ -544,7 +541,7 @@ bool innerPointInside(const Cooked<S>& hullA, const Cooked<S>& hullB, const Mat3
 template <class S>
 [[gnu::always_inline]] inline Answer convexConvexOverlap(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   Cooked<S> ca, cb;
-  if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
+  if (!cachedHulls(a.geometry, b.geometry, ca, cb)) return Answer::Invalid;
   const k::OverlapCertificate certificate = convexCertificate(a, b, ca, cb);
   if (certificate == k::OverlapCertificate::Unknown) {  // core's GJK, then its exact kernels within the band
     if (!rotationPoses(a, b)) return Answer::Invalid;
@@ -678,7 +675,7 @@ template <class S>
 Answer convexConvexDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
   if (ask.depth) return convertedDistance<S, FS::Convex, FS::Convex>(a, b, ask, out);
   Cooked<S> ca, cb;
-  if (!cookedHulls(a, b, ca, cb)) return Answer::Invalid;
+  if (!cachedHulls(a.geometry, b.geometry, ca, cb)) return Answer::Invalid;
   const k::HullBalls<S> ba = hullBalls(a, ca), bb = hullBalls(b, cb);
   const k::OverlapCertificate balls = k::hullBallsCertificate(ba, bb);
   if (!rotationPoses(a, b)) return Answer::Invalid;

@@ -34,7 +34,8 @@ void seedSimplex(SupportMap<T>& a, SupportMap<T>& b, const Mat3<T>& rotationA, c
   }
 }
 
-// First search direction: the cached one (a's local frame), else the centre difference, else +X.
+// First search direction: the cached one (a's local frame), else the caller's `start`, else the centre difference;
+// +X when that is zero or not finite.
 template <class T>
 Vec3<T> initialDirection(const ConvexShape<T>& a, const ConvexShape<T>& b, const GjkCache<T>* cache, const Vec3<T>* start) {
   if (cache && cache->direction.squaredNorm() > T(0) && isFinite(cache->direction))

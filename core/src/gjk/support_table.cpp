@@ -63,12 +63,8 @@ template <class T> struct StartTableFront {
 
 }  // namespace
 
-// 32 x 32 cells a face for every hull with a table (24 KB a hull, ~0.3-1 ms to build on first use): the count sets how
-// many cells settle (settleCells), 84 % / 71 % of the cells of 30 / 100-vertex hulls at 32 (43-48 % at 8 / 16).
-std::uint32_t startTableCells(std::size_t /*vertexCount*/) { return 32u; }
-
 template <class T> SupportStartTable<T>::SupportStartTable(const ConvexMesh<T>& hull)
-    : cells_(startTableCells(hull.vertices.size())), cellsT_(T(cells_)), halfCells_(T(cells_) / T(2)),
+    : cells_(kStartTableCells), cellsT_(T(cells_)), halfCells_(T(cells_) / T(2)),
       start_(6 * cells_ * cells_, 0) {
   const bool climb = hasAdjacency(hull);
   std::uint32_t previous = 0;

@@ -77,7 +77,7 @@ TriangleQueryShape<T>::TriangleQueryShape(const Geometry<T>& geom, const Transfo
   hull_ = geom.template getIf<ConvexMeshGeometry<T>>();
   ballPending_ = boundsPending_ = hull_ != nullptr;
   if (!boundsPending_) bounds_ = shapeBounds(geom, pose);
-  if (type_ == GeometryType::ConvexMesh || type_ == GeometryType::Custom) centre_ = convex_.center();
+  centre_ = convex_.center();
 }
 
 template <class T> const Bounds3<T>& TriangleQueryShape<T>::worldBounds() const {

@@ -45,7 +45,7 @@ template <class T> class TriangleQueryShape {
   // Culling box: the world bounds grown by a relative epsilon, so touching triangles are never culled by rounding.
   Bounds3<T> cullBounds() const;
   T size() const { return convex_.size; }
-  Vec3<T> center() const { return convex_.center(); }
+  Vec3<T> center() const { return centre_; }
 
   bool overlaps(const Triangle<T>& tri) const;
   // Distance to the triangle, >= 0 (0 in contact); point0 on the shape, point1 on the triangle, normal shape->triangle.
@@ -71,9 +71,9 @@ template <class T> class TriangleQueryShape {
   // World bounds: a hull's on the first ask (a pass over its vertices that overlap tests never need), else at once.
   mutable Bounds3<T> bounds_;
   mutable bool boundsPending_ = false;
-  // GJK's first direction for a hull or custom shape against a triangle: from the shape's centre (world, placed
-  // once) to the triangle's centroid.
-  Vec3<T> centre_ = Vec3<T>::Zero();
+  // A point inside the shape (world, placed once): center(), and GJK's first direction for a hull or custom shape
+  // against a triangle runs from it to the triangle's centroid.
+  Vec3<T> centre_;
   // A ball holding the shape (world), for distanceLowerBound: a box's at once, a hull's on the first ask (its
   // vertices' farthest from their centroid; overlap queries never need it).
   mutable Vec3<T> ballCentre_ = Vec3<T>::Zero();
