@@ -171,29 +171,48 @@ template <class T> void edgeCandidate(const BoxPair<T>& s, int i, int j, const V
   out.addEdge(c.c0, c.c1);
 }
 
-// One pass over the 15 SAT axes: the least normalised overlap and its axis (face axes win ties, as
-// leastOverlapAxis), the largest gap (negated overlap; positive: separated) and its axis, and each edge axis's gap.
+// The 15 SAT axes surveyed: the least normalised overlap and its axis (face axes win ties, as leastOverlapAxis),
+// which is also the largest gap's (negated overlap; positive: separated), and each edge axis's gap.
 template <class T> struct AxisSurvey {
-  T leastOverlap = std::numeric_limits<T>::max();
-  Vec3<T> leastAxis = Vec3<T>::UnitX();  // unit, towards box 1
-  T largestGap = -std::numeric_limits<T>::infinity();
-  Vec3<T> gapAxis = Vec3<T>::UnitX();     // unit, towards box 1
-  std::array<T, 9> edgeGap;               // e_i x r_j at 3 i + j; -inf for (nearly) parallel edges
+  T leastOverlap;
+  Vec3<T> leastAxis;         // unit, towards box 1
+  std::array<T, 9> edgeGap;  // e_i x r_j at 3 i + j; -inf for (nearly) parallel edges
 
-  bool separated() const { return largestGap > T(0); }
+  T largestGap() const { return -leastOverlap; }
+  bool separated() const { return largestGap() > T(0); }
 };
 
+// Every axis's normalised overlap is computed before any is compared, the edge axes' square roots and divisions two
+// to an instruction (Eigen's packets) and independent of the comparisons. Visiting the axes in turn (forEachBoxAxis)
+// chained each axis's square root and division to the previous comparison and assembled each edge axis in memory:
+// 56 % of an adapter box-box distance call's time by perf's samples; 302 -> 189 ns a call (session 24).
 template <class T> AxisSurvey<T> surveyAxes(const BoxPair<T>& s) {
+  std::array<BoxAxis<T>, 15> axes;
+  for (int i = 0; i < 3; ++i) axes[i] = faceAxisOfBox0(s, i);
+  for (int j = 0; j < 3; ++j) axes[3 + j] = faceAxisOfBox1(s, j);
+  Eigen::Array<T, 9, 1> lengthSq, scaled;
+#pragma GCC unroll 3
+  for (int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+    for (int j = 0; j < 3; ++j) {
+      BoxAxis<T>& e = axes[6 + 3 * i + j];
+      e = edgeAxisUnnormalised(s, i, j);
+      lengthSq[3 * i + j] = e.axis.squaredNorm();
+      scaled[3 * i + j] = e.overlap;
+    }
+  const T eps = T(tol::Rel<T>::kEpsilon);
+  const Eigen::Array<T, 9, 1> length = lengthSq.sqrt();
+  const Eigen::Array<T, 9, 1> edgeOverlap =
+      (lengthSq <= eps * eps).select(std::numeric_limits<T>::infinity(), scaled / length);  // parallel: no axis
+  std::array<T, 15> overlap;  // normalised
+  for (int k = 0; k < 6; ++k) overlap[k] = axes[k].overlap;
+  for (int k = 0; k < 9; ++k) overlap[6 + k] = edgeOverlap[k], axes[6 + k].length = length[k];
+  const auto least = std::min_element(overlap.begin(), overlap.end());  // the first of equals
+  const BoxAxis<T>& axis = axes[std::size_t(least - overlap.begin())];
   AxisSurvey<T> v;
-  v.edgeGap.fill(-std::numeric_limits<T>::infinity());
-  forEachBoxAxis(s, [&](const BoxAxis<T>& axis) {
-    const T overlap = axis.overlap / axis.length;
-    const auto towardsBox1 = [&] { return Vec3<T>((axis.gap > T(0) ? axis.axis : Vec3<T>(-axis.axis)) / axis.length); };
-    if (overlap < v.leastOverlap) v.leastOverlap = overlap, v.leastAxis = towardsBox1();
-    if (-overlap > v.largestGap) v.largestGap = -overlap, v.gapAxis = towardsBox1();
-    if (axis.edge0 >= 0) v.edgeGap[3 * axis.edge0 + axis.edge1] = -overlap;
-    return false;
-  });
+  v.leastOverlap = *least;
+  v.leastAxis = (axis.gap > T(0) ? axis.axis : Vec3<T>(-axis.axis)) / axis.length;
+  for (int k = 0; k < 9; ++k) v.edgeGap[k] = -overlap[6 + k];
   return v;
 }
 
@@ -201,13 +220,9 @@ template <class T> AxisSurvey<T> surveyAxes(const BoxPair<T>& s) {
 // axis's gap is a lower bound of the distance, so their axis has the largest gap of the 15 (within `slack`).
 template <class T> void edgeCandidates(const BoxPair<T>& s, const AxisSurvey<T>& survey, T slack, Candidates<T>& out) {
   for (int i = 0; i < 3; ++i) {
-    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
-      if (!(survey.edgeGap[3 * i + j] >= survey.largestGap - slack)) continue;
-      Vec3<T> n = Vec3<T>::Zero();  // e_i x r_j
-      n[i1] = -s.r(i2, j);
-      n[i2] = s.r(i1, j);
-      n.normalize();
+      if (!(survey.edgeGap[3 * i + j] >= survey.largestGap() - slack)) continue;
+      const Vec3<T> n = unitCross(i, Vec3<T>(s.r.col(j))).normalized();
       edgeCandidate(s, i, j, n.dot(s.t) < T(0) ? Vec3<T>(-n) : n, out);
     }
   }
@@ -277,7 +292,7 @@ template <class T> void separatedClosest(const BoxPair<T>& s, const AxisSurvey<T
   edgeCandidates(s, survey, slack, c);
   Candidate<T> best{c.least, Vec3<T>::Zero(), Vec3<T>::Zero(), false};
   T bestGap = -std::numeric_limits<T>::infinity();
-  Vec3<T> bestNormal = survey.gapAxis;
+  Vec3<T> bestNormal = survey.leastAxis;
   const auto certify = [&](const Candidate<T>& e) {
     const T d = std::sqrt(e.distSq);
     if (!(d > T(0))) return;  // touching to rounding: no direction of its own
@@ -287,7 +302,7 @@ template <class T> void separatedClosest(const BoxPair<T>& s, const AxisSurvey<T
   };
   // An edge pair at the largest gap (to rounding) is a closest pair: that gap is a lower bound of the distance. The
   // vertex candidates are needed only when no edge pair reaches it.
-  const T reach = survey.largestGap + slack;
+  const T reach = survey.largestGap() + slack;
   if (c.edgeCount > 0 && c.least <= reach * reach) {
     for (int k = 0; k < c.edgeCount; ++k)
       if (c.edges[k].distSq <= reach * reach) certify(c.edges[k]);

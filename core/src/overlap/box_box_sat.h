@@ -46,34 +46,64 @@ template <class T> struct BoxAxis {
   int edge0 = -1, edge1 = -1;  // an edge axis e_edge0 x r_edge1; -1 for face axes
 };
 
-// Calls visit(BoxAxis) for the 15 axes in the order face(0), face(1), edges; stops when visit returns true.
-// Edge axes of (nearly) parallel edges are skipped: they carry no facet of their own (same rule as the polytope SAT).
-template <class T, class Visit> void forEachBoxAxis(const BoxPair<T>& s, Visit&& visit) {
-  for (int i = 0; i < 3; ++i) {
-    const T rb = s.b.dot(s.absR.row(i).transpose());
-    if (visit(BoxAxis<T>{Vec3<T>::Unit(i), s.a[i] + rb - std::abs(s.t[i]), s.t[i], T(1)})) return;
-  }
-  for (int j = 0; j < 3; ++j) {
-    const T gap = s.t.dot(s.r.col(j));
-    const T ra = s.a.dot(s.absR.col(j));
-    if (visit(BoxAxis<T>{Vec3<T>(s.r.col(j)), ra + s.b[j] - std::abs(gap), gap, T(1)})) return;
-  }
+// Box 0's face axis e_i and box 1's r_j (unit).
+template <class T> [[gnu::always_inline]] inline BoxAxis<T> faceAxisOfBox0(const BoxPair<T>& s, int i) {
+  const T rb = s.b.dot(s.absR.row(i).transpose());
+  return BoxAxis<T>{Vec3<T>::Unit(i), s.a[i] + rb - std::abs(s.t[i]), s.t[i], T(1)};
+}
+template <class T> [[gnu::always_inline]] inline BoxAxis<T> faceAxisOfBox1(const BoxPair<T>& s, int j) {
+  const T gap = s.t.dot(s.r.col(j));
+  const T ra = s.a.dot(s.absR.col(j));
+  return BoxAxis<T>{Vec3<T>(s.r.col(j)), ra + s.b[j] - std::abs(gap), gap, T(1)};
+}
+
+// e_i x c, written out (components (i + 1, i + 2) = (-c[i + 2], c[i + 1]) mod 3, component i = 0): no products, and
+// built whole (set by index, a vector went through memory and its whole read stalled on the parts' writes).
+template <class T> [[gnu::always_inline]] inline Vec3<T> unitCross(int i, const Vec3<T>& c) {
+  if (i == 0) return Vec3<T>(T(0), -c.z(), c.y());
+  if (i == 1) return Vec3<T>(c.z(), T(0), -c.x());
+  return Vec3<T>(-c.y(), c.x(), T(0));
+}
+
+// The edge axis L = e_i x r_j: components (i1, i2) = (-r(i2, j), r(i1, j)), component i = 0, with its overlap and
+// centre gap scaled by |L|, length not yet taken. Callers unroll their loops over i and j, so that the index
+// arithmetic and unitCross's choice fold away.
+template <class T> [[gnu::always_inline]] inline BoxAxis<T> edgeAxisUnnormalised(const BoxPair<T>& s, int i, int j) {
+  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+  const Vec3<T> axis = unitCross(i, Vec3<T>(s.r.col(j)));
+  const T gap = s.t[i2] * s.r(i1, j) - s.t[i1] * s.r(i2, j);
+  const T ra = s.a[i1] * s.absR(i2, j) + s.a[i2] * s.absR(i1, j);
+  const T rb = s.b[j1] * s.absR(i, j2) + s.b[j2] * s.absR(i, j1);
+  return BoxAxis<T>{axis, ra + rb - std::abs(gap), gap, std::numeric_limits<T>::quiet_NaN(), i, j};
+}
+
+// The edge axis with its length, from L's components, not from 1 - r(i, j)^2, which cancels badly for nearly
+// parallel edges.
+template <class T> [[gnu::always_inline]] inline BoxAxis<T> edgeAxis(const BoxPair<T>& s, int i, int j) {
+  BoxAxis<T> e = edgeAxisUnnormalised(s, i, j);
+  e.length = std::sqrt(e.axis.squaredNorm());
+  return e;
+}
+
+// Edge axes of (nearly) parallel edges carry no facet of their own (same rule as the polytope SAT): not axes.
+template <class T> bool parallelEdges(const BoxAxis<T>& edge) {
   const T eps = T(tol::Rel<T>::kEpsilon);
+  return edge.axis.squaredNorm() <= eps * eps;
+}
+
+// Calls visit(BoxAxis) for the 15 axes in the order face(0), face(1), edges; stops when visit returns true.
+// Parallel edges' axes are skipped.
+template <class T, class Visit> void forEachBoxAxis(const BoxPair<T>& s, Visit&& visit) {
+  for (int i = 0; i < 3; ++i)
+    if (visit(faceAxisOfBox0(s, i))) return;
+  for (int j = 0; j < 3; ++j)
+    if (visit(faceAxisOfBox1(s, j))) return;
+#pragma GCC unroll 3
   for (int i = 0; i < 3; ++i) {
-    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+#pragma GCC unroll 3
     for (int j = 0; j < 3; ++j) {
-      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      // L = e_i x r_j: components (i1, i2) = (-r(i2, j), r(i1, j)), component i = 0. Its length comes from these
-      // components, not from 1 - r(i, j)^2, which cancels badly for nearly parallel edges.
-      Vec3<T> axis = Vec3<T>::Zero();
-      axis[i1] = -s.r(i2, j);
-      axis[i2] = s.r(i1, j);
-      const T sinSq = axis.squaredNorm();
-      if (sinSq <= eps * eps) continue;
-      const T gap = s.t[i2] * s.r(i1, j) - s.t[i1] * s.r(i2, j);
-      const T ra = s.a[i1] * s.absR(i2, j) + s.a[i2] * s.absR(i1, j);
-      const T rb = s.b[j1] * s.absR(i, j2) + s.b[j2] * s.absR(i, j1);
-      if (visit(BoxAxis<T>{axis, ra + rb - std::abs(gap), gap, std::sqrt(sinSq), i, j})) return;
+      const BoxAxis<T> axis = edgeAxis(s, i, j);
+      if (!parallelEdges(axis) && visit(axis)) return;
     }
   }
 }
