@@ -1,8 +1,9 @@
 // Sphere/cylinder closed forms. Overlap (overlap/sphere_cylinder.cpp, which the Cylinder's overlap callback answers
 // with): the boolean is the sign of GJK's certified distance outside a thin band, and a sphere tangent to the cap,
-// the side or the rim touches (overlaps) while 1e-3 farther out it does not. Distance (distance/sphere_cylinder.cpp,
-// the FCL adapter's): GJK's certified answer when apart, EPA's when the centre is outside the cylinder but the
-// sphere overlaps it, and radius + the least room to the cap or side when the centre is inside.
+// the side or the rim touches (overlaps) while 1e-3 farther out it does not. Distance (distance.h; the inside case
+// in distance/sphere_cylinder.cpp; the FCL adapter's): GJK's certified answer when apart, EPA's when the centre is
+// outside the cylinder but the sphere overlaps it, and radius + the least room to the cap or side when the centre is
+// inside.
 #include "gjk_test_shapes.h"
 
 #include "gq/custom_shapes.h"
@@ -90,6 +91,7 @@ TYPED_TEST(SphereCylinderOverlap, DistanceClosedFormIsGjksAnswerAndTheExitThroug
     const double t = separated ? tol : (std::is_same_v<T, float> ? 1e-3 : 1e-6);  // EPA when overlapping
     ASSERT_NEAR(double(got.distance), double(ref.distance), t) << "centre " << centre.transpose();
     ASSERT_NEAR(double((got.normal - ref.normal).norm()), 0.0, 10 * t) << "centre " << centre.transpose();
+    ASSERT_NEAR(double((got.point0 - ref.point0).norm()), 0.0, 10 * t) << "centre " << centre.transpose();
     ASSERT_NEAR(double((got.point1 - ref.point1).norm()), 0.0, 10 * t) << "centre " << centre.transpose();
     apart += separated;
   }

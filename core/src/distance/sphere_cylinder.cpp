@@ -1,6 +1,6 @@
-// Sphere vs cylinder, in the cylinder's frame (axis X, radius r, half height hh): outside, the cylinder's closest
-// point clamps the centre's axial coordinate to [-hh, hh] and its distance from the axis to r; inside, the sphere
-// leaves through the cap or the side with the least room (depth = radius + that room).
+// Sphere vs cylinder with the sphere's centre inside the cylinder (its frame: axis X, radius r, half height hh): the
+// sphere leaves through the cap or the side with the least room (depth = radius + that room). The outside cases are
+// inline (distance.h).
 #include <algorithm>
 #include <cmath>
 
@@ -8,15 +8,10 @@
 
 namespace gq::detail {
 
-template <class T> void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local) {
+template <class T> void distanceSphereInsideCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local) {
   const T rho = std::sqrt(c.y() * c.y() + c.z() * c.z());
   const Vec3<T> radial = rho > T(0) ? Vec3<T>(T(0), c.y() / rho, c.z() / rho) : Vec3<T>(Vec3<T>::UnitY());
   const T axialRoom = hh - std::abs(c.x()), radialRoom = r - rho;
-  if (axialRoom < T(0) || radialRoom < T(0)) {
-    const Vec3<T> q = Vec3<T>(std::clamp(c.x(), -hh, hh), T(0), T(0)) + std::min(rho, r) * radial;
-    ballsDistance(c, r0, q, T(0), local);
-    return;
-  }
   Vec3<T> exit = c;
   if (axialRoom <= radialRoom) {
     const T side = c.x() < T(0) ? T(-1) : T(1);
@@ -31,7 +26,7 @@ template <class T> void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh
   local.point1 = exit;
 }
 
-template void distanceSphereCylinder<float>(const Vec3<float>&, float, float, float, DistanceResult<float>&);
-template void distanceSphereCylinder<double>(const Vec3<double>&, double, double, double, DistanceResult<double>&);
+template void distanceSphereInsideCylinder<float>(const Vec3<float>&, float, float, float, DistanceResult<float>&);
+template void distanceSphereInsideCylinder<double>(const Vec3<double>&, double, double, double, DistanceResult<double>&);
 
 }  // namespace gq::detail
