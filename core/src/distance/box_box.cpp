@@ -245,7 +245,8 @@ template <class T> bool overFace(const Vec3<T>& p, const Vec3<T>& h, int axis) {
 // into that face, the vertex and its projection are a pair of points of the boxes whose distance is the gap along n.
 // Every axis's gap is a lower bound of the distance, so this pair is a closest pair (its direction proves the whole
 // distance, as separatedClosest's choice), whatever the edge axes would show.
-template <class T> bool faceCertificate(const BoxPair<T>& s, DistanceResult<T>& local) {
+// Inline: called out of line it read the pair its caller had just written (box-box distance 1,986 -> 1,914).
+template <class T> [[gnu::always_inline]] inline bool faceCertificate(const BoxPair<T>& s, DistanceResult<T>& local) {
   // The six face gaps: |t_i| - a_i - (box 1's extent along e_i), |t.r_j| - b_j - (box 0's extent along r_j).
   const Vec3<T> along1 = s.r.transpose() * s.t;
   const Vec3<T> gap0 = s.t.cwiseAbs() - s.a - s.absR * s.b;
