@@ -200,10 +200,9 @@ template <class T> AxisSurvey<T> surveyAxes(const BoxPair<T>& s) {
       lengthSq[3 * i + j] = e.axis.squaredNorm();
       scaled[3 * i + j] = e.overlap;
     }
-  const T eps = T(tol::Rel<T>::kEpsilon);
   const Eigen::Array<T, 9, 1> length = lengthSq.sqrt();
-  const Eigen::Array<T, 9, 1> edgeOverlap =
-      (lengthSq <= eps * eps).select(std::numeric_limits<T>::infinity(), scaled / length);  // parallel: no axis
+  const Eigen::Array<T, 9, 1> edgeOverlap =  // parallel edges (parallelEdges): no axis
+      (lengthSq <= parallelLengthSq<T>()).select(std::numeric_limits<T>::infinity(), scaled / length);
   std::array<T, 15> overlap;  // normalised
   for (int k = 0; k < 6; ++k) overlap[k] = axes[k].overlap;
   for (int k = 0; k < 9; ++k) overlap[6 + k] = edgeOverlap[k], axes[6 + k].length = length[k];

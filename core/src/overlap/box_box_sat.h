@@ -85,11 +85,13 @@ template <class T> [[gnu::always_inline]] inline BoxAxis<T> edgeAxis(const BoxPa
   return e;
 }
 
-// Edge axes of (nearly) parallel edges carry no facet of their own (same rule as the polytope SAT): not axes.
-template <class T> bool parallelEdges(const BoxAxis<T>& edge) {
+// Edge axes of (nearly) parallel edges carry no facet of their own (same rule as the polytope SAT): not axes. An
+// edge axis whose squared length is at most parallelLengthSq is one.
+template <class T> T parallelLengthSq() {
   const T eps = T(tol::Rel<T>::kEpsilon);
-  return edge.axis.squaredNorm() <= eps * eps;
+  return eps * eps;
 }
+template <class T> bool parallelEdges(const BoxAxis<T>& edge) { return edge.axis.squaredNorm() <= parallelLengthSq<T>(); }
 
 // Calls visit(BoxAxis) for the 15 axes in the order face(0), face(1), edges; stops when visit returns true.
 // Parallel edges' axes are skipped.
