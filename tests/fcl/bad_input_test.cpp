@@ -123,6 +123,16 @@ TEST(FclBadInput, FinitePosesWhoseEntriesSumPastTheLargestDoubleAreAnswered) {
                                           ::fcl::DistanceRequestd(true), d);
   EXPECT_NEAR(answer, 6e307, 6e307 * 1e-12);
   EXPECT_EQ(d.min_distance, answer);
+  // The same for a sphere against a box and a cylinder, whose check sums the sphere's entries with the other's
+  // translation.
+  const Geom cylinder = std::make_shared<::fcl::Cylinderd>(0.4, 1);
+  for (const Geom& other : {box(1, 1, 1), cylinder}) {
+    SCOPED_TRACE(other->getNodeType() == ::fcl::GEOM_BOX ? "box" : "cylinder");
+    ::fcl::DistanceResultd e;
+    EXPECT_NEAR(gq::fcl::distance(a.get(), at(1e308, 0, 0), other.get(), at(1.6e308, 0, 0),
+                                  ::fcl::DistanceRequestd(true), e), 6e307, 6e307 * 1e-12);
+    EXPECT_NEAR(e.min_distance, 6e307, 6e307 * 1e-12);
+  }
   ::fcl::CollisionResultd c;
   EXPECT_EQ(gq::fcl::collide(a.get(), at(1e308, 0, 0), b.get(), at(1e308, 0.5, 0), ::fcl::CollisionRequestd(), c), 1u);
 }

@@ -76,19 +76,19 @@ template <class S> [[gnu::noinline]] bool spherePoses(Solid<S> a, Solid<S> b) { 
 template <class S> bool sphereRigidPoses(Solid<S> sphere, Solid<S> rigid) {
   return isFiniteTransform(*sphere.tf) && finiteTranslation(*rigid.tf) && isOrthonormal(*rigid.tf);
 }
+// The same inline, for distance (a call there cost its caller ~25 instructions of spilled values and saved
+// registers): the sphere's entries and the other's translation column in one sum, finite only if each is (a
+// non-finite sum is a non-finite entry or an overflow of finite ones, which the exact tests tell apart).
+template <class S> [[gnu::always_inline]] inline bool sphereRigidPosesInline(Solid<S> sphere, Solid<S> rigid) {
+  const bool finite = (sphere.tf->matrix().sum() + rigid.tf->matrix().col(3).sum()) * S(0) == S(0) ||
+                      (everyEntryFinite(*sphere.tf) && finiteTranslation(*rigid.tf));
+  return finite && isOrthonormal(*rigid.tf);
+}
 
 template <class S> bool readBoxes(Solid<S> a, Solid<S> b, Vec3<S>& ha, Vec3<S>& hb) {
   ha = boxHalf(a);
   hb = boxHalf(b);
   return boxSized(ha) && boxSized(hb) && rigidPoses(a, b);
-}
-
-// Both capsules, centred relative to `origin`.
-template <class S>
-bool readCapsules(Solid<S> a, Solid<S> b, const Vec3<S>& origin, k::CapsuleAxis<S>& ca, k::CapsuleAxis<S>& cb) {
-  ca = capsuleAxis(a, origin);
-  cb = capsuleAxis(b, origin);
-  return capsuleSized(a) && capsuleSized(b) && rigidPoses(a, b);
 }
 
 // collide writes only on a hit, and bad input must write nothing: a miss writes nothing whatever the transforms
@@ -168,14 +168,12 @@ template <class S> S stopTolerance(DistanceAsk ask) {
 }
 
 // Every number finite, by the x * 0 test on their sum (one comparison instead of ten classifications); a sum that
-// overflows (finite numbers near the largest double) fails it, and then each number is tested.
-template <class S> [[gnu::cold, gnu::noinline]] bool everyNumberFinite(const DistanceResult<S>& r) {
-  const auto zeroed = r.point0.array() * S(0) + r.point1.array() * S(0) + r.normal.array() * S(0);
-  return r.distance * S(0) + zeroed.sum() == S(0);
-}
+// overflows (finite numbers near the largest double) fails it, and then each number is tested. All inline: an
+// out-of-line test took the result's address, and GCC then kept the caller's result in memory on every call.
 template <class S> [[gnu::always_inline]] inline bool finiteResult(const DistanceResult<S>& r) {
   if ((r.distance + r.point0.sum() + r.point1.sum() + r.normal.sum()) * S(0) == S(0)) [[likely]] return true;
-  return everyNumberFinite(r);
+  const auto zeroed = r.point0.array() * S(0) + r.point1.array() * S(0) + r.normal.array() * S(0);
+  return r.distance * S(0) + zeroed.sum() == S(0);
 }
 
 // ---- primitive pairs, in core's order ----
@@ -203,8 +201,9 @@ template <class S> Answer sphereCapsuleOverlap(Solid<S> a, Solid<S> b, bool chec
 }
 
 template <class S> [[gnu::always_inline]] inline Answer sphereCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+  if (!sphereRigidPosesInline(a, b)) return Answer::Invalid;
   const S ra = sphereRadius(a);
-  if (!positive(ra) || !capsuleSized(b) || !sphereRigidPoses(a, b)) return Answer::Invalid;
+  if (!positive(ra) || !capsuleSized(b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
   const k::CapsuleAxis<S> cb = capsuleAxis(b, origin);
   k::distanceSphereCapsule<S>(Vec3<S>::Zero(), ra, cb, out);
@@ -221,9 +220,10 @@ template <class S> Answer sphereBoxOverlap(Solid<S> a, Solid<S> b, bool checkMis
 }
 
 template <class S> [[gnu::always_inline]] inline Answer sphereBoxDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+  if (!sphereRigidPosesInline(a, b)) return Answer::Invalid;
   const S ra = sphereRadius(a);
   const Vec3<S> hb = boxHalf(b);
-  if (!positive(ra) || !boxSized(hb) || !sphereRigidPoses(a, b)) return Answer::Invalid;
+  if (!positive(ra) || !boxSized(hb)) return Answer::Invalid;
   DistanceResult<S> local;
   const Vec3<S> centre = a.tf->translation();
   k::distanceSphereBox<S>(inFrame(*b.tf, centre), ra, hb, local);
@@ -242,10 +242,10 @@ template <class S> Answer capsuleCapsuleOverlap(Solid<S> a, Solid<S> b, bool che
 
 template <class S>
 [[gnu::always_inline]] inline Answer capsuleCapsuleDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
-  k::CapsuleAxis<S> ca, cb;
+  // The poses' check (a call) first, while nothing else is live; both capsules centred relative to a's centre.
+  if (!rigidPoses(a, b) || !capsuleSized(a) || !capsuleSized(b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
-  if (!readCapsules(a, b, origin, ca, cb)) return Answer::Invalid;
-  k::distanceCapsuleCapsule<S>(ca, cb, out);
+  k::distanceCapsuleCapsule<S>(capsuleAxis(a, origin), capsuleAxis(b, origin), out);
   shiftPoints(origin, ask.points, out);
   return Answer::Done;
 }
@@ -631,9 +631,10 @@ template <class S> Answer sphereCylinderOverlap(Solid<S> a, Solid<S> b, bool che
 
 template <class S>
 [[gnu::always_inline]] inline Answer sphereCylinderDistance(Solid<S> a, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
+  if (!sphereRigidPosesInline(a, b)) return Answer::Invalid;
   const S ra = sphereRadius(a);
   S radius, halfHeight;
-  if (!positive(ra) || !cylinderSize(b, radius, halfHeight) || !sphereRigidPoses(a, b)) return Answer::Invalid;
+  if (!positive(ra) || !cylinderSize(b, radius, halfHeight)) return Answer::Invalid;
   DistanceResult<S> local;
   k::distanceSphereCylinder<S>(sphereInCylinder(a, b), ra, radius, halfHeight, local);
   local.normal = fclFromAxisX(local.normal);

@@ -56,9 +56,9 @@ template <class T> struct CapsuleAxis {
 template <class T>
 void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
 // The sphere's centre inside the box (sphere_box.cpp); distanceSphereBox below answers every centre.
-template <class T> [[gnu::cold]] void distanceSphereInsideBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h, DistanceResult<T>& local);
+template <class T> [[gnu::cold]] DistanceResult<T> distanceSphereInsideBox(T cx, T cy, T cz, T r0, T hx, T hy, T hz);
 // The sphere's centre inside the cylinder (sphere_cylinder.cpp); distanceSphereCylinder below answers every centre.
-template <class T> [[gnu::cold]] void distanceSphereInsideCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local);
+template <class T> [[gnu::cold]] DistanceResult<T> distanceSphereInsideCylinder(T cx, T cy, T cz, T r0, T r, T hh);
 // The normal of two capsules whose axes intersect (capsule_capsule.cpp): the minimum translation is along the common
 // perpendicular d0 x d1, oriented along `towards` (the Minkowski difference of two segments is flat), or orthogonal
 // to the axis when they are parallel.
@@ -98,11 +98,16 @@ Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geome
                    GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance = T(0));
 
 // |d| and the unit normal d / |d| when |d|^2 over- or underflows (rangeSafeNorm, tryUnit), `fallback` when d is zero
-// or not finite. Out of line, taking d by value (it is built only on this path): the common case needs none of it.
+// or not finite. Out of line, d's components in and the answer out by value: a vector passed by reference would be
+// address-taken, and GCC then kept the caller's vectors in memory on every call, not only on this path.
+template <class T> struct NormAndUnit {
+  T norm;
+  Vec3<T> unit;
+};
 template <class T>
-[[gnu::cold, gnu::noinline]] T ballsNormalOutOfRange(Vec3<T> d, const Vec3<T>* fallback, Vec3<T>& unit) {
-  unit = unitOr(d, fallback ? *fallback : Vec3<T>(Vec3<T>::UnitX()));
-  return rangeSafeNorm(d);
+[[gnu::cold, gnu::noinline]] NormAndUnit<T> ballsNormalOutOfRange(T dx, T dy, T dz, const Vec3<T>* fallback) {
+  const Vec3<T> d(dx, dy, dz);
+  return {rangeSafeNorm(d), unitOr(d, fallback ? *fallback : Vec3<T>(Vec3<T>::UnitX()))};
 }
 
 // Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide (+X when
@@ -113,8 +118,10 @@ template <class T>
 template <class T>
 [[gnu::always_inline]] inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>* fallback,
                           DistanceResult<T>& out) {
-  // delta written out: GCC sometimes leaves Eigen's difference constructor out of line here (a call on every answer).
-  const Vec3<T> p0 = c0, p1 = c1, delta(p1.x() - p0.x(), p1.y() - p0.y(), p1.z() - p0.z());
+  // Copies and delta written out: GCC sometimes leaves Eigen's difference constructor out of line here (a call on
+  // every answer) and copied whole centres through memory.
+  const Vec3<T> p0(c0.x(), c0.y(), c0.z()), p1(c1.x(), c1.y(), c1.z());
+  const Vec3<T> delta(p1.x() - p0.x(), p1.y() - p0.y(), p1.z() - p0.z());
   const T len2 = delta.squaredNorm();
   Vec3<T> n;
   T len;
@@ -122,7 +129,9 @@ template <class T>
     len = std::sqrt(len2);
     n = delta / len;
   } else {
-    len = ballsNormalOutOfRange(delta, fallback, n);
+    const NormAndUnit<T> safe = ballsNormalOutOfRange(delta.x(), delta.y(), delta.z(), fallback);
+    len = safe.norm;
+    n = safe.unit;
   }
   out.distance = len - r0 - r1;
   out.normal = n;
@@ -147,7 +156,7 @@ template <class T>
   if (q != c) [[likely]] {
     ballsDistance(c, r0, q, T(0), local);
   } else {
-    distanceSphereInsideBox(c, r0, h, local);
+    local = distanceSphereInsideBox(c.x(), c.y(), c.z(), r0, h.x(), h.y(), h.z());
   }
 }
 
@@ -158,12 +167,14 @@ template <class T>
 // time. Inline: the FCL adapter's sphere-cylinder distance is a few dozen instructions around it.
 template <class T>
 [[gnu::always_inline]] inline void distanceSphereCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local) {
-  const T rho = std::sqrt(c.y() * c.y() + c.z() * c.z());
+  const T rho2 = c.y() * c.y() + c.z() * c.z();  // hypot where the squares over- or underflow
+  const T rho = rho2 >= std::numeric_limits<T>::min() && rho2 <= std::numeric_limits<T>::max()
+                    ? std::sqrt(rho2) : std::hypot(c.y(), c.z());
   const T axialGap = std::abs(c.x()) - hh, radialGap = rho - r;
   const T side = c.x() < T(0) ? T(-1) : T(1);
   if (axialGap <= T(0)) {
     if (radialGap <= T(0)) [[unlikely]] {
-      distanceSphereInsideCylinder(c, r0, r, hh, local);
+      local = distanceSphereInsideCylinder(c.x(), c.y(), c.z(), r0, r, hh);
       return;
     }
     const Vec3<T> radial(T(0), c.y() / rho, c.z() / rho);  // rho > r > 0

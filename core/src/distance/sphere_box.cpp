@@ -7,7 +7,9 @@
 namespace gq::detail {
 
 // Centre c inside the box: the face axis with the least room h_i - |c_i|.
-template <class T> void distanceSphereInsideBox(const Vec3<T>& c, T r, const Vec3<T>& h, DistanceResult<T>& local) {
+template <class T> DistanceResult<T> distanceSphereInsideBox(T cx, T cy, T cz, T r, T hx, T hy, T hz) {
+  const Vec3<T> c(cx, cy, cz), h(hx, hy, hz);
+  DistanceResult<T> local;
   Eigen::Index axis;
   const Vec3<T> room = h - c.cwiseAbs();
   room.minCoeff(&axis);
@@ -18,6 +20,7 @@ template <class T> void distanceSphereInsideBox(const Vec3<T>& c, T r, const Vec
   local.distance = -(room[axis] + r);
   local.point0 = c + r * local.normal;
   local.point1 = face;
+  return local;
 }
 
 template <class T>
@@ -33,7 +36,7 @@ void distanceSphereBox(const SphereGeometry<T>& g0, const Transform<T>& pose0, c
 
 template void distanceSphereBox<float>(const SphereGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distanceSphereBox<double>(const SphereGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
-template void distanceSphereInsideBox<float>(const Vec3<float>&, float, const Vec3<float>&, DistanceResult<float>&);
-template void distanceSphereInsideBox<double>(const Vec3<double>&, double, const Vec3<double>&, DistanceResult<double>&);
+template DistanceResult<float> distanceSphereInsideBox<float>(float, float, float, float, float, float, float);
+template DistanceResult<double> distanceSphereInsideBox<double>(double, double, double, double, double, double, double);
 
 }  // namespace gq::detail

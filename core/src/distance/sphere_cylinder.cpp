@@ -8,7 +8,9 @@
 
 namespace gq::detail {
 
-template <class T> void distanceSphereInsideCylinder(const Vec3<T>& c, T r0, T r, T hh, DistanceResult<T>& local) {
+template <class T> DistanceResult<T> distanceSphereInsideCylinder(T cx, T cy, T cz, T r0, T r, T hh) {
+  const Vec3<T> c(cx, cy, cz);
+  DistanceResult<T> local;
   const T rho = std::sqrt(c.y() * c.y() + c.z() * c.z());
   const Vec3<T> radial = rho > T(0) ? Vec3<T>(T(0), c.y() / rho, c.z() / rho) : Vec3<T>(Vec3<T>::UnitY());
   const T axialRoom = hh - std::abs(c.x()), radialRoom = r - rho;
@@ -24,9 +26,10 @@ template <class T> void distanceSphereInsideCylinder(const Vec3<T>& c, T r0, T r
   local.distance = -(std::min(axialRoom, radialRoom) + r0);
   local.point0 = c + r0 * local.normal;
   local.point1 = exit;
+  return local;
 }
 
-template void distanceSphereInsideCylinder<float>(const Vec3<float>&, float, float, float, DistanceResult<float>&);
-template void distanceSphereInsideCylinder<double>(const Vec3<double>&, double, double, double, DistanceResult<double>&);
+template DistanceResult<float> distanceSphereInsideCylinder<float>(float, float, float, float, float, float);
+template DistanceResult<double> distanceSphereInsideCylinder<double>(double, double, double, double, double, double);
 
 }  // namespace gq::detail

@@ -28,6 +28,10 @@ template <class T> Vec3<T> closestPointOnCapsuleAxis(T halfHeight, const Vec3<T>
   return Vec3<T>(std::clamp(localPoint.x(), -halfHeight, halfHeight), T(0), T(0));
 }
 
+// x clamped to [0, 1] by value (NaN stays NaN, as with std::clamp): std::clamp returns a reference, and on its
+// temporaries GCC kept the segment-segment solve's parameters in memory.
+template <class T> [[gnu::always_inline]] inline T clamp01(T x) { return x < T(0) ? T(0) : (x > T(1) ? T(1) : x); }
+
 template <class T> struct SegmentClosest {
   Vec3<T> c0, c1;  // closest point on the first and on the second segment
 };
@@ -46,23 +50,23 @@ template <class T>
   T s = T(0), t = T(0);
   if (!(a > T(0)) && !(e > T(0))) return {p0, p1};
   if (!(a > T(0))) {
-    t = std::clamp(f / e, T(0), T(1));
+    t = clamp01(f / e);
   } else {
     const T c = d0.dot(r);
     if (!(e > T(0))) {
-      s = std::clamp(-c / a, T(0), T(1));
+      s = clamp01(-c / a);
     } else {
       const T b = d0.dot(d1);
       const Vec3<T> n = d0.cross(d1);
       const T nn = n.squaredNorm();
-      s = nn > T(0) ? std::clamp(-r.dot(d1.cross(n)) / nn, T(0), T(1)) : T(0);
+      s = nn > T(0) ? clamp01(-r.dot(d1.cross(n)) / nn) : T(0);
       t = (b * s + f) / e;
       if (t < T(0)) {
         t = T(0);
-        s = std::clamp(-c / a, T(0), T(1));
+        s = clamp01(-c / a);
       } else if (t > T(1)) {
         t = T(1);
-        s = std::clamp((b - c) / a, T(0), T(1));
+        s = clamp01((b - c) / a);
       }
     }
   }
