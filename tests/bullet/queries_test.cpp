@@ -106,9 +106,12 @@ TEST(BulletQueries, ConvexSweepTestMatchesClosedFormsAndBullet) {
       ASSERT_TRUE(g.hasHit());
       ASSERT_TRUE(b.hasHit());
       const btScalar yStop = 10 - 20 * g.m_closestHitFraction;
-      if (shape == &ball && x * x + z * z < 1.25 * 1.25)
+      if (shape == &ball && x * x + z * z < 1.25 * 1.25) {
         EXPECT_NEAR(yStop, std::sqrt(1.5625 - x * x - z * z), kExactTol * 100) << x;
-      if (std::abs(x) > 7.5) EXPECT_NEAR(yStop, -2.75, kExactTol * 100) << x;  // rests on the floor
+      }
+      if (std::abs(x) > 7.5) {
+        EXPECT_NEAR(yStop, -2.75, kExactTol * 100) << x;  // rests on the floor
+      }
       // Bullet's convex cast stops up to ~2.5% of the shape size off the contact next to edges; gq's is exact
       // (checked above against the closed forms).
       EXPECT_NEAR(g.m_closestHitFraction * 20, b.m_closestHitFraction * 20, kSweepAgreement) << x;

@@ -220,14 +220,14 @@ Status meshMeshContacts(const TriangleMeshGeometry<T>& m1, const Transform<T>& p
 }
 
 // A triangle's heights above FCL's Halfspace / Plane (n.x = d, n = the gq plane frame's +X).
-template <class T> struct TriangleHeights {
-  T lo, hi;
-  Vec3<T> lowest, highest;  // world vertices
+template <class T> struct TriangleHeights {  // starts as no vertex seen
+  T lo = std::numeric_limits<T>::max(), hi = -std::numeric_limits<T>::max();
+  Vec3<T> lowest = Vec3<T>::Zero(), highest = Vec3<T>::Zero();  // world vertices
 };
 template <class T>
 TriangleHeights<T> heightsOf(const TriangleMesh<T>& mesh, std::size_t cooked, const Transform<T>& meshPose,
                              const Vec3<T>& n, T d) {
-  TriangleHeights<T> h{std::numeric_limits<T>::max(), -std::numeric_limits<T>::max(), {}, {}};
+  TriangleHeights<T> h;
   for (std::uint32_t i : mesh.triangles[cooked]) {
     const Vec3<T> v = meshPose.transform(mesh.vertices[i]);
     const T height = n.dot(v) - d;
@@ -286,7 +286,7 @@ Status meshPlaneDistance(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   const Vec3<T> n = planePose.rotate(Vec3<T>::UnitX());
   const T d = n.dot(planePose.p);
   const TriangleMesh<T>& m = *mesh.mesh;
-  TriangleHeights<T> all{std::numeric_limits<T>::max(), -std::numeric_limits<T>::max(), {}, {}};
+  TriangleHeights<T> all;
   int lowTriangle = kNoPrimitive, highTriangle = kNoPrimitive;
   for (std::size_t k = 0; k < m.triangles.size(); ++k) {
     const TriangleHeights<T> h = heightsOf(m, k, meshPose, n, d);

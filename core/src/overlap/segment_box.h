@@ -58,6 +58,7 @@ template <class T> SegmentBoxClosest<T> closestSegmentBox(const Vec3<T>& c, cons
     }
   }
   cuts[n++] = T(1);
+  if (n > 8) __builtin_unreachable();  // at most 1 + 6 + 1 cuts: tells GCC that std::sort's 16-element prefix pass is dead
   std::sort(cuts, cuts + n);
   const auto distSqAt = [&](T s) {
     const Vec3<T> p = c + s * d;

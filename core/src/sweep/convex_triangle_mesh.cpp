@@ -74,6 +74,7 @@ void traverseFatRay(const TriangleMesh<T>& mesh, const FatRay<T>& ray, TMax&& tM
       const T t = childEntry(ray, node, lane, tMax());
       if (t <= tMax()) hit[n++] = {node.child[lane], t};
     }
+    if (n > 4) __builtin_unreachable();  // tells GCC that std::sort's 16-element prefix pass is dead
     std::sort(hit.begin(), hit.begin() + n, [](const Entry& x, const Entry& y) { return x.t > y.t; });
     for (int i = 0; i < n && top < kBvhStackSize; ++i) stack[top++] = hit[i];  // nearest pushed last, popped first
   }
