@@ -260,6 +260,14 @@ TEST(FclBadInput, NegativeSizeWritesNothing) {
                                   at(0.3, 0, 0));
 }
 
+TEST(FclBadInput, InfiniteSizeWritesNothing) {
+  // Sizes must be finite as well as positive (an infinite radius or side has no closest point).
+  expectNothingWrittenEitherOrder(sphere(kInf), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(sphere(kInf), at(0, 0, 0), box(1, 1, 1), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(box(1, kInf, 1), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+  expectNothingWrittenEitherOrder(std::make_shared<::fcl::Cylinderd>(0.3, kInf), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));
+}
+
 TEST(FclBadInput, NaNSizeWritesNothing) {
   // FCL: a NaN-radius sphere collides with NaN depth and position.
   expectNothingWrittenEitherOrder(sphere(kNaN), at(0, 0, 0), sphere(0.5), at(0.3, 0, 0));

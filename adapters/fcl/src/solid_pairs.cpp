@@ -54,6 +54,18 @@ template <class S> Vec3<S> boxHalf(Solid<S> s) {
 template <class S> bool boxSized(const Vec3<S>& half) {
   return positive(half.x()) && positive(half.y()) && positive(half.z());
 }
+// Four sizes positive and finite at once (a sphere's radius with a box's half extents or a cylinder's sizes).
+template <class S> bool allPositive(S a, S b, S c, S d) { return positive(a) && positive(b) && positive(c) && positive(d); }
+#if defined(__SSE2__)
+// The same for double in two SSE2 pairs (eight compares and branches took ~6 more instructions; NaN fails).
+inline bool allPositive(double a, double b, double c, double d) {
+  const __m128d ab = _mm_set_pd(b, a), cd = _mm_set_pd(d, c);
+  const __m128d zero = _mm_setzero_pd(), largest = _mm_set1_pd(std::numeric_limits<double>::max());
+  const __m128d ok = _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(ab, zero), _mm_cmple_pd(ab, largest)),
+                                _mm_and_pd(_mm_cmpgt_pd(cd, zero), _mm_cmple_pd(cd, largest)));
+  return _mm_movemask_pd(ok) == 3;
+}
+#endif
 
 // FCL's capsule: radius and full length lz along local Z; its centre is taken relative to `origin`.
 template <class S> k::CapsuleAxis<S> capsuleAxis(Solid<S> s, const Vec3<S>& origin) {
@@ -223,7 +235,7 @@ template <class S> [[gnu::always_inline]] inline Answer sphereBoxDistance(Solid<
   if (!sphereRigidPosesInline(a, b)) return Answer::Invalid;
   const S ra = sphereRadius(a);
   const Vec3<S> hb = boxHalf(b);
-  if (!positive(ra) || !boxSized(hb)) return Answer::Invalid;
+  if (!allPositive(hb.x(), hb.y(), hb.z(), ra)) return Answer::Invalid;
   DistanceResult<S> local;
   const Vec3<S> centre = a.tf->translation();
   k::distanceSphereBox<S>(inFrame(*b.tf, centre), ra, hb, local);
