@@ -28,10 +28,6 @@ template <class T> Vec3<T> closestPointOnCapsuleAxis(T halfHeight, const Vec3<T>
   return Vec3<T>(std::clamp(localPoint.x(), -halfHeight, halfHeight), T(0), T(0));
 }
 
-// x clamped to [0, 1] by value (NaN stays NaN, as with std::clamp): std::clamp returns a reference, and on its
-// temporaries GCC kept the segment-segment solve's parameters in memory.
-template <class T> [[gnu::always_inline]] inline T clamp01(T x) { return x < T(0) ? T(0) : (x > T(1) ? T(1) : x); }
-
 template <class T> struct SegmentClosest {
   Vec3<T> c0, c1;  // closest point on the first and on the second segment
 };
@@ -50,23 +46,27 @@ template <class T>
   T s = T(0), t = T(0);
   if (!(a > T(0)) && !(e > T(0))) return {p0, p1};
   if (!(a > T(0))) {
-    t = clamp01(f / e);
+    t = std::clamp(f / e, T(0), T(1));
   } else {
     const T c = d0.dot(r);
     if (!(e > T(0))) {
-      s = clamp01(-c / a);
+      s = std::clamp(-c / a, T(0), T(1));
     } else {
       const T b = d0.dot(d1);
-      const Vec3<T> n = d0.cross(d1);
-      const T nn = n.squaredNorm();
-      s = nn > T(0) ? clamp01(-r.dot(d1.cross(n)) / nn) : T(0);
+      // n = d0 x d1 and r . (d1 x n) in scalars: Eigen's cross products were read back as packed pairs just after
+      // being written one component at a time (failed store forwarding, ~25 % of capsule-capsule distance's time).
+      const T nx = d0.y() * d1.z() - d0.z() * d1.y(), ny = d0.z() * d1.x() - d0.x() * d1.z(),
+              nz = d0.x() * d1.y() - d0.y() * d1.x();
+      const T nn = nx * nx + ny * ny + nz * nz;
+      const T mx = d1.y() * nz - d1.z() * ny, my = d1.z() * nx - d1.x() * nz, mz = d1.x() * ny - d1.y() * nx;
+      s = nn > T(0) ? std::clamp(-(r.x() * mx + r.y() * my + r.z() * mz) / nn, T(0), T(1)) : T(0);
       t = (b * s + f) / e;
       if (t < T(0)) {
         t = T(0);
-        s = clamp01(-c / a);
+        s = std::clamp(-c / a, T(0), T(1));
       } else if (t > T(1)) {
         t = T(1);
-        s = clamp01((b - c) / a);
+        s = std::clamp((b - c) / a, T(0), T(1));
       }
     }
   }
