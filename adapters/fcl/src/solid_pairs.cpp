@@ -54,7 +54,7 @@ template <class S> Vec3<S> boxHalf(Solid<S> s) {
 template <class S> bool boxSized(const Vec3<S>& half) {
   return positive(half.x()) && positive(half.y()) && positive(half.z());
 }
-// Four sizes positive and finite at once (a sphere's radius with a box's half extents or a cylinder's sizes).
+// Four sizes positive and finite at once (sphere-box distance: the radius and the half extents).
 template <class S> bool allPositive(S a, S b, S c, S d) { return positive(a) && positive(b) && positive(c) && positive(d); }
 #if defined(__SSE2__)
 // The same for double in two SSE2 pairs (eight compares and branches took ~6 more instructions; NaN fails).

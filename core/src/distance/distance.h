@@ -55,7 +55,9 @@ template <class T> struct CapsuleAxis {
 };
 template <class T>
 void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out);
-// The sphere's centre inside the box (sphere_box.cpp); distanceSphereBox below answers every centre.
+// The sphere's centre inside the box (sphere_box.cpp); distanceSphereBox below answers every centre. These cold
+// paths take scalars and return by value, as ballsNormalOutOfRange below (references kept the callers' values in
+// memory).
 template <class T> [[gnu::cold]] DistanceResult<T> distanceSphereInsideBox(T cx, T cy, T cz, T r0, T hx, T hy, T hz);
 // The sphere's centre inside the cylinder (sphere_cylinder.cpp); distanceSphereCylinder below answers every centre.
 template <class T> [[gnu::cold]] DistanceResult<T> distanceSphereInsideCylinder(T cx, T cy, T cz, T r0, T r, T hh);
