@@ -197,10 +197,7 @@ template <class T> AxisSurvey<T> surveyAxes(const BoxPair<T>& s) {
     for (int j = 0; j < 3; ++j) {
       BoxAxis<T>& e = axes[6 + 3 * i + j];
       e = edgeAxisUnnormalised(s, i, j);
-      // |L|^2 from r's entries, not from e.axis just stored a component at a time (read back whole, the store
-      // could not be forwarded); the same sum: L's components are -r(i2, j), r(i1, j) and 0.
-      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-      lengthSq[3 * i + j] = s.r(i2, j) * s.r(i2, j) + s.r(i1, j) * s.r(i1, j);
+      lengthSq[3 * i + j] = edgeAxisLengthSq(s, i, j);
       scaled[3 * i + j] = e.overlap;
     }
   const Eigen::Array<T, 9, 1> length = lengthSq.sqrt();

@@ -77,6 +77,14 @@ template <class T> [[gnu::always_inline]] inline BoxAxis<T> edgeAxisUnnormalised
   return BoxAxis<T>{axis, ra + rb - std::abs(gap), gap, std::numeric_limits<T>::quiet_NaN(), i, j};
 }
 
+// |L|^2 for the edge axis L = e_i x r_j, from r's entries: the same sum as L.squaredNorm() (L's components are
+// -r(i2, j), r(i1, j) and 0), without reading back an L just stored a component at a time (that load could not be
+// forwarded from the stores: box-box distance's survey lost ~7 % of its time there).
+template <class T> [[gnu::always_inline]] inline T edgeAxisLengthSq(const BoxPair<T>& s, int i, int j) {
+  const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+  return s.r(i2, j) * s.r(i2, j) + s.r(i1, j) * s.r(i1, j);
+}
+
 // The edge axis with its length, from L's components, not from 1 - r(i, j)^2, which cancels badly for nearly
 // parallel edges.
 template <class T> [[gnu::always_inline]] inline BoxAxis<T> edgeAxis(const BoxPair<T>& s, int i, int j) {
