@@ -55,6 +55,8 @@ template <class T>
       const T b = d0.dot(d1);
       // n = d0 x d1 and r . (d1 x n) in scalars: Eigen's cross products were read back as packed pairs just after
       // being written one component at a time (failed store forwarding, ~25 % of capsule-capsule distance's time).
+      // Written out rather than through gjk/simplex.cpp's tripleProduct on a vector n: that took capsule-capsule
+      // collide ~5 % longer.
       const T nx = d0.y() * d1.z() - d0.z() * d1.y(), ny = d0.z() * d1.x() - d0.x() * d1.z(),
               nz = d0.x() * d1.y() - d0.y() * d1.x();
       const T nn = nx * nx + ny * ny + nz * nz;
