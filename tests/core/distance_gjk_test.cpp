@@ -1,6 +1,7 @@
 // gq::distance on the GJK/EPA pairs against exact brute-force references over polytope feature pairs (long double).
 #include "gjk_test_shapes.h"
 
+#include "gjk/gjk.h"
 #include "gq/custom.h"
 
 namespace {
@@ -343,6 +344,48 @@ TYPED_TEST(DistanceGjk, WarmStartedCallTakesNoMoreIterations) {
     EXPECT_NEAR(double(warm.distance), double(cold.distance), kGjkTol<T>);
   }
   EXPECT_GT(fewer, 100);  // the warm start actually helps
+}
+
+// gjkDistance's `farEnough` (a mesh's nearest triangle so far): GJK stops early only when the exact distance
+// exceeds it, with a lower bound of the exact distance; otherwise the answer is the full one. A cache carried from
+// pose to pose exercises the seeded simplex's bounds too; hull vs capsule adds margins to the bound.
+TYPED_TEST(DistanceGjk, FarEnoughStopsOnlyBeyondItWithALowerBound) {
+  using T = TypeParam;
+  Rng rng(29);
+  const double tol = kGjkTol<T>;
+  const auto hull = makeHull<T>(pointsOnEllipsoid<T>(rng, 30, Eigen::Vector3d(0.6, 0.5, 0.4)));
+  const gq::CapsuleGeometry<T> cap{T(0.2), T(0.5)};
+  gq::GjkCache<T> cache;
+  int stopped = 0, answered = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 1.5);
+    const bool withCapsule = i % 2 == 1;
+    const gq::Geometry<T> g0 = gq::ConvexMeshGeometry<T>(hull);
+    const gq::Geometry<T> g1 = withCapsule ? gq::Geometry<T>(cap) : gq::Geometry<T>(gq::ConvexMeshGeometry<T>(hull));
+    const RoundedPolytope r1 = withCapsule ? roundedCapsule(cap, p1) : roundedHull(*hull, gq::MeshScale<T>(), p1);
+    const L exact = exactSignedDistance(roundedHull(*hull, gq::MeshScale<T>(), p0), r1);
+    const auto a = gq::detail::makeConvexShape(g0, p0), b = gq::detail::makeConvexShape(g1, p1);
+    for (const double factor : {0.25, 0.9, 1.1}) {
+      const T farEnough = T(std::max(0.0, double(exact)) * factor);
+      const gq::detail::GjkResult<T> g =
+          gq::detail::gjkDistance(a, b, &cache, T(0), static_cast<const gq::Vec3<T>*>(nullptr), farEnough);
+      SCOPED_TRACE(testing::Message() << "pose " << i << ", factor " << factor << ", exact " << double(exact));
+      if (g.beyond) {
+        EXPECT_GT(double(exact), double(farEnough) - tol);
+        EXPECT_GT(double(g.distance), double(farEnough));
+        EXPECT_LE(double(g.distance), double(exact) + tol);
+        ++stopped;
+      } else {
+        ASSERT_TRUE(g.status.ok());
+        if (!g.coresOverlap) EXPECT_NEAR(double(g.distance), double(exact), tol);
+        else EXPECT_LT(double(exact), tol);
+        ++answered;
+      }
+      if (factor > 1) EXPECT_FALSE(g.beyond);  // a lower bound never exceeds the distance
+    }
+  }
+  EXPECT_GT(stopped, kPoses / 2);  // both outcomes are exercised
+  EXPECT_GT(answered, kPoses / 2);
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ template <class T> struct Best {
     if (!found || r.distance < result.distance) result = r;
     found = true;
   }
-  // Squared bound for culling boxes (+inf until a triangle is found).
+  // Distance a triangle must not exceed to be kept, and its square for culling boxes (+inf until one is found).
+  T bound() const { return found ? result.distance : std::numeric_limits<T>::infinity(); }
   T boundSq() const { return found ? result.distance * result.distance : std::numeric_limits<T>::infinity(); }
 };
 
@@ -47,7 +48,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
         if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) continue;
         if (ballBound && best.found && shape.distanceLowerBound(tri) > best.result.distance) continue;
         DistanceResult<T> r;
-        shape.distanceTo(tri, r);
+        if (!shape.distanceTo(tri, r, best.bound())) continue;
         best.offer(r);
         if (best.result.distance <= T(0)) return;
       }
@@ -78,7 +79,7 @@ void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldS
     if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) return false;
     if (ballBound && best.found && shape.distanceLowerBound(tri) > best.result.distance) return false;
     DistanceResult<T> r;
-    shape.distanceTo(tri, r);
+    if (!shape.distanceTo(tri, r, best.bound())) return false;
     best.offer(r);
     return best.result.distance <= T(0);
   };

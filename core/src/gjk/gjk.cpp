@@ -78,9 +78,10 @@ template <class T> void unscale(GjkResult<T>& r, T back) {
 
 template <class T>
 [[gnu::noinline]] void distanceRescaled(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache,
-                                        T stopTolerance, const Vec3<T>* start, T factor, GjkResult<T>& r) {
+                                        T stopTolerance, const Vec3<T>* start, T farEnough, T factor,
+                                        GjkResult<T>& r) {
   const ConvexShape<T> sa = scaledShape(a, factor), sb = scaledShape(b, factor);
-  r = gjkDistance(sa, sb, cache, stopTolerance * factor, start);  // a direction: the same at every scale
+  r = gjkDistance(sa, sb, cache, stopTolerance * factor, start, farEnough * factor);  // start: a direction
   unscale(r, T(1) / factor);
   keepHints(sa, a), keepHints(sb, b);
 }
@@ -102,13 +103,16 @@ template <class T>
 
 template <class T>
 GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache, T stopTolerance,
-                         const Vec3<T>* start) {
+                         const Vec3<T>* start, T farEnough) {
   const T length = gjkPairLength(a, b);
   GjkResult<T> r;
   if (needsRescale(length)) {
-    distanceRescaled(a, b, cache, stopTolerance, start, rescaleFactor(length), r);
+    distanceRescaled(a, b, cache, stopTolerance, start, farEnough, rescaleFactor(length), r);
     return r;
   }
+  // Core lower bounds past this certify the shapes farther than farEnough (+inf: never).
+  const T farCore = farEnough + a.margin + b.margin;
+  const bool bounded = farCore < std::numeric_limits<T>::infinity();
   const T tolerance = gjkToleranceFor(length);
   const T gapTolerance = std::max(tolerance, stopTolerance);  // overlap is still decided at `tolerance`
   SupportMap<T> sa(a), sb(b);
@@ -130,25 +134,33 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   std::uint32_t stalls = 0;
   std::uint32_t it = 0;
   if (cache) seedSimplex(sa, sb, a.rotation, *cache, s);
-  if (s.size > 0) {
+  if (bounded) {  // a seed w = s_D(d) bounds every point z of D: -d.z >= -d.w, so |z| >= -d.w / |d|
+    for (std::uint32_t k = 0; k < s.size; ++k)
+      lowerBound = std::max(lowerBound, -s.points[k].d.dot(s.points[k].w) / s.points[k].d.norm());
+    r.beyond = lowerBound > farCore;
+  }
+  if (s.size > 0 && !r.beyond) {
     const SimplexClosest<T> c = closestOnSimplex(s);
     r.coresOverlap = converged = c.containsOrigin || c.v.norm() <= tolerance;
     v = c.v;
     lambda = c.lambda;
     bestSquared = v.squaredNorm();
   }
-  while (!r.coresOverlap && it < kGjkMaxIterations) {
+  while (!r.coresOverlap && !r.beyond && it < kGjkMaxIterations) {
     ++it;
     // The support point along -v, written in the simplex's next slot: it joins the simplex unless GJK stops here.
     SupportPoint<T>& p = s.points[s.size];
     supportOfDifference(sa, sb, Vec3<T>(-v), p);
-    if (s.size > 0) {
+    if (s.size > 0 || bounded) {
       const T vNorm = v.norm();
       lowerBound = std::max(lowerBound, v.dot(p.w) / vNorm);
-      gapBound = std::max(T(0), vNorm - lowerBound);
-      if (gapBound <= gapTolerance) { converged = true; break; }
-      // A repeated support point along -v means D has no point closer along -v: v is optimal up to rounding.
-      if (alreadyInSimplex(s, p.w)) { converged = true; break; }
+      if (lowerBound > farCore) { r.beyond = true; break; }
+      if (s.size > 0) {  // v is a point of D (before the first step it is only a direction): the gap bounds
+        gapBound = std::max(T(0), vNorm - lowerBound);
+        if (gapBound <= gapTolerance) { converged = true; break; }
+        // A repeated support point along -v means D has no point closer along -v: v is optimal up to rounding.
+        if (alreadyInSimplex(s, p.w)) { converged = true; break; }
+      }
     }
     ++s.size;
     const SimplexChoice<T> c = chooseOnSimplex(s);
@@ -189,10 +201,12 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   }
   r.iterations = it;
   r.errorBound = r.coresOverlap ? T(0) : std::max(T(0), v.norm() - lowerBound);
-  if (!converged && !(r.errorBound <= gapTolerance))
+  if (!converged && !r.beyond && !(r.errorBound <= gapTolerance))
     r.status = Status::notConverged("GJK stopped after " + std::to_string(it) + " iterations with error bound " +
                                     std::to_string(double(r.errorBound)));
-  if (!r.coresOverlap) {
+  if (r.beyond) {
+    r.distance = lowerBound - a.margin - b.margin;
+  } else if (!r.coresOverlap) {
     Vec3<T> coreA, coreB;
     simplexWitnesses(s, lambda, coreA, coreB);
     finishSeparated(a, b, coreA, coreB, v, r);
@@ -268,9 +282,9 @@ bool gjkOverlap(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkOverlapWitn
 }
 
 template GjkResult<float> gjkDistance<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkCache<float>*,
-                                             float, const Vec3<float>*);
+                                             float, const Vec3<float>*, float);
 template GjkResult<double> gjkDistance<double>(const ConvexShape<double>&, const ConvexShape<double>&,
-                                               GjkCache<double>*, double, const Vec3<double>*);
+                                               GjkCache<double>*, double, const Vec3<double>*, double);
 template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<float>&, GjkOverlapWitness<float>*,
                                 const Vec3<float>*);
 template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkOverlapWitness<double>*,

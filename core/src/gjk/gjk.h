@@ -103,6 +103,9 @@ template <class T> struct GjkResult {
   T errorBound = T(0);         // upper bound on |core distance - exact| (from the duality gap)
   std::uint32_t iterations = 0;
   GjkSimplex<T> simplex;       // final simplex (handed to EPA when the cores overlap)
+  // Stopped once the shapes' distance was certified above the caller's `farEnough`: `distance` is only that lower
+  // bound, the witnesses and normal are not written.
+  bool beyond = false;
 };
 
 // The distance result of cores that are apart (!g.coresOverlap): signed distance, normal and witnesses.
@@ -119,9 +122,12 @@ template <class T> void writeSeparated(const GjkResult<T>& g, DistanceResult<T>&
 // whether the cores overlap is still decided at gjkTolerance. The default 0 leaves the stop rule as it is.
 // `start` (optional, world): the first search direction when there is no cache, for a caller that has the shapes'
 // centres at hand (a's minus b's); without it GJK places both shapes' centres itself.
+// `farEnough` (optional): a caller that keeps only distances up to it (the nearest triangle so far of a mesh) lets
+// GJK stop as soon as a support point's lower bound exceeds it (r.beyond).
 template <class T>
 GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCache<T>* cache = nullptr,
-                         T stopTolerance = T(0), const Vec3<T>* start = nullptr);
+                         T stopTolerance = T(0), const Vec3<T>* start = nullptr,
+                         T farEnough = std::numeric_limits<T>::infinity());
 
 // What a positive gjkOverlap saw of the cores when it stopped: either a simplex enclosing the origin (cores
 // overlap) or a point of the cores' Minkowski difference, whose norm bounds the core distance from above.

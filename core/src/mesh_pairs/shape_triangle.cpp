@@ -128,7 +128,8 @@ template <class T> bool TriangleQueryShape<T>::overlaps(const Triangle<T>& tri) 
   }
 }
 
-template <class T> void TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri, DistanceResult<T>& out) const {
+template <class T>
+bool TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri, DistanceResult<T>& out, T farEnough) const {
   if (type_ == GeometryType::Sphere || type_ == GeometryType::Capsule) {
     const SegmentTriangleClosest<T> c = closestSegmentTriangle(segA_, segB_, tri);
     const T len = std::sqrt(c.distSq);
@@ -146,22 +147,21 @@ template <class T> void TriangleQueryShape<T>::distanceTo(const Triangle<T>& tri
       out.point0 = c.onTriangle;
     }
     out.point1 = c.onTriangle;
-    return;
+    return true;
   }
   const SurfaceTriangleSupport<T> support(tri);
   const ConvexShape<T> triShape = support.shape();
-  const GjkResult<T> g = gjkDistance(convex_, triShape, &warm_);
+  const GjkResult<T> g = gjkDistance(convex_, triShape, &warm_, T(0), static_cast<const Vec3<T>*>(nullptr), farEnough);
+  if (g.beyond) return false;
   if (!g.coresOverlap && g.distance > T(0)) {
-    out.distance = g.distance;
-    out.point0 = g.point0;
-    out.point1 = g.point1;
-    out.normal = g.normal;
-    return;
+    writeSeparated(g, out);
+    return true;
   }
   const EpaResult<T> epa = epaPenetration(convex_, triShape, &g.simplex);
   out.distance = T(0);
   out.point0 = out.point1 = epa.point1;
   out.normal = epa.normal;
+  return true;
 }
 
 template <class T> TrianglePush<T> TriangleQueryShape<T>::pushOut(const Triangle<T>& tri, bool oneSided) const {

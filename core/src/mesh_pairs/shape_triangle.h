@@ -50,7 +50,10 @@ template <class T> class TriangleQueryShape {
   bool overlaps(const Triangle<T>& tri) const;
   // Distance to the triangle, >= 0 (0 in contact); point0 on the shape, point1 on the triangle, normal shape->triangle.
   // In contact the witnesses are the triangle point of deepest contact (point0 = point1).
-  void distanceTo(const Triangle<T>& tri, DistanceResult<T>& out) const;
+  // `farEnough`: the caller keeps only distances up to it; returns false (out unwritten) when GJK certified the
+  // triangle farther (hulls, boxes, custom shapes stop early; the closed forms always answer).
+  bool distanceTo(const Triangle<T>& tri, DistanceResult<T>& out,
+                  T farEnough = std::numeric_limits<T>::infinity()) const;
   // A lower bound of distanceTo from a ball around the shape (its centre's distance to the triangle less the ball's
   // radius): ~100 instructions where distanceTo runs GJK on hulls and custom shapes. -inf when there is no ball.
   T distanceLowerBound(const Triangle<T>& tri) const;
