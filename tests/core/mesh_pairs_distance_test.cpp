@@ -2,6 +2,7 @@
 // long-double brute force over every triangle (pair).
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <vector>
 
 #include "gq/cooking.h"
@@ -215,6 +216,63 @@ TYPED_TEST(MeshDistance, PlaneAndSurfaceSurfacePairsOtherThanMeshMeshAreUnsuppor
   EXPECT_EQ(distance(r, mesh, Transform<T>(), hf, Transform<T>()).code, StatusCode::Unsupported);
   EXPECT_EQ(distance(r, hf, Transform<T>(), hf, Transform<T>()).code, StatusCode::Unsupported);
   EXPECT_EQ(r.distance, T(42));
+}
+
+// distanceWithin: a pair closer than the bound gets distance()'s answer; a farther one may stop (beyond) with only a
+// lower bound of its distance above the bound. Boxes (GJK per triangle, after the ball bound) and capsules (closed
+// forms) against the scaled icosphere, and mesh against mesh, with brute-force distances; the bound at fractions of
+// the exact distance, and negative (nothing of a surface is closer than 0). NaN is rejected, changing nothing.
+TYPED_TEST(MeshDistance, DistanceWithinAnswersBelowTheBoundAndBoundsFromBelowBeyondIt) {
+  using T = TypeParam;
+  const ScaledIcosphere<T> scene;
+  const MeshData<T> small = meshtest::icosphere<T>(0);
+  const MeshScale<T> smallScale(Vec3<T>(T(0.5), T(0.7), T(0.4)));
+  const Geometry<T> smallMesh = TriangleMeshGeometry<T>(meshtest::cook(small.vertices, small.triangles), smallScale);
+  test::Rng rng(63);
+  int stopped = 0, answered = 0;
+  for (int i = 0; i < 240; ++i) {
+    const Transform<T> pose = rng.pose<T>(2.5);
+    const bool meshPair = i % 3 == 2;
+    ShapeRef ref;
+    const Geometry<T> shape = meshPair ? smallMesh : randomShape<T>(rng, 1 + i % 3, pose, ref);
+    LD exact = std::numeric_limits<LD>::infinity();
+    if (meshPair) {
+      for (const auto& x : worldTriangles(small, smallScale, pose))
+        for (const auto& y : scene.triangles) exact = std::min(exact, std::sqrt(triangleTriangleDistSq(x, y)));
+    } else {
+      for (const auto& t : scene.triangles) exact = std::min(exact, ref.distanceTo(t));
+    }
+    const LD tol = tolerance<T>(true) * std::max<LD>(1, exact);
+    for (const double fraction : {-0.1, 0.5, 0.99, 1.01, 2.0}) {
+      const T bound = T(fraction * double(exact));
+      SCOPED_TRACE(testing::Message() << "pose " << i << ", exact " << double(exact) << ", bound " << double(bound));
+      DistanceResult<T> r;
+      bool beyond = false;
+      ASSERT_TRUE(distanceWithin(r, beyond, bound, shape, pose, scene.mesh, scene.pose).ok());
+      if (beyond) {
+        EXPECT_GT(r.distance, bound);
+        EXPECT_LE(double(r.distance), double(exact + tol));
+        EXPECT_GE(double(exact), double(bound) - double(tol));
+        ++stopped;
+      } else {
+        EXPECT_NEAR(double(r.distance), double(exact), double(tol));
+        expectWitnessesConsistent(r, tolerance<T>(true));
+        ++answered;
+      }
+      if (fraction > 1 && exact > tol) EXPECT_FALSE(beyond);
+    }
+  }
+  EXPECT_GT(stopped, 240);  // both outcomes are exercised
+  EXPECT_GT(answered, 240);
+  std::cout << stopped << " stopped beyond the bound, " << answered << " answered\n";
+  DistanceResult<T> r;
+  r.distance = T(42);
+  bool beyond = true;
+  EXPECT_EQ(distanceWithin(r, beyond, std::numeric_limits<T>::quiet_NaN(), smallMesh, Transform<T>(), scene.mesh,
+                           scene.pose).code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(r.distance, T(42));
+  EXPECT_TRUE(beyond);
 }
 
 }  // namespace

@@ -209,6 +209,50 @@ TEST_P(FclEquivalence, SeparationDistancesMatchTheExactAnswerAndFcl) {
   EXPECT_LE(maxCertificateError, certificateTolerance(pair));
 }
 
+// MoveIt pre-seeds the result's min_distance with the distance to beat; gq may then stop a searched pair (GJK, a
+// mesh's traversal) once it is proven farther. The result must be what the unseeded answer and FCL's update rule
+// give: min(seed, distance), with the pair and its nearest points recorded only when it is closer.
+TEST_P(FclEquivalence, APreSeededMinDistanceKeepsTheSmallerAnswer) {
+  const Pair pair = GetParam();
+  std::mt19937 rng(seedOf(pair) + 3);
+  const TestShape a = makeShape(pair.first, rng), b = makeShape(pair.second, rng);
+  const ::fcl::DistanceRequestd request = ownTolerance(::fcl::DistanceRequestd(true));
+  int farther = 0, closer = 0;
+  for (int i = 0; i < kPoses / 5; ++i) {
+    const ::fcl::Transform3d pa = randomPose(rng, kPoseExtent), pb = randomPose(rng, kPoseExtent);
+    ::fcl::DistanceResultd unseeded;
+    gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, request, unseeded);
+    const double d = unseeded.min_distance;
+    if (!(d > 1e-6) || unseeded.o1 == nullptr) continue;  // touching or unanswered: nothing to bound
+    for (const double seed : {0.5 * d, 0.999 * d, 1.001 * d, 2 * d}) {
+      SCOPED_TRACE(testing::Message() << "pose " << i << ", distance " << d << ", seed " << seed);
+      ::fcl::DistanceResultd seeded;
+      seeded.min_distance = seed;
+      const ::fcl::Vector3d untouched(7, 7, 7);  // FCL leaves nearest_points uninitialised
+      seeded.nearest_points[0] = seeded.nearest_points[1] = untouched;
+      const double returned = gq::fcl::distance(a.geometry.get(), pa, b.geometry.get(), pb, request, seeded);
+      EXPECT_EQ(returned, seeded.min_distance);
+      if (seed < d) {
+        EXPECT_EQ(seeded.min_distance, seed);
+        EXPECT_EQ(seeded.o1, nullptr);
+        EXPECT_EQ(seeded.nearest_points[0], untouched);
+        EXPECT_EQ(seeded.nearest_points[1], untouched);
+        ++farther;
+      } else {
+        EXPECT_NEAR(seeded.min_distance, d, kExactTolerance);
+        EXPECT_EQ(seeded.o1, a.geometry.get());
+        // The same points, up to where GJK stops on curved shapes (its warm starts differ: the bound prunes).
+        EXPECT_NEAR((seeded.nearest_points[1] - seeded.nearest_points[0]).norm(), d, 1e-9);
+        EXPECT_NEAR((seeded.nearest_points[0] - unseeded.nearest_points[0]).norm(), 0, 1e-5);
+        EXPECT_NEAR((seeded.nearest_points[1] - unseeded.nearest_points[1]).norm(), 0, 1e-5);
+        ++closer;
+      }
+    }
+  }
+  if (farther + closer > 0) EXPECT_EQ(farther, closer);  // two seeds below and two above each distance
+  std::cout << name(pair.first) << "-" << name(pair.second) << ": " << closer / 2 << " poses seeded\n";
+}
+
 // FCL's DistanceRequest::distance_tolerance (default 1e-6) is GJK's stop tolerance: gq stops once its certified
 // error bound is below it. The exact distance lies in [gap, tight] (gq at its own tolerance, certified by a separating
 // plane to certificateTolerance), so an answer at tolerance t must lie in [gap, gap + t + certificate]. On curved

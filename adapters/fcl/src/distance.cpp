@@ -59,7 +59,11 @@ template <class S>
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled)
     return detail::fclDistance(o1, tf1, o2, tf2, request, result);
   detail::PairDistance<S> d;
-  Status s = detail::pairDistance(a, pa, b, pb, d);
+  // The result's min_distance as the bound: a pair proven farther changes nothing (FCL prunes its BVH traversal so).
+  // FCL's unseeded max() is no bound.
+  const S toBeat = result.min_distance < std::numeric_limits<S>::max() ? result.min_distance
+                                                                        : std::numeric_limits<S>::infinity();
+  Status s = detail::pairDistance(a, pa, b, pb, d, toBeat);
   if (s.ok() && (a.isMesh() || b.isMesh()) && d.distance <= S(0) && request.enable_signed_distance)
     s = deepestContact(a, pa, b, pb, d);
   if (s.code == StatusCode::InvalidArgument) return kNothing;

@@ -372,7 +372,7 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
 
 template <class T>
 Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Converted<T>& b, const Transform<T>& pb,
-                    PairDistance<T>& out) {
+                    PairDistance<T>& out, T farEnough) {
   const TriangleMeshGeometry<T>* ma = meshOf(a);
   const TriangleMeshGeometry<T>* mb = meshOf(b);
   DistanceResult<T> d;
@@ -392,9 +392,11 @@ Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Convert
     return s;
   }
   if (a.isSolid() && b.isSolid()) return Status::unsupported("two solids: solid_pairs.h answers them");
-  s = distance(d, a.geometry(), pa, b.geometry(), pb);
+  bool beyond = false;
+  s = distanceWithin(d, beyond, farEnough, a.geometry(), pa, b.geometry(), pb);
   if (!s.ok()) return s;
   out = PairDistance<T>{d.distance, d.point0, d.point1, kNoPrimitive, kNoPrimitive};
+  if (beyond) return s;
   if (ma) out.b1 = nearestTriangle(*ma, pa, d.point0);
   if (mb) out.b2 = nearestTriangle(*mb, pb, d.point1);
   return s;
@@ -407,8 +409,8 @@ template Status pairContacts<float>(const Converted<float>&, const Transform<flo
 template Status pairContacts<double>(const Converted<double>&, const Transform<double>&, const Converted<double>&,
                                      const Transform<double>&, bool, std::size_t, std::vector<PairContact<double>>&);
 template Status pairDistance<float>(const Converted<float>&, const Transform<float>&, const Converted<float>&,
-                                    const Transform<float>&, PairDistance<float>&);
+                                    const Transform<float>&, PairDistance<float>&, float);
 template Status pairDistance<double>(const Converted<double>&, const Transform<double>&, const Converted<double>&,
-                                     const Transform<double>&, PairDistance<double>&);
+                                     const Transform<double>&, PairDistance<double>&, double);
 
 }  // namespace gq::fcl::detail

@@ -2,6 +2,7 @@
 // The gq side of the adapter: contacts and distances of one converted pair in world space, FCL's conventions
 // (normal from the first geometry to the second, positive depth, triangle ids of mesh sides). No FCL types here.
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "convert.h"
@@ -35,8 +36,10 @@ template <class T>
 Status pairContacts(const Converted<T>& a, const Transform<T>& poseA, const Converted<T>& b, const Transform<T>& poseB,
                     bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out);
 
+// `farEnough`: the distance to beat (FCL's pre-seeded min_distance); a pair proven farther gets only a lower bound
+// above it in out.distance (gq's distanceWithin), no witnesses or triangle ids.
 template <class T>
 Status pairDistance(const Converted<T>& a, const Transform<T>& poseA, const Converted<T>& b, const Transform<T>& poseB,
-                    PairDistance<T>& out);
+                    PairDistance<T>& out, T farEnough = std::numeric_limits<T>::infinity());
 
 }  // namespace gq::fcl::detail

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <typeinfo>
 
 #include <fcl/geometry/collision_geometry.h>
@@ -76,11 +77,14 @@ template <class S> struct Solid {
 
 // What a distance request asks for: the world witnesses (enable_nearest_points), the penetration depth
 // (enable_signed_distance) and GJK's stop tolerance (DistanceRequest::distance_tolerance as the host set it; only
-// the pairs that run GJK read it, and a non-positive or non-finite one means gq's own).
+// the pairs that run GJK read it, and a non-positive or non-finite one means gq's own), and the distance to beat
+// (the result's min_distance: a GJK pair proven farther may stop with a lower bound above it, which FCL's update
+// then ignores; the closed forms answer exactly anyway).
 struct DistanceAsk {
   bool points;
   bool depth;
   double tolerance = 0;
+  double farEnough = std::numeric_limits<double>::infinity();
 };
 
 // The table behind solidOverlap and solidDistance: one entry per ordered pair of solids (solid_pairs.cpp). Declared

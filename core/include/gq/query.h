@@ -77,6 +77,17 @@ template <class T>
 Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
                 const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache = nullptr);
 
+// Distance for a caller that keeps only distances below `maxDistance` (the nearest pair so far; MoveIt pre-seeds
+// FCL's result with it): GJK and a mesh's traversal stop once the pair is proven farther. A pair closer than
+// maxDistance gets distance()'s answer and beyond = false. A farther one may get beyond = true: result.distance is
+// then only a lower bound of its distance (to rounding) above maxDistance, witnesses and normal are zero, and the
+// cache holds a valid warm start. maxDistance may be any number but NaN (+inf: distance()); heightfields search
+// without it.
+template <class T>
+Status distanceWithin(DistanceResult<T>& result, bool& beyond, T maxDistance, const Geometry<T>& geom0,
+                      const Transform<T>& pose0, const Geometry<T>& geom1, const Transform<T>& pose1,
+                      GjkCache<T>* cache = nullptr);
+
 // Sweeps geom0 from pose0 along unitDir up to maxDist against geom1 at pose1. `hasHit` says whether `hit` was
 // written. `inflation` grows geom0 by a rounded shell.
 template <class T>

@@ -17,14 +17,16 @@
 namespace gq {
 namespace {
 
+// The last argument is distanceWithin's bound (+inf for distance): the searched pairs (GJK, a mesh's traversal) may
+// stop once the pair is proven farther, writing only a distance above it; closed forms ignore it.
 template <class T> using DistanceFn = Status (*)(const Geometry<T>&, const Transform<T>&, const Geometry<T>&,
-                                                 const Transform<T>&, GjkCache<T>*, DistanceResult<T>&);
+                                                 const Transform<T>&, GjkCache<T>*, DistanceResult<T>&, T);
 
 // Adapts a closed-form kernel on concrete types to the table's signature.
 template <class T, class G0, class G1,
           void (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&, DistanceResult<T>&)>
 Status closedForm(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
-                  GjkCache<T>* cache, DistanceResult<T>& out) {
+                  GjkCache<T>* cache, DistanceResult<T>& out, T) {
   Kernel(g0.template get<G0>(), p0, g1.template get<G1>(), p1, out);
   if (cache) cache->iterations = 0;
   return {};
@@ -33,7 +35,7 @@ Status closedForm(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<
 // Plane against a support-mapped shape (the kernel takes the Geometry).
 template <class T>
 Status planeConvex(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
-                   GjkCache<T>* cache, DistanceResult<T>& out) {
+                   GjkCache<T>* cache, DistanceResult<T>& out, T) {
   detail::distancePlaneConvex(g0.template get<PlaneGeometry<T>>(), p0, g1, p1, out);
   if (cache) cache->iterations = 0;
   return {};
@@ -41,26 +43,26 @@ Status planeConvex(const Geometry<T>& g0, const Transform<T>& p0, const Geometry
 
 template <class T>
 Status gjk(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
-           GjkCache<T>* cache, DistanceResult<T>& out) {
-  return detail::distanceGjk(g0, p0, g1, p1, cache, out);
+           GjkCache<T>* cache, DistanceResult<T>& out, T farEnough) {
+  return detail::distanceGjk(g0, p0, g1, p1, cache, out, T(0), farEnough);
 }
 
 // A cell with custom geometry: the shape's own distance callback when it answers (gq/custom.h), else GJK/EPA.
 template <class T>
 Status customFirst(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
-                   GjkCache<T>* cache, DistanceResult<T>& out) {
+                   GjkCache<T>* cache, DistanceResult<T>& out, T farEnough) {
   bool answered = false;
   if (Status s = detail::customDistance(g0, p0, g1, p1, answered, out); !s.ok() || answered) {
     if (cache && answered) cache->iterations = 0;
     return s;
   }
-  return detail::distanceGjk(g0, p0, g1, p1, cache, out);
+  return detail::distanceGjk(g0, p0, g1, p1, cache, out, T(0), farEnough);
 }
 
 // Boxes: the closed form in box 0's frame (distance/box_box.cpp); GJK/EPA in its rare overlapping parallel-face case.
 template <class T>
 Status boxBox(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
-              GjkCache<T>* cache, DistanceResult<T>& out) {
+              GjkCache<T>* cache, DistanceResult<T>& out, T) {
   const Vec3<T>& h0 = g0.template get<BoxGeometry<T>>().halfExtents;
   const Vec3<T>& h1 = g1.template get<BoxGeometry<T>>().halfExtents;
   DistanceResult<T> local;
@@ -77,7 +79,7 @@ Status boxBox(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& 
 
 template <class T>
 Status unsupported(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&,
-                   GjkCache<T>*, DistanceResult<T>&) {
+                   GjkCache<T>*, DistanceResult<T>&, T) {
   return Status::unsupported(std::string("distance between ") + toString(g0.type()) + " and " + toString(g1.type()));
 }
 
@@ -85,7 +87,7 @@ Status unsupported(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>
 // frame and points from geom0 to geom1's side of the Minkowski difference, so it is re-expressed for the swap.
 template <class T, DistanceFn<T> Fn>
 Status swapped(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
-               GjkCache<T>* cache, DistanceResult<T>& out) {
+               GjkCache<T>* cache, DistanceResult<T>& out, T farEnough) {
   // A direction d in geom0's frame (geom0 supports along d, geom1 along -d) is -d in geom1's frame.
   const auto mirror = [](const Transform<T>& from, const Transform<T>& to, const Vec3<T>& d) {
     return Vec3<T>(to.rotateInv(-from.rotate(d)));
@@ -97,7 +99,7 @@ Status swapped(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>&
     for (std::uint32_t k = 0; k < inner.simplexSize; ++k) inner.simplexDirections[k] = mirror(p0, p1, cache->simplexDirections[k]);
   }
   DistanceResult<T> flipped;
-  const Status s = Fn(g1, p1, g0, p0, cache ? &inner : nullptr, flipped);
+  const Status s = Fn(g1, p1, g0, p0, cache ? &inner : nullptr, flipped, farEnough);
   if (!s.ok()) return s;
   out.distance = flipped.distance;
   out.point0 = flipped.point1;
@@ -157,13 +159,14 @@ template <class T> bool finiteResult(const DistanceResult<T>& r) {
   return std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal);
 }
 
-}  // namespace
-
+// distance and distanceWithin (maxDistance +inf for the former; `beyond` null).
 template <class T>
-Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
-                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache) {
+Status boundedDistance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
+                       const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache, T maxDistance,
+                       bool* beyond) {
   return detail::guarded([&]() -> Status {
     if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
+    if (std::isnan(maxDistance)) return Status::invalid("distanceWithin: maxDistance is NaN");
     if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1))
       return Status::unsupported("distance needs a convex custom geometry (isConvex() is false)");
     // Normalise the poses' rotations (validation accepts |q| within 1e-3 of 1). Kernels run with both poses
@@ -174,19 +177,48 @@ Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Trans
     const Transform<T> q1(Vec3<T>(pose1.p - origin), pose1.q.normalized());
     DistanceResult<T> r;
     const auto fn = kDistanceTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())];
-    const Status s = fn(geom0, q0, geom1, q1, cache, r);
+    const Status s = fn(geom0, q0, geom1, q1, cache, r, maxDistance);
     if (!s.ok()) return s;
+    if (r.distance > maxDistance) {  // proven beyond the bound (a search may have stopped): the distance alone
+      result = DistanceResult<T>();
+      result.distance = r.distance;
+      *beyond = true;
+      return s;
+    }
     r.point0 += origin;
     r.point1 += origin;
     if (!finiteResult(r)) return Status::internal("distance produced a non-finite result");
     result = r;
+    if (beyond) *beyond = false;
     return s;
   });
+}
+
+}  // namespace
+
+template <class T>
+Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
+                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache) {
+  return boundedDistance(result, geom0, pose0, geom1, pose1, cache, std::numeric_limits<T>::infinity(),
+                         static_cast<bool*>(nullptr));
+}
+
+template <class T>
+Status distanceWithin(DistanceResult<T>& result, bool& beyond, T maxDistance, const Geometry<T>& geom0,
+                      const Transform<T>& pose0, const Geometry<T>& geom1, const Transform<T>& pose1,
+                      GjkCache<T>* cache) {
+  return boundedDistance(result, geom0, pose0, geom1, pose1, cache, maxDistance, &beyond);
 }
 
 template Status distance<float>(DistanceResult<float>&, const Geometry<float>&, const Transform<float>&,
                                 const Geometry<float>&, const Transform<float>&, GjkCache<float>*);
 template Status distance<double>(DistanceResult<double>&, const Geometry<double>&, const Transform<double>&,
                                  const Geometry<double>&, const Transform<double>&, GjkCache<double>*);
+template Status distanceWithin<float>(DistanceResult<float>&, bool&, float, const Geometry<float>&,
+                                      const Transform<float>&, const Geometry<float>&, const Transform<float>&,
+                                      GjkCache<float>*);
+template Status distanceWithin<double>(DistanceResult<double>&, bool&, double, const Geometry<double>&,
+                                       const Transform<double>&, const Geometry<double>&, const Transform<double>&,
+                                       GjkCache<double>*);
 
 }  // namespace gq

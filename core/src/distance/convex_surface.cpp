@@ -13,14 +13,16 @@ namespace {
 
 template <class T> struct Best {
   bool found = false;
+  T limit = std::numeric_limits<T>::infinity();  // the caller's farEnough (>= 0): farther triangles are not wanted
   DistanceResult<T> result;
   void offer(const DistanceResult<T>& r) {
     if (!found || r.distance < result.distance) result = r;
     found = true;
   }
-  // Distance a triangle must not exceed to be kept, and its square for culling boxes (+inf until one is found).
-  T bound() const { return found ? result.distance : std::numeric_limits<T>::infinity(); }
-  T boundSq() const { return found ? result.distance * result.distance : std::numeric_limits<T>::infinity(); }
+  // Distance a triangle must not exceed to be kept, and its square for culling boxes (the limit until one is found).
+  T bound() const { return found ? result.distance : limit; }
+  T boundSq() const { return found ? result.distance * result.distance : limit * limit; }
+  bool bounded() const { return found || limit < std::numeric_limits<T>::infinity(); }
 };
 
 // Best-first over the BVH: children nearest to the shape's box first, pruned by the best distance found; a triangle
@@ -46,7 +48,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
       for (std::uint32_t k = 0; k < Bvh4Node::leafCount(e.ref); ++k) {
         const Triangle<T> tri = mesh.triangle(Bvh4Node::leafFirst(e.ref) + k);
         if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) continue;
-        if (ballBound && best.found && shape.distanceLowerBound(tri) > best.result.distance) continue;
+        if (ballBound && best.bounded() && shape.distanceLowerBound(tri) > best.bound()) continue;
         DistanceResult<T> r;
         if (!shape.distanceTo(tri, r, best.bound())) continue;
         best.offer(r);
@@ -77,7 +79,7 @@ void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldS
   const bool ballBound = shape.distanceRunsGjk();
   const auto visit = [&](std::uint32_t, const Triangle<T>& tri) {
     if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) return false;
-    if (ballBound && best.found && shape.distanceLowerBound(tri) > best.result.distance) return false;
+    if (ballBound && best.bounded() && shape.distanceLowerBound(tri) > best.bound()) return false;
     DistanceResult<T> r;
     if (!shape.distanceTo(tri, r, best.bound())) return false;
     best.offer(r);
@@ -99,11 +101,23 @@ void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldS
 
 template <class T>
 Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
-                             const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out) {
+                             const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out, T farEnough) {
   const TriangleQueryShape<T> shape(g0, p0.relativeTo(p1));
   Best<T> best;
   if (const auto* m = g1.template getIf<TriangleMeshGeometry<T>>()) {
+    if (cache) cache->iterations = 0;
+    // A surface's distance is >= 0: a negative bound leaves nothing to search (0 is the lower bound).
+    if (farEnough < T(0) && m->mesh->bvh.rootChild != Bvh4Node::kEmpty) {
+      out.distance = T(0);
+      return Status();
+    }
+    best.limit = farEnough;
     nearestOnMesh(shape, MeshSurface<T>(*m, Transform<T>()), best);
+    // Every triangle proven farther than the bound (strictly): just above it is a lower bound.
+    if (!best.found && m->mesh->bvh.rootChild != Bvh4Node::kEmpty) {
+      out.distance = std::nextafter(farEnough, std::numeric_limits<T>::infinity());
+      return Status();
+    }
   } else {
     nearestOnHeightField(shape, HeightFieldSurface<T>(g1.template get<HeightFieldGeometry<T>>(), Transform<T>()),
                          best);
@@ -118,9 +132,9 @@ Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, cons
 }
 
 template Status distanceConvexSurface<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
-                                             const Transform<float>&, GjkCache<float>*, DistanceResult<float>&);
+                                             const Transform<float>&, GjkCache<float>*, DistanceResult<float>&, float);
 template Status distanceConvexSurface<double>(const Geometry<double>&, const Transform<double>&,
                                               const Geometry<double>&, const Transform<double>&, GjkCache<double>*,
-                                              DistanceResult<double>&);
+                                              DistanceResult<double>&, double);
 
 }  // namespace gq::detail

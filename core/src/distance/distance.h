@@ -94,10 +94,12 @@ bool separatedBoxBoxLocal(const Vec3<T>& h0, const Vec3<T>& h1, const Mat3<T>& r
 
 // Any two of sphere, capsule, box, convex mesh, convex custom: GJK on the cores, EPA when they overlap. Returns Ok,
 // or Warning when GJK/EPA stopped with an error bound above tolerance (the best answer is still written).
-// `stopTolerance`: GJK's (gjk.h); EPA keeps its own.
+// `stopTolerance`: GJK's (gjk.h); EPA keeps its own. `farEnough`: GJK's; a pair proven farther gets only
+// out.distance, a lower bound above it (distanceWithin's contract).
 template <class T>
 Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
-                   GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance = T(0));
+                   GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance = T(0),
+                   T farEnough = std::numeric_limits<T>::infinity());
 
 // |d| and the unit normal d / |d| when |d|^2 over- or underflows (rangeSafeNorm, tryUnit), `fallback` when d is zero
 // or not finite. Out of line, d's components in and the answer out by value: a vector passed by reference would be

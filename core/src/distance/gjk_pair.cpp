@@ -30,10 +30,14 @@ bool exactHullDepth(const ConvexMeshGeometry<T>& h0, const Transform<T>& p0, con
 
 template <class T>
 Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geometry<T>& g1, const Transform<T>& pose1,
-                   GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance) {
+                   GjkCache<T>* cache, DistanceResult<T>& out, T stopTolerance, T farEnough) {
   const ConvexShape<T> a = makeConvexShape(g0, pose0);
   const ConvexShape<T> b = makeConvexShape(g1, pose1);
-  const GjkResult<T> g = gjkDistance(a, b, cache, stopTolerance);
+  const GjkResult<T> g = gjkDistance(a, b, cache, stopTolerance, static_cast<const Vec3<T>*>(nullptr), farEnough);
+  if (g.beyond) {
+    out.distance = g.distance;
+    return Status();
+  }
   if (!g.coresOverlap) {
     writeSeparated(g, out);
     return g.status.ok() ? Status() : Status::warning(g.status.message);
@@ -50,8 +54,8 @@ Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geome
 }
 
 template Status distanceGjk<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,
-                                   const Transform<float>&, GjkCache<float>*, DistanceResult<float>&, float);
+                                   const Transform<float>&, GjkCache<float>*, DistanceResult<float>&, float, float);
 template Status distanceGjk<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
-                                    const Transform<double>&, GjkCache<double>*, DistanceResult<double>&, double);
+                                    const Transform<double>&, GjkCache<double>*, DistanceResult<double>&, double, double);
 
 }  // namespace gq::detail

@@ -4,6 +4,8 @@
 // distance is 0 (no depth: a surface has no inside), point0 = point1 is a contact point on the surface and the
 // normal is the deepest triangle's MTD direction from the shape towards the surface (mesh-mesh: the first mesh's
 // triangle normal). Mesh-heightfield and heightfield-heightfield distance are Unsupported.
+#include <limits>
+
 #include "gq/geometry.h"
 #include "gq/query.h"
 #include "gq/status.h"
@@ -13,14 +15,18 @@ namespace gq::detail {
 
 // Sphere, capsule, box, convex mesh or convex custom (g0) vs triangle mesh or heightfield (g1): best-first BVH
 // traversal (cell rings for heightfields) bounded by the best distance so far; exact closed forms for sphere and
-// capsule triangles, GJK for the rest.
+// capsule triangles, GJK for the rest. `farEnough` (a mesh): the traversal starts bounded by it, and a mesh with no
+// triangle within it gets only out.distance, just above it (distanceWithin's contract); heightfields ignore it.
 template <class T>
 Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
-                             const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out);
+                             const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out,
+                             T farEnough = std::numeric_limits<T>::infinity());
 
-// Triangle mesh vs triangle mesh: best-first dual BVH traversal, exact triangle-triangle distance.
+// Triangle mesh vs triangle mesh: best-first dual BVH traversal, exact triangle-triangle distance; `farEnough` as
+// distanceConvexSurface's for a mesh.
 template <class T>
 Status distanceTriangleMeshTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
-                                        const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out);
+                                        const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out,
+                                        T farEnough = std::numeric_limits<T>::infinity());
 
 }  // namespace gq::detail

@@ -108,15 +108,20 @@ bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T mar
 }
 
 // Closest pair of triangles of two meshes: best-first on box distances, pruned by the best distance found so far.
-// Returns the cooked indices and closest points; distSq = 0 when the meshes touch.
+// Returns the cooked indices and closest points; distSq = 0 when the meshes touch. `limitSq`: pairs at or beyond it
+// are not wanted (found stays false when every pair is).
 template <class T> struct MeshPairClosest {
   T distSq = std::numeric_limits<T>::infinity();
   std::uint32_t cookedA = 0, cookedB = 0;
   Vec3<T> onA = Vec3<T>::Zero(), onB = Vec3<T>::Zero();
+  bool found = false;
 };
 
-template <class T> MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>& b) {
+template <class T>
+MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>& b,
+                                   T limitSq = std::numeric_limits<T>::infinity()) {
   MeshPairClosest<T> best;
+  best.distSq = limitSq;
   const Bvh4& bvhA = a.mesh().bvh;
   const Bvh4& bvhB = b.mesh().bvh;
   if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return best;
@@ -143,7 +148,7 @@ template <class T> MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, c
           const Triangle<T> tb = b.triangle(ib);
           if (boxDistanceSq(triangleBounds(ta), triangleBounds(tb)) > best.distSq) continue;
           const TrianglePairClosest<T> c = closestTriangleTriangle(ta, tb);
-          if (c.distSq < best.distSq) best = {c.distSq, ia, ib, c.onA, c.onB};
+          if (c.distSq < best.distSq) best = {c.distSq, ia, ib, c.onA, c.onB, true};
         }
       }
       continue;
