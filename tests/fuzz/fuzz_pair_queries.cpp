@@ -99,6 +99,19 @@ template <class T> void run(gq::fuzz::Bytes& in) {
     else if (hasHit)
       fuzz::require(isFinite(hit.position) && isFinite(hit.normal) && std::isfinite(hit.distance));
   }
+  {  // distanceWithin at any bound: bad input writes nothing; a stop is above the bound with zero witnesses
+    const T bound = in.scalar<T>();
+    DistanceResult<T> within;
+    within.distance = T(-7777);
+    bool beyond = false;
+    const Status s = distanceWithin(within, beyond, bound, g0, p0, g1, p1, in.flag() ? &cache : nullptr);
+    if (!s.ok()) fuzz::require(within.distance == T(-7777));
+    else if (beyond)
+      fuzz::require(within.distance > bound && within.point0 == Vec3<T>::Zero() && within.normal == Vec3<T>::Zero());
+    else
+      fuzz::require(std::isfinite(within.distance) && isFinite(within.point0) && isFinite(within.point1) &&
+                    isFinite(within.normal) && !(within.distance > bound));
+  }
 }
 
 }  // namespace

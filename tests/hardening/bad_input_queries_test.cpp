@@ -75,7 +75,7 @@ TYPED_TEST(BadInputQueries, NonUnitZeroOrNaNDirectionIsInvalidArgumentForRaysAnd
     FamilyInputs<T> in;
     in.dir = dir;
     expectEveryFamilyReturns(in, StatusCode::InvalidArgument,
-                             {"overlap", "penetration", "distance", "pointDistance", "bounds"});
+                             {"overlap", "penetration", "distance", "distanceWithin", "pointDistance", "bounds"});
   }
 }
 
@@ -85,7 +85,20 @@ TYPED_TEST(BadInputQueries, NegativeOrNaNMaxDistIsInvalidArgumentForRaysAndSweep
     FamilyInputs<T> in;
     in.maxDist = maxDist;
     expectEveryFamilyReturns(in, StatusCode::InvalidArgument,
-                             {"overlap", "penetration", "distance", "pointDistance", "bounds"});
+                             {"overlap", "penetration", "distance", "distanceWithin", "pointDistance", "bounds"});
+  }
+}
+
+TYPED_TEST(BadInputQueries, NaNMaxDistanceIsInvalidArgumentForDistanceWithin) {
+  using T = TypeParam;
+  FamilyInputs<T> in;
+  in.maxDistance = kNaN<T>;
+  const std::vector<FamilyOutcome> out = runEveryFamily(in);
+  EXPECT_EQ(out.back().family, "distanceWithin");
+  EXPECT_EQ(out.back().status.code, StatusCode::InvalidArgument);
+  for (const T bound : {-kInf<T>, T(-1), T(0), kInf<T>}) {  // any other bound is a bound
+    in.maxDistance = bound;
+    EXPECT_TRUE(runEveryFamily(in).back().status.ok()) << double(bound);
   }
 }
 
@@ -257,8 +270,8 @@ TYPED_TEST(BadInputQueries, PairsTheSpecLeavesUndefinedReturnUnsupported) {
   in.geom0 = in.geom1 = PlaneGeometry<T>();
   const std::vector<FamilyOutcome> out = runEveryFamily(in);
   for (const FamilyOutcome& o : out)
-    if (o.family == "overlap" || o.family == "penetration" || o.family == "distance" || o.family == "sweep" ||
-        o.family == "pointDistance")
+    if (o.family == "overlap" || o.family == "penetration" || o.family == "distance" || o.family == "distanceWithin" ||
+        o.family == "sweep" || o.family == "pointDistance")
       EXPECT_EQ(o.status.code, StatusCode::Unsupported) << o.family << ": " << o.status.toString();
   in.geom0 = SphereGeometry<T>(T(1));
   in.geom1 = heightFieldGeometry<T>();

@@ -2,6 +2,7 @@
 // Runs every query family of gq/query.h on one set of inputs, starting each output from a sentinel, and checks the
 // contract: a rejected call (any status that is not ok) leaves its output bitwise untouched; an accepted one writes
 // only finite numbers.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ template <class T> struct FamilyInputs {
   T inflation = T(0);
   T boundsOffset = T(0);
   T boundsInflation = T(1.01);
+  T maxDistance = std::numeric_limits<T>::infinity();  // distanceWithin's bound
 };
 
 struct FamilyOutcome {
@@ -85,6 +87,13 @@ template <class T> std::vector<FamilyOutcome> runEveryFamily(const FamilyInputs<
     Bounds3<T> b = sentinelBounds<T>();
     const Status s = computeGeomBounds(b, in.geom1, in.pose1, in.boundsOffset, in.boundsInflation);
     record("bounds", s, sameBits(b, sentinelBounds<T>()), finite(b.min) && finite(b.max));
+  }
+  {  // last, so that the other families keep their indices
+    DistanceResult<T> r = sentinelDistance<T>();
+    bool beyond = true;
+    const Status s = distanceWithin(r, beyond, in.maxDistance, in.geom0, in.pose0, in.geom1, in.pose1);
+    record("distanceWithin", s, beyond && sameBits(r, sentinelDistance<T>()),
+           !std::isnan(r.distance) && finite(r.point0) && finite(r.point1) && finite(r.normal));
   }
   return out;
 }
