@@ -356,7 +356,7 @@ TYPED_TEST(DistanceGjk, FarEnoughStopsOnlyBeyondItWithALowerBound) {
   const auto hull = makeHull<T>(pointsOnEllipsoid<T>(rng, 30, Eigen::Vector3d(0.6, 0.5, 0.4)));
   const gq::CapsuleGeometry<T> cap{T(0.2), T(0.5)};
   gq::GjkCache<T> cache;
-  int stopped = 0, answered = 0;
+  int stopped = 0, answered = 0, penetrating = 0;
   for (int i = 0; i < kPoses; ++i) {
     const auto p0 = randomPose<T>(rng, 1.5), p1 = randomPose<T>(rng, 1.5);
     const bool withCapsule = i % 2 == 1;
@@ -365,8 +365,9 @@ TYPED_TEST(DistanceGjk, FarEnoughStopsOnlyBeyondItWithALowerBound) {
     const RoundedPolytope r1 = withCapsule ? roundedCapsule(cap, p1) : roundedHull(*hull, gq::MeshScale<T>(), p1);
     const L exact = exactSignedDistance(roundedHull(*hull, gq::MeshScale<T>(), p0), r1);
     const auto a = gq::detail::makeConvexShape(g0, p0), b = gq::detail::makeConvexShape(g1, p1);
+    // Signed: a penetrating pair's bound is negative too (0.25 x a depth is above the distance, 1.1 x below).
     for (const double factor : {0.25, 0.9, 1.1}) {
-      const T farEnough = T(std::max(0.0, double(exact)) * factor);
+      const T farEnough = T(double(exact) * factor);
       const gq::detail::GjkResult<T> g =
           gq::detail::gjkDistance(a, b, &cache, T(0), static_cast<const gq::Vec3<T>*>(nullptr), farEnough);
       SCOPED_TRACE(testing::Message() << "pose " << i << ", factor " << factor << ", exact " << double(exact));
@@ -379,13 +380,15 @@ TYPED_TEST(DistanceGjk, FarEnoughStopsOnlyBeyondItWithALowerBound) {
         ASSERT_TRUE(g.status.ok());
         if (!g.coresOverlap) EXPECT_NEAR(double(g.distance), double(exact), tol);
         else EXPECT_LT(double(exact), tol);
+        penetrating += exact < -tol;
         ++answered;
       }
-      if (factor > 1) EXPECT_FALSE(g.beyond);  // a lower bound never exceeds the distance
+      if (double(farEnough) > double(exact) + tol) EXPECT_FALSE(g.beyond);  // a lower bound never exceeds the distance
     }
   }
   EXPECT_GT(stopped, kPoses / 2);  // both outcomes are exercised
   EXPECT_GT(answered, kPoses / 2);
+  EXPECT_GT(penetrating, kPoses / 10);  // negative bounds too
 }
 
 }  // namespace

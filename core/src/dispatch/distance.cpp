@@ -179,7 +179,7 @@ Status boundedDistance(DistanceResult<T>& result, const Geometry<T>& geom0, cons
     const auto fn = kDistanceTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())];
     const Status s = fn(geom0, q0, geom1, q1, cache, r, maxDistance);
     if (!s.ok()) return s;
-    if (r.distance > maxDistance) {  // proven beyond the bound (a search may have stopped): the distance alone
+    if (beyond && r.distance > maxDistance) {  // proven beyond the bound (a search may have stopped): the distance alone
       result = DistanceResult<T>();
       result.distance = r.distance;
       *beyond = true;

@@ -110,8 +110,9 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
     distanceRescaled(a, b, cache, stopTolerance, start, farEnough, rescaleFactor(length), r);
     return r;
   }
-  // Core lower bounds past this certify the shapes farther than farEnough (+inf: never).
-  const T farCore = farEnough + a.margin + b.margin;
+  // Core lower bounds past this certify the shapes farther than farEnough (+inf: never). Only cores proven apart
+  // (a positive bound) bound the signed distance from below: overlapping cores' depth has no lower bound here.
+  const T farCore = std::max(farEnough + a.margin + b.margin, T(0));
   const bool bounded = farCore < std::numeric_limits<T>::infinity();
   const T tolerance = gjkToleranceFor(length);
   const T gapTolerance = std::max(tolerance, stopTolerance);  // overlap is still decided at `tolerance`
