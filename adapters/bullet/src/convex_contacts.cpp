@@ -97,8 +97,11 @@ bool penetratingPolytopeContacts(const PlacedShape& a, const PlacedShape& b, Rea
 
 void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
   if (hasSatPenetration(a, b) && penetratingPolytopeContacts(a, b, threshold, sink)) return;
+  // Only a pair within the contact threshold makes contacts: GJK may stop once it proves the pair farther.
   DistanceResult<Real> d;
-  if (!distance(d, a.view->geom, a.pose, b.view->geom, b.pose).ok()) return;
+  bool beyond = false;
+  const Real within = threshold + a.view->margin + b.view->margin;
+  if (!distanceWithin(d, beyond, within, a.view->geom, a.pose, b.view->geom, b.pose).ok() || beyond) return;
   const Real depth = d.distance - a.view->margin - b.view->margin;
   const V3 normalOnB = -d.normal;  // gq's normal runs from A to B
   if (!(depth <= threshold) || !isFinite(normalOnB) || normalOnB.squaredNorm() < Real(0.5)) return;

@@ -408,7 +408,8 @@ Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::v
   return {};
 }
 
-// Every checked shape pair, nearest enclosing spheres first, so the best distance found early prunes the rest.
+// Every checked shape pair, nearest enclosing spheres first, so the best distance found early prunes the rest: pairs
+// by their spheres' gap, and each pair's search (GJK, a mesh's traversal) by distanceWithin.
 template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result) {
   Status s = placeBodies(q);
   if (!s.ok()) return s;
@@ -433,9 +434,10 @@ template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vecto
     DistanceResult<T> d;
     const Transform<T>& pa = shapePose(c.sa);
     const Transform<T>& pb = shapePose(c.sb);
-    s = distance(d, model_->shapes[c.sa].geometry, pa, model_->shapes[c.sb].geometry, pb);
+    bool beyond = false;
+    s = distanceWithin(d, beyond, best.distance, model_->shapes[c.sa].geometry, pa, model_->shapes[c.sb].geometry, pb);
     if (!s.ok()) return s;
-    if (d.distance < best.distance) {
+    if (!beyond && d.distance < best.distance) {
       best.distance = d.distance;
       best.pair = {model_->shapes[c.sa].link, model_->shapes[c.sb].link};
       best.point0 = d.point0;
