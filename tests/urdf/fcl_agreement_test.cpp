@@ -143,5 +143,32 @@ TYPED_TEST(FclAgreement, BestPrimitiveModeAgreesWithFclOnTenThousandRandomConfig
   compareOnRandomConfigurations<TypeParam>(kUr5, Representation::BestPrimitive, 10000);
 }
 
+// The FCL checker's selfDistance (MoveIt's pre-seeded fcl::distance) and gq's agree on the clearance of
+// collision-free configurations, hulls and meshes of Panda (the FCL checker is double only; FCL's GJK stops at its
+// 1e-6 tolerance, so 1e-5 m). Where they disagree beyond it the test fails: no referee needed at that size.
+TEST(FclSelfDistance, ClearanceAgreesWithGqOnCollisionFreeConfigurations) {
+  for (const Representation rep : {Representation::Hull, Representation::Mesh}) {
+    const auto model = loadCached<double>(kPanda, rep);
+    std::unique_ptr<FclSelfCollisionChecker> fcl;
+    ASSERT_TRUE(FclSelfCollisionChecker::create(model, fcl).ok());
+    SelfCollisionChecker<double> gq(model);
+    std::uint64_t rng = 23;
+    int compared = 0;
+    for (int i = 0; i < 60; ++i) {
+      const std::vector<double> q = randomConfiguration(*model, rng);
+      CollisionResult c;
+      ASSERT_TRUE(gq.checkSelfCollision(q, c).ok());
+      if (c.colliding) continue;
+      SelfDistanceResult<double> a, b;
+      ASSERT_TRUE(gq.selfDistance(q, a).ok());
+      ASSERT_TRUE(fcl->selfDistance(q, b).ok());
+      EXPECT_NEAR(a.distance, b.distance, 1e-5) << (rep == Representation::Hull ? "hull" : "mesh") << " configuration " << i;
+      EXPECT_GT(b.distance, 0.0);
+      ++compared;
+    }
+    EXPECT_GT(compared, 10);
+  }
+}
+
 }  // namespace
 }  // namespace gq::urdf::test

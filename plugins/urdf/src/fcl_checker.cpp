@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "gq/cooking.h"
@@ -108,8 +109,8 @@ Status FclSelfCollisionChecker::create(std::shared_ptr<const RobotModel<double>>
   return {};
 }
 
-Status FclSelfCollisionChecker::checkSelfCollision(const std::vector<double>& q, CollisionResult& result,
-                                                   const CollisionRequest& request) {
+// Places every shape's FCL object and its link's AABB at configuration q.
+Status FclSelfCollisionChecker::place(const std::vector<double>& q) {
   Impl& m = *impl_;
   const RobotModel<double>& model = *m.model;
   Status s = m.chain->place(q, m.bodyRotations, m.bodyPositions);
@@ -129,6 +130,15 @@ Status FclSelfCollisionChecker::checkSelfCollision(const std::vector<double>& q,
       first = false;
     }
   }
+  return {};
+}
+
+Status FclSelfCollisionChecker::checkSelfCollision(const std::vector<double>& q, CollisionResult& result,
+                                                   const CollisionRequest& request) {
+  Status s = place(q);
+  if (!s.ok()) return s;
+  Impl& m = *impl_;
+  const RobotModel<double>& model = *m.model;
   CollisionResult out;
   fcl::CollisionRequestd fclRequest;  // one contact, boolean answer
   for (const LinkPair& p : m.checkedPairs) {
@@ -153,6 +163,31 @@ Status FclSelfCollisionChecker::checkSelfCollision(const std::vector<double>& q,
   }
   std::sort(out.pairs.begin(), out.pairs.end());  // the pair order is by contact frequency, the result is sorted
   result = std::move(out);
+  return {};
+}
+
+Status FclSelfCollisionChecker::selfDistance(const std::vector<double>& q, SelfDistanceResult<double>& result) {
+  Status s = place(q);
+  if (!s.ok()) return s;
+  Impl& m = *impl_;
+  const RobotModel<double>& model = *m.model;
+  fcl::DistanceRequestd request(true);
+  request.enable_signed_distance = true;
+  fcl::DistanceResultd fclResult;  // min_distance starts at the largest double: every pair lowers it in turn
+  SelfDistanceResult<double> out;
+  out.distance = std::numeric_limits<double>::infinity();
+  for (const LinkPair& p : m.checkedPairs)
+    for (std::uint32_t sa : model.links[p.a].shapes)
+      for (std::uint32_t sb : model.links[p.b].shapes) {
+        const double before = fclResult.min_distance;
+        fcl::distance(m.objects[sa].get(), m.objects[sb].get(), request, fclResult);
+        if (!(fclResult.min_distance < before)) continue;
+        out.distance = fclResult.min_distance;
+        out.pair = p;
+        out.point0 = fclResult.nearest_points[0];
+        out.point1 = fclResult.nearest_points[1];
+      }
+  result = out;
   return {};
 }
 

@@ -16,8 +16,14 @@ class FclSelfCollisionChecker {
 
   Status checkSelfCollision(const std::vector<double>& q, CollisionResult& result,
                             const CollisionRequest& request = CollisionRequest());
+  // MoveIt's narrow-phase pattern: fcl::distance over the checked shape pairs with the result pre-seeded by the
+  // smallest distance so far (FCL prunes its BVH traversals with it), signed distance on. FCL stops at the first
+  // penetration (its DistanceRequest::isSatisfied), so a colliding configuration's answer is some negative value,
+  // not the deepest (gq's selfDistance reports the deepest); apart, both are the clearance.
+  Status selfDistance(const std::vector<double>& q, SelfDistanceResult<double>& result);
 
  private:
+  Status place(const std::vector<double>& q);
   struct Impl;
   explicit FclSelfCollisionChecker(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
