@@ -408,8 +408,10 @@ Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::v
   return {};
 }
 
-// Every checked shape pair, nearest enclosing spheres first, so the best distance found early prunes the rest: pairs
-// by their spheres' gap, and each pair's search (GJK, a mesh's traversal) by distanceWithin.
+// Every checked shape pair, nearest lower bound first, so the best distance found early prunes the rest: a pair's
+// bound is its enclosing spheres' gap, or for mesh shapes their hulls' distance (a mesh lies in its hull; GJK on two
+// hulls costs a fraction of a dual BVH traversal), and each pair's search (GJK, a mesh's traversal) is bounded by
+// the best so far (distanceWithin).
 template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result) {
   Status s = placeBodies(q);
   if (!s.ok()) return s;
@@ -424,6 +426,15 @@ template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vecto
       for (std::uint32_t sb : model_->links[p.links.b].shapes)
         pairs.push_back({sphereGap(shapeCentres_[sa], shapeBounds_[sa].radius, shapeCentres_[sb], shapeBounds_[sb].radius),
                          sa, sb});
+  DistanceResult<T> d;
+  for (Candidate& c : pairs) {
+    if (!shapeBounds_[c.sa].hasHull && !shapeBounds_[c.sb].hasHull) continue;
+    const Geometry<T>& ha = shapeBounds_[c.sa].hasHull ? shapeBounds_[c.sa].hull : model_->shapes[c.sa].geometry;
+    const Geometry<T>& hb = shapeBounds_[c.sb].hasHull ? shapeBounds_[c.sb].hull : model_->shapes[c.sb].geometry;
+    s = distance(d, ha, shapePose(c.sa), hb, shapePose(c.sb));
+    if (!s.ok()) return s;
+    c.bound = std::max(c.bound, d.distance);
+  }
   std::sort(pairs.begin(), pairs.end(), [](const Candidate& x, const Candidate& y) { return x.bound < y.bound; });
   SelfDistanceResult<T> best;
   best.distance = std::numeric_limits<T>::infinity();
@@ -431,7 +442,6 @@ template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vecto
   for (const Candidate& c : pairs) {
     if (c.bound > best.distance) break;
     ++lastNarrow_;
-    DistanceResult<T> d;
     const Transform<T>& pa = shapePose(c.sa);
     const Transform<T>& pb = shapePose(c.sb);
     bool beyond = false;
