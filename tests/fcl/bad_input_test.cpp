@@ -144,6 +144,43 @@ TEST(FclBadInput, LinearPartThatIsNotARotationWritesNothing) {
   expectNothingWrittenEitherOrder(box(1, 1, 1), scaled, box(1, 1, 1), at(0, 0, 0));
 }
 
+// Every pair of the common solids (the fast table: sphere, box, capsule, cylinder, convex; each kernel runs its
+// own pose check, some after the kernel so that the check overlaps it) writes nothing when either pose has a NaN
+// translation, a NaN or infinite rotation entry, or (but for a sphere, whose rotation moves nothing) a sheared or
+// scaled linear part.
+TEST(FclBadInput, EveryCommonSolidPairWritesNothingOnABadPose) {
+  using gq::fcltest::Kind;
+  std::mt19937 rng(5);
+  const Kind kinds[] = {Kind::Sphere, Kind::Box, Kind::Capsule, Kind::Cylinder, Kind::Convex};
+  for (const Kind badKind : kinds)
+    for (const Kind goodKind : kinds) {
+      const gq::fcltest::TestShape bad = gq::fcltest::makeShape(badKind, rng), good = gq::fcltest::makeShape(goodKind, rng);
+      std::vector<std::pair<const char*, ::fcl::Transform3d>> poses;
+      ::fcl::Transform3d p = at(0.2, 0.1, 0);
+      p.translation().y() = kNaN;
+      poses.push_back({"NaN translation", p});
+      p = at(0.2, 0.1, 0);
+      p.linear()(0, 1) = kNaN;
+      poses.push_back({"NaN rotation entry", p});
+      p = at(0.2, 0.1, 0);
+      p.linear()(2, 2) = kInf;
+      poses.push_back({"infinite rotation entry", p});
+      if (badKind != Kind::Sphere) {
+        p = at(0.2, 0.1, 0);
+        p.linear()(1, 0) = 0.05;
+        poses.push_back({"sheared", p});
+        p = at(3, 0.1, 0);  // apart as read
+        p.linear() *= 1.5;
+        poses.push_back({"scaled, apart", p});
+      }
+      for (const auto& [what, pose] : poses) {
+        SCOPED_TRACE(testing::Message() << gq::fcltest::name(badKind) << " (" << what << ") with "
+                                        << gq::fcltest::name(goodKind));
+        expectNothingWrittenEitherOrder(bad.geometry, pose, good.geometry, at(0, 0, 0));
+      }
+    }
+}
+
 TEST(FclBadInput, ShearedLinearPartWritesNothingWhicheverEntryIsSheared) {
   // One off-diagonal entry at a time: each makes one off-diagonal entry of R^T R non-zero (the orthonormality test
   // sums them lane by lane in double, solid_pairs.cpp). A deviation within the unit tolerance is accepted.

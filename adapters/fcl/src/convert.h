@@ -228,9 +228,11 @@ bool bothRigid(const Eigen::Transform<S, 3, Eigen::Isometry>& a, const Eigen::Tr
   else return rigid;
 }
 #if defined(__SSE2__)
+// bothRigidInline is the check inline, for a kernel that runs it beside its own arithmetic (capsule-capsule distance:
+// 28.5 -> 27.9 ns, 498 -> 507 instructions, three alternating runs); bothRigid is its out-of-line call.
 template <bool kRotation>
-bool bothRigid(const Eigen::Transform<double, 3, Eigen::Isometry>& a,
-               const Eigen::Transform<double, 3, Eigen::Isometry>& b) {
+[[gnu::always_inline]] inline bool bothRigidInline(const Eigen::Transform<double, 3, Eigen::Isometry>& a,
+                                                   const Eigen::Transform<double, 3, Eigen::Isometry>& b) {
   const double *m = a.data(), *n = b.data();  // column-major 4x4: the columns start at 0, 4, 8, the translation at 12
   const auto pair = [&](int k) { return _mm_loadh_pd(_mm_load_sd(m + k), n + k); };
   const auto add3 = [](__m128d p, __m128d q, __m128d r) { return _mm_add_pd(_mm_add_pd(p, q), r); };
@@ -254,7 +256,17 @@ bool bothRigid(const Eigen::Transform<double, 3, Eigen::Isometry>& a,
   }
   return _mm_movemask_pd(ok) == 3;
 }
+template <bool kRotation>
+bool bothRigid(const Eigen::Transform<double, 3, Eigen::Isometry>& a,
+               const Eigen::Transform<double, 3, Eigen::Isometry>& b) {
+  return bothRigidInline<kRotation>(a, b);
+}
 #endif
+template <bool kRotation, class S>
+[[gnu::always_inline]] inline bool bothRigidInline(const Eigen::Transform<S, 3, Eigen::Isometry>& a,
+                                                   const Eigen::Transform<S, 3, Eigen::Isometry>& b) {
+  return bothRigid<kRotation>(a, b);
+}
 
 // The linear part where the converted shape's pose uses it (every frame but a sphere's) is a rotation: orthonormal
 // by the Gram test and not a reflection (its quaternion would not be a rotation's); a sphere's only needs to be
