@@ -183,7 +183,7 @@ TYPED_TEST(MeshDistance, ConvexVsHeightFieldEqualsBruteForceMinimumOverCells) {
   const Transform<T> fieldPose(Vec3<T>(T(-2), T(0), T(-2)), Quat<T>(Eigen::AngleAxis<T>(T(0.25), Vec3<T>::UnitZ())));
   std::vector<bool> valid;
   const std::vector<TriL> tris = heightFieldTriangles(desc, T(1), T(0.5), T(0.4), fieldPose, valid);
-  int contacts = 0;
+  int contacts = 0, stopped = 0;
   for (int i = 0; i < 1200; ++i) {
     const int kind = i % 3;
     const Transform<T> pose = rng.pose<T>(2.5);
@@ -194,10 +194,27 @@ TYPED_TEST(MeshDistance, ConvexVsHeightFieldEqualsBruteForceMinimumOverCells) {
       if (valid[k]) expected = std::min(expected, ref.distanceTo(tris[k]));
     DistanceResult<T> r;
     ASSERT_TRUE(distance(r, shape, pose, hf, fieldPose).ok());
-    ASSERT_NEAR(double(r.distance), double(expected), double(tolerance<T>(kind == 2) * std::max<LD>(1, expected))) << "pose " << i;
+    const LD tol = tolerance<T>(kind == 2) * std::max<LD>(1, expected);
+    ASSERT_NEAR(double(r.distance), double(expected), double(tol)) << "pose " << i;
     contacts += expected == 0;
+    // distanceWithin: the rings stop growing past the bound; a stop is a lower bound above it.
+    for (const double fraction : {-0.1, 0.5, 1.01, 2.0}) {
+      const T bound = T(fraction * double(expected)) - (fraction < 0 ? T(0.1) : T(0));
+      DistanceResult<T> w;
+      bool beyond = false;
+      ASSERT_TRUE(distanceWithin(w, beyond, bound, shape, pose, hf, fieldPose).ok());
+      if (beyond) {
+        EXPECT_GT(w.distance, bound) << "pose " << i;
+        EXPECT_LE(double(w.distance), double(expected + tol)) << "pose " << i;
+        ++stopped;
+      } else {
+        EXPECT_NEAR(double(w.distance), double(expected), double(tol)) << "pose " << i << ", bound " << double(bound);
+      }
+      if (double(bound) > double(expected + tol)) EXPECT_FALSE(beyond) << "pose " << i;
+    }
   }
   EXPECT_GT(contacts, 50);
+  EXPECT_GT(stopped, 600);
 }
 
 TYPED_TEST(MeshDistance, PlaneAndSurfaceSurfacePairsOtherThanMeshMeshAreUnsupported) {

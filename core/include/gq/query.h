@@ -78,11 +78,10 @@ Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Trans
                 const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache = nullptr);
 
 // Distance for a caller that keeps only distances below `maxDistance` (the nearest pair so far; MoveIt pre-seeds
-// FCL's result with it): GJK and a mesh's traversal stop once the pair is proven farther. A pair closer than
+// FCL's result with it): GJK and mesh or heightfield searches stop once the pair is proven farther. A pair closer than
 // maxDistance gets distance()'s answer and beyond = false. A farther one may get beyond = true: result.distance is
 // then only a lower bound of its distance (to rounding) above maxDistance, witnesses and normal are zero, and the
-// cache holds a valid warm start. maxDistance may be any number but NaN (+inf: distance()); heightfields search
-// without it.
+// cache holds a valid warm start. maxDistance may be any number but NaN (+inf: distance()).
 template <class T>
 Status distanceWithin(DistanceResult<T>& result, bool& beyond, T maxDistance, const Geometry<T>& geom0,
                       const Transform<T>& pose0, const Geometry<T>& geom1, const Transform<T>& pose1,

@@ -15,7 +15,10 @@ template <class T> struct Best {
   bool found = false;
   T limit = std::numeric_limits<T>::infinity();  // the caller's farEnough (>= 0): farther triangles are not wanted
   DistanceResult<T> result;
+  // A triangle beyond the limit is not kept: triangles pruned by the limit before it may be nearer, so it would be
+  // neither the answer nor a lower bound (a stop reports just above the limit instead).
   void offer(const DistanceResult<T>& r) {
+    if (r.distance > limit) return;
     if (!found || r.distance < result.distance) result = r;
     found = true;
   }
@@ -52,7 +55,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
         DistanceResult<T> r;
         if (!shape.distanceTo(tri, r, best.bound())) continue;
         best.offer(r);
-        if (best.result.distance <= T(0)) return;
+        if (best.found && best.result.distance <= T(0)) return;
       }
       continue;
     }
@@ -68,8 +71,9 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
   }
 }
 
-// Heightfield: cells under the shape's box grown by a radius that doubles until a triangle is found, then one pass
-// with the radius grown to the best distance (every closer triangle lies in that box).
+// Heightfield: cells under the shape's box grown by a radius that doubles until a triangle is found or the radius
+// passes the caller's limit, then one pass with the radius grown to the best distance (every closer triangle lies in
+// that box).
 template <class T>
 void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldSurface<T>& field, Best<T>& best) {
   const Bounds3<T> box = shape.worldBounds();
@@ -83,7 +87,7 @@ void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldS
     DistanceResult<T> r;
     if (!shape.distanceTo(tri, r, best.bound())) return false;
     best.offer(r);
-    return best.result.distance <= T(0);
+    return best.found && best.result.distance <= T(0);
   };
   // Beyond this radius the grown box holds the whole heightfield: nothing found means every cell is a hole.
   const T limit = std::sqrt(boxDistanceSq(box, fieldBox)) + span;
@@ -92,6 +96,7 @@ void nearestOnHeightField(const TriangleQueryShape<T>& shape, const HeightFieldS
     // !(radius <= limit) also ends NaN bounds, and an infinite radius has just visited every cell (coordinates
     // beyond the scalar range made `limit` infinite and this loop endless; found by fuzz_pair_queries).
     if (best.found || !(radius <= limit) || !std::isfinite(radius)) break;
+    if (radius >= best.limit) return;  // every triangle within the caller's limit has been visited
     radius *= T(2);
   }
   if (best.found && best.result.distance > radius) field.forEachTriangle(grown(box, best.result.distance), visit);
@@ -104,30 +109,28 @@ Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, cons
                              const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out, T farEnough) {
   const TriangleQueryShape<T> shape(g0, p0.relativeTo(p1));
   Best<T> best;
-  if (const auto* m = g1.template getIf<TriangleMeshGeometry<T>>()) {
-    if (cache) cache->iterations = 0;
-    // A surface's distance is >= 0: a negative bound leaves nothing to search (0 is the lower bound).
-    if (farEnough < T(0) && m->mesh->bvh.rootChild != Bvh4Node::kEmpty) {
-      out.distance = T(0);
-      return Status();
-    }
-    best.limit = farEnough;
-    nearestOnMesh(shape, MeshSurface<T>(*m, Transform<T>()), best);
-    // Every triangle proven farther than the bound (strictly): just above it is a lower bound.
-    if (!best.found && m->mesh->bvh.rootChild != Bvh4Node::kEmpty) {
-      out.distance = std::nextafter(farEnough, std::numeric_limits<T>::infinity());
-      return Status();
-    }
-  } else {
-    nearestOnHeightField(shape, HeightFieldSurface<T>(g1.template get<HeightFieldGeometry<T>>(), Transform<T>()),
-                         best);
+  const auto* m = g1.template getIf<TriangleMeshGeometry<T>>();
+  // A surface's distance is >= 0: a negative bound leaves nothing to search (0 is the lower bound). An empty mesh
+  // keeps its status; a heightfield without a cell within the bound (holes included) is beyond it.
+  const bool searchable = !m || m->mesh->bvh.rootChild != Bvh4Node::kEmpty;
+  if (cache) cache->iterations = 0;
+  if (farEnough < T(0) && searchable) {
+    out.distance = T(0);
+    return Status();
+  }
+  best.limit = farEnough;
+  if (m) nearestOnMesh(shape, MeshSurface<T>(*m, Transform<T>()), best);
+  else nearestOnHeightField(shape, HeightFieldSurface<T>(g1.template get<HeightFieldGeometry<T>>(), Transform<T>()), best);
+  // Every triangle proven farther than a finite bound (strictly): just above it is a lower bound.
+  if (!best.found && searchable && farEnough < std::numeric_limits<T>::infinity()) {
+    out.distance = std::nextafter(farEnough, std::numeric_limits<T>::infinity());
+    return Status();
   }
   if (!best.found) return Status::degenerate("the surface has no triangles (every heightfield cell is a hole)");
   out.distance = best.result.distance;
   out.point0 = p1.transform(best.result.point0);
   out.point1 = p1.transform(best.result.point1);
   out.normal = p1.rotate(best.result.normal);
-  if (cache) cache->iterations = 0;
   return Status();
 }
 

@@ -15,8 +15,9 @@ namespace gq::detail {
 
 // Sphere, capsule, box, convex mesh or convex custom (g0) vs triangle mesh or heightfield (g1): best-first BVH
 // traversal (cell rings for heightfields) bounded by the best distance so far; exact closed forms for sphere and
-// capsule triangles, GJK for the rest. `farEnough` (a mesh): the traversal starts bounded by it, and a mesh with no
-// triangle within it gets only out.distance, just above it (distanceWithin's contract); heightfields ignore it.
+// capsule triangles, GJK for the rest. `farEnough`: the search starts bounded by it (a heightfield's rings stop
+// growing past it), and a surface with no triangle within it gets only out.distance, just above it
+// (distanceWithin's contract).
 template <class T>
 Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
                              const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out,
