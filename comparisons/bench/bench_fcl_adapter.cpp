@@ -161,12 +161,13 @@ template <bool Gq> void BM_DistanceSeeded(benchmark::State& state) {
   state.SetLabel(familyName(int(state.range(0))));
 }
 
-// 1000 mixed objects in [-6, 6]^3; the callback runs the narrow phase of the same library and counts collisions.
+// 1000 mixed objects (sphere, box, capsule, cylinder in turn), anywhere in [-6, 6]^3 or, sparse, within 0.1 of the
+// nodes of a 10 x 10 x 10 grid of spacing 1.6 (none touch), with random orientations.
 struct Scene {
   std::vector<std::unique_ptr<::fcl::CollisionObjectd>> objects;
   std::vector<::fcl::CollisionObjectd*> pointers;
-  Scene() {
-    std::mt19937 rng(42);
+  explicit Scene(bool sparse = false) {
+    std::mt19937 rng(sparse ? 43 : 42);
     std::uniform_real_distribution<double> u(0.15, 0.35);
     for (int i = 0; i < 1000; ++i) {
       Geom g;
@@ -176,7 +177,9 @@ struct Scene {
         case 2: g = std::make_shared<::fcl::Capsuled>(u(rng), 2 * u(rng)); break;
         default: g = std::make_shared<::fcl::Cylinderd>(u(rng), 2 * u(rng));
       }
-      objects.push_back(std::make_unique<::fcl::CollisionObjectd>(g, randomPose(rng, 6.0)));
+      ::fcl::Transform3d tf = randomPose(rng, sparse ? 0.1 : 6.0);
+      if (sparse) tf.translation() += 1.6 * ::fcl::Vector3d(i % 10, (i / 10) % 10, i / 100);
+      objects.push_back(std::make_unique<::fcl::CollisionObjectd>(g, tf));
       pointers.push_back(objects.back().get());
     }
   }
@@ -210,38 +213,11 @@ template <bool Gq> void BM_BroadphaseSelfCollide(benchmark::State& state) {
   state.SetLabel("colliding pairs " + std::to_string(pairs));
 }
 
-// Self distance on a sparse scene (1000 of the same mixed objects on a 10 x 10 x 10 grid of spacing 1.6 with random
-// orientations: none touch), each library's manager with its DefaultDistanceFunction (the running minimum prunes
-// both the tree and, through the pre-seeded result, the narrow phase).
-struct SparseScene {
-  std::vector<std::unique_ptr<::fcl::CollisionObjectd>> objects;
-  std::vector<::fcl::CollisionObjectd*> pointers;
-  SparseScene() {
-    std::mt19937 rng(43);
-    std::uniform_real_distribution<double> u(0.15, 0.35);
-    for (int i = 0; i < 1000; ++i) {
-      Geom g;
-      switch (i % 4) {
-        case 0: g = std::make_shared<::fcl::Sphered>(u(rng)); break;
-        case 1: g = std::make_shared<::fcl::Boxd>(2 * u(rng), 2 * u(rng), 2 * u(rng)); break;
-        case 2: g = std::make_shared<::fcl::Capsuled>(u(rng), 2 * u(rng)); break;
-        default: g = std::make_shared<::fcl::Cylinderd>(u(rng), 2 * u(rng));
-      }
-      ::fcl::Transform3d tf = randomPose(rng, 0.1);
-      tf.translation() += 1.6 * ::fcl::Vector3d(i % 10, (i / 10) % 10, i / 100);
-      objects.push_back(std::make_unique<::fcl::CollisionObjectd>(g, tf));
-      pointers.push_back(objects.back().get());
-    }
-  }
-};
-
+// Self distance on the sparse scene, each library's manager with its DefaultDistanceFunction (the running minimum
+// prunes both the tree and, through the pre-seeded result, the narrow phase).
 template <bool Gq> void BM_BroadphaseSelfDistance(benchmark::State& state) {
-  SparseScene scene;
-  std::unique_ptr<::fcl::BroadPhaseCollisionManagerd> manager;
-  if (Gq) manager = std::make_unique<gq::fcl::DynamicAABBTreeCollisionManagerd>();
-  else manager = std::make_unique<::fcl::DynamicAABBTreeCollisionManagerd>();
-  manager->registerObjects(scene.pointers);
-  manager->setup();
+  Scene scene(true);
+  const auto manager = setUpManager<Gq>(scene);
   double minimum = 0;
   for (auto _ : state) {
     ::fcl::DefaultDistanceData<double> data;
