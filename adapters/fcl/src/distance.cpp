@@ -60,10 +60,7 @@ template <class S>
     return detail::fclDistance(o1, tf1, o2, tf2, request, result);
   detail::PairDistance<S> d;
   // The result's min_distance as the bound: a pair proven farther changes nothing (FCL prunes its BVH traversal so).
-  // FCL's unseeded max() is no bound.
-  const S toBeat = result.min_distance < std::numeric_limits<S>::max() ? result.min_distance
-                                                                        : std::numeric_limits<S>::infinity();
-  Status s = detail::pairDistance(a, pa, b, pb, d, toBeat);
+  Status s = detail::pairDistance(a, pa, b, pb, d, detail::distanceToBeat(result.min_distance));
   if (s.ok() && (a.isMesh() || b.isMesh()) && d.distance <= S(0) && request.enable_signed_distance)
     s = deepestContact(a, pa, b, pb, d);
   if (s.code == StatusCode::InvalidArgument) return kNothing;

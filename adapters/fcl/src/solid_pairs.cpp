@@ -184,14 +184,8 @@ template <class S> void flip(DistanceResult<S>& d) {
 template <class S> S stopTolerance(DistanceAsk ask) {
   return ask.tolerance > 0 && ask.tolerance <= double(std::numeric_limits<S>::max()) ? S(ask.tolerance) : S(0);
 }
-// The distance to beat in S, rounded up (a bound below the result's min_distance would drop a closer pair); +inf
-// for FCL's unseeded max() (a finite bound makes GJK test its lower bounds: convex30 distance +1.6 % instructions),
-// past S's range or not a number.
-template <class S> S farEnough(DistanceAsk ask) {
-  if (!(ask.farEnough < double(std::numeric_limits<S>::max()))) return std::numeric_limits<S>::infinity();
-  const S f = S(ask.farEnough);
-  return double(f) < ask.farEnough ? std::nextafter(f, std::numeric_limits<S>::infinity()) : f;
-}
+// GJK's bound: the distance to beat (ask.farEnough came from S: exact), worked out only on the pairs that run GJK.
+template <class S> S farEnough(DistanceAsk ask) { return distanceToBeat(S(ask.farEnough)); }
 
 // Every number finite, by the x * 0 test on their sum (one comparison instead of ten classifications); a sum that
 // overflows (finite numbers near the largest double) fails it, and then each number is tested, out of line and on a

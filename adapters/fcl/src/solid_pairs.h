@@ -84,8 +84,14 @@ struct DistanceAsk {
   bool points;
   bool depth;
   double tolerance = 0;
-  double farEnough = std::numeric_limits<double>::infinity();
+  double farEnough = std::numeric_limits<double>::infinity();  // the result's min_distance, exact in S
 };
+
+// The distance a pair must beat to change an FCL result of this min_distance: itself, or +inf for FCL's unseeded
+// max() (as a finite bound it made GJK test its lower bounds for nothing: convex30 distance +1.6 % instructions).
+template <class S> S distanceToBeat(S minDistance) {
+  return minDistance < std::numeric_limits<S>::max() ? minDistance : std::numeric_limits<S>::infinity();
+}
 
 // The table behind solidOverlap and solidDistance: one entry per ordered pair of solids (solid_pairs.cpp). Declared
 // here so that both calls index it inline (an out-of-line lookup cost each call ~5 instructions).
