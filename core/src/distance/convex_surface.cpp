@@ -110,20 +110,18 @@ Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, cons
   const TriangleQueryShape<T> shape(g0, p0.relativeTo(p1));
   Best<T> best;
   const auto* m = g1.template getIf<TriangleMeshGeometry<T>>();
-  // A surface's distance is >= 0: a negative bound leaves nothing to search (0 is the lower bound). An empty mesh
-  // keeps its status; a heightfield without a cell within the bound (holes included) is beyond it.
+  // An empty mesh keeps its status; a heightfield without a cell within the bound (holes included) is beyond it.
   const bool searchable = !m || m->mesh->bvh.rootChild != Bvh4Node::kEmpty;
   if (cache) cache->iterations = 0;
-  if (farEnough < T(0) && searchable) {
-    out.distance = T(0);
+  if (farEnough < T(0) && searchable) {  // nothing of a surface is closer than 0
+    out.distance = surfaceBoundBeyond(farEnough);
     return Status();
   }
   best.limit = farEnough;
   if (m) nearestOnMesh(shape, MeshSurface<T>(*m, Transform<T>()), best);
   else nearestOnHeightField(shape, HeightFieldSurface<T>(g1.template get<HeightFieldGeometry<T>>(), Transform<T>()), best);
-  // Every triangle proven farther than a finite bound (strictly): just above it is a lower bound.
   if (!best.found && searchable && farEnough < std::numeric_limits<T>::infinity()) {
-    out.distance = std::nextafter(farEnough, std::numeric_limits<T>::infinity());
+    out.distance = surfaceBoundBeyond(farEnough);
     return Status();
   }
   if (!best.found) return Status::degenerate("the surface has no triangles (every heightfield cell is a hole)");

@@ -14,13 +14,13 @@ Status distanceTriangleMeshTriangleMesh(const Geometry<T>& g0, const Transform<T
   const MeshSurface<T> b(g1.template get<TriangleMeshGeometry<T>>(), p1.relativeTo(p0));
   const bool bounded = farEnough < std::numeric_limits<T>::infinity();
   const bool empty = a.mesh().bvh.rootChild == Bvh4Node::kEmpty || b.mesh().bvh.rootChild == Bvh4Node::kEmpty;
-  if (bounded && !empty && !(farEnough >= T(0))) {  // surfaces are >= 0 apart
-    out.distance = T(0);
+  if (bounded && !empty && farEnough < T(0)) {  // surfaces are >= 0 apart
+    out.distance = surfaceBoundBeyond(farEnough);
     return Status();
   }
   const MeshPairClosest<T> c = closestMeshPair(a, b, bounded ? farEnough * farEnough : farEnough);
   if (bounded && !empty && !c.found) {  // every pair proven at or beyond the bound
-    out.distance = std::nextafter(farEnough, std::numeric_limits<T>::infinity());
+    out.distance = surfaceBoundBeyond(farEnough);
     return Status();
   }
   const T dist = std::sqrt(c.distSq);
