@@ -120,6 +120,28 @@ TYPED_TEST(DistanceClosedForm, CapsuleCapsuleNearlyParallelAxesAreExact) {
   }
 }
 
+// A half axis whose square is below the smallest normal number counts as a point, and axes whose |a0 x a1|^2 is
+// below it as parallel (closestCentredSegments takes reciprocals of both): each moves the closest points by less
+// than that number's square root, so the answers stay exact.
+TYPED_TEST(DistanceClosedForm, CapsuleCapsuleSquaresBelowTheSmallestNormalNumberStayExact) {
+  using T = TypeParam;
+  const double tiny = 0.5 * std::sqrt(double(std::numeric_limits<T>::min()));  // tiny^2 is subnormal in T
+  Rng rng(17);
+  for (int i = 0; i < kPoses; ++i) {
+    const double r0 = rng.uniform(0.1, 0.5), r1 = rng.uniform(0.1, 0.5);
+    const double hh0 = i % 3 == 0 ? tiny : rng.uniform(0.5, 1.5), hh1 = i % 3 == 1 ? tiny : rng.uniform(0.5, 1.5);
+    const gq::CapsuleGeometry<T> c0{T(r0), T(hh0)}, c1{T(r1), T(hh1)};
+    const double angle = i % 3 == 2 ? tiny : rng.uniform(0, M_PI);  // two long axes `tiny` radians apart
+    // Even poses: capsule 0 on X at the origin, capsule 1's centre off X (and off the axes' plane when they are
+    // nearly parallel), where the solve's numerators are exactly 0 (0 times an overflowed reciprocal is NaN).
+    const bool square = i % 2 == 0;
+    Eigen::Vector3d offset{square ? 0.0 : rng.uniform(-2, 2), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    if (square && i % 3 == 2) offset.y() = 0;
+    checkTurnedCapsulePair(c0, c1, square ? Eigen::Quaterniond::Identity() : rng.rotation(), angle, offset,
+                           square ? Eigen::Vector3d::Zero() : rng.vec(-1, 1), i);
+  }
+}
+
 TYPED_TEST(DistanceClosedForm, CapsuleCapsuleZeroLengthSegmentsAreSpheres) {
   using T = TypeParam;
   Rng rng(15);

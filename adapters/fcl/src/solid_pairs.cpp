@@ -272,7 +272,12 @@ template <class S>
   // out is the caller's scratch, so bad input still writes nothing); both capsules centred on a's centre.
   if (!capsuleSized(a) || !capsuleSized(b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
-  k::distanceCapsuleCapsule<S>(capsuleAxis(a, origin), capsuleAxis(b, origin), out);
+  const auto* ca = static_cast<const ::fcl::Capsule<S>*>(a.geometry);
+  const auto intersecting = [ta = a.tf, tb = b.tf]() __attribute__((always_inline)) {
+    return k::intersectingAxesNormal<S>(ta->linear().col(2), tb->linear().col(2), tb->translation() - ta->translation());
+  };
+  k::distanceCapsuleCapsule<S>(k::CapsuleAxis<S>{Vec3<S>::Zero(), a.tf->linear().col(2), ca->lz * S(0.5), ca->radius},
+                               capsuleAxis(b, origin), intersecting, out);
   if (!bothRigidInline<false>(*a.tf, *b.tf)) return Answer::Invalid;
   shiftPoints(origin, ask.points, out);
   return Answer::Done;

@@ -111,17 +111,18 @@ template <class T> struct NormAndUnit {
 template <class T>
 [[gnu::cold, gnu::noinline]] NormAndUnit<T> ballsNormalOutOfRange(T dx, T dy, T dz, const Vec3<T>* fallback) {
   const Vec3<T> d(dx, dy, dz);
-  return {rangeSafeNorm(d), unitOr(d, fallback ? *fallback : Vec3<T>(Vec3<T>::UnitX()))};
+  return {rangeSafeNorm(d), unitOr(d, *fallback)};
 }
 
-// Result of two balls: centres c0, c1, radii r0, r1; `fallback` is the normal when the centres coincide (+X when
-// not given). d = |c1 - c0| - r0 - r1 along n = (c1 - c0) / |c1 - c0|; witnesses c0 + r0 n and c1 - r1 n. Always
-// inline: the building block of sphere/sphere, sphere/capsule, sphere/box and capsule/capsule, where a call and its
-// spills cost ~20 instructions (plain `inline` was dropped by GCC once it had four callers). The inputs are read
-// before `out` is written (the caller's centres may live in it).
-template <class T>
-[[gnu::always_inline]] inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>* fallback,
-                          DistanceResult<T>& out) {
+// Result of two balls: centres c0, c1, radii r0, r1. d = |c1 - c0| - r0 - r1 along n = (c1 - c0) / |c1 - c0|;
+// witnesses c0 + r0 n and c1 - r1 n. `fallback()` gives the normal when the centres coincide; it is called only on
+// the cold path where |c1 - c0|^2 is zero or out of range (an eager fallback kept its inputs and the closest points
+// in memory on every call). Always inline: the building block of sphere/sphere, sphere/capsule, sphere/box and
+// capsule/capsule, where a call and its spills cost ~20 instructions (plain `inline` was dropped by GCC once it had
+// four callers). The inputs are read before `out` is written (the caller's centres may live in it).
+template <class T, class Fallback>
+[[gnu::always_inline]] inline void ballsDistanceOr(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, Fallback fallback,
+                                                   DistanceResult<T>& out) {
   // Copies and delta written out: GCC sometimes leaves Eigen's difference constructor out of line here (a call on
   // every answer) and copied whole centres through memory.
   const Vec3<T> p0(c0.x(), c0.y(), c0.z()), p1(c1.x(), c1.y(), c1.z());
@@ -133,7 +134,8 @@ template <class T>
     len = std::sqrt(len2);
     n = delta / len;
   } else {
-    const NormAndUnit<T> safe = ballsNormalOutOfRange(delta.x(), delta.y(), delta.z(), fallback);
+    const Vec3<T> normal = fallback();
+    const NormAndUnit<T> safe = ballsNormalOutOfRange(delta.x(), delta.y(), delta.z(), &normal);
     len = safe.norm;
     n = safe.unit;
   }
@@ -142,14 +144,10 @@ template <class T>
   out.point0 = p0 + r0 * n;
   out.point1 = p1 - r1 * n;
 }
-template <class T>
-[[gnu::always_inline]] inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, const Vec3<T>& fallback,
-                          DistanceResult<T>& out) {
-  ballsDistance(c0, r0, c1, r1, &fallback, out);
-}
+// The same with +X as the coincident centres' normal.
 template <class T>
 [[gnu::always_inline]] inline void ballsDistance(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1, DistanceResult<T>& out) {
-  ballsDistance(c0, r0, c1, r1, static_cast<const Vec3<T>*>(nullptr), out);
+  ballsDistanceOr(c0, r0, c1, r1, [] { return Vec3<T>(Vec3<T>::UnitX()); }, out);
 }
 
 // Sphere (centre c in the box's frame) vs box [-h, h], in that frame: outside, the closest box point is the
@@ -197,16 +195,22 @@ template <class T>
 }
 
 // Capsule vs capsule: balls at the closest points of the two segments (inline: the FCL adapter's capsule-capsule
-// distance is a few dozen instructions around it). The fallback normal is used only when the closest points
-// coincide (ballsDistance's |c1 - c0| = 0).
+// distance is a few dozen instructions around it). Closest points that coincide (intersecting axes) take
+// intersectingAxesNormal.
+// `coincident()` returns that normal (a caller holding the axes in memory reads them there: a capture of k0 and k1
+// kept both in memory on every call).
+template <class T, class Coincident>
+[[gnu::always_inline]] inline void distanceCapsuleCapsule(const CapsuleAxis<T>& k0, const CapsuleAxis<T>& k1,
+                                                          Coincident coincident, DistanceResult<T>& out) {
+  const Vec3<T> a0 = k0.halfHeight * k0.axis, a1 = k1.halfHeight * k1.axis;
+  const SegmentClosest<T> c = closestCentredSegments<T>(k0.centre, a0, k1.centre, a1);
+  ballsDistanceOr(c.c0, k0.radius, c.c1, k1.radius, coincident, out);
+}
 template <class T>
 [[gnu::always_inline]] inline void distanceCapsuleCapsule(const CapsuleAxis<T>& k0, const CapsuleAxis<T>& k1,
                                                           DistanceResult<T>& out) {
-  const Vec3<T> a0 = k0.halfHeight * k0.axis, a1 = k1.halfHeight * k1.axis;
-  const SegmentClosest<T> c = closestSegmentSegment<T>(k0.centre - a0, k0.centre + a0, k1.centre - a1, k1.centre + a1);
-  const bool coincide = !((c.c1 - c.c0).squaredNorm() > T(0));
-  const Vec3<T> fallback = coincide ? intersectingAxesNormal<T>(k0.axis, k1.axis, k1.centre - k0.centre) : Vec3<T>(Vec3<T>::UnitX());
-  ballsDistance(c.c0, k0.radius, c.c1, k1.radius, fallback, out);
+  distanceCapsuleCapsule(k0, k1, [&] { return intersectingAxesNormal<T>(k0.axis, k1.axis, k1.centre - k0.centre); },
+                         out);
 }
 
 }  // namespace gq::detail

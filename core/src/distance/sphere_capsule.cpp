@@ -9,9 +9,8 @@ template <class T>
 void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out) {
   const Vec3<T> a = capsule1.halfHeight * capsule1.axis;
   const Vec3<T> c1 = closestPointOnSegment<T>(capsule1.centre - a, capsule1.centre + a, c0);
-  // The fallback normal is used only when the centre lies on the segment (ballsDistance's |c1 - c0| = 0).
-  const bool onSegment = !((c1 - c0).squaredNorm() > T(0));
-  ballsDistance(c0, r0, c1, capsule1.radius, onSegment ? anyPerpendicular<T>(capsule1.axis) : Vec3<T>(Vec3<T>::UnitX()), out);
+  // A centre on the segment (|c1 - c0| = 0) takes a normal orthogonal to the axis.
+  ballsDistanceOr(c0, r0, c1, capsule1.radius, [&] { return anyPerpendicular<T>(capsule1.axis); }, out);
 }
 
 template <class T>

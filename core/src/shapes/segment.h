@@ -2,6 +2,7 @@
 // Closest points on segments, written once: the exact kernels behind the sphere/capsule pairs, the rounded cores of
 // the polytope tests, box-box touch points and the segment-triangle tests. Either segment may have zero length.
 #include <algorithm>
+#include <limits>
 
 #include "gq/math.h"
 
@@ -73,6 +74,52 @@ template <class T>
     }
   }
   return {p0 + d0 * s, p1 + d1 * t};
+}
+
+// The same for segments given by centre and half axis, c + u a with u in [-1, 1] (capsule cores), without forming
+// endpoints: with w = c1 - c0, minimise |u a0 - v a1 - w|^2, whose normal equations are a u - b v = c and
+// b u - e v = f (a = a0.a0, b = a0.a1, e = a1.a1, c = a0.w, f = a1.w); the line-line u = w.(a1 x n) / |n|^2 with
+// n = a0 x a1, for the reason above. Parallel segments: u = 0 (the first centre) before the clamping.
+// The parameters are products with reciprocals taken as soon as a, e and |n|^2 are known, so no division waits on
+// a numerator (each sat on the kernel's dependency chain: capsule-capsule distance's time is mostly that chain). A
+// half axis with |a|^2 below the smallest normal number counts as a point, and |n|^2 below it as parallel (their
+// reciprocals would overflow); either moves the closest points by less than sqrt of that number (1e-154 in double,
+// 1e-19 in float). The clamps are by value (std::clamp's reference made GCC select spilled constants in memory).
+template <class T>
+[[gnu::always_inline]] inline SegmentClosest<T> closestCentredSegments(const Vec3<T>& c0, const Vec3<T>& a0,
+                                                                       const Vec3<T>& c1, const Vec3<T>& a1) {
+  constexpr T kTiny = std::numeric_limits<T>::min();
+  const auto clampUnit = [](T x) { return x < T(-1) ? T(-1) : (x > T(1) ? T(1) : x); };
+  const T wx = c1.x() - c0.x(), wy = c1.y() - c0.y(), wz = c1.z() - c0.z();
+  const T a = a0.squaredNorm(), e = a1.squaredNorm(), f = a1.x() * wx + a1.y() * wy + a1.z() * wz;
+  T u = T(0), v = T(0);
+  if (!(a >= kTiny) && !(e >= kTiny)) return {c0, c1};
+  if (!(a >= kTiny)) {
+    v = clampUnit(-f / e);
+  } else {
+    const T c = a0.x() * wx + a0.y() * wy + a0.z() * wz, ia = T(1) / a;
+    if (!(e >= kTiny)) {
+      u = clampUnit(c * ia);
+    } else {
+      const T b = a0.dot(a1), ie = T(1) / e;
+      // n = a0 x a1 and m = a1 x n in scalars (see closestSegmentSegment).
+      const T nx = a0.y() * a1.z() - a0.z() * a1.y(), ny = a0.z() * a1.x() - a0.x() * a1.z(),
+              nz = a0.x() * a1.y() - a0.y() * a1.x();
+      const T nn = nx * nx + ny * ny + nz * nz;
+      const T mx = a1.y() * nz - a1.z() * ny, my = a1.z() * nx - a1.x() * nz, mz = a1.x() * ny - a1.y() * nx;
+      u = nn >= kTiny ? clampUnit((wx * mx + wy * my + wz * mz) * (T(1) / nn)) : T(0);
+      v = (b * u - f) * ie;
+      if (v < T(-1)) {
+        v = T(-1);
+        u = clampUnit((c - b) * ia);
+      } else if (v > T(1)) {
+        v = T(1);
+        u = clampUnit((c + b) * ia);
+      }
+    }
+  }
+  return {Vec3<T>(c0.x() + u * a0.x(), c0.y() + u * a0.y(), c0.z() + u * a0.z()),
+          Vec3<T>(c1.x() + v * a1.x(), c1.y() + v * a1.y(), c1.z() + v * a1.z())};
 }
 
 }  // namespace gq::detail
