@@ -11,57 +11,6 @@
 namespace gq::fcl {
 namespace {
 
-using detail::FclShape;
-
-bool either(FclShape a, FclShape b, FclShape x) { return a == x || b == x; }
-bool pairIs(FclShape a, FclShape b, FclShape x, FclShape y) { return (a == x && b == y) || (a == y && b == x); }
-
-// Whether FCL 0.7 (GJKSolver_libccd) computes this pair's contact with a closed form, where gq's exact answer is
-// the same: sphere against sphere/capsule/box/cylinder/BVHModel triangles, and the shapes it has a half-space or
-// plane formula for. Every other pair goes through libccd's MPR (or, box-box, FCL's box routine).
-bool fclContactIsClosedForm(FclShape a, FclShape b) {
-  const FclShape other = a == FclShape::Sphere ? b : a;
-  if (either(a, b, FclShape::Sphere))
-    return other == FclShape::Sphere || other == FclShape::Capsule || other == FclShape::Box ||
-           other == FclShape::Cylinder || other == FclShape::Mesh || other == FclShape::Halfspace ||
-           other == FclShape::Plane;
-  const bool halfspace = either(a, b, FclShape::Halfspace), plane = either(a, b, FclShape::Plane);
-  if (!halfspace && !plane) return false;
-  const FclShape shape = (a == FclShape::Halfspace || a == FclShape::Plane) ? b : a;
-  return shape == FclShape::Ellipsoid || shape == FclShape::Box || shape == FclShape::Capsule ||
-         shape == FclShape::Cylinder || shape == FclShape::Cone || shape == FclShape::Mesh ||
-         (halfspace && shape == FclShape::Convex);
-}
-
-// Contacts that stay FCL's own unless a correction is opted into (see Options).
-bool contactFromFcl(FclShape a, FclShape b, Options options) {
-  if (options.minimumTranslation) return false;
-  if (pairIs(a, b, FclShape::Box, FclShape::Box)) return !options.exactContainedBoxDepth;
-  return !fclContactIsClosedForm(a, b);
-}
-
-// Two closed solids, the fast path (solid_pairs.h): at most one contact, no buffer; contact geometry only when
-// asked for. With `resultHeldContacts` a miss returns their count and bad input 0: the table must tell them apart.
-template <class S>
-[[gnu::always_inline]] inline detail::Answer collideSolids(detail::FclShape sa, detail::Solid<S> a, detail::FclShape sb,
-                                                          detail::Solid<S> b, bool withContact,
-                                                          bool resultHeldContacts, bool& added,
-                                                          ::fcl::CollisionResult<S>& result) {
-  if (!withContact) {
-    const detail::Answer answer = detail::solidOverlap(sa, a, sb, b, resultHeldContacts, added);
-    if (answer == detail::Answer::Done && added)
-      result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive));
-    return answer;
-  }
-  DistanceResult<S> d;
-  const detail::Answer answer = detail::solidDistance(sa, a, sb, b, detail::DistanceAsk{true, true}, d);
-  added = answer == detail::Answer::Done && d.distance <= S(0);
-  if (added)
-    result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, detail::kNoPrimitive, detail::kNoPrimitive,
-                                        (d.point0 + d.point1) * S(0.5), d.normal, -d.distance));
-  return answer;
-}
-
 // Meshes and two-sided planes: one contact per primitive (pair), gathered in a per-thread buffer.
 template <class S>
 bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const detail::Converted<S>& a, const Transform<S>& pa,
@@ -81,30 +30,28 @@ bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const detail::Convert
   return true;
 }
 
-// Everything off the solid fast path: meshes and two-sided planes (gq), FCL's own contacts, cost sources and what gq
-// does not model (FCL). Out of line: the fast path's frame stays small (inline, its saved registers cost every call).
+// Shapes classified by their node types (virtual calls): a pair that is not two common solids. Out of line: the
+// public entry stays a classification and a jump.
 template <class S>
-[[gnu::noinline]] std::size_t collideOthers(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
-                                            const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-                                            const ::fcl::CollisionRequest<S>& request,
-                                            ::fcl::CollisionResult<S>& result, bool fclContact) {
-  using detail::Conversion;
-  if (!detail::isFiniteTransforms(tf1, tf2)) return 0;
-  detail::Converted<S> a, b;
-  const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
-  if (ca == Conversion::Invalid || cb == Conversion::Invalid) return 0;
-  if (!detail::rotationUsable(a, tf1) || !detail::rotationUsable(b, tf2)) return 0;
-  const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
-  if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost || fclContact ||
-      (a.isSolid() && b.isSolid()))
-    return detail::fclCollide(o1, tf1, o2, tf2, request, result);
-  if (!collideGeneral(o1, a, pa, o2, b, pb, request, result))
-    return detail::fclCollide(o1, tf1, o2, tf2, request, result);
-  detail::countGq();
-  return result.numContacts();
+[[gnu::noinline]] std::size_t collideClassified(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                                                const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                                const ::fcl::CollisionRequest<S>& request,
+                                                ::fcl::CollisionResult<S>& result, Options options) {
+  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
+  if (detail::isSolid(s1) && detail::isSolid(s2))
+    return detail::solidFclCollide(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result,
+                                   options);
+  if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
+  const std::size_t before = result.numContacts();
+  if (detail::satisfiedBy(request, before)) return before;
+  return detail::collideOthers(o1, tf1, o2, tf2, request, result,
+                               request.enable_contact && detail::contactFromFcl(s1, s2, options));
 }
 
-// The whole of collide; each public overload is this function (forced inline: GCC otherwise splits it in two calls).
+// The whole of collide; each public overload is this function. Bad input (docs/fcl.md) writes nothing and returns
+// 0, before anything reaches FCL (which crashes on it): the solid entries validate the numbers they read
+// (solid_pairs.h), the others check the transforms (collideOthers). Two common solids jump to their pair's entry
+// without a call of their own.
 template <class S>
 [[gnu::always_inline]] inline std::size_t collidePair(const ::fcl::CollisionGeometry<S>* o1,
                                                      const ::fcl::Transform3<S>& tf1,
@@ -112,27 +59,47 @@ template <class S>
                                                      const ::fcl::Transform3<S>& tf2,
                                                      const ::fcl::CollisionRequest<S>& request,
                                                      ::fcl::CollisionResult<S>& result, Options options) {
-  if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
-  // FCL's CollisionRequest::isSatisfied (no cost sources, a collision, num_max_contacts reached) on one count.
-  const std::size_t before = result.numContacts();
-  if (!request.enable_cost && before > 0 && request.num_max_contacts <= before) return before;
-  // Bad input (docs/fcl.md) writes nothing and returns 0, before anything reaches FCL (which crashes on it); the
-  // solid path validates the numbers it reads (solid_pairs.h), the others check the transforms (collideOthers).
-  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
-  const bool fclContact = request.enable_contact && contactFromFcl(s1, s2, options);
-  if (detail::isSolid(s1) && detail::isSolid(s2) && !request.enable_cost && !fclContact) {
-    bool added = false;
-    switch (collideSolids(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request.enable_contact,
-                          before > 0, added, result)) {
-      case detail::Answer::Done: detail::countGq(); return before + added;
-      case detail::Answer::Invalid: return 0;
-      case detail::Answer::Unanswered: break;
-    }
+  if (o1 && o2) {
+    const detail::FclShape s1 = detail::commonSolidOf<S>(typeid(*o1)), s2 = detail::commonSolidOf<S>(typeid(*o2));
+    if (s1 != detail::FclShape::Unsupported && s2 != detail::FclShape::Unsupported)
+      return detail::solidFclCollide(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result,
+                                     options);
   }
-  return collideOthers(o1, tf1, o2, tf2, request, result, fclContact);
+  return collideClassified(o1, tf1, o2, tf2, request, result, options);
 }
 
 }  // namespace
+
+namespace detail {
+
+// Out of line (see solid_pairs.h): the fast path's frame stays small.
+template <class S>
+[[gnu::noinline]] std::size_t collideOthers(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                                            const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                                            const ::fcl::CollisionRequest<S>& request,
+                                            ::fcl::CollisionResult<S>& result, bool fclContact) {
+  if (!isFiniteTransforms(tf1, tf2)) return 0;
+  Converted<S> a, b;
+  const Conversion ca = convert(o1, a), cb = convert(o2, b);
+  if (ca == Conversion::Invalid || cb == Conversion::Invalid) return 0;
+  if (!rotationUsable(a, tf1) || !rotationUsable(b, tf2)) return 0;
+  const Transform<S> pa = shapePose(a, tf1), pb = shapePose(b, tf2);
+  if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost || fclContact ||
+      (a.isSolid() && b.isSolid()))
+    return fclCollide(o1, tf1, o2, tf2, request, result);
+  if (!collideGeneral(o1, a, pa, o2, b, pb, request, result)) return fclCollide(o1, tf1, o2, tf2, request, result);
+  countGq();
+  return result.numContacts();
+}
+template std::size_t collideOthers<float>(const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                                          const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                                          const ::fcl::CollisionRequest<float>&, ::fcl::CollisionResult<float>&, bool);
+template std::size_t collideOthers<double>(const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                           const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                           const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&,
+                                           bool);
+
+}  // namespace detail
 
 template <typename S>
 std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,

@@ -23,10 +23,13 @@
 #include <fcl/geometry/shape/convex.h>
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/collision_request.h>
+#include <fcl/narrowphase/collision_result.h>
 #include <fcl/narrowphase/distance_request.h>
 #include <fcl/narrowphase/distance_result.h>
 
 #include "convert.h"
+#include "gq/fcl/collision.h"
 #include "gq/query.h"
 
 namespace gq::fcl::detail {
@@ -93,14 +96,59 @@ template <class S> S distanceToBeat(S minDistance) {
   return minDistance < std::numeric_limits<S>::max() ? minDistance : std::numeric_limits<S>::infinity();
 }
 
-// The table behind solidOverlap and solidDistance: one entry per ordered pair of solids (solid_pairs.cpp). Declared
-// here so that both calls index it inline (an out-of-line lookup cost each call ~5 instructions).
+// Whether FCL 0.7 (GJKSolver_libccd) computes this pair's contact with a closed form, where gq's exact answer is
+// the same: sphere against sphere/capsule/box/cylinder/BVHModel triangles, and the shapes it has a half-space or
+// plane formula for. Every other pair goes through libccd's MPR (or, box-box, FCL's box routine).
+constexpr bool fclContactIsClosedForm(FclShape a, FclShape b) {
+  const auto either = [a, b](FclShape x) { return a == x || b == x; };
+  const FclShape other = a == FclShape::Sphere ? b : a;
+  if (either(FclShape::Sphere))
+    return other == FclShape::Sphere || other == FclShape::Capsule || other == FclShape::Box ||
+           other == FclShape::Cylinder || other == FclShape::Mesh || other == FclShape::Halfspace ||
+           other == FclShape::Plane;
+  const bool halfspace = either(FclShape::Halfspace), plane = either(FclShape::Plane);
+  if (!halfspace && !plane) return false;
+  const FclShape shape = (a == FclShape::Halfspace || a == FclShape::Plane) ? b : a;
+  return shape == FclShape::Ellipsoid || shape == FclShape::Box || shape == FclShape::Capsule ||
+         shape == FclShape::Cylinder || shape == FclShape::Cone || shape == FclShape::Mesh ||
+         (halfspace && shape == FclShape::Convex);
+}
+
+// Contacts that stay FCL's own unless a correction is opted into (see Options).
+constexpr bool contactFromFcl(FclShape a, FclShape b, Options options) {
+  if (options.minimumTranslation) return false;
+  if ((a == FclShape::Box && b == FclShape::Box)) return !options.exactContainedBoxDepth;
+  return !fclContactIsClosedForm(a, b);
+}
+
+// FCL's CollisionRequest::isSatisfied on the result's count `before`: no cost sources, a collision, and
+// num_max_contacts reached (collide then computes nothing and returns the count).
+template <class S> bool satisfiedBy(const ::fcl::CollisionRequest<S>& request, std::size_t before) {
+  return !request.enable_cost && before > 0 && request.num_max_contacts <= before;
+}
+
+// Everything of gq::fcl::collide off the solid fast path (collide.cpp): meshes and two-sided planes (gq), FCL's own
+// contacts (`fclContact`), cost sources and what gq does not model (FCL).
+template <class S>
+std::size_t collideOthers(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                          const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+                          const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                          bool fclContact);
+
+// The table of solid pairs (solid_pairs.cpp): per ordered pair, the whole of gq::fcl::collide and of
+// gq::fcl::distance for it (FCL's request and result semantics; FCL itself answers what gq leaves unanswered). The
+// public calls jump here once they know both shapes: the pair's kernel is inline in its entry (no second call, no
+// result copied in between). Declared here so that both calls index it inline (an out-of-line lookup cost each
+// call ~5 instructions).
+// The entries take each side as its two pointers: given two Solid values, GCC stored their register halves on the
+// stack and copied them on as 16-byte loads for the kernels' calls, a failed store forward each (collide
+// sphere-sphere 15 -> 24 ns, sphere-box 22 -> 33 ns).
+template <class S> using FclGeometry = ::fcl::CollisionGeometry<S>;
 template <class S> struct PairEntry {
-  Answer (*overlap)(Solid<S>, Solid<S>, bool, bool&);
-  Answer (*distance)(Solid<S>, Solid<S>, DistanceAsk, DistanceResult<S>&);
-  // The whole of gq::fcl::distance for the pair: FCL's request and result semantics, FCL itself answering what gq
-  // leaves unanswered. The public call jumps here once it knows both shapes (no result copied in between).
-  S (*fclDistance)(Solid<S>, Solid<S>, const ::fcl::DistanceRequest<S>&, ::fcl::DistanceResult<S>&);
+  std::size_t (*fclCollide)(const FclGeometry<S>*, const Isometry<S>*, const FclGeometry<S>*, const Isometry<S>*,
+                            const ::fcl::CollisionRequest<S>&, ::fcl::CollisionResult<S>&, Options);
+  S (*fclDistance)(const FclGeometry<S>*, const Isometry<S>*, const FclGeometry<S>*, const Isometry<S>*,
+                   const ::fcl::DistanceRequest<S>&, ::fcl::DistanceResult<S>&);
 };
 inline constexpr std::size_t kSolids = std::size_t(FclShape::Halfspace) + 1;
 template <class S> struct SolidPairs {
@@ -113,28 +161,23 @@ template <class S> const PairEntry<S>& solidPair(FclShape a, FclShape b) {
   return SolidPairs<S>::table[std::size_t(a) * kSolids + std::size_t(b)];
 }
 
-// Both sides solid (isSolid) is a precondition; the transforms are validated here (Invalid: not finite, or a
-// linear part that is not a rotation). A miss writes nothing, as bad input must not: the closed-form pairs validate
-// only before reporting a hit, or on a miss too when `checkMiss` (the caller tells the two apart).
+// gq::fcl::collide on two solids (isSolid both). The transforms are validated in the entry (bad input: nothing
+// written, 0 returned); a miss writes nothing, as bad input must not: the closed-form pairs validate only before
+// reporting a hit, or on a miss too when the result already holds contacts (their count is returned then).
 template <class S>
-inline Answer solidOverlap(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, bool checkMiss, bool& hit) {
-  return solidPair<S>(sa, sb).overlap(a, b, checkMiss, hit);
+inline std::size_t solidFclCollide(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b,
+                                   const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                                   Options options) {
+  return solidPair<S>(sa, sb).fclCollide(a.geometry, a.tf, b.geometry, b.tf, request, result, options);
 }
 
-// Signed distance, normal from a to b; the world witnesses point0 (on a) and point1 (on b) only `ask.points`.
-// Without `ask.depth`, a pair whose depth needs EPA (a converted side other than a plane) or a witness search (two
-// boxes) answers FCL's -1 when the shapes overlap; other closed-form pairs keep their exact signed distance, which
-// costs nothing more.
-template <class S>
-inline Answer solidDistance(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, DistanceAsk ask, DistanceResult<S>& out) {
-  return solidPair<S>(sa, sb).distance(a, b, ask, out);
-}
-
-// gq::fcl::distance on two solids (see PairEntry::fclDistance).
+// gq::fcl::distance on two solids. Signed distance, normal from a to b. Without enable_signed_distance, a pair whose
+// depth needs EPA (a converted side other than a plane) or a witness search (two boxes) answers FCL's -1 when the
+// shapes overlap; other closed-form pairs keep their exact signed distance, which costs nothing more.
 template <class S>
 inline S solidFclDistance(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, const ::fcl::DistanceRequest<S>& request,
                           ::fcl::DistanceResult<S>& result) {
-  return solidPair<S>(sa, sb).fclDistance(a, b, request, result);
+  return solidPair<S>(sa, sb).fclDistance(a.geometry, a.tf, b.geometry, b.tf, request, result);
 }
 
 }  // namespace gq::fcl::detail
