@@ -10,7 +10,7 @@
 //  - pairs with another solid convert both sides (convert.h; a Convex comes from the cache) and call core's kernel
 //    for their gq geometry types, chosen at compile time.
 // Semantics are the façade's: touching overlaps; distance is signed with the normal from a to b, in world space
-// (without a requested depth, GJK pairs answer FCL's -1 when overlapping: solidDistance).
+// (without a requested depth, GJK pairs answer FCL's -1 when overlapping: solidFclDistance).
 #include <array>
 #include <cstddef>
 #include <cstdint>
