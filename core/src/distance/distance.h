@@ -195,10 +195,9 @@ template <class T>
 }
 
 // Capsule vs capsule: balls at the closest points of the two segments (inline: the FCL adapter's capsule-capsule
-// distance is a few dozen instructions around it). Closest points that coincide (intersecting axes) take
-// intersectingAxesNormal.
-// `coincident()` returns that normal (a caller holding the axes in memory reads them there: a capture of k0 and k1
-// kept both in memory on every call).
+// distance is a few dozen instructions around it). Closest points that coincide (intersecting axes) take the normal
+// `coincident()` returns, intersectingAxesNormal of the axes; a caller holding the axes in memory reads them there
+// (a capture of k0 and k1 kept both in memory on every call).
 template <class T, class Coincident>
 [[gnu::always_inline]] inline void distanceCapsuleCapsule(const CapsuleAxis<T>& k0, const CapsuleAxis<T>& k1,
                                                           Coincident coincident, DistanceResult<T>& out) {
