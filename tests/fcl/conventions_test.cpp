@@ -335,6 +335,61 @@ TEST(FclFallback, PlanePairsRunThroughFclAndMeshPlaneIsAnsweredByGq) {
   EXPECT_EQ(r2.isCollision(), f2.isCollision());
 }
 
+// FCL's collide preamble, before any shape is read: num_max_contacts 0 returns 0 and computes nothing, and a result
+// already satisfied (a collision, num_max_contacts reached, no cost sources) returns its count unchanged. Pairs of
+// each of collide's paths: two common solids (their table entry), a cone (classified by node type) and a mesh.
+TEST(FclConventions, ZeroMaxContactsAndASatisfiedResultComputeNothing) {
+  ::fcl::Sphered s(1);
+  ::fcl::Coned cone(1, 2);
+  auto mesh = twoTriangles();
+  const std::vector<std::pair<const ::fcl::CollisionGeometryd*, const ::fcl::CollisionGeometryd*>> pairs = {
+      {&s, &s}, {&cone, &s}, {mesh.get(), &s}};
+  for (const auto& [g1, g2] : pairs) {
+    gq::fcl::resetAdapterCounters();
+    ::fcl::CollisionRequestd none;
+    none.num_max_contacts = 0;
+    ::fcl::CollisionResultd empty;
+    EXPECT_EQ(gq::fcl::collide<double>(g1, at(0, 0, 0), g2, at(0.5, 0, 0), none, empty), 0u);
+    EXPECT_EQ(empty.numContacts(), 0u);
+    ::fcl::CollisionRequestd one;  // num_max_contacts 1
+    ::fcl::CollisionResultd full, fclFull;
+    full.addContact(::fcl::Contactd(g1, g2, kNone, kNone));
+    fclFull.addContact(::fcl::Contactd(g1, g2, kNone, kNone));
+    EXPECT_EQ(gq::fcl::collide<double>(g1, at(0, 0, 0), g2, at(0.5, 0, 0), one, full), 1u);
+    EXPECT_EQ(::fcl::collide<double>(g1, at(0, 0, 0), g2, at(0.5, 0, 0), one, fclFull), 1u);
+    EXPECT_EQ(full.numContacts(), 1u);
+    // Satisfied before anything is read: a NaN pose is not looked at either (FCL's order).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(gq::fcl::collide<double>(g1, at(nan, 0, 0), g2, at(0.5, 0, 0), one, full), 1u);
+    EXPECT_EQ(full.numContacts(), 1u);
+    EXPECT_EQ(gq::fcl::adapterCounters().gq + gq::fcl::adapterCounters().fallback, 0u);
+  }
+}
+
+// Cost sources (enable_cost) are FCL's: the pair runs through ::fcl::collide and the result is FCL's, contacts and
+// cost sources alike.
+TEST(FclFallback, CostSourcesRunThroughFcl) {
+  ::fcl::Boxd a(1, 1, 1), b(1, 1, 1);
+  ::fcl::CollisionRequestd request(1, false, 5, true);  // one contact, no geometry, 5 cost sources
+  gq::fcl::resetAdapterCounters();
+  ::fcl::CollisionResultd r, f;
+  const std::size_t count = gq::fcl::collide<double>(&a, at(0, 0, 0), &b, at(0.5, 0.2, 0), request, r);
+  EXPECT_EQ(count, ::fcl::collide<double>(&a, at(0, 0, 0), &b, at(0.5, 0.2, 0), request, f));
+  EXPECT_EQ(gq::fcl::adapterCounters().fallback, 1u);
+  EXPECT_EQ(gq::fcl::adapterCounters().gq, 0u);
+  EXPECT_EQ(r.numContacts(), f.numContacts());
+  ASSERT_GT(f.numCostSources(), 0u);
+  ASSERT_EQ(r.numCostSources(), f.numCostSources());
+  std::vector<::fcl::CostSourced> rc, fc;
+  r.getCostSources(rc);
+  f.getCostSources(fc);
+  for (std::size_t i = 0; i < rc.size(); ++i) {
+    EXPECT_EQ(rc[i].aabb_min, fc[i].aabb_min);
+    EXPECT_EQ(rc[i].aabb_max, fc[i].aabb_max);
+    EXPECT_EQ(rc[i].total_cost, fc[i].total_cost);
+  }
+}
+
 TEST(FclConventions, PrimitivePairsAreAnsweredByGq) {
   ::fcl::Sphered s(1);
   ::fcl::Boxd b(1, 1, 1);
