@@ -26,9 +26,9 @@ namespace gq {
 namespace {
 
 // Core vertices of the shape (world): box corners, capsule segment ends, hull vertices.
-template <class T> std::vector<Vec3<T>> coreVertices(const detail::ConvexShape<T>& a) {
+template <class T> void coreVertices(const detail::ConvexShape<T>& a, std::vector<Vec3<T>>& out) {
   using Kind = typename detail::ConvexShape<T>::Kind;
-  std::vector<Vec3<T>> out;
+  out.clear();
   if (a.kind == Kind::Box) {
     for (int c = 0; c < 8; ++c)
       out.push_back(a.toWorld(Vec3<T>((c & 1) ? a.halfExtents.x() : -a.halfExtents.x(),
@@ -40,14 +40,13 @@ template <class T> std::vector<Vec3<T>> coreVertices(const detail::ConvexShape<T
   } else if (a.kind == Kind::Hull) {
     for (const Vec3<T>& v : a.hull->vertices) out.push_back(a.toWorld(a.hullScaled ? Vec3<T>(a.hullScale * v) : v));
   }
-  return out;
 }
 
 // Core edges of the shape (index pairs into coreVertices): the box's 12, the capsule's segment, every hull polygon
 // edge once (each appears in two polygons, once in each direction).
-template <class T> std::vector<std::array<std::uint32_t, 2>> coreEdges(const detail::ConvexShape<T>& a) {
+template <class T> void coreEdges(const detail::ConvexShape<T>& a, std::vector<std::array<std::uint32_t, 2>>& out) {
   using Kind = typename detail::ConvexShape<T>::Kind;
-  std::vector<std::array<std::uint32_t, 2>> out;
+  out.clear();
   if (a.kind == Kind::Box) {
     for (std::uint32_t c = 0; c < 8; ++c)
       for (std::uint32_t axis = 1; axis < 8; axis <<= 1)
@@ -62,7 +61,6 @@ template <class T> std::vector<std::array<std::uint32_t, 2>> coreEdges(const det
         if (u < v) out.push_back({u, v});
       }
   }
-  return out;
 }
 
 // Crossings, seen along n, of the core edge p-q with the triangle's edges: the point of p-q above each crossing.
@@ -99,25 +97,39 @@ template <class T> struct Candidate {
   T separation;
 };
 
-// Keeps at most kMaxTriangleContacts spread-out points, the deepest first.
-template <class T> std::vector<Candidate<T>> reduceContacts(std::vector<Candidate<T>> c, T mergeDistance) {
-  std::vector<Candidate<T>> kept;
-  if (c.empty()) return kept;
+// Keeps at most kMaxTriangleContacts spread-out points of `c` (sorted in place), the deepest first; returns how many.
+template <class T>
+std::size_t reduceContacts(std::vector<Candidate<T>>& c, T mergeDistance,
+                           std::array<Candidate<T>, kMaxTriangleContacts>& kept) {
+  if (c.empty()) return 0;
   std::sort(c.begin(), c.end(), [](const Candidate<T>& x, const Candidate<T>& y) { return x.separation < y.separation; });
-  kept.push_back(c.front());
+  std::size_t count = 0;
+  kept[count++] = c.front();
   // Each next point maximises its distance to the set kept so far (distance to the nearest kept point).
-  while (kept.size() < kMaxTriangleContacts) {
+  while (count < kMaxTriangleContacts) {
     T best = mergeDistance;
     int pick = -1;
     for (std::size_t i = 0; i < c.size(); ++i) {
       T nearest = std::numeric_limits<T>::max();
-      for (const Candidate<T>& k : kept) nearest = std::min(nearest, (c[i].position - k.position).norm());
+      for (std::size_t k = 0; k < count; ++k) nearest = std::min(nearest, (c[i].position - kept[k].position).norm());
       if (nearest > best) { best = nearest; pick = int(i); }
     }
     if (pick < 0) break;
-    kept.push_back(c[std::size_t(pick)]);
+    kept[count++] = c[std::size_t(pick)];
   }
-  return kept;
+  return count;
+}
+
+// The candidate lists, kept per thread between calls: allocated per call (seven vectors and their growth), they
+// were ~40 % of a call's instructions in the Bullet adapter's heightfield scene.
+template <class T> struct ContactScratch {
+  std::vector<Candidate<T>> candidates, face;
+  std::vector<Vec3<T>> vertices, points;
+  std::vector<std::array<std::uint32_t, 2>> edges;
+};
+template <class T> ContactScratch<T>& contactScratch() {
+  thread_local ContactScratch<T> scratch;
+  return scratch;
 }
 
 template <class T>
@@ -168,7 +180,9 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
       normal = -e.normal;
       closest = e.point0;
     }
-    std::vector<Candidate<T>> candidates;
+    ContactScratch<T>& scratch = contactScratch<T>();
+    std::vector<Candidate<T>>& candidates = scratch.candidates;
+    candidates.clear();
     if (separation <= contactDistance) candidates.push_back({closest, separation});
 
     // 2. Face normal, oriented towards the shape.
@@ -178,14 +192,18 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
     const T faceSeparation = n.dot(lowest - triangle.verts[0]);
     const T slack = T(tol::kContactMergeFactor) * toleranceLength;
     if (separation - faceSeparation <= meshContactMargin) {
-      std::vector<Candidate<T>> face;
+      std::vector<Candidate<T>>& face = scratch.face;
+      face.clear();
       if (faceSeparation <= contactDistance && projectsInside(triangle, n, lowest, slack))
         face.push_back({lowest, faceSeparation});
-      const std::vector<Vec3<T>> vertices = coreVertices(a);
-      std::vector<Vec3<T>> points;  // core points to test: vertices over the triangle, edge crossings of its boundary
+      std::vector<Vec3<T>>& vertices = scratch.vertices;
+      coreVertices(a, vertices);
+      std::vector<Vec3<T>>& points = scratch.points;  // core points to test: vertices over the triangle, edge crossings
+      points.clear();
       for (const Vec3<T>& p : vertices)
         if (projectsInside(triangle, n, p, slack)) points.push_back(p);
-      for (const auto& edge : coreEdges(a)) addEdgeCrossings(triangle, n, vertices[edge[0]], vertices[edge[1]], points);
+      coreEdges(a, scratch.edges);
+      for (const auto& edge : scratch.edges) addEdgeCrossings(triangle, n, vertices[edge[0]], vertices[edge[1]], points);
       for (const Vec3<T>& p : points) {
         const T s = n.dot(p - triangle.verts[0]) - a.margin;
         if (s <= contactDistance) face.push_back({Vec3<T>(p - a.margin * n), s});
@@ -204,12 +222,14 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
       // Nothing under the face (the shape is beside the triangle): keep the closest point and its normal.
       if (!face.empty()) {
         normal = n;
-        candidates = std::move(face);
+        candidates.swap(face);
       }
     }
-    const std::vector<Candidate<T>> kept = reduceContacts(candidates, slack);
+    std::array<Candidate<T>, kMaxTriangleContacts> kept;
+    const std::size_t keptCount = reduceContacts(candidates, slack, kept);
     contacts = ContactBuffer<T>();
-    for (const Candidate<T>& c : kept) {
+    for (std::size_t k = 0; k < keptCount; ++k) {
+      const Candidate<T>& c = kept[k];
       ContactPoint<T>& out = contacts.contacts[contacts.count++];
       out.position = c.position;
       out.normal = normal;
