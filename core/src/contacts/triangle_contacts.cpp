@@ -81,14 +81,19 @@ void addEdgeCrossings(const Triangle<T>& tri, const Vec3<T>& n, const Vec3<T>& p
   }
 }
 
-// Whether p projects (along the triangle's normal) inside the triangle grown by `slack`.
-template <class T> bool projectsInside(const Triangle<T>& tri, const Vec3<T>& n, const Vec3<T>& p, T slack) {
-  for (int k = 0; k < 3; ++k) {
-    const Vec3<T>& a = tri.verts[k];
-    const Vec3<T>& b = tri.verts[(k + 1) % 3];
-    const Vec3<T> inward = n.cross(b - a).normalized();  // points into the triangle for counter-clockwise about n
-    if (inward.dot(p - a) < -slack) return false;
+// The triangle's edges seen along n: unit inward normals in its plane (into the triangle for counter-clockwise about
+// n), taken once a call (per tested point they were three square roots and divisions each).
+template <class T> struct EdgeNormals {
+  std::array<Vec3<T>, 3> inward;
+  EdgeNormals(const Triangle<T>& tri, const Vec3<T>& n) {
+    for (int k = 0; k < 3; ++k) inward[k] = n.cross(tri.verts[(k + 1) % 3] - tri.verts[k]).normalized();
   }
+};
+
+// Whether p projects (along the triangle's normal) inside the triangle grown by `slack`.
+template <class T> bool projectsInside(const Triangle<T>& tri, const EdgeNormals<T>& edges, const Vec3<T>& p, T slack) {
+  for (int k = 0; k < 3; ++k)
+    if (edges.inward[k].dot(p - tri.verts[k]) < -slack) return false;
   return true;
 }
 
@@ -192,16 +197,17 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
     const T faceSeparation = n.dot(lowest - triangle.verts[0]);
     const T slack = T(tol::kContactMergeFactor) * toleranceLength;
     if (separation - faceSeparation <= meshContactMargin) {
+      const EdgeNormals<T> edges(triangle, n);
       std::vector<Candidate<T>>& face = scratch.face;
       face.clear();
-      if (faceSeparation <= contactDistance && projectsInside(triangle, n, lowest, slack))
+      if (faceSeparation <= contactDistance && projectsInside(triangle, edges, lowest, slack))
         face.push_back({lowest, faceSeparation});
       std::vector<Vec3<T>>& vertices = scratch.vertices;
       coreVertices(a, vertices);
       std::vector<Vec3<T>>& points = scratch.points;  // core points to test: vertices over the triangle, edge crossings
       points.clear();
       for (const Vec3<T>& p : vertices)
-        if (projectsInside(triangle, n, p, slack)) points.push_back(p);
+        if (projectsInside(triangle, edges, p, slack)) points.push_back(p);
       coreEdges(a, scratch.edges);
       for (const auto& edge : scratch.edges) addEdgeCrossings(triangle, n, vertices[edge[0]], vertices[edge[1]], points);
       for (const Vec3<T>& p : points) {
