@@ -67,10 +67,14 @@ inline bool allPositive(double a, double b, double c, double d) {
 }
 #endif
 
-// FCL's capsule: radius and full length lz along local Z; its centre is taken relative to `origin`.
-template <class S> k::CapsuleAxis<S> capsuleAxis(Solid<S> s, const Vec3<S>& origin) {
+// FCL's capsule: radius and full length lz along local Z, placed with its centre at `centre`.
+template <class S> k::CapsuleAxis<S> capsuleAxisAt(Solid<S> s, const Vec3<S>& centre) {
   const auto* c = static_cast<const ::fcl::Capsule<S>*>(s.geometry);
-  return k::CapsuleAxis<S>{s.tf->translation() - origin, s.tf->linear().col(2), c->lz * S(0.5), c->radius};
+  return k::CapsuleAxis<S>{centre, s.tf->linear().col(2), c->lz * S(0.5), c->radius};
+}
+// The same with its centre taken relative to `origin`.
+template <class S> k::CapsuleAxis<S> capsuleAxis(Solid<S> s, const Vec3<S>& origin) {
+  return capsuleAxisAt(s, Vec3<S>(s.tf->translation() - origin));
 }
 template <class S> bool capsuleSized(Solid<S> s) {
   const auto* c = static_cast<const ::fcl::Capsule<S>*>(s.geometry);
@@ -272,12 +276,10 @@ template <class S>
   // out is the caller's scratch, so bad input still writes nothing); both capsules centred on a's centre.
   if (!capsuleSized(a) || !capsuleSized(b)) return Answer::Invalid;
   const Vec3<S> origin = a.tf->translation();
-  const auto* ca = static_cast<const ::fcl::Capsule<S>*>(a.geometry);
   const auto intersecting = [ta = a.tf, tb = b.tf]() __attribute__((always_inline)) {
     return k::intersectingAxesNormal<S>(ta->linear().col(2), tb->linear().col(2), tb->translation() - ta->translation());
   };
-  k::distanceCapsuleCapsule<S>(k::CapsuleAxis<S>{Vec3<S>::Zero(), a.tf->linear().col(2), ca->lz * S(0.5), ca->radius},
-                               capsuleAxis(b, origin), intersecting, out);
+  k::distanceCapsuleCapsule<S>(capsuleAxisAt(a, Vec3<S>(Vec3<S>::Zero())), capsuleAxis(b, origin), intersecting, out);
   if (!bothRigidInline<false>(*a.tf, *b.tf)) return Answer::Invalid;
   shiftPoints(origin, ask.points, out);
   return Answer::Done;

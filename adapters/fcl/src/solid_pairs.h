@@ -117,7 +117,7 @@ constexpr bool fclContactIsClosedForm(FclShape a, FclShape b) {
 // Contacts that stay FCL's own unless a correction is opted into (see Options).
 constexpr bool contactFromFcl(FclShape a, FclShape b, Options options) {
   if (options.minimumTranslation) return false;
-  if ((a == FclShape::Box && b == FclShape::Box)) return !options.exactContainedBoxDepth;
+  if (a == FclShape::Box && b == FclShape::Box) return !options.exactContainedBoxDepth;
   return !fclContactIsClosedForm(a, b);
 }
 
