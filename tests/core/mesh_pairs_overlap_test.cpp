@@ -405,5 +405,37 @@ TYPED_TEST(HeightFieldOverlap, HeightFieldVsHeightFieldCrossingAndApart) {
   EXPECT_FALSE(got);
 }
 
+// Two bumpy fields, both unrotated and apart by a translation: the pair's frame leaves one of them at a pure
+// translation, where a field's vertices are moved without a rotation product (HeightFieldSurface). Brute force over
+// the triangle pairs decides.
+TYPED_TEST(HeightFieldOverlap, TranslatedUnrotatedHeightFieldsMatchBruteForce) {
+  using T = TypeParam;
+  const HeightFieldDesc<T> descA = bumpyDesc<T>(6, 6, 9), descB = bumpyDesc<T>(5, 7, 10);
+  std::shared_ptr<const HeightField<T>> fieldA, fieldB;
+  ASSERT_TRUE(cookHeightField(descA, fieldA).ok());
+  ASSERT_TRUE(cookHeightField(descB, fieldB).ok());
+  const Geometry<T> a = HeightFieldGeometry<T>(fieldA, T(1), T(0.5), T(0.5));
+  const Geometry<T> b = HeightFieldGeometry<T>(fieldB, T(0.8), T(0.4), T(0.6));
+  const Transform<T> poseA(Vec3<T>(T(1.5), T(-0.5), T(2)));
+  std::vector<bool> validA, validB;
+  const std::vector<TriL> trisA = heightFieldTriangles(descA, T(1), T(0.5), T(0.5), poseA, validA);
+  test::Rng rng(11);
+  int overlaps = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Transform<T> poseB(Vec3<T>(T(rng.uniform(-0.5, 3.5)), T(rng.uniform(-1.5, 0.5)), T(rng.uniform(0, 4))));
+    const std::vector<TriL> trisB = heightFieldTriangles(descB, T(0.8), T(0.4), T(0.6), poseB, validB);
+    bool expected = false;
+    for (std::size_t j = 0; j < trisA.size() && !expected; ++j)
+      for (std::size_t k = 0; k < trisB.size() && !expected; ++k)
+        if (validA[j] && validB[k] && trianglesIntersect(trisA[j], trisB[k])) expected = true;
+    bool got = !expected;
+    ASSERT_TRUE(overlap(a, poseA, b, poseB, got).ok());
+    ASSERT_EQ(got, expected) << "pose " << i;
+    overlaps += expected;
+  }
+  EXPECT_GT(overlaps, 30);
+  EXPECT_LT(overlaps, 270);
+}
+
 }  // namespace
 }  // namespace gq::meshpairs
