@@ -18,6 +18,7 @@
 #include <random>
 
 #include "gq/cooking.h"
+#include "gq/io.h"
 #include "gq/query.h"
 
 namespace {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "gq/cooking.h"
+#include "gq/io.h"
 #include "gq/query.h"
 
 namespace {

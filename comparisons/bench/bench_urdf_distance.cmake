@@ -1,4 +1,5 @@
 # gq::urdf selfDistance on Panda's collision meshes (mesh and hull representations).
+# Results: comparisons/results/urdf_self_distance.csv.
 add_executable(bench_urdf_distance ${CMAKE_CURRENT_LIST_DIR}/bench_urdf_distance.cpp)
 target_link_libraries(bench_urdf_distance PRIVATE gq::urdf benchmark::benchmark)
 target_compile_definitions(bench_urdf_distance PRIVATE GQ_SHARED_DIR="${GQ_SHARED_DIR}")

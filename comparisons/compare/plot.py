@@ -20,7 +20,7 @@ FLOOR = 1e-18
 
 def read_rows(path):
     with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
 def plot_family(path):
@@ -51,7 +51,9 @@ def plot_family(path):
     ax.set_yscale("log")
     ax.set_xlabel("median ns per query")
     ax.set_ylabel("relative error (median, bar to max)" if uses_error else "fraction of wrong booleans")
-    ax.set_title("%s: speed vs error (%s, %s)" % (family, rows[0]["date"], rows[0]["machine"][:40]), fontsize=9)
+    commit = (", " + rows[0]["commit"]) if rows[0].get("commit") else ""
+    ax.set_title("%s: speed vs error (%s, %s%s)" % (family, rows[0]["date"], rows[0]["machine"][:40], commit),
+                 fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
