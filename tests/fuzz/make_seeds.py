@@ -1,9 +1,19 @@
 #!/usr/bin/env python3
-"""Writes the seed corpora of the fuzz targets into tests/fuzz/corpus/<target>/ (deterministic; rerun to regenerate).
+"""Writes the seed inputs of the fuzz targets into <out>/<target>/ (deterministic; rerun to regenerate).
 
 Seeds are small valid inputs of each format plus a few broken ones; the query targets get seeded random bytes
-(fuzz_decode.h reads any byte string). libFuzzer grows the corpora from here; merged findings may be added by hand.
+(fuzz_decode.h reads any byte string). The committed corpora in tests/fuzz/corpus/<target>/ are not written here:
+they are the seeds plus the inputs long fuzz runs grew, minimised with libFuzzer's -merge=1 (the smallest set of
+inputs that keeps every coverage feature, named by content hash) and kept under 5 MB in all. To bring a seed in, or
+to minimise a corpus again (ASan+UBSan build as scripts/sanitize makes it, ASAN_OPTIONS from scripts/sanitizer-env):
+
+    tests/fuzz/make_seeds.py /tmp/seeds
+    # add only the seeds that reach new coverage:
+    build-asan/tests/fuzz/fuzz_urdf -merge=1 tests/fuzz/corpus/fuzz_urdf /tmp/seeds/fuzz_urdf
+    # or minimise from scratch: merge the current corpus and the seeds into an empty folder, then replace the corpus
+    build-asan/tests/fuzz/fuzz_urdf -merge=1 /tmp/min/fuzz_urdf tests/fuzz/corpus/fuzz_urdf /tmp/seeds/fuzz_urdf
 """
+import argparse
 import json
 import os
 import random
@@ -12,11 +22,11 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-CORPUS = os.path.join(HERE, "corpus")
+OUT = None  # the output folder, set by main()
 
 
 def write(target, name, data):
-    folder = os.path.join(CORPUS, target)
+    folder = os.path.join(OUT, target)
     os.makedirs(folder, exist_ok=True)
     with open(os.path.join(folder, name), "wb") as f:
         f.write(data if isinstance(data, bytes) else data.encode())
@@ -112,6 +122,12 @@ def random_seeds(target, count, rng):
 
 
 def main():
+    global OUT
+    parser = argparse.ArgumentParser(description=__doc__.split("\n", 1)[0])
+    parser.add_argument("out", help="folder to write the <target>/ seed folders into (not tests/fuzz/corpus)")
+    OUT = os.path.abspath(parser.parse_args().out)
+    if OUT == os.path.join(HERE, "corpus"):
+        parser.error("the committed corpora are minimised: write the seeds elsewhere and -merge=1 them in")
     rng = random.Random(9)
     case_file_seeds()
     mesh_file_seeds()
