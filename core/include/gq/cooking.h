@@ -116,10 +116,6 @@ template <class T> struct MeshData {
   std::vector<TriangleIndices> triangles;
 };
 
-// Loads OBJ, STL (ASCII and binary) and DAE through assimp; all meshes of the file are merged in world frame of
-// the file's node hierarchy, except that a DAE root-node transform (its up-axis) is ignored when
-// `ignoreRootTransform` is set (what ROS tools do). Missing file: FileError; malformed: ParseError.
-template <class T>
-Status loadMeshFile(const std::string& path, MeshData<T>& out, bool ignoreRootTransform = false);
+// Mesh files are loaded into MeshData by loadMeshFile, declared in gq/io.h (library gq_io, target gq::io).
 
 }  // namespace gq

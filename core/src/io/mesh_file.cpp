@@ -1,13 +1,19 @@
-// Mesh files through assimp (OBJ, STL ascii/binary, DAE): triangulated, identical vertices joined, and all meshes
-// merged into one vertex/triangle list in the frame of the file's root, applying every node's transform.
+// loadMeshFile: OBJ and STL by gq's own readers (exact coordinates), every other format through assimp (32-bit
+// float coordinates): triangulated, identical vertices joined, and all meshes merged into one vertex/triangle list
+// in the frame of the file's root, applying every node's transform.
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <fstream>
 
 #include "common/validate.h"
-#include "gq/cooking.h"
+#include "gq/io.h"
+#include "io/mesh_readers.h"
+#include "io/mesh_text.h"
 
 namespace gq {
 namespace {
@@ -41,21 +47,36 @@ template <class T> void appendNode(const aiScene& scene, const aiNode& node, con
   for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(scene, *node.mChildren[c], world, true, out);
 }
 
+template <class T> Status loadWithAssimp(const std::string& path, MeshData<T>& out, bool ignoreRootTransform) {
+  if (!std::ifstream(path).good()) return Status::fileError("cannot open mesh file '" + path + "'");
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  if (scene == nullptr || scene->mRootNode == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+    return Status::parseError("cannot parse mesh file '" + path + "': " + importer.GetErrorString());
+  MeshData<T> data;
+  // The root's own transform (e.g. a DAE up-axis conversion) is dropped on request; children keep theirs.
+  appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), !ignoreRootTransform, data);
+  if (data.triangles.empty()) return Status::parseError("mesh file '" + path + "' contains no triangles");
+  out = std::move(data);
+  return Status();
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
 }  // namespace
 
 template <class T> Status loadMeshFile(const std::string& path, MeshData<T>& out, bool ignoreRootTransform) {
   return detail::guarded([&]() -> Status {
-    if (!std::ifstream(path).good()) return Status::fileError("cannot open mesh file '" + path + "'");
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
-    if (scene == nullptr || scene->mRootNode == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-      return Status::parseError("cannot parse mesh file '" + path + "': " + importer.GetErrorString());
-    MeshData<T> data;
-    // The root's own transform (e.g. a DAE up-axis conversion) is dropped on request; children keep theirs.
-    appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), !ignoreRootTransform, data);
-    if (data.triangles.empty()) return Status::parseError("mesh file '" + path + "' contains no triangles");
-    out = std::move(data);
-    return Status();
+    const std::string ext = lowerExtension(path);
+    if (ext != ".obj" && ext != ".stl") return loadWithAssimp(path, out, ignoreRootTransform);
+    // OBJ and STL have no node hierarchy: ignoreRootTransform changes nothing.
+    std::string text;
+    if (Status s = io::readFileText(path, text); !s.ok()) return s;
+    return ext == ".obj" ? io::readObj(path, text, out) : io::readStl(path, text, out);
   });
 }
 
