@@ -1,4 +1,4 @@
-// Item 5 of issue 4: on well-conditioned random suites gq agrees with every native backend within the tolerance
+// On well-conditioned random suites gq agrees with every native backend within the tolerance
 // stated per backend and family below. Well-conditioned: shapes of size ~1, random poses, and only pairs whose
 // signed distance (brute force over a fine support sampling is not needed: gq's exact closed forms and SAT set it)
 // is at least kMargin away from touching, so no boolean is borderline. Rays aim at triangle centroids of a convex

@@ -29,7 +29,7 @@ TEST(ExactAnswers, AlignedBoxPenetrationDepthIsTheSmallestAxisOverlap) {
 }
 
 TEST(ExactAnswers, BoxesOnTheirDiagonalAreSeparatedByTheCornerGap) {
-  // FCL issue 545: unit boxes offset by (d, d, d) touch at corners; the gap is sqrt(3) (d - 2) once apart.
+  // FCL bug fcl#545: unit boxes offset by (d, d, d) touch at corners; the gap is sqrt(3) (d - 2) once apart.
   const Core a = boxCore(V3::Zero(), V3(1, 1, 1)), b = boxCore(V3(2.5L, 2.5L, 2.5L), V3(1, 1, 1));
   EXPECT_NEAR(double(signedDistance(a, b)), std::sqrt(3.0) * 0.5, 1e-15);
   const Core c = boxCore(V3(1.5L, 1.5L, 1.5L), V3(1, 1, 1));

@@ -2,7 +2,8 @@
 // double, in float and double. Coaxial cylinders have an exact depth: their Minkowski difference is the coaxial
 // cylinder of radius r0 + r1 and half height h0 + h1 centred at the offset s, so the depth is
 // min(h0 + h1 - |s|, r0 + r1) (the nearer cap, or the side: a whole ring of closest points, the case that used to
-// stop EPA with NotConverged). Issue 3's libccd pair is one of them: exact depth 0.45 (libccd's golden file: 0.75).
+// stop EPA with NotConverged). libccd's cylinder hard case is one of them: exact depth 0.45 (libccd's golden file:
+// 0.75).
 #include <gtest/gtest.h>
 
 #include <algorithm>

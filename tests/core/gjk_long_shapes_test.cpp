@@ -1,6 +1,6 @@
 // GJK and EPA on support maps far longer than wide (gjk/wide.h): a unit box inside a custom cylinder 1e2 to 1e11
 // long and 5.8 wide, and a box crossing a cube hull scaled to a sheet 1.7e12 wide and 1e-61 thick (the two open
-// fuzz findings of sessions 13 and 15 that double-precision simplices could not resolve). References in long double,
+// fuzz findings that double-precision simplices could not resolve). References in long double,
 // written independently of the kernels:
 //  - box inside a long cylinder, far from its caps: the minimum translation is perpendicular to the axis (any axial
 //    component adds its half-height times that component to the cylinder's support), so the depth is

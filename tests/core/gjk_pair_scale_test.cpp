@@ -1,7 +1,7 @@
 // GJK and EPA at every length scale T can hold (gjk/pair_scale.h): their face tests square cross products of edges,
 // |e|^4, which overflowed float for pairs ~1e9+ across and underflowed below ~1e-9.5 (1e77 and 1e-77 in double).
 // The façade bounds sizes and offsets (1e9 in float, 1e75 in double), but not a custom shape's own extent: a point
-// inside a float custom cone 3e10 wide was "1.7e8 apart" (the open fuzz finding of session 16). Two checks:
+// inside a float custom cone 3e10 wide was "1.7e8 apart" (a fuzz finding). Two checks:
 //  - exact: a small sphere inside a custom cone, near its base, has the closed-form depth (base distance + radius),
 //    for cones from 2^-40 to 2^36 wide in float and 2^-400 to 2^300 in double (the large ones flat, so that the
 //    sphere's offset from the cone stays within the façade's bound, as in the finding);

@@ -1,5 +1,5 @@
-// The hard cases of issue 3, each with its exact answer computed here in closed form (long double where the
-// arithmetic matters): touching at tiny gaps, contained boxes (FCL issues 628 and 545), coincident centres,
+// The hard cases (docs/accuracy.md), each with its exact answer computed here in closed form (long double where the
+// arithmetic matters): touching at tiny gaps, contained boxes (FCL bugs fcl#628 and fcl#545), coincident centres,
 // R vs R*Rz(pi), extreme size ratios, poses far from the origin, parallel and zero-length capsules, paper-thin
 // boxes.
 #include <gtest/gtest.h>
@@ -71,7 +71,7 @@ TYPED_TEST(HardCases, TouchingAtRelativeGapsGivesTheRightBoolean) {
 
 TYPED_TEST(HardCases, BoxContainedInBoxPushesOutThroughNearestFace) {
   using T = TypeParam;
-  // FCL issue 628 reports 1.0 or 0 here; the exact answer is the smallest face-to-face push-out.
+  // FCL bug fcl#628 reports 1.0 or 0 here; the exact answer is the smallest face-to-face push-out.
   const Vec3<T> h0(0.2, 0.3, 0.1), c0(0.1, -0.2, 0.3), h1(1, 1, 1);
   const AxisPush want = alignedBoxPush(toLD(c0), toLD(h0), Vec3L::Zero(), toLD(h1));
   ASSERT_NEAR(double(want.depth), 0.8, 1e-7);
@@ -94,7 +94,7 @@ TYPED_TEST(HardCases, BoxContainedInBoxPushesOutThroughNearestFace) {
 
 TYPED_TEST(HardCases, SmallCubeInsideUnitCubeIsNotOverestimated) {
   using T = TypeParam;
-  // FCL issue 545 reports sqrt(3) times the true depth. Cube of half 0.1 at (0.4,0.4,0.4) in the cube of half 0.5.
+  // FCL bug fcl#545 reports sqrt(3) times the true depth. Cube of half 0.1 at (0.4,0.4,0.4) in the cube of half 0.5.
   for (bool asHull : {false, true}) {
     const Geometry<T> small = asHull ? Geometry<T>(ConvexMeshGeometry<T>(boxHull<T>(Vec3<T>::Constant(T(0.1)))))
                                      : Geometry<T>(BoxGeometry<T>(0.1, 0.1, 0.1));
@@ -199,7 +199,7 @@ TYPED_TEST(HardCases, PosesFarFromOriginKeepRelativePrecision) {
 }
 
 // A pose passes validation when | |q| - 1 | <= 1e-3 (PxTransform::isValid); every family then uses the normalised
-// rotation, so a quaternion scaled by 1.0008 answers as its unit quaternion (fuzz_pair_queries, session 16: the SAT
+// rotation, so a quaternion scaled by 1.0008 answers as its unit quaternion (found by fuzz_pair_queries: the SAT
 // kernels read the relative pose of non-unit quaternions as a scaled rotation, a cube 0.17 % too big).
 TYPED_TEST(HardCases, QuaternionsWithinTheUnitToleranceAreNormalisedByEveryFamily) {
   using T = TypeParam;

@@ -29,22 +29,29 @@ template <class F> void parallelFor(std::size_t n, F&& body) {
   for (auto& th : threads) th.join();
 }
 
-template <class T> class MeshBunny : public ::testing::Test {
+// Needs the bunny from the shared data folder: skipped when it is missing. Cooked once per suite, on first use.
+template <class T> class MeshBunnyData : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    data = new MeshData<T>(meshtest::bunny<T>());
-    mesh = new std::shared_ptr<const TriangleMesh<T>>(meshtest::cook(data->vertices, data->triangles));
+  void SetUp() override {
+    GQ_REQUIRE_BUNNY();
+    if (data == nullptr) {
+      data = new MeshData<T>(meshtest::bunny<T>());
+      mesh = new std::shared_ptr<const TriangleMesh<T>>(meshtest::cook(data->vertices, data->triangles));
+    }
+    ASSERT_TRUE(*mesh);
   }
   static void TearDownTestSuite() {
     delete data;
     delete mesh;
+    data = nullptr;
+    mesh = nullptr;
   }
   static MeshData<T>* data;
   static std::shared_ptr<const TriangleMesh<T>>* mesh;
 };
-template <class T> MeshData<T>* MeshBunny<T>::data = nullptr;
-template <class T> std::shared_ptr<const TriangleMesh<T>>* MeshBunny<T>::mesh = nullptr;
-TYPED_TEST_SUITE(MeshBunny, Scalars);
+template <class T> MeshData<T>* MeshBunnyData<T>::data = nullptr;
+template <class T> std::shared_ptr<const TriangleMesh<T>>* MeshBunnyData<T>::mesh = nullptr;
+TYPED_TEST_SUITE(MeshBunnyData, Scalars);
 
 struct Sphere { Eigen::Vector3d c; double r; };
 
@@ -128,7 +135,7 @@ BruteHit<T> bruteRaycast(const MeshData<T>& m, const SphereChunks& sc, const Vec
   return best;
 }
 
-TYPED_TEST(MeshBunny, ClosestHitEqualsBruteForceOn100kRays) {
+TYPED_TEST(MeshBunnyData, ClosestHitEqualsBruteForceOn100kRays) {
   using T = TypeParam;
   const MeshData<T>& m = *this->data;
   const TriangleMesh<T>& mesh = **this->mesh;
@@ -198,7 +205,7 @@ LD pointTriangleDistance(const Vec3L& p, const Vec3L& a, const Vec3L& b, const V
   return std::min({pointSegmentDistance(p, a, b), pointSegmentDistance(p, b, c), pointSegmentDistance(p, c, a)});
 }
 
-TYPED_TEST(MeshBunny, PointDistanceEqualsBruteForceUnderScaleAndPose) {
+TYPED_TEST(MeshBunnyData, PointDistanceEqualsBruteForceUnderScaleAndPose) {
   using T = TypeParam;
   const MeshData<T>& m = *this->data;
   const MeshScale<T> scale(Vec3<T>(T(1.3), T(-0.8), T(2.1)),

@@ -187,7 +187,12 @@ TYPED_TEST(MeshOverlap, ShapesVsScaledIcosphereMatchBruteForceOverAllTriangles) 
   checkShapesAgainstMesh<TypeParam>(meshtest::icosphere<TypeParam>(3), 1.4, 0.5, 1000, 11, true);
 }
 
-TYPED_TEST(MeshOverlap, ShapesVsBunnyMatchBruteForceOverAllTriangles) {
+// The bunny from the shared data folder (skipped when it is missing).
+template <class T> class MeshOverlapData : public ::testing::Test {};
+TYPED_TEST_SUITE(MeshOverlapData, test::Scalars);
+
+TYPED_TEST(MeshOverlapData, ShapesVsBunnyMatchBruteForceOverAllTriangles) {
+  GQ_REQUIRE_BUNNY();
   // The bunny is about 0.15 across, centred near (-0.02, 0.1, 0).
   const MeshData<TypeParam> bunny = meshtest::bunny<TypeParam>();
   Bounds3<double> b;
@@ -272,8 +277,9 @@ inline bool bruteForceMeshMesh(const std::vector<TriL>& a, const std::vector<Tri
   return false;
 }
 
-TYPED_TEST(MeshOverlap, BunnyVsBunnyMatchesBruteForceOverAabbFilteredTrianglePairs) {
+TYPED_TEST(MeshOverlapData, BunnyVsBunnyMatchesBruteForceOverAabbFilteredTrianglePairs) {
   using T = TypeParam;
+  GQ_REQUIRE_BUNNY();
   const MeshData<T> bunny = meshtest::bunny<T>();
   Bounds3<double> bb;
   for (const auto& v : bunny.vertices) bb.include(v.template cast<double>());

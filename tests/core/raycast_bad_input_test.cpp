@@ -14,6 +14,7 @@
 
 #include "gq/cooking.h"
 #include "gq/custom.h"
+#include "gq/io.h"
 #include "gq/query.h"
 
 namespace {

@@ -1,4 +1,4 @@
-// FCL's conventions as gq::fcl keeps them, the opt-in corrections (FCL issues 545 and 628), the geometry cache's
+// FCL's conventions as gq::fcl keeps them, the opt-in corrections (FCL bugs fcl#545 and fcl#628), the geometry cache's
 // re-conversion rule and the fallback to FCL. Expected values are closed forms.
 #include <gtest/gtest.h>
 
@@ -225,7 +225,7 @@ TEST(FclConventions, NumMaxContactsCapsMeshContacts) {
   }
 }
 
-// FCL issue 545: a small cube centred on the big cube's diagonal near its corner. The exact MTD pushes the small
+// FCL bug fcl#545: a small cube centred on the big cube's diagonal near its corner. The exact MTD pushes the small
 // cube out through one face: its far face at 0.2 must pass the big cube's face at 0.5, 0.3 along an axis; FCL's MPR
 // path returns the diagonal direction, sqrt(3) x deeper (0.52).
 TEST(FclCorrections, MinimumTranslationGivesTheTrueDepthOfFclIssue545) {
@@ -246,7 +246,7 @@ TEST(FclCorrections, MinimumTranslationGivesTheTrueDepthOfFclIssue545) {
   ASSERT_EQ(fromFcl.numContacts(), 1u);
   ASSERT_EQ(byDefault.numContacts(), 1u);
   ASSERT_EQ(corrected.numContacts(), 1u);
-  std::cout << "FCL issue 545 case: FCL depth " << fromFcl.getContact(0).penetration_depth << ", exact 0.3\n";
+  std::cout << "FCL bug fcl#545 case: FCL depth " << fromFcl.getContact(0).penetration_depth << ", exact 0.3\n";
   // Default: FCL's own numbers.
   EXPECT_EQ(byDefault.getContact(0).penetration_depth, fromFcl.getContact(0).penetration_depth);
   EXPECT_NEAR(corrected.getContact(0).penetration_depth, 0.3, 1e-12);
@@ -255,7 +255,7 @@ TEST(FclCorrections, MinimumTranslationGivesTheTrueDepthOfFclIssue545) {
   EXPECT_NEAR(n.sum(), 1.0, 1e-12);                  // pointing from the big cube out towards the small one
 }
 
-// FCL issue 628: box B = [0,1] x [0.8,1] x [0,1] inside box A = [0,1]^3 with touching faces. The exact MTD moves B by
+// FCL bug fcl#628: box B = [0,1] x [0.8,1] x [0,1] inside box A = [0,1]^3 with touching faces. The exact MTD moves B by
 // 0.2 along +y whatever the boxes' length along z; FCL reports 1.0, or 0 once both are stretched along z.
 TEST(FclCorrections, ExactContainedBoxDepthOfFclIssue628) {
   gq::fcl::Options options;
@@ -267,7 +267,7 @@ TEST(FclCorrections, ExactContainedBoxDepthOfFclIssue628) {
     ::fcl::collide<double>(&a, at(0.5, 0.5, lengthZ / 2), &b, at(0.5, 0.9, lengthZ / 2), request, fromFcl);
     gq::fcl::collide<double>(&a, at(0.5, 0.5, lengthZ / 2), &b, at(0.5, 0.9, lengthZ / 2), request, corrected, options);
     ASSERT_EQ(corrected.numContacts(), 1u);
-    std::cout << "FCL issue 628 case (length z " << lengthZ << "): FCL depth "
+    std::cout << "FCL bug fcl#628 case (length z " << lengthZ << "): FCL depth "
               << (fromFcl.numContacts() ? fromFcl.getContact(0).penetration_depth : -1.0) << ", exact 0.2\n";
     EXPECT_NEAR(corrected.getContact(0).penetration_depth, 0.2, 1e-12);
     EXPECT_NEAR((corrected.getContact(0).normal - Vector3d::UnitY()).norm(), 0, 1e-12);

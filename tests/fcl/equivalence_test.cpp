@@ -257,8 +257,7 @@ TEST_P(FclEquivalence, APreSeededMinDistanceKeepsTheSmallerAnswer) {
 // error bound is below it. The exact distance lies in [gap, tight] (gq at its own tolerance, certified by a separating
 // plane to certificateTolerance), so an answer at tolerance t must lie in [gap, gap + t + certificate]. On curved
 // shapes run by GJK the coarse tolerance must actually be used (some answer moves by > 1e-9); polytope pairs
-// (box-convex) end on an exact simplex either way, and box-cylinder is answered by certified closed forms (session
-// 20) where GJK ran before.
+// (box-convex) end on an exact simplex either way, and box-cylinder is answered by certified closed forms, not GJK.
 TEST(FclDistanceTolerance, DistanceToleranceBoundsTheError) {
   struct Case {
     Kind a, b;

@@ -1,8 +1,6 @@
-// libFuzzer target: gq::loadMeshFile on arbitrary bytes saved as .obj or .stl (both through assimp; first byte
-// picks), then cooking of what loaded. Contract: ok -> every index in range; error -> `out` untouched; nothing crashes
-// or throws. Built a second time as fuzz_mesh_file_stl (GQ_FUZZ_STL_ONLY: every input saved as .stl): assimp 5.2's
-// OBJ importer allocates and fills a 16 MB line cache per file, which ASan maps and unmaps each time (~50 ms per OBJ
-// input), so the mixed target runs ~14-19 exec/s under ASan; its long runs use a UBSan-only build (scripts/fuzz).
+// libFuzzer target: gq::loadMeshFile on arbitrary bytes saved as .obj or .stl (gq's own OBJ and STL readers; first
+// byte picks), then cooking of what loaded. Contract: ok -> every index in range; error -> `out` untouched; nothing
+// crashes or throws. Built a second time as fuzz_mesh_file_stl (GQ_FUZZ_STL_ONLY: every input saved as .stl).
 // DAE is not mutated here: assimp 5.2's Collada loader segfaults on malformed files
 // (known_crashes/fuzz_mesh_file_assimp_collada_segv.bin, third-party); the DAE tests of tests/core cover that format.
 #include <unistd.h>
@@ -13,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "gq/cooking.h"
+#include "gq/io.h"
 
 namespace {
 

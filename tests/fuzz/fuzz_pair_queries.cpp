@@ -21,9 +21,9 @@ template <class T> long double localRadius(const gq::Geometry<T>& g) {
 // A custom shape whose bounds span more than 1e6 (float) or 1e12 (double) times their smallest extent: GJK/EPA on
 // it is open (open_findings/: a float sphere centred inside a cylinder 1.4e19 long and 7.9 wide, a double box inside
 // one 6.7e153 long, are "not overlapping" by GJK, while the closed-form overlap and the box certificate say
-// overlapping). Since session 16 GJK and EPA recompute long thin simplices and faces in a wider type (gjk/wide.h):
-// the double box inside a cylinder of aspect 7e10 is answered (regression test GjkLongShapes), hence 1e12 for
-// double (was 1e8); float's wider type is double, whose reach the float findings above exceed.
+// overlapping). GJK and EPA recompute long thin simplices and faces in a wider type (gjk/wide.h): the double box
+// inside a cylinder of aspect 7e10 is answered (regression test GjkLongShapes), hence 1e12 for double; float's
+// wider type is double, whose reach the float findings above exceed.
 template <class T> bool longCustom(const gq::Geometry<T>& g) {
   const auto* c = g.template getIf<gq::CustomGeometry<T>>();
   if (!c) return false;
@@ -38,7 +38,7 @@ bool isSolid(gq::GeometryType t) {
 // Two solids (meshes and heightfields are surfaces, with other distance semantics): overlap, penetration and signed
 // distance must agree up to rounding of the pair's scale (sizes plus offset), relative 1e-3 in float, 1e-6 in
 // double; penetration and signed distance are the same MTD, compared within 10x that. Catches gross answers from
-// one family (session 12: "penetrating 1e30 deep" for shapes 4e29 apart) that each family's own checks pass.
+// one family (found by this harness: "penetrating 1e30 deep" for shapes 4e29 apart) that each family's own checks pass.
 template <class T>
 void requireOneStory(const gq::Geometry<T>& g0, const gq::Transform<T>& p0, const gq::Geometry<T>& g1,
                      const gq::Transform<T>& p1, bool overlapping, const gq::PenetrationResult<T>* pen,
@@ -48,16 +48,16 @@ void requireOneStory(const gq::Geometry<T>& g0, const gq::Transform<T>& p0, cons
   const long double offset = (p1.p - p0.p).template cast<long double>().norm();
   const long double scale = localRadius(g0) + localRadius(g1) + offset;
   const long double tol = (sizeof(T) == 4 ? 1e-3L : 1e-6L) * scale;
-  // (Float pairs of scale 1e9+ were skipped here in session 16: GJK's and EPA's squared edge cross products, ~|e|^4,
-  // overflowed float, and a point inside a custom cone 3e10 wide was 1.7e8 "apart"; since session 17 such pairs run
-  // in a frame rescaled by a power of two, gjk/pair_scale.h.)
-  // (Hulls scaled to an aspect over 1e6, sheets and needles, were skipped here until session 18: a sphere centred on
-  // a sheet was pushed out through its rim, a float sphere 4.5 beside a needle "penetrating 2.0"; sphere and capsule
-  // run GJK/EPA on such hulls since session 17, penetration/degenerate_hull.h; the polytope pairs' SAT was right.)
+  // Float pairs of scale 1e9+ are checked too: they run in a frame rescaled by a power of two (gjk/pair_scale.h),
+  // without which GJK's and EPA's squared edge cross products, ~|e|^4, overflow float (a point inside a custom cone
+  // 3e10 wide came out 1.7e8 "apart").
+  // Hulls scaled to an aspect over 1e6 (sheets and needles) are checked too: sphere and capsule run GJK/EPA on such
+  // hulls (penetration/degenerate_hull.h), since their SAT pushed a sphere centred on a sheet out through its rim and
+  // called a float sphere 4.5 beside a needle "penetrating 2.0"; the polytope pairs' SAT is right on them.
   if (pen) gq::fuzz::require(pen->penetrating == overlapping || (dist && std::abs((long double)dist->distance) <= tol));
   if (dist) gq::fuzz::require(overlapping ? dist->distance <= tol : dist->distance >= -tol);
-  // (Float custom shapes were skipped here until session 16: float EPA on a custom cylinder 1e6 long answered
-  // -994,729 where penetration answered 205 and the exact MTD is 3.4; both now answer 3.04, gjk/wide.h.)
+  // Float custom shapes are checked too: float EPA on a custom cylinder 1e6 long answered -994,729 where penetration
+  // answered 205 and the exact MTD is 3.4, until both ran long faces in the wider type (gjk/wide.h); both answer 3.04.
   if (pen && dist && pen->penetrating && dist->distance < 0)
     gq::fuzz::require(std::abs((long double)pen->depth + dist->distance) <= 10 * tol);
 }

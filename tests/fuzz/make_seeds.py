@@ -2,16 +2,16 @@
 """Writes the seed inputs of the fuzz targets into <out>/<target>/ (deterministic; rerun to regenerate).
 
 Seeds are small valid inputs of each format plus a few broken ones; the query targets get seeded random bytes
-(fuzz_decode.h reads any byte string). The committed corpora in tests/fuzz/corpus/<target>/ are not written here:
-they are the seeds plus the inputs long fuzz runs grew, minimised with libFuzzer's -merge=1 (the smallest set of
-inputs that keeps every coverage feature, named by content hash) and kept under 5 MB in all. To bring a seed in, or
-to minimise a corpus again (ASan+UBSan build as scripts/sanitize makes it, ASAN_OPTIONS from scripts/sanitizer-env):
+(fuzz_decode.h reads any byte string). The committed corpora, tests/fuzz/corpus/<target>.tar.gz, are not written
+here: they are the seeds plus the inputs long fuzz runs grew, minimised with libFuzzer's -merge=1 (the smallest set
+of inputs that keeps every coverage feature, named by content hash), one archive per target, under 5 MB in all. To
+bring seeds in, or to minimise a corpus again (ASan+UBSan build as scripts/sanitize makes it, ASAN_OPTIONS and the
+gq_*_corpus functions from scripts/sanitizer-env):
 
     tests/fuzz/make_seeds.py /tmp/seeds
-    # add only the seeds that reach new coverage:
-    build-asan/tests/fuzz/fuzz_urdf -merge=1 tests/fuzz/corpus/fuzz_urdf /tmp/seeds/fuzz_urdf
-    # or minimise from scratch: merge the current corpus and the seeds into an empty folder, then replace the corpus
-    build-asan/tests/fuzz/fuzz_urdf -merge=1 /tmp/min/fuzz_urdf tests/fuzz/corpus/fuzz_urdf /tmp/seeds/fuzz_urdf
+    . scripts/sanitizer-env && gq_unpack_corpus fuzz_urdf /tmp/old/fuzz_urdf
+    build-asan/tests/fuzz/fuzz_urdf -merge=1 /tmp/min/fuzz_urdf /tmp/old/fuzz_urdf /tmp/seeds/fuzz_urdf
+    gq_pack_corpus fuzz_urdf /tmp/min/fuzz_urdf
 """
 import argparse
 import json

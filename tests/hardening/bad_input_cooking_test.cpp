@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "gq/io.h"
 #include "hardening_fixtures.h"
 #include "scratch_dir.h"
 

@@ -11,6 +11,7 @@
 #include "gq/urdf/robot.h"
 #include "gq/urdf/self_collision.h"
 #include "hardening_fixtures.h"
+#include "shared_data.h"
 
 namespace gq::hardening {
 namespace {
@@ -40,7 +41,7 @@ std::string readFile(const std::string& path) {
   s << in.rdbuf();
   return s.str();
 }
-std::string pandaDir() { return std::string(GQ_SHARED_DIR) + "/robots/example-robot-data/robots/panda_description"; }
+std::string pandaDir() { return gqtest::sharedPath("robots/example-robot-data/robots/panda_description"); }
 
 template <class T> class BadInputUrdf : public ::testing::Test {};
 TYPED_TEST_SUITE(BadInputUrdf, Scalars);
@@ -53,7 +54,7 @@ TYPED_TEST(BadInputUrdf, JointGraphWithACycleIsParseErrorNamingALinkOnIt) {
   const std::string loop = "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>"
                            "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
                            "<joint name=\"k\" type=\"fixed\"><parent link=\"b\"/><child link=\"a\"/></joint></robot>";
-  // `<"b"/>` is an error to tinyxml2 but not to TinyXML 1, urdfdom's parser (fuzz_urdf, session 5).
+  // `<"b"/>` is an error to tinyxml2 but not to TinyXML 1, urdfdom's parser (found by fuzz_urdf).
   std::string damaged = selfLoop;
   damaged.insert(damaged.rfind("</joint>"), "<\"b\"/>");
   for (const std::string& xml : {selfLoop, loop, damaged}) {
@@ -66,7 +67,7 @@ TYPED_TEST(BadInputUrdf, JointGraphWithACycleIsParseErrorNamingALinkOnIt) {
 
 // A URDF is a tree: a link that is the child of two joints is refused. urdfdom accepts it (the last parent read
 // wins) but lists the link under both parents; with the joints read in name order, j1 (a -> c) then j3 (b -> c), the
-// breadth-first walk met c before b and the loader indexed link -1 (fuzz_urdf, session 6: SEGV).
+// breadth-first walk met c before b and the loader indexed link -1 (found by fuzz_urdf: SEGV).
 TYPED_TEST(BadInputUrdf, LinkThatIsTheChildOfTwoJointsIsParseError) {
   const std::string xml =
       "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>"
@@ -82,7 +83,7 @@ TYPED_TEST(BadInputUrdf, LinkThatIsTheChildOfTwoJointsIsParseError) {
 }
 
 // urdfdom 3 logs some attribute values through printf as the format; with gq's capturing handler a "%s" in a
-// sphere radius read a wild pointer (fuzz_urdf, session 9: SEGV). Such attributes are refused before urdfdom reads
+// sphere radius read a wild pointer (found by fuzz_urdf: SEGV). Such attributes are refused before urdfdom reads
 // them; '%' in a comment, text or a mesh filename is not an attribute value urdfdom formats, and still loads.
 TYPED_TEST(BadInputUrdf, PercentInAnAttributeOtherThanAMeshFilenameIsParseError) {
   for (const std::string& geometry : {std::string("<sphere radius=\"33%3333333333s3\"/>"),
@@ -142,7 +143,13 @@ TYPED_TEST(BadInputUrdf, NonFiniteOriginOrZeroJointAxisIsParseError) {
   }
 }
 
-TYPED_TEST(BadInputUrdf, TruncatedRealUrdfAndSrdfAreParseErrors) {
+// On Panda's files from the shared data folder (skipped when it does not hold them).
+template <class T> class BadInputUrdfData : public ::testing::Test {};
+TYPED_TEST_SUITE(BadInputUrdfData, Scalars);
+
+TYPED_TEST(BadInputUrdfData, TruncatedRealUrdfAndSrdfAreParseErrors) {
+  GQ_REQUIRE_SHARED_FILE(pandaDir() + "/urdf/panda_collision.urdf");
+  GQ_REQUIRE_SHARED_FILE(pandaDir() + "/srdf/panda.srdf");
   const std::string urdfText = readFile(pandaDir() + "/urdf/panda_collision.urdf");
   const std::string srdfText = readFile(pandaDir() + "/srdf/panda.srdf");
   ASSERT_FALSE(urdfText.empty());

@@ -1,4 +1,4 @@
-// Determinism (issue 9, item 5): the same inputs give bitwise-identical outputs on repeated calls in any order, after
+// Determinism: the same inputs give bitwise-identical outputs on repeated calls in any order, after
 // re-cooking the same data, and in a fresh process (different addresses: no result may depend on pointer order or
 // on state left behind by earlier queries).
 #include <gtest/gtest.h>

@@ -182,10 +182,10 @@ TEST(FuzzPairFindings, HullWithASubnormalScaleFactorGetsAFiniteDepth) {
 
 }  // namespace
 
-// Two session-13 findings whose inputs give one shape a pose quaternion of norm 1.00083 (validation accepts 1e-3):
-// overlap and penetration took the pair frame from the raw quaternions, a rotation scaled by |q|^2 = 1.0017, until
-// session 16 normalised it (HardCases.QuaternionsWithinTheUnitToleranceAreNormalisedByEveryFamily); found mended on
-// replaying the open findings in session 17. The exact answers below use the normalised rotation.
+// Two findings whose inputs give one shape a pose quaternion of norm 1.00083 (validation accepts 1e-3): overlap and
+// penetration took the pair frame from the raw quaternions, a rotation scaled by |q|^2 = 1.0017; every family now
+// normalises it (HardCases.QuaternionsWithinTheUnitToleranceAreNormalisedByEveryFamily). The exact answers below use
+// the normalised rotation.
 namespace {
 gq::Vec3<long double> unitAxisX(const gq::Transform<double>& pose) {
   return (pose.q.cast<long double>().normalized() * gq::Vec3<long double>::UnitX());
@@ -263,8 +263,8 @@ TEST(FuzzPairFindings, SphereCentredOnAHullScaledToASheetIsPushedOutThroughTheSh
   EXPECT_NEAR(d.distance, -radius, 1e-12);
 }
 
-// The same sheet (a cube hull scaled (0.125, 1e-266, 7.9)) 2e39 below a sphere of radius 2.06 (session 18, the first
-// run with sheets and needles in the harness's cross-family check): penetration answered "1 deep" along the sheet's
+// The same sheet (a cube hull scaled (0.125, 1e-266, 7.9)) 2e39 below a sphere of radius 2.06 (found by the harness's
+// cross-family check on sheets and needles): penetration answered "1 deep" along the sheet's
 // normal while overlap and distance said apart. GJK's resolution for a pair 2e39 across is far coarser than the
 // radius, so the kernel went to SAT, whose face normals the scale rotation's rounding decides; GJK's separating axis
 // is a proof at any resolution and now answers first.
@@ -283,8 +283,8 @@ TEST(FuzzPairFindings, SphereBesideAHullScaledToANeedleIsApartInEveryFamily) {
                            4.488f, 1e-3f);
 }
 
-// A float sphere (radius 5.3) 7.7e8 from the centre of a custom cylinder of radius and half-height 1e30 (session 17,
-// found once the harness stopped skipping float pairs of scale 1e9+): overlap said yes, penetration "not
+// A float sphere (radius 5.3) 7.7e8 from the centre of a custom cylinder of radius and half-height 1e30 (found by the
+// harness's cross-family check on float pairs of scale 1e9+): overlap said yes, penetration "not
 // penetrating" and distance non-finite. The cylinder's GJK size overflowed (|(h, r, r)|^2 > FLT_MAX) and its support
 // squared direction components; in float the depth is the radius, 1e30 (the offset is below its resolution).
 TEST(FuzzPairFindings, SphereInsideAFloatCylinder1e30WideIsItsRadiusDeep) {
@@ -299,8 +299,8 @@ TEST(FuzzPairFindings, SphereInsideAFloatCylinder1e30WideIsItsRadiusDeep) {
   EXPECT_NEAR(double(d.distance), -1e30, 1e-3 * 1e30);
 }
 
-// A double sphere of radius 4.9e-299 swept against a triangle mesh scaled by -4.7e-224 at the same place (session
-// 17, a libFuzzer timeout after 3,078,385 executions on the rescaling core): the sweep's bisection for the contact
+// A double sphere of radius 4.9e-299 swept against a triangle mesh scaled by -4.7e-224 at the same place (a libFuzzer
+// timeout after 3,078,385 executions): the sweep's bisection for the contact
 // looped forever once its interval was two adjacent doubles (its resolution, GJK's tolerance for a pair 1e-224
 // across, lies far below their spacing near 0.5). It now stops there. The sweep answers, a hit within the mesh's
 // size of the start.

@@ -73,10 +73,11 @@ TEST(FuzzRaycastFindings, ConvexEntryParameterThatOverflowsIsNoHit) {
   for (const auto& h : r.hits) EXPECT_TRUE(std::isfinite(h.distance));
 }
 
-// A float box seen from x = -2.98e38 along +X with maxDist = inf (session 10, after 2.8M executions): in the box's
-// frame one direction component is tiny and the origin's carries a rounding error of the order of its ulp (~1e31),
-// so that slab's entry parameter overflowed to inf and came out as a hit at distance inf. At that range float cannot
-// tell whether the ray meets a box of size 1; the façade's rule (a hit has a finite distance) makes it a miss.
+// A float box seen from x = -2.98e38 along +X with maxDist = inf (found by fuzz_raycast after 2.8M executions): in
+// the box's frame one direction component is tiny and the origin's carries a rounding error of the order of its ulp
+// (~1e31), so that slab's entry parameter overflowed to inf and came out as a hit at distance inf. At that range
+// float cannot tell whether the ray meets a box of size 1; the façade's rule (a hit has a finite distance) makes it a
+// miss.
 TEST(FuzzRaycastFindings, BoxEntryParameterThatOverflowsIsNoHit) {
   const Replay r = replayRaycast({0x43, 0x63, 0x48, 0xea, 0x6c, 0xa2, 0xe5, 0x00, 0x59, 0x8a, 0xe2, 0x1f, 0xf1,
                                   0x95, 0x04, 0x3c, 0x02, 0x66, 0x05, 0xff, 0x79, 0x4d, 0x08, 0x5c, 0x24, 0xca,

@@ -1,4 +1,4 @@
-// No NaN out (issue 9, item 4): every query family over extreme but valid inputs (sizes 1e-6 ... 1e6, coordinates to
+// No NaN out: every query family over extreme but valid inputs (sizes 1e-6 ... 1e6, coordinates to
 // 1e6, nearly parallel and nearly degenerate configurations) answers with finite numbers or an error status.
 // runEveryFamily (query_families.h) fails the test on any accepted call with a non-finite output.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Thread safety (issue 9, item 2) and single- vs multi-thread determinism (item 5): 8 threads share the same cooked
+// Thread safety and single- vs multi-thread determinism: 8 threads share the same cooked
 // hull, mesh and heightfield (and the same Geometry objects) and run raycasts, sweeps, overlaps, penetration and
 // distances at once; each thread's output digest must equal the single-threaded one. scripts/sanitize runs this
 // under ThreadSanitizer, which reports any data race on the shared data.

@@ -70,11 +70,16 @@ TYPED_TEST(Approximation, SphereAndCapsuleFitsOfABoxMeshHaveClosedFormSizes) {
   EXPECT_NEAR(double(cg->halfHeight), 0.2, 1e-5);
 }
 
-TYPED_TEST(Approximation, EveryRepresentationEnclosesTheRealMeshes) {
+// On the real robots of the shared data folder (skipped when it does not hold them).
+template <class T> class ApproximationData : public RobotDataTest {};
+TYPED_TEST_SUITE(ApproximationData, Scalars);
+
+TYPED_TEST(ApproximationData, EveryRepresentationEnclosesTheRealMeshes) {
   using T = TypeParam;
   for (Representation rep : {Representation::Hull, Representation::Box, Representation::BoxAabb,
                              Representation::Capsule, Representation::Sphere, Representation::BestPrimitive}) {
     const auto m = loadCached<T>(kUr5, rep);
+    ASSERT_TRUE(m);
     for (const auto& s : m->shapes) {
       if (s.source != ShapeSource::Mesh) continue;
       EXPECT_LT(s.error.meshToApproximation, T(1e-4)) << toString(rep) << " " << s.file;
@@ -83,10 +88,12 @@ TYPED_TEST(Approximation, EveryRepresentationEnclosesTheRealMeshes) {
   }
 }
 
-TYPED_TEST(Approximation, HullIsTighterThanEveryPrimitive) {
+TYPED_TEST(ApproximationData, HullIsTighterThanEveryPrimitive) {
   using T = TypeParam;
   const auto hull = loadCached<T>(kPanda, Representation::Hull);
+  ASSERT_TRUE(hull);
   const auto best = loadCached<T>(kPanda, Representation::BestPrimitive);
+  ASSERT_TRUE(best);
   for (std::size_t i = 0; i < hull->shapes.size(); ++i) {
     if (hull->shapes[i].source != ShapeSource::Mesh) continue;
     EXPECT_LT(hull->shapes[i].error.approximationToMesh, best->shapes[i].error.approximationToMesh)

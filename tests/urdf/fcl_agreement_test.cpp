@@ -74,12 +74,15 @@ struct Disagreement {
   Bracket exact;
 };
 
-template <class T> class FclAgreement : public ::testing::Test {};
-TYPED_TEST_SUITE(FclAgreement, Scalars);
+// On the real robots of the shared data folder (skipped when it does not hold them).
+template <class T> class FclAgreementData : public RobotDataTest {};
+TYPED_TEST_SUITE(FclAgreementData, Scalars);
 
 template <class T> void compareOnRandomConfigurations(const RobotFiles& robot, Representation rep, std::size_t count) {
   const auto gqModel = loadCached<T>(robot, rep);
+  ASSERT_TRUE(gqModel);
   const auto refModel = loadCached<double>(robot, rep);
+  ASSERT_TRUE(refModel);
   std::unique_ptr<FclSelfCollisionChecker> fcl;
   const Status created = FclSelfCollisionChecker::create(refModel, fcl);
   ASSERT_TRUE(created.ok()) << created.toString();
@@ -116,29 +119,29 @@ template <class T> void compareOnRandomConfigurations(const RobotFiles& robot, R
   }
 }
 
-TYPED_TEST(FclAgreement, PandaHullModeAgreesWithFclOnTenThousandRandomConfigurations) {
+TYPED_TEST(FclAgreementData, PandaHullModeAgreesWithFclOnTenThousandRandomConfigurations) {
   compareOnRandomConfigurations<TypeParam>(kPanda, Representation::Hull, 10000);
 }
 
-TYPED_TEST(FclAgreement, Ur5HullModeAgreesWithFclOnTenThousandRandomConfigurations) {
+TYPED_TEST(FclAgreementData, Ur5HullModeAgreesWithFclOnTenThousandRandomConfigurations) {
   compareOnRandomConfigurations<TypeParam>(kUr5, Representation::Hull, 10000);
 }
 
 // Exact triangle meshes (surfaces: a link inside another without crossing triangles is not a contact, in gq and FCL).
-TYPED_TEST(FclAgreement, PandaMeshModeAgreesWithFclOnTenThousandRandomConfigurations) {
+TYPED_TEST(FclAgreementData, PandaMeshModeAgreesWithFclOnTenThousandRandomConfigurations) {
   compareOnRandomConfigurations<TypeParam>(kPanda, Representation::Mesh, 10000);
 }
 
-TYPED_TEST(FclAgreement, Ur5MeshModeAgreesWithFclOnTenThousandRandomConfigurations) {
+TYPED_TEST(FclAgreementData, Ur5MeshModeAgreesWithFclOnTenThousandRandomConfigurations) {
   compareOnRandomConfigurations<TypeParam>(kUr5, Representation::Mesh, 10000);
 }
 
 // Panda's primitive URDF: spheres and exact cylinders (fcl::Cylinder on the FCL side).
-TYPED_TEST(FclAgreement, PandaPrimitiveUrdfAgreesWithFclOnTenThousandRandomConfigurations) {
+TYPED_TEST(FclAgreementData, PandaPrimitiveUrdfAgreesWithFclOnTenThousandRandomConfigurations) {
   compareOnRandomConfigurations<TypeParam>(kPandaPrimitives, Representation::Hull, 10000);
 }
 
-TYPED_TEST(FclAgreement, BestPrimitiveModeAgreesWithFclOnTenThousandRandomConfigurations) {
+TYPED_TEST(FclAgreementData, BestPrimitiveModeAgreesWithFclOnTenThousandRandomConfigurations) {
   compareOnRandomConfigurations<TypeParam>(kPanda, Representation::BestPrimitive, 10000);
   compareOnRandomConfigurations<TypeParam>(kUr5, Representation::BestPrimitive, 10000);
 }
@@ -146,9 +149,12 @@ TYPED_TEST(FclAgreement, BestPrimitiveModeAgreesWithFclOnTenThousandRandomConfig
 // The FCL checker's selfDistance (MoveIt's pre-seeded fcl::distance) and gq's agree on the clearance of
 // collision-free configurations, hulls and meshes of Panda (the FCL checker is double only; FCL's GJK stops at its
 // 1e-6 tolerance, so 1e-5 m). Where they disagree beyond it the test fails: no referee needed at that size.
-TEST(FclSelfDistance, ClearanceAgreesWithGqOnCollisionFreeConfigurations) {
+class FclSelfDistanceData : public RobotDataTest {};
+
+TEST_F(FclSelfDistanceData, ClearanceAgreesWithGqOnCollisionFreeConfigurations) {
   for (const Representation rep : {Representation::Hull, Representation::Mesh}) {
     const auto model = loadCached<double>(kPanda, rep);
+    ASSERT_TRUE(model);
     std::unique_ptr<FclSelfCollisionChecker> fcl;
     ASSERT_TRUE(FclSelfCollisionChecker::create(model, fcl).ok());
     SelfCollisionChecker<double> gq(model);

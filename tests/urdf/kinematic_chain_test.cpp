@@ -73,11 +73,6 @@ TYPED_TEST(CompiledKinematics, BodyFramesTimesLinkOffsetsAreTheForwardKinematics
   expectChainMatchesForwardKinematics(m, 500);
 }
 
-TYPED_TEST(CompiledKinematics, BodyFramesTimesLinkOffsetsAreTheForwardKinematicsPosesOnPandaAndUr5) {
-  expectChainMatchesForwardKinematics(*loadCached<TypeParam>(kPanda, Representation::BestPrimitive), 200);
-  expectChainMatchesForwardKinematics(*loadCached<TypeParam>(kUr5, Representation::BestPrimitive), 200);
-}
-
 TYPED_TEST(CompiledKinematics, FixedJointsJoinLinksIntoOneBody) {
   RobotModel<TypeParam> m;
   ASSERT_TRUE(loadRobotFromStrings(kMixedChain, "", "/", testOptions(Representation::Hull), m).ok());
@@ -107,6 +102,18 @@ TYPED_TEST(CompiledKinematics, InvalidConfigurationsGiveTheForwardKinematicsStat
     ASSERT_EQ(rotations.size(), 1u);
     EXPECT_EQ(rotations[0](0, 0), T(7));
     EXPECT_EQ(positions[0].x(), T(7));
+  }
+}
+
+// On Panda and UR5 from the shared data folder (skipped when it does not hold them).
+template <class T> class CompiledKinematicsData : public RobotDataTest {};
+TYPED_TEST_SUITE(CompiledKinematicsData, Scalars);
+
+TYPED_TEST(CompiledKinematicsData, BodyFramesTimesLinkOffsetsAreTheForwardKinematicsPosesOnPandaAndUr5) {
+  for (const RobotFiles* robot : {&kPanda, &kUr5}) {
+    const auto m = loadCached<TypeParam>(*robot, Representation::BestPrimitive);
+    ASSERT_TRUE(m);
+    expectChainMatchesForwardKinematics(*m, 200);
   }
 }
 

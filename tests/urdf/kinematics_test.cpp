@@ -81,9 +81,14 @@ TYPED_TEST(Kinematics, RandomConfigurationsStayWithinLimits) {
   }
 }
 
-TYPED_TEST(Kinematics, PandaFingersMirrorThroughTheMimicJoint) {
+// On Panda from the shared data folder (skipped when it does not hold it).
+template <class T> class KinematicsData : public RobotDataTest {};
+TYPED_TEST_SUITE(KinematicsData, Scalars);
+
+TYPED_TEST(KinematicsData, PandaFingersMirrorThroughTheMimicJoint) {
   using T = TypeParam;
   const auto m = loadCached<T>(kPandaPrimitives, Representation::Hull);
+  ASSERT_TRUE(m);
   std::vector<Transform<T>> poses;
   const std::vector<T> q = namedConfiguration(*m, {{"panda_finger_joint1", 0.03}});
   ASSERT_TRUE(forwardKinematics(*m, q, poses).ok());

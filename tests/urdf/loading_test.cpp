@@ -41,7 +41,11 @@ template <class T> Status loadString(const std::string& urdf, const std::string&
 template <class T> class UrdfLoading : public ::testing::Test {};
 TYPED_TEST_SUITE(UrdfLoading, Scalars);
 
-TYPED_TEST(UrdfLoading, RealRobotsLoadCollisionGeometryOnlyWithoutOpeningVisualMeshes) {
+// On the real robots of the shared data folder (skipped when it does not hold them).
+template <class T> class UrdfLoadingData : public RobotDataTest {};
+TYPED_TEST_SUITE(UrdfLoadingData, Scalars);
+
+TYPED_TEST(UrdfLoadingData, RealRobotsLoadCollisionGeometryOnlyWithoutOpeningVisualMeshes) {
   // The visual .dae files named by these URDFs are absent on purpose: loading must not touch them.
   for (const RobotFiles* r : {&kPanda, &kPandaPrimitives, &kUr5}) {
     RobotModel<TypeParam> m;
@@ -68,7 +72,9 @@ TYPED_TEST(UrdfLoading, MissingUrdfOrSrdfFileFailsNamingIt) {
   Status s = loadRobot("/nonexistent/robot.urdf", "", testOptions(Representation::Hull), m);
   EXPECT_EQ(s.code, StatusCode::FileError);
   EXPECT_NE(s.message.find("/nonexistent/robot.urdf"), std::string::npos);
-  s = loadRobot(robotFile(kUr5.urdf), "/nonexistent/robot.srdf", testOptions(Representation::Hull), m);
+  const fs::path urdf = scratchDir() / "one_link.urdf";
+  std::ofstream(urdf) << oneLinkUrdf("<box size=\"1 1 1\"/>");
+  s = loadRobot(urdf.string(), "/nonexistent/robot.srdf", testOptions(Representation::Hull), m);
   EXPECT_EQ(s.code, StatusCode::FileError);
   EXPECT_NE(s.message.find("/nonexistent/robot.srdf"), std::string::npos);
 }

@@ -9,12 +9,14 @@
 namespace gq::urdf::test {
 namespace {
 
-template <class T> class NeverColliding : public ::testing::Test {};
-TYPED_TEST_SUITE(NeverColliding, Scalars);
+// On the real robots of the shared data folder (skipped when it does not hold them).
+template <class T> class NeverCollidingData : public RobotDataTest {};
+TYPED_TEST_SUITE(NeverCollidingData, Scalars);
 
-TYPED_TEST(NeverColliding, ListsExactlyThePairsWithoutContactInTheSamples) {
+TYPED_TEST(NeverCollidingData, ListsExactlyThePairsWithoutContactInTheSamples) {
   using T = TypeParam;
   const auto m = loadCached<T>(kUr5, Representation::Hull);
+  ASSERT_TRUE(m);
   NeverCollidingResult r;
   ASSERT_TRUE(neverColliding<T>(m, 2000, 3, r).ok());
   const std::size_t n = m->links.size();
@@ -34,9 +36,10 @@ TYPED_TEST(NeverColliding, ListsExactlyThePairsWithoutContactInTheSamples) {
   EXPECT_EQ(again.never, r.never);
 }
 
-TYPED_TEST(NeverColliding, WrittenSrdfReloadsAndDisablesThePairs) {
+TYPED_TEST(NeverCollidingData, WrittenSrdfReloadsAndDisablesThePairs) {
   using T = TypeParam;
   const auto m = loadCached<T>(kUr5, Representation::Hull);
+  ASSERT_TRUE(m);
   NeverCollidingResult r;
   ASSERT_TRUE(neverColliding<T>(m, 1000, 11, r).ok());
   const std::string srdf = writeSrdfDisableCollisions(*m, r.never);
@@ -50,10 +53,11 @@ TYPED_TEST(NeverColliding, WrittenSrdfReloadsAndDisablesThePairs) {
   for (const auto& p : r.never) EXPECT_TRUE(reloaded.isAllowed(p.a, p.b)) << m->links[p.a].name << " " << m->links[p.b].name;
 }
 
-TYPED_TEST(NeverColliding, ZeroSamplesIsInvalid) {
+TYPED_TEST(NeverCollidingData, ZeroSamplesIsInvalid) {
   NeverCollidingResult r;
-  EXPECT_EQ(neverColliding<TypeParam>(loadCached<TypeParam>(kUr5, Representation::Hull), 0, 1, r).code,
-            StatusCode::InvalidArgument);
+  const auto m = loadCached<TypeParam>(kUr5, Representation::Hull);
+  ASSERT_TRUE(m);
+  EXPECT_EQ(neverColliding<TypeParam>(m, 0, 1, r).code, StatusCode::InvalidArgument);
 }
 
 }  // namespace

@@ -10,10 +10,11 @@
 
 #include "gq/urdf/robot.h"
 #include "gq/urdf/self_collision.h"
+#include "shared_data.h"
 
 namespace gq::urdf::test {
 
-inline std::string robotsDir() { return std::string(GQ_SHARED_DIR) + "/robots"; }
+inline std::string robotsDir() { return gqtest::sharedPath("robots"); }
 inline std::string robotFile(const std::string& rel) {
   return robotsDir() + "/example-robot-data/robots/" + rel;
 }
@@ -37,17 +38,34 @@ inline LoadOptions testOptions(Representation rep) {
   return o;
 }
 
+// A robot of the shared data folder, loaded once per process, scalar type and representation; nullptr (and a
+// failure naming the robot) when it does not load. Callers ASSERT_TRUE the result before using it.
 template <class T> std::shared_ptr<const RobotModel<T>> loadCached(const RobotFiles& robot, Representation rep) {
   static std::map<std::pair<std::string, int>, std::shared_ptr<const RobotModel<T>>> cache;
   auto& slot = cache[{robot.name, int(rep)}];
   if (!slot) {
     auto model = std::make_shared<RobotModel<T>>();
     const Status s = loadRobot(robotFile(robot.urdf), robotFile(robot.srdf), testOptions(rep), *model);
-    EXPECT_TRUE(s.ok()) << s.toString();
+    if (!s.ok()) {
+      ADD_FAILURE() << robot.name << " (" << toString(rep) << ") did not load: " << s.toString();
+      return nullptr;
+    }
     slot = model;
   }
   return slot;
 }
+
+// Tests on the real robots (Panda, its primitive URDF, UR5) derive their fixture from this one: each is skipped,
+// naming the file it looked for, when the shared data folder does not hold the robots.
+class RobotDataTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const RobotFiles* robot : {&kPanda, &kPandaPrimitives, &kUr5}) {
+      GQ_REQUIRE_SHARED_FILE(robotFile(robot->urdf));
+      GQ_REQUIRE_SHARED_FILE(robotFile(robot->srdf));
+    }
+  }
+};
 
 template <class T> std::vector<T> castConfiguration(const std::vector<double>& q) {
   return std::vector<T>(q.begin(), q.end());

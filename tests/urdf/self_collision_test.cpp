@@ -11,17 +11,19 @@
 namespace gq::urdf::test {
 namespace {
 
-template <class T> class SelfCollision : public ::testing::Test {};
-TYPED_TEST_SUITE(SelfCollision, Scalars);
+// On the real robots of the shared data folder (skipped when it does not hold them).
+template <class T> class SelfCollisionData : public RobotDataTest {};
+TYPED_TEST_SUITE(SelfCollisionData, Scalars);
 
 const Representation kCheckedModes[] = {Representation::Mesh, Representation::Hull, Representation::BestPrimitive,
                                         Representation::Capsule};
 
-TYPED_TEST(SelfCollision, SrdfHomePoseIsCollisionFree) {
+TYPED_TEST(SelfCollisionData, SrdfHomePoseIsCollisionFree) {
   using T = TypeParam;
   for (const RobotFiles* r : {&kPanda, &kPandaPrimitives, &kUr5})
     for (Representation rep : kCheckedModes) {
       const auto m = loadCached<T>(*r, rep);
+      ASSERT_TRUE(m);
       SelfCollisionChecker<T> checker(m);
       CollisionResult result;
       const Status s = checker.checkSelfCollision(m->home, result);
@@ -55,11 +57,12 @@ std::vector<Folded> foldedPoses() {
   };
 }
 
-TYPED_TEST(SelfCollision, FoldedArmReportsTheExpectedPair) {
+TYPED_TEST(SelfCollisionData, FoldedArmReportsTheExpectedPair) {
   using T = TypeParam;
   for (const Folded& f : foldedPoses())
     for (Representation rep : kCheckedModes) {
       const auto m = loadCached<T>(*f.robot, rep);
+      ASSERT_TRUE(m);
       SelfCollisionChecker<T> checker(m);
       CollisionResult result;
       ASSERT_TRUE(checker.checkSelfCollision(namedConfiguration(*m, f.q), result).ok());
@@ -72,7 +75,7 @@ TYPED_TEST(SelfCollision, FoldedArmReportsTheExpectedPair) {
     }
 }
 
-TYPED_TEST(SelfCollision, DistanceIsPositiveExactlyWhenNoPairCollides) {
+TYPED_TEST(SelfCollisionData, DistanceIsPositiveExactlyWhenNoPairCollides) {
   using T = TypeParam;
   const T tol = std::is_same_v<T, float> ? T(1e-4) : T(1e-8);
   // Mesh mode measures surfaces (distance 0 in contact, never negative); the primitive URDF has exact cylinders.
@@ -81,6 +84,7 @@ TYPED_TEST(SelfCollision, DistanceIsPositiveExactlyWhenNoPairCollides) {
       {&kUr5, Representation::Mesh}, {&kPandaPrimitives, Representation::Hull}};
   for (const auto& [r, rep] : cases) {
     const auto m = loadCached<T>(*r, rep);
+    ASSERT_TRUE(m);
     SelfCollisionChecker<T> checker(m);
     std::uint64_t rng = 99;
     std::size_t separated = 0;
@@ -103,9 +107,10 @@ TYPED_TEST(SelfCollision, DistanceIsPositiveExactlyWhenNoPairCollides) {
   }
 }
 
-TYPED_TEST(SelfCollision, BatchMatchesSingleChecks) {
+TYPED_TEST(SelfCollisionData, BatchMatchesSingleChecks) {
   using T = TypeParam;
   const auto m = loadCached<T>(kPanda, Representation::Hull);
+  ASSERT_TRUE(m);
   SelfCollisionChecker<T> checker(m);
   std::uint64_t rng = 5;
   std::vector<std::vector<T>> qs;
@@ -126,10 +131,11 @@ TYPED_TEST(SelfCollision, BatchMatchesSingleChecks) {
 // The checker visits link pairs most-often-touching first and culls before the narrow phase; neither may change
 // the answer. Reference: every link pair the allowed-collision matrix leaves, every shape pair, gq::overlap at the
 // forward-kinematics poses (no culling, link order). A first-hit check reports one pair of that set.
-TYPED_TEST(SelfCollision, PairsFoundAreEveryShapePairOverlapSortedAndFirstHitIsOneOfThem) {
+TYPED_TEST(SelfCollisionData, PairsFoundAreEveryShapePairOverlapSortedAndFirstHitIsOneOfThem) {
   using T = TypeParam;
   for (const RobotFiles* robot : {&kPanda, &kUr5}) {
     const auto m = loadCached<T>(*robot, Representation::Hull);
+    ASSERT_TRUE(m);
     SelfCollisionChecker<T> checker(m);
     std::uint64_t rng = 11;
     std::size_t colliding = 0;
@@ -170,9 +176,10 @@ TYPED_TEST(SelfCollision, PairsFoundAreEveryShapePairOverlapSortedAndFirstHitIsO
 
 // The order helper: pairs by decreasing contact count over its samples, ties in their given order, and a failing
 // check leaves the order as it was.
-TYPED_TEST(SelfCollision, PairOrderIsByDecreasingContactCountAndStableOnTies) {
+TYPED_TEST(SelfCollisionData, PairOrderIsByDecreasingContactCountAndStableOnTies) {
   using T = TypeParam;
   const auto m = loadCached<T>(kPanda, Representation::Hull);
+  ASSERT_TRUE(m);
   const std::vector<LinkPair> given = {{0, 2}, {1, 3}, {2, 4}, {3, 5}};
   std::vector<LinkPair> pairs = given;
   std::uint64_t call = 0;
@@ -206,10 +213,11 @@ TYPED_TEST(SelfCollision, PairOrderIsByDecreasingContactCountAndStableOnTies) {
 // selfDistance is the minimum signed distance over every shape pair the allowed-collision matrix leaves: the deepest
 // penetration in colliding configurations (each pair evaluated here with gq::distance on forwardKinematics poses).
 // Hulls, and meshes (thin surfaces: 0 in contact), whose pairs selfDistance orders and prunes by their hulls.
-TYPED_TEST(SelfCollision, SelfDistanceIsTheDeepestOverAllCheckedShapePairs) {
+TYPED_TEST(SelfCollisionData, SelfDistanceIsTheDeepestOverAllCheckedShapePairs) {
   using T = TypeParam;
   for (const Representation rep : {Representation::Hull, Representation::Mesh}) {
   const auto m = loadCached<T>(kPanda, rep);
+  ASSERT_TRUE(m);
   SelfCollisionChecker<T> checker(m);
   std::uint64_t rng = 7;
   int colliding = 0;
@@ -240,9 +248,10 @@ TYPED_TEST(SelfCollision, SelfDistanceIsTheDeepestOverAllCheckedShapePairs) {
 
 // CheckerOptions::orderingSamples changes only the order pairs are tried in: every colliding pair and the minimum
 // distance stay the same, also with no ordering at all.
-TYPED_TEST(SelfCollision, OrderingSamplesChangeNoAnswer) {
+TYPED_TEST(SelfCollisionData, OrderingSamplesChangeNoAnswer) {
   using T = TypeParam;
   const auto m = loadCached<T>(kPanda, Representation::Hull);
+  ASSERT_TRUE(m);
   SelfCollisionChecker<T> ordered(m);
   CheckerOptions none;
   none.orderingSamples = 0;
@@ -265,9 +274,10 @@ TYPED_TEST(SelfCollision, OrderingSamplesChangeNoAnswer) {
   EXPECT_GT(colliding, 0);  // the sample has colliding configurations
 }
 
-TYPED_TEST(SelfCollision, InvalidConfigurationReturnsInvalidArgumentAndKeepsTheResult) {
+TYPED_TEST(SelfCollisionData, InvalidConfigurationReturnsInvalidArgumentAndKeepsTheResult) {
   using T = TypeParam;
   const auto m = loadCached<T>(kUr5, Representation::Hull);
+  ASSERT_TRUE(m);
   SelfCollisionChecker<T> checker(m);
   CollisionResult r;
   r.colliding = true;
@@ -280,10 +290,12 @@ TYPED_TEST(SelfCollision, InvalidConfigurationReturnsInvalidArgumentAndKeepsTheR
 
 // Mesh mode tests the links' convex hulls before their triangles: hulls that touch while the meshes do not (UR5's
 // links are far from convex) must come out free, and the triangles decide.
-TYPED_TEST(SelfCollision, MeshModeIsNeverMoreCollidingThanHullModeAndSometimesLess) {
+TYPED_TEST(SelfCollisionData, MeshModeIsNeverMoreCollidingThanHullModeAndSometimesLess) {
   using T = TypeParam;
   const auto meshes = loadCached<T>(kUr5, Representation::Mesh);
+  ASSERT_TRUE(meshes);
   const auto hulls = loadCached<T>(kUr5, Representation::Hull);
+  ASSERT_TRUE(hulls);
   SelfCollisionChecker<T> meshChecker(meshes), hullChecker(hulls);
   std::uint64_t rng = 17;
   std::size_t onlyHulls = 0;

@@ -41,7 +41,7 @@ template <class T> bool shape1IsSmaller(const Geometry<T>& g0, const Geometry<T>
 }
 
 // A rotation that is not unit to rounding is normalised (validation accepts |q| within 1e-3 of 1, and the relative
-// pose of non-unit quaternions is a scaled rotation: fuzz_pair_queries, session 16, a cube hull whose |q| was 1.0008
+// pose of non-unit quaternions is a scaled rotation: found by fuzz_pair_queries, a cube hull whose |q| was 1.0008
 // grew by 0.17 % in the SAT kernels, penetration 3.06784 against the exact 3.06625). One unit to rounding is used as
 // given, so touching contacts built from it stay touching.
 template <class T> Quat<T> unitRotation(const Quat<T>& q) {

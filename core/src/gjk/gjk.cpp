@@ -7,7 +7,7 @@
 // below tolerance. With d = v this is the usual duality gap v.(v - w)/|v|.
 //
 // Plain GJK, no momentum: Nesterov acceleration (Montaut, Le Lidec, Petrik, Sivic, Carpentier, RSS 2022) cost 13-25%
-// more instructions in the boolean GJK and ~8% in distance on hull pairs (docs/convex_speed.md: its supports seldom
+// more instructions in the boolean GJK and ~8% in distance on hull pairs (docs/performance.md: its supports seldom
 // pass the gap test and are retried without it), and plain GJK is what the termination argument covers.
 #include <cmath>
 

@@ -26,7 +26,7 @@
 namespace gq::detail {
 
 // Convex hulls with more vertices than this use hill-climbing over the hull's edge adjacency (warm-started from the
-// previous support vertex); smaller ones are searched exhaustively. Measured (docs/convex_speed.md): the climb is
+// previous support vertex); smaller ones are searched exhaustively. Measured (docs/performance.md): the climb is
 // faster in time from 12 vertices up (the exhaustive scan's data-dependent branches mispredict), and a SIMD scan
 // over a per-query structure-of-arrays copy (SSE2) was slower than the climb at 30 vertices.
 inline constexpr std::uint32_t kHillClimbMinVertices = 8;

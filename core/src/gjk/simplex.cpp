@@ -154,7 +154,7 @@ template <class T> Candidate<T> closestFace(const GjkSimplex<T>& s, const std::a
 }
 
 // a . (b x c) in scalars: Eigen's cross product, stored a component at a time and read back as packed pairs by the
-// dot product, waited on failed store forwarding (perf, session 25; convex30/convex100 distance ~3 % faster). The
+// dot product, waited on failed store forwarding (perf; in scalars convex30/convex100 distance is ~3 % faster). The
 // plane projection's triple products (projectOrigin) stay Eigen's: in scalars they made convex30 distance ~8 % slower.
 template <class T> T tripleProduct(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   return a.x() * (b.y() * c.z() - b.z() * c.y()) + a.y() * (b.z() * c.x() - b.x() * c.z()) +

@@ -20,7 +20,7 @@ template <class T> bool scaledPastPrecision(const MeshScale<T>& scale) {
 // resolution. Overlapping is trusted only when GJK's resolution for the pair (gjkTolerance, relative to the pair's
 // size) is fine against the round shape's radius: false, untouched, when it is not (a float sheet 7e8 wide resolves
 // to ~1e3, which calls a sphere 1.6 off it touching; SAT answers those). (A sphere 2e39 from a 1e-266 sheet failed
-// that test by the pair's size and went to SAT, whose face normals claimed a depth of 1: fuzz, session 18.) EPA out
+// that test by the pair's size and went to SAT, whose face normals claimed a depth of 1: found by fuzzing.) EPA out
 // of iterations still reports an upper bound that separates.
 template <class T, class G0>
 bool penetrationBySupport(const G0& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1,

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <vector>
 
+#include "gq/io.h"
 #include "internal.h"
 
 namespace gq::urdf {
@@ -50,7 +51,7 @@ Status readFile(const std::string& path, const char* what, std::string& out) {
 // Kahn's algorithm: links left with a parent after peeling off every root are on or below a cycle.
 // A link that is the child of two joints is refused too (a URDF is a tree): urdfdom keeps the last parent it reads
 // but lists the link under both parents, so the breadth-first walk met it twice, once before its parent
-// (fuzz_urdf, session 6: an out-of-range parent index read in computeAllowedCollisions).
+// (found by fuzz_urdf: an out-of-range parent index read in computeAllowedCollisions).
 std::string jointGraphProblem(const TiXmlDocument& doc) {
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) return {};
@@ -85,7 +86,7 @@ std::string jointGraphProblem(const TiXmlDocument& doc) {
 
 // urdfdom 3 hands some messages built from attribute values to console_bridge as the printf format (a sphere radius
 // that is not a number, for one), and the handler above makes console_bridge format them: a "%s" in such a value
-// read a wild pointer (fuzz_urdf, session 9: SEGV in vsnprintf). No number, name or joint type needs '%', so an
+// read a wild pointer (found by fuzz_urdf: SEGV in vsnprintf). No number, name or joint type needs '%', so an
 // attribute holding one is refused before urdfdom reads it; mesh filenames keep theirs (URL escapes, e.g. "%20").
 // The name of the first such attribute, or "" for none.
 std::string attributeWithPercent(const TiXmlElement* e) {
@@ -100,7 +101,7 @@ std::string attributeWithPercent(const TiXmlElement* e) {
 
 // What urdfdom must not be given, or "" for none. The document is read with TinyXML 1, urdfdom's own parser, as
 // urdfdom reads it (up to the first NUL): TinyXML 1 accepts damaged XML that tinyxml2 rejects, so a stricter
-// parser here let a cycle through (fuzz_urdf, session 5). One parse serves both checks.
+// parser here let a cycle through (found by fuzz_urdf). One parse serves both checks.
 std::string preParseProblem(const std::string& xml) {
   TiXmlDocument doc;
   doc.Parse(xml.c_str());

@@ -26,10 +26,10 @@ namespace gq::fcl {
 // MPR or its box-box routine, so hosts tuned to FCL's numbers see no change; booleans and distances are always gq's.
 struct Options {
   // The true minimum-translation penetration (exact SAT / EPA) for every pair. FCL's MPR path returns the portal
-  // direction instead, wrong by up to sqrt(3) in depth for a cube corner (FCL issue 545).
+  // direction instead, wrong by up to sqrt(3) in depth for a cube corner (FCL bug fcl#545).
   bool minimumTranslation = false;
   // Box-box contacts from gq's exact MTD: FCL's box-box routine reports 1.0 or 0 for a box inside another box with
-  // touching faces depending on the boxes' lengths (FCL issue 628).
+  // touching faces depending on the boxes' lengths (FCL bug fcl#628).
   bool exactContainedBoxDepth = false;
 };
 
