@@ -10,8 +10,8 @@
 
 namespace gq::compare {
 
-// Relative tolerances of the core issues: double 1e-9 for closed forms and SAT, 1e-7 for GJK/EPA and meshes;
-// float 1e-4 for everything.
+// Relative tolerances gq is held to: double 1e-9 for closed forms and SAT, 1e-7 for GJK/EPA and meshes; float
+// 1e-4 for everything.
 double toleranceFor(cases::Precision precision, const std::string& toleranceClass);
 
 enum class Outcome {

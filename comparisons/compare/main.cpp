@@ -1,6 +1,8 @@
 // gq-compare: runs every backend of gq-query over the exact-answer suites and reports, per query family x
 // backend x precision, cases answered, wrong booleans, median and max relative error, median ns per query.
-//   gq-compare [--suites DIR | --embedded] [--backends gq,fcl] [--repeat N] [--results DIR] [--no-plot] [--check]
+// Prints, per family, gq and the backends that answer it (--table: every row, answered or not).
+//   gq-compare [--suites DIR] [--backends gq,fcl] [--repeat N] [--results DIR] [--no-plot] [--table] [--check]
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -62,7 +64,7 @@ int main(int argc, char** argv) {
   std::string suitesDir, resultsDir = GQ_COMPARE_RESULTS_DIR, plotScript = GQ_COMPARE_PLOT_SCRIPT;
   std::vector<std::string> backendNames = gq::cases::backendNames();
   int repeat = 3;
-  bool noPlot = false, check = false;
+  bool noPlot = false, check = false, table = false;
   app.add_option("--suites", suitesDir, "folder of <family>.jsonl suites (default: the embedded default suites)");
   app.add_option("--backends", backendNames, "backends to run (default: all)")
       ->delimiter(',')
@@ -70,6 +72,7 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", repeat, "runs per query; ns is the median")->check(CLI::PositiveNumber);
   app.add_option("--results", resultsDir, "folder for the CSVs, plots and disagreements.md");
   app.add_flag("--no-plot", noPlot, "skip the matplotlib plots");
+  app.add_flag("--table", table, "print the full table (every family x backend x precision, answered or not)");
   app.add_flag("--check", check, "exit 1 unless gq has no wrong boolean and meets every tolerance");
   CLI11_PARSE(app, argc, argv);
 
@@ -95,7 +98,9 @@ int main(int argc, char** argv) {
   }
 
   const auto rows = gq::compare::summarize(records);
-  gq::compare::printTable(std::cout, rows);
+  if (table) gq::compare::printTable(std::cout, rows);
+  else gq::compare::printSummary(std::cout, rows, records);
+  std::cout << '\n';
   std::string error;
   if (!gq::compare::writeCsv(resultsDir, rows, error)) {
     std::cerr << "gq-compare: " << error << '\n';
@@ -108,7 +113,19 @@ int main(int argc, char** argv) {
             << " disagreements classified in " << reportPath << '\n';
   if (!noPlot) {
     const std::string command = "/usr/bin/python3 '" + plotScript + "' '" + resultsDir + "'";
-    if (std::system(command.c_str()) != 0) std::cerr << "gq-compare: plots skipped (python3-matplotlib missing?)\n";
+    const bool plotted = std::system(command.c_str()) == 0;
+    if (!plotted) std::cerr << "gq-compare: plots skipped (python3-matplotlib missing?)\n";
+    std::vector<std::string> plots;
+    for (const auto& row : rows)
+      for (const char* ext : {".png", ".svg"}) {
+        const std::string path = resultsDir + "/compare_" + row.family + ext;
+        if (std::filesystem::exists(path) && std::find(plots.begin(), plots.end(), path) == plots.end())
+          plots.push_back(path);
+      }
+    if (plotted && !plots.empty()) {
+      std::cout << "plots (speed against error per family):\n";
+      for (const std::string& path : plots) std::cout << "  " << path << '\n';
+    }
   }
 
   if (!check) return 0;

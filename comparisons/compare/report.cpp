@@ -1,6 +1,7 @@
 #include "report.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <tuple>
 #include <unistd.h>
 
 namespace gq::compare {
@@ -91,9 +93,96 @@ void printTable(std::ostream& out, const std::vector<Row>& rows) {
          "errors are |answer - exact| / scale\n";
 }
 
+namespace {
+
+bool answered(Outcome o) { return o != Outcome::Unsupported && o != Outcome::Failed; }
+
+// gq first, then gq through its adapters, then the peers in name order.
+int backendRank(const std::string& name) {
+  if (name == "gq") return 0;
+  return name.rfind("gq-", 0) == 0 ? 1 : 2;
+}
+
+std::string ratioText(double r) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, r >= 10 ? "%.0fx" : "%.1fx", r);
+  return buf;
+}
+
+}  // namespace
+
+void printSummary(std::ostream& out, const std::vector<Row>& rows, const std::vector<CaseRecord>& records) {
+  // Per family x precision: gq's time on each case it answered, to time the others on the same cases.
+  std::map<std::pair<std::string, std::string>, std::map<const LoadedCase*, double>> gqNs;
+  std::map<std::tuple<std::string, std::string, std::string>, std::vector<const CaseRecord*>> byRow;
+  for (const CaseRecord& r : records) {
+    const std::string prec = precisionName(r.c->input.precision);
+    if (!answered(r.verdict.outcome)) continue;
+    if (r.backend == "gq") gqNs[{r.c->family, prec}][r.c] = r.ns;
+    byRow[{r.c->family, r.backend, prec}].push_back(&r);
+  }
+  const auto relativeTime = [&](const Row& row) -> std::string {
+    if (row.backend == "gq") return "1";
+    const auto g = gqNs.find({row.family, row.precision});
+    if (g == gqNs.end()) return "-";
+    std::vector<double> mine, theirs;
+    for (const CaseRecord* r : byRow[{row.family, row.backend, row.precision}])
+      if (auto it = g->second.find(r->c); it != g->second.end()) {
+        mine.push_back(r->ns);
+        theirs.push_back(it->second);
+      }
+    const double gqMedian = median(theirs);
+    if (mine.empty() || !(gqMedian > 0)) return "-";
+    return ratioText(median(mine) / gqMedian);
+  };
+
+  std::vector<std::string> families;
+  for (const Row& r : rows)
+    if (std::find(families.begin(), families.end(), r.family) == families.end()) families.push_back(r.family);
+  out << "Accuracy and speed per query family against exact answers (computed in long double, independently of every\n"
+         "backend). answered: cases with an answer (the others are unsupported, or rejected as invalid input such as\n"
+         "degenerate shapes); wrong: wrong booleans plus values beyond tolerance (double 1e-9 closed forms, 1e-7\n"
+         "GJK/EPA and meshes; float 1e-4); err: |answer - exact| / scale; time/gq: the backend's median time over\n"
+         "gq's on the cases both answered (above 1: gq is faster).\n";
+  for (const std::string& family : families) {
+    std::vector<const Row*> shown;
+    std::vector<std::string> silent;
+    for (const Row& r : rows) {
+      if (r.family != family) continue;
+      if (r.answered > 0) shown.push_back(&r);
+      else if (std::find(silent.begin(), silent.end(), r.backend) == silent.end()) silent.push_back(r.backend);
+    }
+    // A backend that answers in one precision is not listed as silent for the other.
+    for (const Row* r : shown) silent.erase(std::remove(silent.begin(), silent.end(), r->backend), silent.end());
+    std::stable_sort(shown.begin(), shown.end(), [](const Row* a, const Row* b) {
+      return std::make_tuple(backendRank(a->backend), a->backend, a->precision) <
+             std::make_tuple(backendRank(b->backend), b->backend, b->precision);
+    });
+    out << '\n' << family << '\n';
+    out << "  " << std::left << std::setw(12) << "backend" << std::setw(8) << "prec" << std::right << std::setw(10)
+        << "answered" << std::setw(7) << "wrong" << std::setw(10) << "med err" << std::setw(10) << "max err"
+        << std::setw(9) << "med ns" << std::setw(9) << "time/gq" << '\n';
+    for (const Row* r : shown) {
+      const std::string answeredText = std::to_string(r->answered) + "/" + std::to_string(r->cases);
+      char ns[32];
+      std::snprintf(ns, sizeof ns, "%.0f", r->medianNs);
+      out << "  " << std::left << std::setw(12) << r->backend << std::setw(8) << r->precision << std::right
+          << std::setw(10) << answeredText << std::setw(7) << (r->wrongBooleans + r->beyondTolerance)
+          << std::setw(10) << (r->withError ? sci(r->medianError) : "-") << std::setw(10)
+          << (r->withError ? sci(r->maxError) : "-") << std::setw(9) << ns << std::setw(9) << relativeTime(*r)
+          << '\n';
+    }
+    if (!silent.empty()) {
+      out << "  not answered by:";
+      for (std::size_t i = 0; i < silent.size(); ++i) out << (i ? ", " : " ") << silent[i];
+      out << '\n';
+    }
+  }
+}
+
 bool writeCsv(const std::string& dir, const std::vector<Row>& rows, std::string& error) {
   std::filesystem::create_directories(dir);
-  const std::string date = todayUtc(), machine = machineName();
+  const std::string date = todayUtc(), machine = machineName(), commit = sourceCommit();
   std::map<std::string, std::ofstream> files;
   for (const Row& r : rows) {
     auto it = files.find(r.family);
@@ -104,10 +193,10 @@ bool writeCsv(const std::string& dir, const std::vector<Row>& rows, std::string&
         error = "cannot write " + path;
         return false;
       }
-      it->second << "date,machine,family,backend,precision,cases,answered,unsupported,failed,wrong_booleans,"
+      it->second << "date,machine,commit,family,backend,precision,cases,answered,unsupported,failed,wrong_booleans,"
                     "ambiguous,beyond_tolerance,median_rel_error,max_rel_error,median_ns\n";
     }
-    it->second << date << ",\"" << machine << "\"," << r.family << ',' << r.backend << ',' << r.precision << ','
+    it->second << date << ",\"" << machine << "\"," << commit << ',' << r.family << ',' << r.backend << ',' << r.precision << ','
                << r.cases << ',' << r.answered << ',' << r.unsupported << ',' << r.failed << ',' << r.wrongBooleans
                << ',' << r.ambiguous << ',' << r.beyondTolerance << ',';
     if (r.withError) it->second << std::setprecision(3) << r.medianError << ',' << r.maxError;
@@ -134,7 +223,8 @@ std::size_t writeDisagreements(const std::string& path, const std::vector<CaseRe
   }
   std::ofstream out(path);
   out << "# Disagreements with the exact answers\n\n"
-      << "Generated by gq-compare on " << todayUtc() << " (" << machineName() << "). The exact answer is the "
+      << "Generated by gq-compare on " << todayUtc() << " (" << machineName() << ", commit " << sourceCommit()
+      << "). The exact answer is the "
       << "referee (computed by gq-make-suites in long double, independently of every backend); a backend that "
       << "differs from it is the one that is wrong. Classes: *wrong boolean* (the exact configuration is farther "
       << "than the tolerance from flipping it), *ambiguous boolean* (within tolerance of touching: not counted as "
@@ -186,6 +276,17 @@ std::string machineName() {
   std::string name = std::string(host) + ", " + model + ", " + std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores";
   std::replace(name.begin(), name.end(), '"', '\'');
   return name;
+}
+
+std::string sourceCommit() {
+  std::string commit;
+  if (FILE* git = popen("git -C '" GQ_SOURCE_DIR "' rev-parse --short=8 HEAD 2>/dev/null", "r")) {
+    char buf[64] = {0};
+    if (std::fgets(buf, sizeof buf, git)) commit = buf;
+    pclose(git);
+  }
+  while (!commit.empty() && std::isspace(static_cast<unsigned char>(commit.back()))) commit.pop_back();
+  return commit.empty() ? "unknown" : commit;
 }
 
 std::string todayUtc() {

@@ -27,6 +27,9 @@ struct Row {
 
 std::vector<Row> summarize(const std::vector<CaseRecord>& records);
 void printTable(std::ostream& out, const std::vector<Row>& rows);
+// The readable report: per query family, gq and every backend that answers at least one of its cases (accuracy,
+// median time, and time relative to gq on the cases both answered), then the backends that answer none.
+void printSummary(std::ostream& out, const std::vector<Row>& rows, const std::vector<CaseRecord>& records);
 // comparisons/results/compare_<family>.csv, one line per backend x precision, with date and machine.
 bool writeCsv(const std::string& dir, const std::vector<Row>& rows, std::string& error);
 // Every case where a backend disagrees with the exact answer (wrong boolean, ambiguous boolean, value beyond
@@ -37,5 +40,7 @@ bool isDisagreement(Outcome o);
 
 std::string machineName();
 std::string todayUtc();
+// The source tree's commit (git rev-parse --short=8), or "unknown" outside a git checkout: result rows carry it.
+std::string sourceCommit();
 
 }  // namespace gq::compare

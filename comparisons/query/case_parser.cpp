@@ -5,6 +5,7 @@
 
 #include "gq/cooking.h"
 #include "gq/hit.h"
+#include "gq/io.h"
 #include "gq/tolerances.h"
 #include "json_fields.h"
 

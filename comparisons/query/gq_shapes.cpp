@@ -1,5 +1,7 @@
 #include "gq_shapes.h"
 
+#include "gq/custom_shapes.h"
+
 namespace gq::cases {
 namespace {
 
@@ -82,9 +84,20 @@ template <class T> Status GqShapeFactory<T>::build(const ShapeDesc& desc, Geomet
                                    sidedness(desc.doubleSided));
       return {};
     }
-    case ShapeKind::Cylinder:
-    case ShapeKind::Cone:
-      return Status::unsupported(std::string(toString(desc.kind)) + " (custom geometry) is not available in gq yet");
+    // Core's ready-made custom shapes share the case format's convention (axis = local X, the cone's apex at
+    // +halfHeight), so the sizes pass through unchanged.
+    case ShapeKind::Cylinder: {
+      CustomGeometry<T> cylinder;
+      if (Status s = makeCylinder<T>(T(desc.radius), T(desc.halfHeight), cylinder); !s.ok()) return s;
+      out = cylinder;
+      return {};
+    }
+    case ShapeKind::Cone: {
+      CustomGeometry<T> cone;
+      if (Status s = makeCone<T>(T(desc.radius), T(desc.halfHeight), cone); !s.ok()) return s;
+      out = cone;
+      return {};
+    }
   }
   return Status::invalid("unknown shape kind");
 }

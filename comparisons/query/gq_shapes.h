@@ -14,7 +14,7 @@ namespace gq::cases {
 
 template <class T> class GqShapeFactory {
  public:
-  // Fails with the cooking status, or Unsupported for shapes gq does not have yet.
+  // Fails with the cooking or size-validation status.
   Status build(const ShapeDesc& desc, Geometry<T>& out);
 
  private:

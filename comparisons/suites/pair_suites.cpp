@@ -178,7 +178,8 @@ class PairSuiteBuilder {
     }
   }
 
-  // FCL issue 545: offsets along the diagonal of axis-aligned boxes, sphere near a box corner.
+  // Reported upstream against FCL (flexible-collision-library/fcl#545): boxes offset along their diagonal, a sphere
+  // near a box corner.
   void diagonal() {
     const Eigen::Vector4d id(0, 0, 0, 1);
     for (double d : {1.5, 1.99, 2.01, 2.5}) {
@@ -195,7 +196,8 @@ class PairSuiteBuilder {
     }
   }
 
-  // FCL issue 628: a box inside a box, centred, off-centre, touching a wall from inside, rotated.
+  // Reported upstream against FCL (flexible-collision-library/fcl#628): a box inside a box, centred, off-centre,
+  // touching a wall from inside, rotated.
   void boxInBox() {
     const Eigen::Vector4d id(0, 0, 0, 1);
     const Placed outer{box(1, 1, 1), {V3d::Zero(), id}};

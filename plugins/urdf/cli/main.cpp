@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -186,6 +187,18 @@ std::string machineName() {
   return "unknown";
 }
 
+// The source tree's commit (git rev-parse), or "unknown" outside a git checkout: benchmark rows carry it.
+std::string sourceCommit() {
+  std::string commit;
+  if (FILE* git = popen("git -C '" GQ_SOURCE_DIR "' rev-parse --short=8 HEAD 2>/dev/null", "r")) {
+    char buf[64] = {0};
+    if (std::fgets(buf, sizeof buf, git)) commit = buf;
+    pclose(git);
+  }
+  while (!commit.empty() && std::isspace(static_cast<unsigned char>(commit.back()))) commit.pop_back();
+  return commit.empty() ? "unknown" : commit;
+}
+
 // Checks per second over `qs`, or a negative value with the status when the backend cannot answer.
 template <class Check> double checksPerSecond(const std::vector<std::vector<double>>& qs, Check&& check, gq::Status& s) {
   CollisionResult r;
@@ -223,15 +236,21 @@ struct BenchRow {
 int runBench(const CommonOptions& o, const BenchOptions& b) {
   std::ofstream out;
   if (!b.csv.empty()) {
-    const bool fresh = !std::ifstream(b.csv).good();
-    out.open(b.csv, std::ios::app);
     // mode = <URDF file stem>:<representation>; load1 = 1-minute load average at the start (the machine is shared)
-    if (fresh) out << "date,machine,load1,mode,backend,checks_per_s_median,repetitions,configurations,ratio\n";
+    const std::string header =
+        "date,machine,commit,load1,mode,backend,checks_per_s_median,repetitions,configurations,ratio";
+    std::string existing;
+    if (std::ifstream in(b.csv); in && std::getline(in, existing) && existing != header)
+      return fail(gq::Status::fileError("'" + b.csv + "' has other columns than '" + header +
+                                              "': not appending to it"));
+    out.open(b.csv, std::ios::app);
+    if (existing.empty()) out << header << "\n";
+    if (!out) return fail(gq::Status::fileError("cannot write '" + b.csv + "'"));
   }
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
-  const std::string machine = machineName();
+  const std::string machine = machineName(), commit = sourceCommit();
   std::string load1 = "unknown";
   if (std::ifstream loadavg("/proc/loadavg"); loadavg) loadavg >> load1;
   const std::string urdfStem = std::filesystem::path(o.urdf).stem().string();
@@ -273,7 +292,7 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
       else
         std::printf("%-15s %-8s %14s  (%s)\n", mode.c_str(), row->backend.c_str(), "n/a", row->status.message.c_str());
       if (out.is_open())
-        out << date << "," << machine << "," << load1 << "," << urdfStem << ":" << mode << "," << row->backend << ","
+        out << date << "," << machine << "," << commit << "," << load1 << "," << urdfStem << ":" << mode << "," << row->backend << ","
             << (row->rate > 0 ? std::to_string(row->rate) : "unsupported") << "," << b.repetitions << "," << b.n
             << "," << (isGq ? std::to_string(ratio) : "1") << "\n";
     }
