@@ -57,6 +57,18 @@ Status lineError(const std::string& path, std::size_t line, const std::string& w
 }
 
 template <class T>
+Status readVertexCoordinates(const std::string& path, std::size_t lineNumber, std::string_view line, std::size_t& pos,
+                             Vec3<T>& p) {
+  for (int k = 0; k < 3; ++k) {
+    const std::string_view token = nextToken(line, pos);
+    if (token.empty()) return lineError(path, lineNumber, "vertex with fewer than 3 coordinates");
+    if (!parseNumber(token, p[k]))
+      return lineError(path, lineNumber, "vertex coordinate '" + std::string(token) + "' is not a finite number");
+  }
+  return Status();
+}
+
+template <class T>
 void triangulatePolygon(const std::vector<std::uint32_t>& polygon, const std::vector<Vec3<T>>& positions,
                         std::vector<TriangleIndices>& out) {
   const std::size_t n = polygon.size();
@@ -163,6 +175,10 @@ template <class T> MeshData<T> joinVertices(const std::vector<Vec3<T>>& position
 
 template bool parseNumber<float>(std::string_view, float&);
 template bool parseNumber<double>(std::string_view, double&);
+template Status readVertexCoordinates<float>(const std::string&, std::size_t, std::string_view, std::size_t&,
+                                             Vec3<float>&);
+template Status readVertexCoordinates<double>(const std::string&, std::size_t, std::string_view, std::size_t&,
+                                              Vec3<double>&);
 template void triangulatePolygon<float>(const std::vector<std::uint32_t>&, const std::vector<Vec3<float>>&,
                                         std::vector<TriangleIndices>&);
 template void triangulatePolygon<double>(const std::vector<std::uint32_t>&, const std::vector<Vec3<double>>&,

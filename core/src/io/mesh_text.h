@@ -25,6 +25,12 @@ std::string_view nextToken(std::string_view line, std::size_t& pos);
 // "cannot parse mesh file '<path>': line <n>: <what>"
 Status lineError(const std::string& path, std::size_t line, const std::string& what);
 
+// Reads the three coordinates x y z of a vertex from `line` at `pos` (parseNumber each); a lineError naming the file
+// and line when one is missing or not a finite number. What follows the third is left to the caller.
+template <class T>
+Status readVertexCoordinates(const std::string& path, std::size_t lineNumber, std::string_view line, std::size_t& pos,
+                             Vec3<T>& p);
+
 // Triangles of a simple polygon given by vertex ids (3 or more), by ear clipping in the plane of its Newell normal:
 // a convex polygon gives the fan from its first corner, a concave one only triangles inside it; the polygon's
 // winding is kept. Degenerate (collinear) rests are fanned.

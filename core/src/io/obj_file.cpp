@@ -28,12 +28,7 @@ template <class T> Status readVertexLines(const std::string& path, const std::st
     if (pos + 1 >= line.size() || line[pos] != 'v' || (line[pos + 1] != ' ' && line[pos + 1] != '\t')) continue;
     pos += 2;
     Vec3<T> p;
-    for (int k = 0; k < 3; ++k) {
-      const std::string_view token = nextToken(line, pos);
-      if (token.empty()) return lineError(path, lineNumber, "vertex with fewer than 3 coordinates");
-      if (!parseNumber(token, p[k]))
-        return lineError(path, lineNumber, "vertex coordinate '" + std::string(token) + "' is not a finite number");
-    }
+    if (Status s = readVertexCoordinates(path, lineNumber, line, pos, p); !s.ok()) return s;
     out.push_back(p);  // an optional w or colour after x y z is not geometry
   }
   return Status();

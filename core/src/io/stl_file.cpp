@@ -70,12 +70,7 @@ template <class T> Status readAsciiStl(const std::string& path, const std::strin
     } else if (keyword == "vertex") {
       if (!expect(State::InFacet)) return lineError(path, lineNumber, "'vertex' outside a facet");
       Vec3<T> p;
-      for (int k = 0; k < 3; ++k) {
-        const std::string_view token = nextToken(line, pos);
-        if (token.empty()) return lineError(path, lineNumber, "vertex with fewer than 3 coordinates");
-        if (!parseNumber(token, p[k]))
-          return lineError(path, lineNumber, "vertex coordinate '" + std::string(token) + "' is not a finite number");
-      }
+      if (Status s = readVertexCoordinates(path, lineNumber, line, pos, p); !s.ok()) return s;
       if (!nextToken(line, pos).empty()) return lineError(path, lineNumber, "vertex with more than 3 coordinates");
       if (++facetVertices > 3) return lineError(path, lineNumber, "facet with more than 3 vertices");
       positions.push_back(p);
