@@ -230,15 +230,6 @@ TYPED_TEST(MeshOverlap, TouchingCountsAsOverlapping) {
   EXPECT_FALSE(got);
 }
 
-TYPED_TEST(MeshOverlap, PlaneVsMeshAndHeightFieldAreUnsupported) {
-  using T = TypeParam;
-  const MeshData<T> quad = meshtest::quadStack<T>(1);
-  const Geometry<T> mesh = TriangleMeshGeometry<T>(meshtest::cook(quad.vertices, quad.triangles));
-  bool got = false;
-  EXPECT_EQ(overlap(Geometry<T>(PlaneGeometry<T>()), Transform<T>(), mesh, Transform<T>(), got).code, StatusCode::Unsupported);
-  EXPECT_EQ(overlap(mesh, Transform<T>(), Geometry<T>(PlaneGeometry<T>()), Transform<T>(), got).code, StatusCode::Unsupported);
-}
-
 // Bunny vs bunny: candidate triangle pairs by AABB (a uniform grid over b's triangle boxes), exact LD test.
 inline bool bruteForceMeshMesh(const std::vector<TriL>& a, const std::vector<TriL>& b) {
   if (a.empty() || b.empty()) return false;

@@ -18,7 +18,6 @@
 #include "gq/geometry.h"
 #include "gq/tolerances.h"
 #include "gq/transform.h"
-#include "support_shapes.h"
 
 namespace fcl {
 template <typename S> class CollisionGeometry;

@@ -9,7 +9,8 @@
 //    shape-triangle test, prepared once per call); a triangle's depth and normal come from distance() against the
 //    triangle as a support shape.
 //  - BVHModel against BVHModel: findOverlapTriangleMeshPairs, one contact per intersecting triangle pair.
-//  - BVHModel against Halfspace/Plane (gq has no mesh-plane query): per triangle from its vertices' heights.
+//  - BVHModel against Halfspace/Plane: distance by core's plane-mesh distance; contacts per triangle from its
+//    vertices' heights (FCL reports one a triangle), after core's plane-mesh overlap rejects a mesh that cannot touch.
 #include "pair_kernels.h"
 
 #include <algorithm>
@@ -25,7 +26,6 @@
 #include "gq/query.h"
 #include "mesh/mesh_instance.h"
 #include "mesh_pairs/shape_triangle.h"
-#include "support_shapes.h"
 
 namespace gq::fcl::detail {
 namespace {
@@ -61,13 +61,18 @@ template <class T> PairContact<T> contactFrom(const DistanceResult<T>& d) {
   return c;
 }
 
+// The gq plane whose solid side is FCL's Plane's upper side n.x >= d: the plane frame turned half a turn about its
+// Y axis (+X onto -X).
+template <class T> Transform<T> upperSide(const Transform<T>& planePose) {
+  return planePose * Transform<T>(Vec3<T>::Zero(), Quat<T>(0, 0, 1, 0));
+}
+
 // Signed distance from `shape` to FCL's two-sided plane (see the file comment); normal from the shape to the plane.
 template <class T>
 Status twoSidedPlaneDistance(const Geometry<T>& shape, const Transform<T>& poseShape, const Transform<T>& planePose,
                              DistanceResult<T>& out) {
   const Geometry<T> plane = PlaneGeometry<T>();
-  // Turning the plane frame half a turn about its Y axis maps +X to -X: the solid side becomes n.x >= d.
-  const Transform<T> above = planePose * Transform<T>(Vec3<T>::Zero(), Quat<T>(0, 0, 1, 0));
+  const Transform<T> above = upperSide(planePose);  // the solid side n.x >= d
   DistanceResult<T> toBelow, toAbove;
   Status s = distance(toBelow, shape, poseShape, plane, planePose);
   if (!s.ok()) return s;
@@ -237,42 +242,44 @@ TriangleHeights<T> heightsOf(const TriangleMesh<T>& mesh, std::size_t cooked, co
   return h;
 }
 
-// Signed distance of one triangle (or the whole mesh, as the min/max over triangles) to the plane-like side, with
-// the normal from the mesh to the plane: a half-space pushes the mesh up (+n); a two-sided plane pushes it to the
-// side it mostly lies on.
-template <class T> T planeSignedDistance(const TriangleHeights<T>& h, bool twoSided, const Vec3<T>& n, Vec3<T>& normal,
-                                         Vec3<T>& meshPoint) {
-  if (!twoSided || -h.lo <= h.hi) {
-    normal = -n;
-    meshPoint = h.lowest;
-    return twoSided ? std::max(h.lo, -h.hi) : h.lo;
-  }
-  normal = n;
-  meshPoint = h.highest;
-  return -h.hi;
+// Whether any triangle can reach FCL's Halfspace (core's mesh-plane overlap) or cross its Plane (then the mesh
+// reaches both sides: core's overlap with the half-spaces below and above; necessary, not sufficient, as two
+// triangles may lie one on each side).
+template <class T>
+Status meshMayTouchPlane(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, bool twoSided,
+                         const Transform<T>& planePose, bool& may) {
+  const Geometry<T> plane = PlaneGeometry<T>(), g = mesh;
+  Status s = overlap(g, meshPose, plane, planePose, may);
+  if (s.ok() && may && twoSided) s = overlap(g, meshPose, plane, upperSide(planePose), may);
+  return s;
 }
 
 // BVHModel against Halfspace / Plane, mesh first: one contact per triangle reaching the solid side (half-space) or
-// crossing the plane, as FCL's mesh-shape traversal does.
+// crossing the plane, as FCL's mesh-shape traversal does; the whole mesh is first rejected by core's overlap when
+// it cannot touch. A triangle's contact: its deepest vertex, pushed out along -n (half-space; two-sided: towards
+// the side the triangle mostly lies on).
 template <class T>
 Status meshPlaneContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Converted<T>& plane,
                          const Transform<T>& planePose, bool withGeometry, std::size_t room,
                          std::vector<PairContact<T>>& out) {
+  const bool twoSided = plane.shape == FclShape::Plane;
+  bool may = false;
+  if (Status s = meshMayTouchPlane(mesh, meshPose, twoSided, planePose, may); !s.ok() || !may) return s;
   const Vec3<T> n = planePose.rotate(Vec3<T>::UnitX());
   const T d = n.dot(planePose.p);
-  const bool twoSided = plane.shape == FclShape::Plane;
   const TriangleMesh<T>& m = *mesh.mesh;
   const std::size_t first = out.size();
   for (std::size_t k = 0; k < m.triangles.size() && out.size() - first < room; ++k) {
     const TriangleHeights<T> h = heightsOf(m, k, meshPose, n, d);
-    Vec3<T> normal, point;
-    const T signedDistance = planeSignedDistance(h, twoSided, n, normal, point);
+    const bool below = !twoSided || -h.lo <= h.hi;
+    const T signedDistance = below ? (twoSided ? std::max(h.lo, -h.hi) : h.lo) : -h.hi;
     if (signedDistance > T(0)) continue;
     PairContact<T> c;
     if (withGeometry) {
       c.depth = -signedDistance;
-      c.normal = normal;
-      c.position = point + normal * (c.depth / T(2));  // midway between the deepest vertex and the plane
+      c.normal = below ? Vec3<T>(-n) : n;
+      // Midway between the deepest vertex and the plane.
+      c.position = (below ? h.lowest : h.highest) + c.normal * (c.depth / T(2));
     }
     c.b1 = int(m.inputIndex[k]);
     out.push_back(c);
@@ -280,37 +287,30 @@ Status meshPlaneContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   return {};
 }
 
-template <class T>
-Status meshPlaneDistance(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Converted<T>& plane,
-                         const Transform<T>& planePose, PairDistance<T>& out) {
-  const Vec3<T> n = planePose.rotate(Vec3<T>::UnitX());
-  const T d = n.dot(planePose.p);
-  const TriangleMesh<T>& m = *mesh.mesh;
-  TriangleHeights<T> all;
-  int lowTriangle = kNoPrimitive, highTriangle = kNoPrimitive;
-  for (std::size_t k = 0; k < m.triangles.size(); ++k) {
-    const TriangleHeights<T> h = heightsOf(m, k, meshPose, n, d);
-    if (h.lo < all.lo) all.lo = h.lo, all.lowest = h.lowest, lowTriangle = int(m.inputIndex[k]);
-    if (h.hi > all.hi) all.hi = h.hi, all.highest = h.highest, highTriangle = int(m.inputIndex[k]);
-  }
-  Vec3<T> normal, point;
-  out.distance = planeSignedDistance(all, plane.shape == FclShape::Plane, n, normal, point);
-  out.point1 = point;
-  out.point2 = point - (n.dot(point) - d) * n;  // the vertex's projection on the plane
-  out.b1 = point == all.lowest ? lowTriangle : highTriangle;
-  out.b2 = kNoPrimitive;
-  return {};
-}
-
-template <class T> const TriangleMeshGeometry<T>* meshOf(const Converted<T>& c) {
-  return c.shape == FclShape::Mesh ? c.geometry().template getIf<TriangleMeshGeometry<T>>() : nullptr;
-}
-
 // Triangle of `mesh` nearest to the world point `p` (a witness of the mesh distance).
 template <class T> int nearestTriangle(const TriangleMeshGeometry<T>& mesh, const Transform<T>& pose, const Vec3<T>& p) {
   PointDistanceResult<T> r;
   if (!pointDistance(p, Geometry<T>(mesh), pose, r).ok() || r.closestIndex == kInvalidFaceIndex) return kNoPrimitive;
   return int(r.closestIndex);
+}
+
+// BVHModel against Halfspace / Plane distance, mesh first: core's plane-mesh distance (the lowest vertex's signed
+// height); a two-sided Plane takes the larger of the distances to its two sides (the file comment). b1 is a triangle
+// holding the witness vertex.
+template <class T>
+Status meshPlaneDistance(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Converted<T>& plane,
+                         const Transform<T>& planePose, PairDistance<T>& out) {
+  const Geometry<T> g = mesh;
+  DistanceResult<T> d;
+  const Status s = plane.shape == FclShape::Plane ? twoSidedPlaneDistance(g, meshPose, planePose, d)
+                                                  : distance(d, g, meshPose, Geometry<T>(PlaneGeometry<T>()), planePose);
+  if (!s.ok()) return s;
+  out = PairDistance<T>{d.distance, d.point0, d.point1, nearestTriangle(mesh, meshPose, d.point0), kNoPrimitive};
+  return s;
+}
+
+template <class T> const TriangleMeshGeometry<T>* meshOf(const Converted<T>& c) {
+  return c.shape == FclShape::Mesh ? c.geometry().template getIf<TriangleMeshGeometry<T>>() : nullptr;
 }
 
 }  // namespace

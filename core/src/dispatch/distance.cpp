@@ -3,13 +3,14 @@
 // result (point0 <-> point1, normal -> -normal). Convex pairs without a closed form use GJK/EPA in either order;
 // custom shapes are asked their own distance callback first.
 // Triangle meshes and heightfields are thin surfaces (distance >= 0, see distance/surface_distance.h). Unsupported:
-// plane-plane, plane-mesh/heightfield, mesh-heightfield, heightfield-heightfield, and non-convex custom shapes.
+// plane-plane, mesh-heightfield, heightfield-heightfield, and non-convex custom shapes.
 #include <array>
 
 #include "common/pair_frame.h"
 #include "common/validate.h"
 #include "custom/callback_queries.h"
 #include "distance/distance.h"
+#include "distance/plane_surface.h"
 #include "distance/surface_distance.h"
 #include "gq/custom.h"
 #include "gq/query.h"
@@ -133,21 +134,24 @@ template <class T> constexpr DistanceFn<T> kCapsuleBox = closedForm<T, C<T>, B<T
 template <class T> constexpr DistanceFn<T> kConvexSurface = detail::distanceConvexSurface<T>;
 template <class T> constexpr DistanceFn<T> kSurfaceConvex = swapped<T, detail::distanceConvexSurface<T>>;
 template <class T> constexpr DistanceFn<T> kMeshMesh = detail::distanceTriangleMeshTriangleMesh<T>;
+// Plane vs the thin surfaces: the lowest vertex's signed height (distance/plane_surface.h).
+template <class T> constexpr DistanceFn<T> kPlaneMesh = detail::distancePlaneTriangleMesh<T>;
+template <class T> constexpr DistanceFn<T> kPlaneHeightField = detail::distancePlaneHeightField<T>;
 
 // Rows geom0, columns geom1, in GeometryType order: Sphere, Plane, Capsule, Box, Convex, Mesh, HeightField, Custom.
 template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTable = {{
     {kSphereSphere<T>, kSpherePlane<T>, kSphereCapsule<T>, kSphereBox<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>,
      customFirst<T>},
-    {swapped<T, kSpherePlane<T>>, unsupported<T>, kPlaneCapsule<T>, kPlaneBox<T>, planeConvex<T>, unsupported<T>,
-     unsupported<T>, planeConvex<T>},
+    {swapped<T, kSpherePlane<T>>, unsupported<T>, kPlaneCapsule<T>, kPlaneBox<T>, planeConvex<T>, kPlaneMesh<T>,
+     kPlaneHeightField<T>, planeConvex<T>},
     {swapped<T, kSphereCapsule<T>>, swapped<T, kPlaneCapsule<T>>, kCapsuleCapsule<T>, kCapsuleBox<T>, gjk<T>,
      kConvexSurface<T>, kConvexSurface<T>, customFirst<T>},
     {swapped<T, kSphereBox<T>>, swapped<T, kPlaneBox<T>>, swapped<T, kCapsuleBox<T>>, boxBox<T>, gjk<T>,
      kConvexSurface<T>, kConvexSurface<T>, customFirst<T>},
     {gjk<T>, swapped<T, planeConvex<T>>, gjk<T>, gjk<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>, customFirst<T>},
-    {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kMeshMesh<T>,
-     unsupported<T>, kSurfaceConvex<T>},
-    {kSurfaceConvex<T>, unsupported<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, unsupported<T>,
+    {kSurfaceConvex<T>, swapped<T, kPlaneMesh<T>>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>,
+     kMeshMesh<T>, unsupported<T>, kSurfaceConvex<T>},
+    {kSurfaceConvex<T>, swapped<T, kPlaneHeightField<T>>, kSurfaceConvex<T>, kSurfaceConvex<T>, kSurfaceConvex<T>, unsupported<T>,
      unsupported<T>, kSurfaceConvex<T>},
     {customFirst<T>, swapped<T, planeConvex<T>>, customFirst<T>, customFirst<T>, customFirst<T>, kConvexSurface<T>,
      kConvexSurface<T>, customFirst<T>},

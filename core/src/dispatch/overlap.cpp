@@ -9,6 +9,7 @@
 #include "common/pair_frame.h"
 #include "common/validate.h"
 #include "custom/callback_queries.h"
+#include "distance/plane_surface.h"
 #include "gq/custom.h"
 #include "gq/query.h"
 #include "overlap/overlap.h"
@@ -97,8 +98,8 @@ template <class T> constexpr OverlapTable<T> makeOverlapTable() {
   setPair<T, GT::Plane, GT::Capsule, pairKernel<T, PlaneGeometry<T>, CapsuleGeometry<T>, detail::overlapPlaneCapsule<T>>>(t);
   setPair<T, GT::Plane, GT::Box, pairKernel<T, PlaneGeometry<T>, BoxGeometry<T>, detail::overlapPlaneBox<T>>>(t);
   setPair<T, GT::Plane, GT::ConvexMesh, pairKernel<T, PlaneGeometry<T>, ConvexMeshGeometry<T>, detail::overlapPlaneConvex<T>>>(t);
-  setPair<T, GT::Plane, GT::TriangleMesh, notDefinedBySpec<T>>(t);
-  setPair<T, GT::Plane, GT::HeightField, notDefinedBySpec<T>>(t);
+  setPair<T, GT::Plane, GT::TriangleMesh, detail::overlapPlaneTriangleMesh<T>>(t);
+  setPair<T, GT::Plane, GT::HeightField, detail::overlapPlaneHeightField<T>>(t);
   setPair<T, GT::Plane, GT::Custom, customFirst<T, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::overlapPlaneCustom<T>>>>(t);
   setPair<T, GT::Capsule, GT::Capsule, pairKernel<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::overlapCapsuleCapsule<T>>>(t);
   setPair<T, GT::Capsule, GT::Box, pairKernel<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::overlapCapsuleBox<T>>>(t);
