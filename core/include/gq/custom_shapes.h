@@ -88,9 +88,9 @@ template <class T> class TriangleCallbacks final : public CustomGeometryCallback
 
 // Validating factories (`out` untouched on failure):
 //  - makeCylinder, makeCone, makeEllipsoid: InvalidArgument for a non-finite or non-positive size;
-//  - makeTriangle: InvalidArgument for a non-finite vertex, DegenerateMesh for a triangle without area (its
-//    vertices collinear or coincident within rounding: |(b - a) x (c - a)| <= 16 eps |b - a| |c - a|), whose
-//    raycast normal and face are undefined.
+//  - makeTriangle: InvalidArgument for a non-finite vertex, DegenerateMesh for a triangle without area, by the rule
+//    mesh cooking drops triangles with (|(b - a) x (c - a)| <= tol::kDegenerateTriangleArea * longest edge^2):
+//    its raycast normal and face are undefined.
 template <class T> Status makeCylinder(T radius, T halfHeight, CustomGeometry<T>& out);
 template <class T> Status makeCone(T radius, T halfHeight, CustomGeometry<T>& out);
 template <class T> Status makeEllipsoid(const Vec3<T>& radii, CustomGeometry<T>& out);

@@ -10,6 +10,7 @@
 
 #include "custom/ray_interval.h"
 #include "gq/custom_shapes.h"
+#include "gq/tolerances.h"
 
 namespace gq {
 
@@ -99,13 +100,15 @@ bool TriangleCallbacks<T>::raycast(const Vec3<T>& origin, const Vec3<T>& unitDir
 
 template <class T> Status makeTriangle(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, CustomGeometry<T>& out) {
   if (!(isFinite(a) && isFinite(b) && isFinite(c))) return Status::invalid("triangle vertices must be finite");
-  const Vec3<T> e1 = b - a, e2 = c - a;
-  // The edges scaled by their largest component first: the cross product of huge edges would overflow.
-  const T scale = std::max(e1.cwiseAbs().maxCoeff(), e2.cwiseAbs().maxCoeff());
-  if (!(scale > T(0))) return Status::degenerate("triangle has coincident vertices (no area)");
-  const Vec3<T> f1 = e1 / scale, f2 = e2 / scale;
-  const T limit = T(16) * std::numeric_limits<T>::epsilon();
-  if (!(f1.cross(f2).norm() > limit * f1.norm() * f2.norm()))
+  // The rule of mesh cooking (a mesh would drop this triangle): doubled area <= kDegenerateTriangleArea * (longest
+  // edge)^2, in double, the edges first divided by their largest component (the ratio does not change, and huge
+  // double edges do not overflow).
+  Vec3<double> e[3] = {(b - a).template cast<double>(), (c - a).template cast<double>(), (c - b).template cast<double>()};
+  const double scale = std::max({e[0].cwiseAbs().maxCoeff(), e[1].cwiseAbs().maxCoeff(), e[2].cwiseAbs().maxCoeff()});
+  if (!(scale > 0.0)) return Status::degenerate("triangle has coincident vertices (no area)");
+  for (Vec3<double>& edge : e) edge /= scale;
+  const double longestSq = std::max({e[0].squaredNorm(), e[1].squaredNorm(), e[2].squaredNorm()});
+  if (!(e[0].cross(e[1]).norm() > tol::kDegenerateTriangleArea * longestSq))
     return Status::degenerate("triangle vertices are collinear (no area)");
   out = CustomGeometry<T>(std::make_shared<TriangleCallbacks<T>>(a, b, c));
   return {};

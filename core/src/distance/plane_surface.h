@@ -33,7 +33,23 @@ template <class T>
 LowestVertex<T> lowestVertexHeightField(const HeightFieldGeometry<T>& hf, const Transform<T>& hfPose,
                                         const Transform<T>& planePose, T stopAtOrBelow);
 
-// Dispatch-table kernels (plane = geom0).
+// The distance answer from the lowest vertex (plane = geom0): DegenerateMesh when there is none.
+template <class T>
+Status distanceFromLowestVertex(const LowestVertex<T>& lowest, const Transform<T>& planePose, GjkCache<T>* cache,
+                                DistanceResult<T>& out) {
+  if (!(lowest.height < std::numeric_limits<T>::infinity()))
+    return Status::degenerate("the surface has no triangles (every heightfield cell is a hole)");
+  const Vec3<T> n = planePose.rotate(Vec3<T>::UnitX());
+  out.distance = lowest.height;
+  out.normal = n;
+  out.point1 = lowest.point;
+  out.point0 = lowest.point - lowest.height * n;
+  if (cache) cache->iterations = 0;
+  return Status();
+}
+
+// Dispatch-table kernels (plane = geom0): overlap/plane_triangle_mesh.cpp, overlap/plane_height_field.cpp,
+// distance/plane_triangle_mesh.cpp, distance/plane_height_field.cpp.
 template <class T>
 Status overlapPlaneTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1,
                                 const Transform<T>& p1, bool& overlapping);
