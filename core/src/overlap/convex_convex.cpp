@@ -1,5 +1,6 @@
 // Convex/convex overlap: the hulls' cooked balls when they decide, else GJK, with exact SAT (face normals and
-// crossing edge pairs) within the band of touching.
+// crossing edge pairs) within the band of touching. hullBallsCertificate is the one ball prefilter of hull pairs:
+// the FCL adapter's Convex entry runs it too (on FCL's matrices), so both decide a pair the same way.
 #include <algorithm>
 
 #include "overlap/overlap.h"
