@@ -1,13 +1,13 @@
 // Convex/convex overlap: the hulls' cooked balls when they decide, else GJK, with exact SAT (face normals and
 // crossing edge pairs) within the band of touching. hullBallsCertificate is the one ball prefilter of hull pairs:
-// the FCL adapter's Convex entry runs it too (on FCL's matrices), so both decide a pair the same way.
+// the FCL adapter's Convex entry runs it too (on FCL's matrices), so both decide a pair the same way, and so do the
+// sphere, capsule and box pairs with a hull (sphere_convex.cpp, capsule_convex.cpp, box_convex.cpp).
 #include <algorithm>
 
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
 namespace gq::detail {
-namespace {
 
 // Scale R diag(s) R^T maps a ball of radius r to an ellipsoid with semi-axes |s_k| r: it contains the ball of
 // radius min |s_k| r and lies in the one of radius max |s_k| r.
@@ -17,8 +17,6 @@ template <class T> HullBalls<T> hullBalls(const ConvexMeshGeometry<T>& g, const 
   const Vec3<T> s = g.scale.scale.cwiseAbs();
   return {pose.transform(g.scale.toMatrix() * m.center), s.minCoeff() * m.innerRadius, s.maxCoeff() * m.outerRadius};
 }
-
-}  // namespace
 
 // The band scales with the balls and with the centres' coordinates (their rounding, for a hull cooked far from its
 // local origin).
@@ -40,6 +38,8 @@ bool overlapConvexConvex(const ConvexMeshGeometry<T>& g0, const Transform<T>& p0
   return overlapConvexShapes(Geometry<T>(g0), p0, Geometry<T>(g1), p1);
 }
 
+template HullBalls<float> hullBalls<float>(const ConvexMeshGeometry<float>&, const Transform<float>&);
+template HullBalls<double> hullBalls<double>(const ConvexMeshGeometry<double>&, const Transform<double>&);
 template OverlapCertificate hullBallsCertificate<float>(const HullBalls<float>&, const HullBalls<float>&);
 template OverlapCertificate hullBallsCertificate<double>(const HullBalls<double>&, const HullBalls<double>&);
 template bool overlapConvexConvex<float>(const ConvexMeshGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);

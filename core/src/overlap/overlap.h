@@ -75,6 +75,19 @@ template <class T> struct HullBalls {
   T inner, outer;
 };
 template <class T> OverlapCertificate hullBallsCertificate(const HullBalls<T>& a, const HullBalls<T>& b);
+// The balls of a placed hull (convex_convex.cpp), and of a sphere, capsule (the ball of its radius about its centre,
+// and the one reaching its caps) and box (the largest inside, the one through its corners): the sphere, capsule and
+// box pairs with a hull run the same certificate before GJK.
+template <class T> HullBalls<T> hullBalls(const ConvexMeshGeometry<T>& g, const Transform<T>& pose);
+template <class T> HullBalls<T> hullBalls(const SphereGeometry<T>& g, const Transform<T>& pose) {
+  return {pose.p, g.radius, g.radius};
+}
+template <class T> HullBalls<T> hullBalls(const CapsuleGeometry<T>& g, const Transform<T>& pose) {
+  return {pose.p, g.radius, g.radius + g.halfHeight};
+}
+template <class T> HullBalls<T> hullBalls(const BoxGeometry<T>& g, const Transform<T>& pose) {
+  return {pose.p, g.halfExtents.minCoeff(), g.halfExtents.norm()};
+}
 // Convex custom geometry (either side) against sphere, capsule, box, convex or custom: GJK.
 template <class T> bool overlapCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);
 }  // namespace gq::detail
