@@ -32,7 +32,7 @@ def per_call(exe, name, callee):
         subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out, exe,
                         "--benchmark_filter=^" + name + "$", "--benchmark_min_time=0.01"],
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
-        text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--tree=caller", out],
+        text = subprocess.run(["callgrind_annotate", "--threshold=100", "--inclusive=yes", "--tree=caller", out],
                               capture_output=True, text=True).stdout
     cost = calls = 0
     for block in text.split("\n\n"):

@@ -2,9 +2,10 @@
 //
 // Semantics: touching counts as overlapping (every kernel compares with <=); the plane is the solid half-space
 // x <= 0 of its frame. Kernels run in the frame of the smaller shape (common/pair_frame.h), so that shapes far from
-// the origin, or far from a much larger shape, keep their precision. Sphere pairs run with both positions translated
-// by the smaller shape's (a sphere's rotation moves none of its points, so the translation alone keeps that precision,
-// without the frame's quaternion products).
+// the origin, or far from a much larger shape, keep their precision. The sphere, capsule and box pairs run with both
+// positions translated by the smaller shape's instead: the offset is still a subtraction of positions before anything
+// else (what keeps that precision), and their kernels rotate into the frame they need themselves (the frame's
+// quaternion products would be done twice; a sphere's rotation moves none of its points).
 // The table's cells take the shapes (geometry and feature radius) and their world poses; the Geometry<T> and the
 // prepared Shape<T> overloads differ only in what they validate before the one shared path (overlapShapes).
 #include <array>
@@ -39,7 +40,8 @@ Status framed(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail
   return Fn(a.geom, frame.pose0, b.geom, frame.pose1, overlapping);
 }
 
-// A sphere pair: both positions translated by the smaller shape's, rotations kept (normalised as the frame does).
+// A sphere, capsule or box pair: both positions translated by the smaller shape's, rotations kept (normalised as the
+// frame does).
 template <class T, class G0, class G1,
           bool (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&)>
 Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
@@ -127,7 +129,7 @@ template <class T, GeometryType A, GeometryType B, OverlapFn<T> Fn> constexpr vo
   if constexpr (A != B) table[std::size_t(B)][std::size_t(A)] = framed<T, swapped<T, Fn>>;
 }
 
-// A cell that picks its own frame (the sphere pairs).
+// A cell that picks its own frame (the sphere, capsule and box pairs).
 template <class T, GeometryType A, GeometryType B, OverlapCell<T> Cell> constexpr void setCell(OverlapTable<T>& table) {
   static_assert(A <= B, "pairs are registered once, in GeometryType order; the swapped cell is derived");
   table[std::size_t(A)][std::size_t(B)] = Cell;
@@ -152,11 +154,11 @@ template <class T> constexpr OverlapTable<T> makeOverlapTable() {
   setPair<T, GT::Plane, GT::TriangleMesh, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::HeightField, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::Custom, customFirst<T, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::overlapPlaneCustom<T>>>>(t);
-  setPair<T, GT::Capsule, GT::Capsule, pairKernel<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::overlapCapsuleCapsule<T>>>(t);
-  setPair<T, GT::Capsule, GT::Box, pairKernel<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::overlapCapsuleBox<T>>>(t);
+  setCell<T, GT::Capsule, GT::Capsule, translated<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::overlapCapsuleCapsule<T>>>(t);
+  setCell<T, GT::Capsule, GT::Box, translated<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::overlapCapsuleBox<T>>>(t);
   setPair<T, GT::Capsule, GT::ConvexMesh, pairKernel<T, CapsuleGeometry<T>, ConvexMeshGeometry<T>, detail::overlapCapsuleConvex<T>>>(t);
   setPair<T, GT::Capsule, GT::Custom, customFirst<T, customKernel<T>>>(t);
-  setPair<T, GT::Box, GT::Box, pairKernel<T, BoxGeometry<T>, BoxGeometry<T>, detail::overlapBoxBox<T>>>(t);
+  setCell<T, GT::Box, GT::Box, translated<T, BoxGeometry<T>, BoxGeometry<T>, detail::overlapBoxBox<T>>>(t);
   setPair<T, GT::Box, GT::ConvexMesh, pairKernel<T, BoxGeometry<T>, ConvexMeshGeometry<T>, detail::overlapBoxConvex<T>>>(t);
   setPair<T, GT::Box, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::overlapConvexConvex<T>>>(t);

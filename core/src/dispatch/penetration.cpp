@@ -4,9 +4,10 @@
 // separates the shapes; direction is unit and depth >= 0 (0 when touching, which counts as penetrating, so that
 // overlap() and computePenetration() agree). The plane is the solid half-space x <= 0 of its frame.
 // Kernels run in the frame of the smaller shape (common/pair_frame.h: shapes far from the origin, or far from a much
-// larger shape, keep their precision); the direction is rotated back to world space by the cell. Sphere pairs run with
-// both positions translated by the smaller shape's (a sphere's rotation moves none of its points: the translation
-// alone keeps that precision, and their direction is already a world one).
+// larger shape, keep their precision); the direction is rotated back to world space by the cell. The sphere pairs,
+// capsule-box and box-box run with both positions translated by the smaller shape's instead: the offset is still a
+// subtraction of positions before anything else (what keeps that precision), their kernels rotate into the frame they
+// need themselves, and their direction is a world one.
 // The table's cells take the shapes (geometry and feature radius) and their world poses; the Geometry<T> and the
 // prepared Shape<T> overloads differ only in what they validate before the one shared path (penetrationShapes).
 #include <array>
@@ -42,7 +43,8 @@ Status framed(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail
   return Status();
 }
 
-// A sphere pair: both positions translated by the smaller shape's, rotations kept (normalised as the frame does).
+// A sphere, capsule or box pair: both positions translated by the smaller shape's, rotations kept (normalised as the
+// frame does).
 template <class T, class G0, class G1,
           bool (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&, Vec3<T>&, T&)>
 Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
@@ -135,7 +137,7 @@ template <class T, GeometryType A, GeometryType B, PenetrationFn<T> Fn> constexp
   if constexpr (A != B) table[std::size_t(B)][std::size_t(A)] = framed<T, swapped<T, Fn>>;
 }
 
-// A cell that picks its own frame (the sphere pairs).
+// A cell that picks its own frame (the sphere, capsule and box pairs).
 template <class T, GeometryType A, GeometryType B, PenetrationCell<T> Cell>
 constexpr void setCell(PenetrationTable<T>& table) {
   static_assert(A <= B, "pairs are registered once, in GeometryType order; the swapped cell is derived");
@@ -159,11 +161,13 @@ template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   setPair<T, GT::Plane, GT::TriangleMesh, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::HeightField, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::Custom, customFirst<T, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::penetrationPlaneCustom<T>>>>(t);
+  // Capsules in the pair frame: there the smaller one's axis is exactly +X, so parallel axes give an exact zero
+  // offset and the push falls back to a direction normal to both (in world space rounding chose a random one).
   setPair<T, GT::Capsule, GT::Capsule, pairKernel<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::penetrationCapsuleCapsule<T>>>(t);
-  setPair<T, GT::Capsule, GT::Box, pairKernel<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::penetrationCapsuleBox<T>>>(t);
+  setCell<T, GT::Capsule, GT::Box, translated<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::penetrationCapsuleBox<T>>>(t);
   setPair<T, GT::Capsule, GT::ConvexMesh, pairKernel<T, CapsuleGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationCapsuleConvex<T>>>(t);
   setPair<T, GT::Capsule, GT::Custom, customFirst<T, customKernel<T>>>(t);
-  setPair<T, GT::Box, GT::Box, pairKernel<T, BoxGeometry<T>, BoxGeometry<T>, detail::penetrationBoxBox<T>>>(t);
+  setCell<T, GT::Box, GT::Box, translated<T, BoxGeometry<T>, BoxGeometry<T>, detail::penetrationBoxBox<T>>>(t);
   setPair<T, GT::Box, GT::ConvexMesh, pairKernel<T, BoxGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationBoxConvex<T>>>(t);
   setPair<T, GT::Box, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationConvexConvex<T>>>(t);
