@@ -241,6 +241,8 @@ Status distanceCell(DistanceResult<T>& result, const ShapeRef<T>& a, const Trans
     return Status::internal("distance produced a non-finite result");
   result = r;
   if (beyond) *beyond = false;
+  if (s.code == StatusCode::Ok) [[likely]]
+    return Status();  // built in place: no move of the kernel's Status
   return s;
 }
 
