@@ -44,7 +44,9 @@ def main():
             hits[(query, pair, lib)] = b.get("hits")
     run = results_csv.run_columns(a.machine)
     rows = []
-    for (query, pair, lib), fcl in sorted(med.items(), key=lambda kv: ("ocd".index(kv[0][0][0]), kv[0][1])):
+    pairs = ["sphere_sphere", "sphere_capsule", "sphere_box", "capsule_capsule", "capsule_box", "box_box"]
+    order = lambda kv: (["overlap", "contact", "distance"].index(kv[0][0]), pairs.index(kv[0][1]))
+    for (query, pair, lib), fcl in sorted(med.items(), key=order):
         if lib != "fcl":
             continue
         gq, geo = med.get((query, pair, "gq")), med.get((query, pair, "gq_geometry"))
