@@ -44,21 +44,31 @@ template <class T> bool shape1IsSmaller(const Geometry<T>& g0, const Geometry<T>
 // pose of non-unit quaternions is a scaled rotation: found by fuzz_pair_queries, a cube hull whose |q| was 1.0008
 // grew by 0.17 % in the SAT kernels, penetration 3.06784 against the exact 3.06625). One unit to rounding is used as
 // given, so touching contacts built from it stay touching.
-template <class T> Quat<T> unitRotation(const Quat<T>& q) {
-  return std::abs(q.squaredNorm() - T(1)) <= T(16) * std::numeric_limits<T>::epsilon() ? q : q.normalized();
+template <class T> [[gnu::noinline]] Quat<T> normalizedRotation(const Quat<T>& q) { return q.normalized(); }
+template <class T> [[gnu::always_inline]] inline Quat<T> unitRotation(const Quat<T>& q) {
+  return std::abs(q.squaredNorm() - T(1)) <= T(16) * std::numeric_limits<T>::epsilon() ? q : normalizedRotation(q);
+}
+
+// The frame from the shapes' feature radii r0, r1 (featureRadius, stored by a prepared shape).
+template <class T> PairFrame<T> pairFrame(T r0, const Transform<T>& p0, T r1, const Transform<T>& p1) {
+  const Transform<T> u0(p0.p, unitRotation(p0.q)), u1(p1.p, unitRotation(p1.q));
+  if (r1 < r0) return {u1, u0.relativeTo(u1), Transform<T>()};
+  return {u0, Transform<T>(), u1.relativeTo(u0)};
 }
 
 template <class T>
 PairFrame<T> pairFrame(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
-  const Transform<T> u0(p0.p, unitRotation(p0.q)), u1(p1.p, unitRotation(p1.q));
-  if (shape1IsSmaller(g0, g1)) return {u1, u0.relativeTo(u1), Transform<T>()};
-  return {u0, Transform<T>(), u1.relativeTo(u0)};
+  return pairFrame(featureRadius(g0), p0, featureRadius(g1), p1);
 }
 
 // The smaller shape's position, for queries that translate both poses and keep their rotations.
+template <class T> Vec3<T> pairOrigin(T r0, const Transform<T>& p0, T r1, const Transform<T>& p1) {
+  return r1 < r0 ? p1.p : p0.p;
+}
+
 template <class T>
 Vec3<T> pairOrigin(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
-  return shape1IsSmaller(g0, g1) ? p1.p : p0.p;
+  return pairOrigin(featureRadius(g0), p0, featureRadius(g1), p1);
 }
 
 }  // namespace gq::detail

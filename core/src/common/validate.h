@@ -99,6 +99,20 @@ template <class T> bool pairOffsetIsSupported(const Transform<T>& p0, const Tran
   return ((p1.p - p0.p).array().abs() <= kMaxMagnitude<T>).all();
 }
 
+// The poses of a pair query whose geometries are valid (a prepared shape's, or checked before): a handful of compares
+// on the success path. The offset test also proves both positions finite: an infinite or NaN coordinate on either
+// side makes that offset coordinate infinite or NaN (inf - inf is NaN), and both fail `<= kMaxMagnitude`.
+template <class T> bool pairPosesAreValid(const Transform<T>& p0, const Transform<T>& p1) {
+  return pairOffsetIsSupported(p0, p1) && isUnitQuaternion(p0.q) && isUnitQuaternion(p1.q);
+}
+
+template <class T> Status pairPosesStatus(const Transform<T>& p0, const Transform<T>& p1) {
+  if (Status s = checkPose(p0, "pose0"); !s.ok()) return s;
+  if (Status s = checkPose(p1, "pose1"); !s.ok()) return s;
+  return Status::invalid(std::string("pose1 is too far from pose0: a pair query takes offsets up to ") +
+                         kMaxMagnitudeText);
+}
+
 template <class T>
 Status checkPairInputs(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
   if (!pairGeometryProblem(g0) && !pairGeometryProblem(g1) && poseIsValid(p0) && poseIsValid(p1) &&

@@ -9,6 +9,7 @@
 #include "bounds/bounds.h"
 #include "common/validate.h"
 #include "gq/query.h"
+#include "prepared/shape_ref.h"
 
 namespace gq {
 namespace {
@@ -52,27 +53,50 @@ template <class T> Bounds3<T> grow(const Bounds3<T>& b, T offset, T inflation) {
 
 }  // namespace
 
+namespace {
+
+// The one path of both overloads once the geometry is valid.
+template <class T>
+Status boundsOfGeometry(Bounds3<T>& bounds, const Geometry<T>& geom, const Transform<T>& pose, T offset, T inflation) {
+  if (Status s = detail::checkPose(pose, "geometry pose"); !s.ok()) return s;
+  if (!std::isfinite(offset) || offset < T(0)) return Status::invalid("bounds offset must be finite and >= 0");
+  if (!std::isfinite(inflation) || !(inflation > T(0))) return Status::invalid("bounds inflation must be finite and > 0");
+  const Bounds3<T> tight = kBoundsTable<T>[static_cast<std::size_t>(geom.type())](geom, pose);
+  if (tight.isEmpty() || !isFinite(tight.min) || !isFinite(tight.max))
+    return Status::internal(std::string("bounds kernel for ") + toString(geom.type()) + " returned no box");
+  const bool unbounded = isUnbounded(tight.min.minCoeff()) || isUnbounded(tight.max.maxCoeff());
+  const Bounds3<T> out = unbounded ? growUnbounded(tight, offset) : grow(tight, offset, inflation);
+  if (!isFinite(out.min) || !isFinite(out.max)) return Status::invalid("bounds overflow the scalar range");
+  bounds = out;
+  return {};
+}
+
+}  // namespace
+
 template <class T>
 Status computeGeomBounds(Bounds3<T>& bounds, const Geometry<T>& geom, const Transform<T>& pose, T offset,
                          T inflation) {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkGeometryAndPose(geom, pose, "geometry pose"); !s.ok()) return s;
-    if (!std::isfinite(offset) || offset < T(0)) return Status::invalid("bounds offset must be finite and >= 0");
-    if (!std::isfinite(inflation) || !(inflation > T(0)))
-      return Status::invalid("bounds inflation must be finite and > 0");
-    const Bounds3<T> tight = kBoundsTable<T>[static_cast<std::size_t>(geom.type())](geom, pose);
-    if (tight.isEmpty() || !isFinite(tight.min) || !isFinite(tight.max))
-      return Status::internal(std::string("bounds kernel for ") + toString(geom.type()) + " returned no box");
-    const bool unbounded = isUnbounded(tight.min.minCoeff()) || isUnbounded(tight.max.maxCoeff());
-    const Bounds3<T> out = unbounded ? growUnbounded(tight, offset) : grow(tight, offset, inflation);
-    if (!isFinite(out.min) || !isFinite(out.max)) return Status::invalid("bounds overflow the scalar range");
-    bounds = out;
-    return {};
+    if (const detail::Problem p = detail::geometryProblem(geom)) return p.status();
+    return boundsOfGeometry(bounds, geom, pose, offset, inflation);
+  });
+}
+
+template <class T>
+Status computeGeomBounds(Bounds3<T>& bounds, const Shape<T>& shape, const Transform<T>& pose, T offset,
+                         T inflation) noexcept {
+  return detail::guarded([&]() -> Status {
+    if (!detail::ShapeAccess<T>::made(shape)) return Status::invalid(detail::emptyShapeText());
+    return boundsOfGeometry(bounds, shape.geometry(), pose, offset, inflation);
   });
 }
 
 template Status computeGeomBounds<float>(Bounds3<float>&, const Geometry<float>&, const Transform<float>&, float, float);
 template Status computeGeomBounds<double>(Bounds3<double>&, const Geometry<double>&, const Transform<double>&, double,
                                           double);
+template Status computeGeomBounds<float>(Bounds3<float>&, const Shape<float>&, const Transform<float>&, float,
+                                         float) noexcept;
+template Status computeGeomBounds<double>(Bounds3<double>&, const Shape<double>&, const Transform<double>&, double,
+                                          double) noexcept;
 
 }  // namespace gq

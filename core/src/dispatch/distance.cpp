@@ -2,6 +2,10 @@
 // a <= b in GeometryType order; the mirrored cells go through `swapped`, which exchanges the inputs and flips the
 // result (point0 <-> point1, normal -> -normal). Convex pairs without a closed form use GJK/EPA in either order;
 // custom shapes are asked their own distance callback first.
+// Every cell runs with both poses translated by the smaller shape's position (common/pair_frame.h), rotations kept
+// (the GjkCache lives in geom0's frame): a float pair near x = 3e7 lost 0.28 of depth to world coordinates. The
+// Geometry<T> and the prepared Shape<T> overloads differ only in what they validate before the one shared path
+// (distanceShapes).
 // Triangle meshes and heightfields are thin surfaces (distance >= 0, see distance/surface_distance.h). Unsupported:
 // plane-plane, mesh-heightfield, heightfield-heightfield, and non-convex custom shapes.
 #include <array>
@@ -14,6 +18,7 @@
 #include "distance/surface_distance.h"
 #include "gq/custom.h"
 #include "gq/query.h"
+#include "prepared/shape_ref.h"
 
 namespace gq {
 namespace {
@@ -115,7 +120,39 @@ Status swapped(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>&
   return s;
 }
 
-template <class T> using Row = std::array<DistanceFn<T>, kGeometryTypeCount>;
+// A table cell: the shapes with their world poses (validated).
+template <class T>
+using DistanceCell = Status (*)(const detail::ShapeRef<T>&, const Transform<T>&, const detail::ShapeRef<T>&,
+                                const Transform<T>&, GjkCache<T>*, DistanceResult<T>&, T);
+
+// Runs Fn with both poses translated by the smaller shape's position and their rotations normalised (validation
+// accepts |q| within 1e-3 of 1; one unit to rounding is used as given), then moves the witnesses back.
+template <class T, DistanceFn<T> Fn>
+Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+                  const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out, T farEnough) {
+  const Vec3<T> origin = detail::pairOrigin(a.radius, p0, b.radius, p1);
+  const Transform<T> q0(Vec3<T>(p0.p - origin), detail::unitRotation(p0.q));
+  const Transform<T> q1(Vec3<T>(p1.p - origin), detail::unitRotation(p1.q));
+  const Status s = Fn(a.geom, q0, b.geom, q1, cache, out, farEnough);
+  out.point0 += origin;
+  out.point1 += origin;
+  return s;
+}
+
+// Two spheres: the balls' closed form in the translated frame, inline (rotations are not read).
+template <class T>
+Status sphereSphere(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+                    const Transform<T>& p1, GjkCache<T>* cache, DistanceResult<T>& out, T) {
+  const Vec3<T> origin = detail::pairOrigin(a.radius, p0, b.radius, p1);
+  detail::ballsDistance(Vec3<T>(p0.p - origin), a.radius, Vec3<T>(p1.p - origin), b.radius, out);
+  out.point0 += origin;
+  out.point1 += origin;
+  if (cache) cache->iterations = 0;
+  return {};
+}
+
+template <class T> using Row = std::array<DistanceCell<T>, kGeometryTypeCount>;
+template <class T> using FnRow = std::array<DistanceFn<T>, kGeometryTypeCount>;
 template <class T> using S = SphereGeometry<T>;
 template <class T> using P = PlaneGeometry<T>;
 template <class T> using C = CapsuleGeometry<T>;
@@ -139,7 +176,7 @@ template <class T> constexpr DistanceFn<T> kPlaneMesh = detail::distancePlaneTri
 template <class T> constexpr DistanceFn<T> kPlaneHeightField = detail::distancePlaneHeightField<T>;
 
 // Rows geom0, columns geom1, in GeometryType order: Sphere, Plane, Capsule, Box, Convex, Mesh, HeightField, Custom.
-template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTable = {{
+template <class T> constexpr std::array<FnRow<T>, kGeometryTypeCount> kDistanceKernels = {{
     {kSphereSphere<T>, kSpherePlane<T>, kSphereCapsule<T>, kSphereBox<T>, gjk<T>, kConvexSurface<T>, kConvexSurface<T>,
      customFirst<T>},
     {swapped<T, kSpherePlane<T>>, unsupported<T>, kPlaneCapsule<T>, kPlaneBox<T>, planeConvex<T>, kPlaneMesh<T>,
@@ -156,62 +193,141 @@ template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTab
     {customFirst<T>, swapped<T, planeConvex<T>>, customFirst<T>, customFirst<T>, customFirst<T>, kConvexSurface<T>,
      kConvexSurface<T>, customFirst<T>},
 }};
-static_assert(kDistanceTable<double>.size() == kGeometryTypeCount && kDistanceTable<double>[0].size() == kGeometryTypeCount,
+static_assert(kDistanceKernels<double>.size() == kGeometryTypeCount &&
+                  kDistanceKernels<double>[0].size() == kGeometryTypeCount,
               "one row and one column per GeometryType");
 
-template <class T> bool finiteResult(const DistanceResult<T>& r) {
-  return std::isfinite(r.distance) && isFinite(r.point0) && isFinite(r.point1) && isFinite(r.normal);
+// The table the façade reads: every kernel above in the translated frame.
+template <class T, std::size_t I, std::size_t... J> constexpr Row<T> cellRow(std::index_sequence<J...>) {
+  return {translated<T, kDistanceKernels<T>[I][J]>...};
 }
-
-// distance and distanceWithin (maxDistance +inf for the former; `beyond` null).
+template <class T, std::size_t... I>
+constexpr std::array<Row<T>, kGeometryTypeCount> cellTable(std::index_sequence<I...>) {
+  return {cellRow<T, I>(std::make_index_sequence<kGeometryTypeCount>())...};
+}
+template <class T> constexpr std::array<Row<T>, kGeometryTypeCount> withSphereSphere(std::array<Row<T>, kGeometryTypeCount> t) {
+  t[0][0] = sphereSphere<T>;
+  return t;
+}
 template <class T>
-Status boundedDistance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
-                       const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache, T maxDistance,
-                       bool* beyond) {
-  return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
-    if (std::isnan(maxDistance)) return Status::invalid("distanceWithin: maxDistance is NaN");
-    if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1))
-      return Status::unsupported("distance needs a convex custom geometry (isConvex() is false)");
-    // Normalise the poses' rotations (validation accepts |q| within 1e-3 of 1). Kernels run with both poses
-    // translated by the smaller shape's position (common/pair_frame.h), rotations kept (the GjkCache lives in
-    // geom0's frame): a float pair near x = 3e7 lost 0.28 of depth to world coordinates.
-    const Vec3<T> origin = detail::pairOrigin(geom0, pose0, geom1, pose1);
-    const Transform<T> q0(Vec3<T>(pose0.p - origin), pose0.q.normalized());
-    const Transform<T> q1(Vec3<T>(pose1.p - origin), pose1.q.normalized());
-    DistanceResult<T> r;
-    const auto fn = kDistanceTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())];
-    const Status s = fn(geom0, q0, geom1, q1, cache, r, maxDistance);
-    if (!s.ok()) return s;
-    if (beyond && r.distance > maxDistance) {  // proven beyond the bound (a search may have stopped): the distance alone
-      result = DistanceResult<T>();
-      result.distance = r.distance;
-      *beyond = true;
-      return s;
-    }
-    r.point0 += origin;
-    r.point1 += origin;
-    if (!finiteResult(r)) return Status::internal("distance produced a non-finite result");
-    result = r;
-    if (beyond) *beyond = false;
-    return s;
-  });
+constexpr std::array<Row<T>, kGeometryTypeCount> kDistanceTable =
+    withSphereSphere<T>(cellTable<T>(std::make_index_sequence<kGeometryTypeCount>()));
+
+
+// x * 0 is 0 for a finite x and NaN for an infinite or NaN one: the sum of the ten products is 0 exactly when every
+// value is finite (one branch instead of ten).
+template <class T> bool finiteResult(const DistanceResult<T>& r) {
+  const auto zero = [](const Vec3<T>& v) { return v.x() * T(0) + v.y() * T(0) + v.z() * T(0); };
+  return r.distance * T(0) + zero(r.point0) + zero(r.point1) + zero(r.normal) == T(0);
 }
 
 }  // namespace
 
+namespace detail {
+
+// The table, once every input is valid: the one code path of both overloads (distance and distanceWithin:
+// maxDistance +inf for the former, `beyond` null).
+template <class T>
+Status distanceCell(DistanceResult<T>& result, const ShapeRef<T>& a, const Transform<T>& pose0, const ShapeRef<T>& b,
+                    const Transform<T>& pose1, GjkCache<T>* cache, T maxDistance, bool* beyond) {
+  DistanceResult<T> r;
+  const auto fn = kDistanceTable<T>[static_cast<std::size_t>(a.type())][static_cast<std::size_t>(b.type())];
+  Status s = fn(a, pose0, b, pose1, cache, r, maxDistance);
+  if (!s.ok()) [[unlikely]]
+    return s;
+  if (beyond && r.distance > maxDistance) {  // proven beyond the bound (a search may have stopped): the distance alone
+    result = DistanceResult<T>();
+    result.distance = r.distance;
+    *beyond = true;
+    return s;
+  }
+  if (!finiteResult(r)) [[unlikely]]
+    return Status::internal("distance produced a non-finite result");
+  result = r;
+  if (beyond) *beyond = false;
+  if (s.code == StatusCode::Ok) [[likely]]
+    return Status();  // built in place: no move of the kernel's Status
+  return s;
+}
+
+// Valid shapes: the poses, the bound, then the non-convex custom shapes, then the table.
+template <class T>
+Status distanceShapes(DistanceResult<T>& result, const ShapeRef<T>& a, const Transform<T>& pose0, const ShapeRef<T>& b,
+                      const Transform<T>& pose1, bool nonConvexCustom, GjkCache<T>* cache, T maxDistance,
+                      bool* beyond) noexcept {
+  return guarded([&]() -> Status {
+    if (!pairPosesAreValid(pose0, pose1)) return pairPosesStatus(pose0, pose1);
+    if (std::isnan(maxDistance)) return Status::invalid("distanceWithin: maxDistance is NaN");
+    if (nonConvexCustom) return Status::unsupported("distance needs a convex custom geometry (isConvex() is false)");
+    return distanceCell(result, a, pose0, b, pose1, cache, maxDistance, beyond);
+  });
+}
+
+template <class T>
+Status distanceGeometries(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
+                          const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache, T maxDistance,
+                          bool* beyond) noexcept {
+  return guarded([&]() -> Status {
+    if (pairGeometryProblem(geom0) || pairGeometryProblem(geom1)) [[unlikely]]
+      return checkPairInputs(geom0, pose0, geom1, pose1);
+    return distanceShapes(result, shapeRef(geom0), pose0, shapeRef(geom1), pose1,
+                          isNonConvexCustom(geom0) || isNonConvexCustom(geom1), cache, maxDistance, beyond);
+  });
+}
+
+// A prepared pair that is not ready for the table: the rejection, in the order of the Geometry<T> overload.
+template <class T>
+[[gnu::noinline, gnu::cold]] Status distancePreparedChecked(DistanceResult<T>& result, const Shape<T>& shape0,
+                                                            const Transform<T>& pose0, const Shape<T>& shape1,
+                                                            const Transform<T>& pose1, GjkCache<T>* cache,
+                                                            T maxDistance, bool* beyond) noexcept {
+  using A = ShapeAccess<T>;
+  if (const Problem p = A::pairProblem(shape0)) return guarded([&] { return p.status(); });
+  if (const Problem p = A::pairProblem(shape1)) return guarded([&] { return p.status(); });
+  return distanceShapes(result, A::ref(shape0), pose0, A::ref(shape1), pose1,
+                        A::nonConvexCustom(shape0) || A::nonConvexCustom(shape1), cache, maxDistance, beyond);
+}
+
+template <class T>
+Status distancePrepared(DistanceResult<T>& result, const Shape<T>& shape0, const Transform<T>& pose0,
+                        const Shape<T>& shape1, const Transform<T>& pose1, GjkCache<T>* cache, T maxDistance,
+                        bool* beyond) noexcept {
+  using A = ShapeAccess<T>;
+  if (A::pairReady(shape0, shape1) && pairPosesAreValid(pose0, pose1) && !std::isnan(maxDistance)) [[likely]]
+    return guarded([&] {
+      return distanceCell(result, A::ref(shape0), pose0, A::ref(shape1), pose1, cache, maxDistance, beyond);
+    });
+  return distancePreparedChecked(result, shape0, pose0, shape1, pose1, cache, maxDistance, beyond);
+}
+
+}  // namespace detail
+
 template <class T>
 Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
                 const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache) {
-  return boundedDistance(result, geom0, pose0, geom1, pose1, cache, std::numeric_limits<T>::infinity(),
-                         static_cast<bool*>(nullptr));
+  return detail::distanceGeometries(result, geom0, pose0, geom1, pose1, cache, std::numeric_limits<T>::infinity(),
+                                    static_cast<bool*>(nullptr));
 }
 
 template <class T>
 Status distanceWithin(DistanceResult<T>& result, bool& beyond, T maxDistance, const Geometry<T>& geom0,
                       const Transform<T>& pose0, const Geometry<T>& geom1, const Transform<T>& pose1,
                       GjkCache<T>* cache) {
-  return boundedDistance(result, geom0, pose0, geom1, pose1, cache, maxDistance, &beyond);
+  return detail::distanceGeometries(result, geom0, pose0, geom1, pose1, cache, maxDistance, &beyond);
+}
+
+template <class T>
+Status distance(DistanceResult<T>& result, const Shape<T>& shape0, const Transform<T>& pose0, const Shape<T>& shape1,
+                const Transform<T>& pose1, GjkCache<T>* cache) noexcept {
+  return detail::distancePrepared(result, shape0, pose0, shape1, pose1, cache, std::numeric_limits<T>::infinity(),
+                                  static_cast<bool*>(nullptr));
+}
+
+template <class T>
+Status distanceWithin(DistanceResult<T>& result, bool& beyond, T maxDistance, const Shape<T>& shape0,
+                      const Transform<T>& pose0, const Shape<T>& shape1, const Transform<T>& pose1,
+                      GjkCache<T>* cache) noexcept {
+  return detail::distancePrepared(result, shape0, pose0, shape1, pose1, cache, maxDistance, &beyond);
 }
 
 template Status distance<float>(DistanceResult<float>&, const Geometry<float>&, const Transform<float>&,
@@ -224,5 +340,15 @@ template Status distanceWithin<float>(DistanceResult<float>&, bool&, float, cons
 template Status distanceWithin<double>(DistanceResult<double>&, bool&, double, const Geometry<double>&,
                                        const Transform<double>&, const Geometry<double>&, const Transform<double>&,
                                        GjkCache<double>*);
+template Status distance<float>(DistanceResult<float>&, const Shape<float>&, const Transform<float>&,
+                                const Shape<float>&, const Transform<float>&, GjkCache<float>*) noexcept;
+template Status distance<double>(DistanceResult<double>&, const Shape<double>&, const Transform<double>&,
+                                 const Shape<double>&, const Transform<double>&, GjkCache<double>*) noexcept;
+template Status distanceWithin<float>(DistanceResult<float>&, bool&, float, const Shape<float>&,
+                                      const Transform<float>&, const Shape<float>&, const Transform<float>&,
+                                      GjkCache<float>*) noexcept;
+template Status distanceWithin<double>(DistanceResult<double>&, bool&, double, const Shape<double>&,
+                                       const Transform<double>&, const Shape<double>&, const Transform<double>&,
+                                       GjkCache<double>*) noexcept;
 
 }  // namespace gq

@@ -4,9 +4,15 @@
 // separates the shapes; direction is unit and depth >= 0 (0 when touching, which counts as penetrating, so that
 // overlap() and computePenetration() agree). The plane is the solid half-space x <= 0 of its frame.
 // Kernels run in the frame of the smaller shape (common/pair_frame.h: shapes far from the origin, or far from a much
-// larger shape, keep their precision); the direction is rotated back to world space here.
+// larger shape, keep their precision); the direction is rotated back to world space by the cell. The sphere pairs,
+// capsule-box and box-box run with both positions translated by the smaller shape's instead: the offset is still a
+// subtraction of positions before anything else (what keeps that precision), their kernels rotate into the frame they
+// need themselves, and their direction is a world one.
+// The table's cells take the shapes (geometry and feature radius) and their world poses; the Geometry<T> and the
+// prepared Shape<T> overloads differ only in what they validate before the one shared path (penetrationShapes).
 #include <array>
 #include <string>
+#include <type_traits>
 
 #include "common/pair_frame.h"
 #include "common/validate.h"
@@ -15,13 +21,51 @@
 #include "gq/mesh_query.h"
 #include "gq/query.h"
 #include "penetration/penetration.h"
+#include "prepared/shape_ref.h"
 
 namespace gq {
 namespace {
 
 template <class T>
 using PenetrationFn = Status (*)(const Geometry<T>&, const Transform<T>&, const Geometry<T>&, const Transform<T>&, PenetrationResult<T>&);
-template <class T> using PenetrationTable = std::array<std::array<PenetrationFn<T>, kGeometryTypeCount>, kGeometryTypeCount>;
+template <class T>
+using PenetrationCell = Status (*)(const detail::ShapeRef<T>&, const Transform<T>&, const detail::ShapeRef<T>&,
+                                   const Transform<T>&, PenetrationResult<T>&);
+template <class T> using PenetrationTable = std::array<std::array<PenetrationCell<T>, kGeometryTypeCount>, kGeometryTypeCount>;
+
+// A kernel that runs in the pair frame (common/pair_frame.h); the direction comes back in world space.
+template <class T, PenetrationFn<T> Fn>
+Status framed(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b, const Transform<T>& p1,
+              PenetrationResult<T>& result) {
+  const detail::PairFrame<T> frame = detail::pairFrame(a.radius, p0, b.radius, p1);
+  if (Status s = Fn(a.geom, frame.pose0, b.geom, frame.pose1, result); !s.ok()) return s;
+  if (result.penetrating) result.direction = frame.world.rotate(result.direction);
+  return Status();
+}
+
+// A sphere, capsule or box pair: both positions translated by the smaller shape's, rotations kept (normalised as the
+// frame does).
+template <class T, class G0, class G1,
+          bool (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&, Vec3<T>&, T&)>
+Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+                  const Transform<T>& p1, PenetrationResult<T>& result) {
+  const Vec3<T> origin = detail::pairOrigin(a.radius, p0, b.radius, p1);
+  // A sphere's rotation moves none of its points: its kernel does not read it, so it is not normalised.
+  constexpr bool sphere0 = std::is_same_v<G0, SphereGeometry<T>>, sphere1 = std::is_same_v<G1, SphereGeometry<T>>;
+  result.penetrating =
+      Kernel(a.template get<G0>(), Transform<T>(Vec3<T>(p0.p - origin), sphere0 ? p0.q : detail::unitRotation(p0.q)),
+             b.template get<G1>(), Transform<T>(Vec3<T>(p1.p - origin), sphere1 ? p1.q : detail::unitRotation(p1.q)), result.direction,
+             result.depth);
+  return Status();
+}
+
+template <class T, PenetrationCell<T> Cell>
+Status swappedCell(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+                   const Transform<T>& p1, PenetrationResult<T>& result) {
+  if (Status s = Cell(b, p1, a, p0, result); !s.ok()) return s;
+  result.direction = -result.direction;
+  return Status();
+}
 
 // Adapts a kernel on concrete geometry types to the table's signature.
 template <class T, class G0, class G1,
@@ -89,17 +133,25 @@ Status notDefinedBySpec(const Geometry<T>& g0, const Transform<T>&, const Geomet
 
 template <class T, GeometryType A, GeometryType B, PenetrationFn<T> Fn> constexpr void setPair(PenetrationTable<T>& table) {
   static_assert(A <= B, "pairs are registered once, in GeometryType order; the swapped cell is derived");
-  table[std::size_t(A)][std::size_t(B)] = Fn;
-  if constexpr (A != B) table[std::size_t(B)][std::size_t(A)] = swapped<T, Fn>;
+  table[std::size_t(A)][std::size_t(B)] = framed<T, Fn>;
+  if constexpr (A != B) table[std::size_t(B)][std::size_t(A)] = framed<T, swapped<T, Fn>>;
+}
+
+// A cell that picks its own frame (the sphere, capsule and box pairs).
+template <class T, GeometryType A, GeometryType B, PenetrationCell<T> Cell>
+constexpr void setCell(PenetrationTable<T>& table) {
+  static_assert(A <= B, "pairs are registered once, in GeometryType order; the swapped cell is derived");
+  table[std::size_t(A)][std::size_t(B)] = Cell;
+  if constexpr (A != B) table[std::size_t(B)][std::size_t(A)] = swappedCell<T, Cell>;
 }
 
 template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   using GT = GeometryType;
   PenetrationTable<T> t{};
-  setPair<T, GT::Sphere, GT::Sphere, pairKernel<T, SphereGeometry<T>, SphereGeometry<T>, detail::penetrationSphereSphere<T>>>(t);
+  setCell<T, GT::Sphere, GT::Sphere, translated<T, SphereGeometry<T>, SphereGeometry<T>, detail::penetrationSphereSphere<T>>>(t);
   setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::penetrationSpherePlane<T>>>(t);
-  setPair<T, GT::Sphere, GT::Capsule, pairKernel<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::penetrationSphereCapsule<T>>>(t);
-  setPair<T, GT::Sphere, GT::Box, pairKernel<T, SphereGeometry<T>, BoxGeometry<T>, detail::penetrationSphereBox<T>>>(t);
+  setCell<T, GT::Sphere, GT::Capsule, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::penetrationSphereCapsule<T>>>(t);
+  setCell<T, GT::Sphere, GT::Box, translated<T, SphereGeometry<T>, BoxGeometry<T>, detail::penetrationSphereBox<T>>>(t);
   setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationSphereConvex<T>>>(t);
   setPair<T, GT::Sphere, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::Plane, GT::Plane, notDefinedBySpec<T>>(t);
@@ -109,11 +161,13 @@ template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   setPair<T, GT::Plane, GT::TriangleMesh, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::HeightField, notDefinedBySpec<T>>(t);
   setPair<T, GT::Plane, GT::Custom, customFirst<T, pairKernel<T, PlaneGeometry<T>, CustomGeometry<T>, detail::penetrationPlaneCustom<T>>>>(t);
+  // Capsules in the pair frame: there the smaller one's axis is exactly +X, so parallel axes give an exact zero
+  // offset and the push falls back to a direction normal to both (in world space rounding chose a random one).
   setPair<T, GT::Capsule, GT::Capsule, pairKernel<T, CapsuleGeometry<T>, CapsuleGeometry<T>, detail::penetrationCapsuleCapsule<T>>>(t);
-  setPair<T, GT::Capsule, GT::Box, pairKernel<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::penetrationCapsuleBox<T>>>(t);
+  setCell<T, GT::Capsule, GT::Box, translated<T, CapsuleGeometry<T>, BoxGeometry<T>, detail::penetrationCapsuleBox<T>>>(t);
   setPair<T, GT::Capsule, GT::ConvexMesh, pairKernel<T, CapsuleGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationCapsuleConvex<T>>>(t);
   setPair<T, GT::Capsule, GT::Custom, customFirst<T, customKernel<T>>>(t);
-  setPair<T, GT::Box, GT::Box, pairKernel<T, BoxGeometry<T>, BoxGeometry<T>, detail::penetrationBoxBox<T>>>(t);
+  setCell<T, GT::Box, GT::Box, translated<T, BoxGeometry<T>, BoxGeometry<T>, detail::penetrationBoxBox<T>>>(t);
   setPair<T, GT::Box, GT::ConvexMesh, pairKernel<T, BoxGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationBoxConvex<T>>>(t);
   setPair<T, GT::Box, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::ConvexMesh, GT::ConvexMesh, pairKernel<T, ConvexMeshGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationConvexConvex<T>>>(t);
@@ -150,31 +204,78 @@ static_assert(everyCellFilled(kPenetrationTable<float>) && everyCellFilled(kPene
 
 }  // namespace
 
+namespace detail {
+
+// The table, once every input is valid: the one code path of both overloads.
+template <class T>
+Status penetrationCell(PenetrationResult<T>& result, const ShapeRef<T>& a, const Transform<T>& pose0,
+                       const ShapeRef<T>& b, const Transform<T>& pose1) {
+  PenetrationResult<T> local;
+  const PenetrationCell<T> fn = kPenetrationTable<T>[std::size_t(a.type())][std::size_t(b.type())];
+  if (Status s = fn(a, pose0, b, pose1, local); !s.ok()) [[unlikely]]
+    return s;
+  if (!local.penetrating) {
+    result = PenetrationResult<T>();
+    return Status();
+  }
+  if (!isFinite(local.direction) || !std::isfinite(local.depth)) [[unlikely]]
+    return Status::internal("computePenetration produced a non-finite result");
+  result = local;
+  return Status();
+}
+
+// Valid shapes: the poses, then the non-convex custom shapes, then the table.
+template <class T>
+Status penetrationShapes(PenetrationResult<T>& result, const ShapeRef<T>& a, const Transform<T>& pose0,
+                         const ShapeRef<T>& b, const Transform<T>& pose1, bool nonConvexCustom) noexcept {
+  return guarded([&]() -> Status {
+    if (!pairPosesAreValid(pose0, pose1)) return pairPosesStatus(pose0, pose1);
+    if (nonConvexCustom) return nonConvexCustomStatus(a.geom, b.geom);
+    return penetrationCell(result, a, pose0, b, pose1);
+  });
+}
+
+// A prepared pair that is not ready for the table: the rejection, in the order of the Geometry<T> overload.
+template <class T>
+[[gnu::noinline, gnu::cold]] Status penetrationPreparedChecked(PenetrationResult<T>& result, const Shape<T>& shape0,
+                                                               const Transform<T>& pose0, const Shape<T>& shape1,
+                                                               const Transform<T>& pose1) noexcept {
+  using A = ShapeAccess<T>;
+  if (const Problem p = A::pairProblem(shape0)) return guarded([&] { return p.status(); });
+  if (const Problem p = A::pairProblem(shape1)) return guarded([&] { return p.status(); });
+  return penetrationShapes(result, A::ref(shape0), pose0, A::ref(shape1), pose1,
+                           A::nonConvexCustom(shape0) || A::nonConvexCustom(shape1));
+}
+
+}  // namespace detail
+
 template <class T>
 Status computePenetration(PenetrationResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
                           const Geometry<T>& geom1, const Transform<T>& pose1) {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkPairInputs(geom0, pose0, geom1, pose1); !s.ok()) return s;
-    if (detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1)) return nonConvexCustomStatus(geom0, geom1);
-    const detail::PairFrame<T> frame = detail::pairFrame(geom0, pose0, geom1, pose1);
-    PenetrationResult<T> local;
-    const PenetrationFn<T> fn = kPenetrationTable<T>[std::size_t(geom0.type())][std::size_t(geom1.type())];
-    if (Status s = fn(geom0, frame.pose0, geom1, frame.pose1, local); !s.ok()) return s;
-    if (!local.penetrating) {
-      result = PenetrationResult<T>();
-      return Status();
-    }
-    local.direction = frame.world.rotate(local.direction);
-    if (!isFinite(local.direction) || !std::isfinite(local.depth))
-      return Status::internal("computePenetration produced a non-finite result");
-    result = local;
-    return Status();
+    if (detail::pairGeometryProblem(geom0) || detail::pairGeometryProblem(geom1)) [[unlikely]]
+      return detail::checkPairInputs(geom0, pose0, geom1, pose1);
+    return detail::penetrationShapes(result, detail::shapeRef(geom0), pose0, detail::shapeRef(geom1), pose1,
+                                     detail::isNonConvexCustom(geom0) || detail::isNonConvexCustom(geom1));
   });
+}
+
+template <class T>
+Status computePenetration(PenetrationResult<T>& result, const Shape<T>& shape0, const Transform<T>& pose0,
+                          const Shape<T>& shape1, const Transform<T>& pose1) noexcept {
+  using A = detail::ShapeAccess<T>;
+  if (A::pairReady(shape0, shape1) && detail::pairPosesAreValid(pose0, pose1)) [[likely]]
+    return detail::guarded([&] { return detail::penetrationCell(result, A::ref(shape0), pose0, A::ref(shape1), pose1); });
+  return detail::penetrationPreparedChecked(result, shape0, pose0, shape1, pose1);
 }
 
 template Status computePenetration<float>(PenetrationResult<float>&, const Geometry<float>&, const Transform<float>&,
                                           const Geometry<float>&, const Transform<float>&);
 template Status computePenetration<double>(PenetrationResult<double>&, const Geometry<double>&,
                                            const Transform<double>&, const Geometry<double>&, const Transform<double>&);
+template Status computePenetration<float>(PenetrationResult<float>&, const Shape<float>&, const Transform<float>&,
+                                          const Shape<float>&, const Transform<float>&) noexcept;
+template Status computePenetration<double>(PenetrationResult<double>&, const Shape<double>&, const Transform<double>&,
+                                           const Shape<double>&, const Transform<double>&) noexcept;
 
 }  // namespace gq

@@ -5,6 +5,7 @@
 #include "common/validate.h"
 #include "gq/query.h"
 #include "point_distance/point_distance.h"
+#include "prepared/shape_ref.h"
 
 namespace gq {
 namespace {
@@ -38,19 +39,41 @@ static_assert(kPointDistanceTable<float>.size() == kGeometryTypeCount, "one entr
 
 }  // namespace
 
+namespace {
+
+// The one path of both overloads once the point and the geometry are valid.
+template <class T>
+Status pointDistanceGeometry(const Vec3<T>& point, const Geometry<T>& geom, const Transform<T>& pose,
+                             PointDistanceResult<T>& result) {
+  if (Status s = detail::checkPose(pose, "geometry pose"); !s.ok()) return s;
+  PointDistanceResult<T> out;
+  if (Status s = kPointDistanceTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, point, out); !s.ok())
+    return s;
+  if (!std::isfinite(out.distance) || !isFinite(out.closestPoint))
+    return Status::internal("pointDistance produced a non-finite result");
+  result = out;
+  return {};
+}
+
+}  // namespace
+
 template <class T>
 Status pointDistance(const Vec3<T>& point, const Geometry<T>& geom, const Transform<T>& pose,
                      PointDistanceResult<T>& result) {
   return detail::guarded([&]() -> Status {
     if (Status s = detail::checkFinite(point, "point"); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(geom, pose, "geometry pose"); !s.ok()) return s;
-    PointDistanceResult<T> out;
-    if (Status s = kPointDistanceTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, point, out); !s.ok())
-      return s;
-    if (!std::isfinite(out.distance) || !isFinite(out.closestPoint))
-      return Status::internal("pointDistance produced a non-finite result");
-    result = out;
-    return {};
+    if (const detail::Problem p = detail::geometryProblem(geom)) return p.status();
+    return pointDistanceGeometry(point, geom, pose, result);
+  });
+}
+
+template <class T>
+Status pointDistance(const Vec3<T>& point, const Shape<T>& shape, const Transform<T>& pose,
+                     PointDistanceResult<T>& result) noexcept {
+  return detail::guarded([&]() -> Status {
+    if (Status s = detail::checkFinite(point, "point"); !s.ok()) return s;
+    if (!detail::ShapeAccess<T>::made(shape)) return Status::invalid(detail::emptyShapeText());
+    return pointDistanceGeometry(point, shape.geometry(), pose, result);
   });
 }
 
@@ -58,5 +81,9 @@ template Status pointDistance<float>(const Vec3<float>&, const Geometry<float>&,
                                      PointDistanceResult<float>&);
 template Status pointDistance<double>(const Vec3<double>&, const Geometry<double>&, const Transform<double>&,
                                       PointDistanceResult<double>&);
+template Status pointDistance<float>(const Vec3<float>&, const Shape<float>&, const Transform<float>&,
+                                     PointDistanceResult<float>&) noexcept;
+template Status pointDistance<double>(const Vec3<double>&, const Shape<double>&, const Transform<double>&,
+                                      PointDistanceResult<double>&) noexcept;
 
 }  // namespace gq

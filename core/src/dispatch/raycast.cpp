@@ -5,6 +5,7 @@
 
 #include "common/validate.h"
 #include "gq/query.h"
+#include "prepared/shape_ref.h"
 #include "raycast/raycast.h"
 
 namespace gq {
@@ -31,9 +32,11 @@ template <class T> constexpr std::array<RaycastFn<T>, kGeometryTypeCount> kRayca
     call<T, CustomGeometry<T>, detail::raycastCustom<T>>,
 };
 
+// Everything but the geometry's own checks (a prepared shape made them once), in the order the Geometry<T> overload
+// reports them: the ray, the buffer and flags, [the geometry], the pose.
 template <class T>
-Status validateRaycast(const Vec3<T>& origin, const Vec3<T>& dir, const Geometry<T>& geom, const Transform<T>& pose,
-                       T maxDist, HitFlags flags, std::uint32_t maxHits, const RaycastHit<T>* hits) {
+Status validateRay(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, HitFlags flags, std::uint32_t maxHits,
+                   const RaycastHit<T>* hits) {
   if (Status s = detail::checkFinite(origin, "ray origin"); !s.ok()) return s;
   if (Status s = detail::checkUnitDirection(dir, "ray direction"); !s.ok()) return s;
   if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
@@ -41,10 +44,31 @@ Status validateRaycast(const Vec3<T>& origin, const Vec3<T>& dir, const Geometry
   if (hits == nullptr) return Status::invalid("hit buffer is null");
   if (flags.has(HitFlag::Mtd) || flags.has(HitFlag::PreciseSweep) || flags.has(HitFlag::AssumeNoInitialOverlap))
     return Status::invalid("mtd, preciseSweep and assumeNoInitialOverlap are sweep flags, not raycast flags");
-  if (Status s = detail::checkGeometryAndPose(geom, pose, "geometry pose"); !s.ok()) return s;
+  return Status();
+}
+
+template <class T> Status validateRayPose(const Vec3<T>& origin, const Transform<T>& pose) {
+  if (Status s = detail::checkPose(pose, "geometry pose"); !s.ok()) return s;
   // Kernels work in the geometry's frame; an origin whose offset from the pose overflows T has no local position.
   if (!isFinite(Vec3<T>(origin - pose.p)))
     return Status::invalid("ray origin is too far from the geometry pose: their difference overflows the precision");
+  return Status();
+}
+
+// The one path of both overloads once the ray and the geometry are valid.
+template <class T>
+Status raycastGeometry(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
+                       T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
+                       std::uint32_t& hitCount) {
+  if (Status s = validateRayPose(origin, pose); !s.ok()) return s;
+  // Several hits only with MeshMultiple (the spec); solids cap themselves at one.
+  const std::uint32_t cap = hitFlags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
+  // A hit has a finite distance: an entry parameter that overflows T (a far ray all but parallel to a box face or
+  // a plane, found by fuzz_raycast) lies beyond every representable distance, so maxDist = inf means the largest
+  // finite T and every kernel's "t > maxDist" test rejects it.
+  const T reach = std::min(maxDist, std::numeric_limits<T>::max());
+  const detail::RayQuery<T> ray{origin, unitDir, reach, hitFlags, cap};
+  hitCount = kRaycastTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, ray, hits);
   return Status();
 }
 
@@ -54,16 +78,20 @@ template <class T>
 Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
                T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount) {
   return detail::guarded([&]() -> Status {
-    if (Status s = validateRaycast(origin, unitDir, geom, pose, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
-    // Several hits only with MeshMultiple (the spec); solids cap themselves at one.
-    const std::uint32_t cap = hitFlags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
-    // A hit has a finite distance: an entry parameter that overflows T (a far ray all but parallel to a box face or
-    // a plane, found by fuzz_raycast) lies beyond every representable distance, so maxDist = inf means the largest
-    // finite T and every kernel's "t > maxDist" test rejects it.
-    const T reach = std::min(maxDist, std::numeric_limits<T>::max());
-    const detail::RayQuery<T> ray{origin, unitDir, reach, hitFlags, cap};
-    hitCount = kRaycastTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, ray, hits);
-    return Status();
+    if (Status s = validateRay(origin, unitDir, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
+    if (const detail::Problem p = detail::geometryProblem(geom)) return p.status();
+    return raycastGeometry(origin, unitDir, geom, pose, maxDist, hitFlags, maxHits, hits, hitCount);
+  });
+}
+
+template <class T>
+Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape, const Transform<T>& pose,
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
+               std::uint32_t& hitCount) noexcept {
+  return detail::guarded([&]() -> Status {
+    if (Status s = validateRay(origin, unitDir, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
+    if (!detail::ShapeAccess<T>::made(shape)) return Status::invalid(detail::emptyShapeText());
+    return raycastGeometry(origin, unitDir, shape.geometry(), pose, maxDist, hitFlags, maxHits, hits, hitCount);
   });
 }
 
@@ -72,5 +100,10 @@ template Status raycast<float>(const Vec3<float>&, const Vec3<float>&, const Geo
 template Status raycast<double>(const Vec3<double>&, const Vec3<double>&, const Geometry<double>&,
                                 const Transform<double>&, double, HitFlags, std::uint32_t, RaycastHit<double>*,
                                 std::uint32_t&);
+template Status raycast<float>(const Vec3<float>&, const Vec3<float>&, const Shape<float>&, const Transform<float>&,
+                               float, HitFlags, std::uint32_t, RaycastHit<float>*, std::uint32_t&) noexcept;
+template Status raycast<double>(const Vec3<double>&, const Vec3<double>&, const Shape<double>&,
+                                const Transform<double>&, double, HitFlags, std::uint32_t, RaycastHit<double>*,
+                                std::uint32_t&) noexcept;
 
 }  // namespace gq

@@ -19,6 +19,7 @@
 #include "common/validate.h"
 #include "gq/custom.h"
 #include "gq/query.h"
+#include "prepared/shape_ref.h"
 #include "sweep/sweep.h"
 
 namespace gq {
@@ -68,14 +69,17 @@ bool isSweepable(GeometryType t) {
          t == GeometryType::ConvexMesh;
 }
 
+// Everything but the geometries' own checks (a prepared shape made them once).
 template <class T>
-Status validateSweep(const Vec3<T>& dir, T maxDist, const Geometry<T>& g0, const Transform<T>& p0,
-                     const Geometry<T>& g1, const Transform<T>& p1, HitFlags flags, T inflation) {
+Status validateSweepQuery(const Vec3<T>& dir, T maxDist, HitFlags flags, T inflation) {
   if (Status s = detail::checkUnitDirection(dir, "sweep direction"); !s.ok()) return s;
   if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
   if (!std::isfinite(inflation) || inflation < T(0)) return Status::invalid("inflation must be finite and >= 0");
   if (flags.has(HitFlag::MeshMultiple)) return Status::invalid("meshMultiple is not supported by sweeps (one hit)");
-  if (Status s = detail::checkPairInputs(g0, p0, g1, p1); !s.ok()) return s;
+  return {};
+}
+
+template <class T> Status validateSweepTypes(const Geometry<T>& g0, const Geometry<T>& g1) {
   if (!isSweepable(g0.type()))
     return Status::unsupported(std::string("sweeping a ") + toString(g0.type()) +
                                " (the swept geometry must be a sphere, capsule, box or convex mesh)");
@@ -139,17 +143,21 @@ void writeHit(const detail::SweepOutcome<T>& o, const detail::SweepQuery<T>& q, 
 
 }  // namespace
 
+namespace detail {
+
+// The one path of both overloads once the geometries are valid.
 template <class T>
-Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const Transform<T>& pose0,
-             const Geometry<T>& geom1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit, HitFlags hitFlags,
-             T inflation) {
-  return detail::guarded([&]() -> Status {
-    if (Status s = validateSweep(unitDir, maxDist, geom0, pose0, geom1, pose1, hitFlags, inflation); !s.ok()) return s;
+Status sweepShapes(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const Transform<T>& pose0,
+                   const Geometry<T>& geom1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit,
+                   HitFlags hitFlags, T inflation) noexcept {
+  return guarded([&]() -> Status {
+    if (!pairPosesAreValid(pose0, pose1)) return pairPosesStatus(pose0, pose1);
+    if (Status s = validateSweepTypes(geom0, geom1); !s.ok()) return s;
     std::string warning;
     const T reach = std::min(maxDist, T(tol::kMaxSweepDistance));
     const HitFlags flags = resolveFlags(hitFlags, reach, inflation, warning);
 
-    detail::SweepQuery<T> q;
+    SweepQuery<T> q;
     q.dir = unitDir.normalized();
     q.maxDist = reach;
     q.flags = flags;
@@ -162,7 +170,7 @@ Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const 
     // Origin at the swept shape's start: kernels work on small coordinates; rotations are normalised.
     const Transform<T> local0(Vec3<T>::Zero(), pose0.q.normalized());
     const Transform<T> local1(Vec3<T>(pose1.p - pose0.p), pose1.q.normalized());
-    detail::SweepOutcome<T> o;
+    SweepOutcome<T> o;
     kSweepTable<T>[static_cast<std::size_t>(geom0.type())][static_cast<std::size_t>(geom1.type())](
         geom0, local0, geom1, local1, q, o);
     if (!o.status.ok()) return o.status;
@@ -173,10 +181,44 @@ Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const 
   });
 }
 
+}  // namespace detail
+
+template <class T>
+Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const Transform<T>& pose0,
+             const Geometry<T>& geom1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit, HitFlags hitFlags,
+             T inflation) {
+  return detail::guarded([&]() -> Status {
+    if (Status s = validateSweepQuery(unitDir, maxDist, hitFlags, inflation); !s.ok()) return s;
+    if (detail::pairGeometryProblem(geom0) || detail::pairGeometryProblem(geom1))
+      return detail::checkPairInputs(geom0, pose0, geom1, pose1);
+    return detail::sweepShapes(unitDir, maxDist, geom0, pose0, geom1, pose1, hit, hasHit, hitFlags, inflation);
+  });
+}
+
+template <class T>
+Status sweep(const Vec3<T>& unitDir, T maxDist, const Shape<T>& shape0, const Transform<T>& pose0,
+             const Shape<T>& shape1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit, HitFlags hitFlags,
+             T inflation) noexcept {
+  using A = detail::ShapeAccess<T>;
+  return detail::guarded([&]() -> Status {
+    if (Status s = validateSweepQuery(unitDir, maxDist, hitFlags, inflation); !s.ok()) return s;
+    if (const detail::Problem p = A::pairProblem(shape0)) return p.status();
+    if (const detail::Problem p = A::pairProblem(shape1)) return p.status();
+    return detail::sweepShapes(unitDir, maxDist, shape0.geometry(), pose0, shape1.geometry(), pose1, hit, hasHit,
+                               hitFlags, inflation);
+  });
+}
+
 template Status sweep<float>(const Vec3<float>&, float, const Geometry<float>&, const Transform<float>&,
                              const Geometry<float>&, const Transform<float>&, SweepHit<float>&, bool&, HitFlags, float);
 template Status sweep<double>(const Vec3<double>&, double, const Geometry<double>&, const Transform<double>&,
                               const Geometry<double>&, const Transform<double>&, SweepHit<double>&, bool&, HitFlags,
                               double);
+template Status sweep<float>(const Vec3<float>&, float, const Shape<float>&, const Transform<float>&,
+                             const Shape<float>&, const Transform<float>&, SweepHit<float>&, bool&, HitFlags,
+                             float) noexcept;
+template Status sweep<double>(const Vec3<double>&, double, const Shape<double>&, const Transform<double>&,
+                              const Shape<double>&, const Transform<double>&, SweepHit<double>&, bool&, HitFlags,
+                              double) noexcept;
 
 }  // namespace gq
