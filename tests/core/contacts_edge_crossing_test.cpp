@@ -55,8 +55,8 @@ TYPED_TEST(ContactsEdgeCrossing, RestingBoxAcrossTheTriangleEdgeGetsTwoCornersAn
   // triangle is x in [-0.5, 0]: corners at x = -0.5 and crossings of the edges y = +-0.5 with x = 0.
   ContactBuffer<T> c;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(0.5), T(0.5), T(0.5))),
-                                       Transform<T>(Vec3<T>(T(0), T(1), T(0.51))), this->halfPlaneTriangle(), 3u,
-                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)}, c)
+                                       Transform<T>(Vec3<T>(T(0), T(1), T(0.51))), this->halfPlaneTriangle(), 3u, c,
+                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   this->expectPoints(c, {{-0.5, 0.5, 0.01}, {-0.5, 1.5, 0.01}, {0, 0.5, 0.01}, {0, 1.5, 0.01}}, 0.01);
@@ -67,8 +67,8 @@ TYPED_TEST(ContactsEdgeCrossing, PenetratingHullAcrossTheTriangleEdgeKeepsTheCro
   // The cube hull 0.05 deep, straddling the edge with 0.2 of its bottom over the triangle (x in [-0.2, 0]).
   ContactBuffer<T> c;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(ConvexMeshGeometry<T>(this->cubeHull())),
-                                       Transform<T>(Vec3<T>(T(0.3), T(0), T(0.45))), this->halfPlaneTriangle(), 0u,
-                                       TriangleContactSettings<T>{T(0.01), T(0.1), T(1)}, c)
+                                       Transform<T>(Vec3<T>(T(0.3), T(0), T(0.45))), this->halfPlaneTriangle(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.01), T(0.1), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   this->expectPoints(c, {{-0.2, -0.5, -0.05}, {-0.2, 0.5, -0.05}, {0, -0.5, -0.05}, {0, 0.5, -0.05}}, -0.05);
@@ -82,8 +82,8 @@ TYPED_TEST(ContactsEdgeCrossing, EdgeOnBoxAcrossTheTriangleEdgeGetsBothEndsOfIts
   const Transform<T> pose(Vec3<T>(T(0), T(0), T(lift)), Quat<T>(Eigen::AngleAxis<T>(T(M_PI / 4), Vec3<T>::UnitX())));
   ContactBuffer<T> c;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(0.5), T(0.5), T(0.5))), pose,
-                                       this->halfPlaneTriangle(), 0u,
-                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)}, c)
+                                       this->halfPlaneTriangle(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   this->expectPoints(c, {{-0.5, 0, 0.01}, {0, 0, 0.01}}, 0.01);
@@ -95,8 +95,8 @@ TYPED_TEST(ContactsEdgeCrossing, CapsuleAcrossTheTriangleEdgeGetsItsEndAndTheCro
   // of its surface spans x in [-0.6, 0.6]; over the triangle: its end at x = -0.6 and the crossing at x = 0.
   ContactBuffer<T> c;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(CapsuleGeometry<T>(T(0.2), T(0.6))),
-                                       Transform<T>(Vec3<T>(T(0), T(0), T(0.21))), this->halfPlaneTriangle(), 0u,
-                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)}, c)
+                                       Transform<T>(Vec3<T>(T(0), T(0), T(0.21))), this->halfPlaneTriangle(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   this->expectPoints(c, {{-0.6, 0, 0.01}, {0, 0, 0.01}}, 0.01);

@@ -84,7 +84,7 @@ TYPED_TEST(DeprecatedForms, PositionalContactDistancesGiveTheContactsOfTheSettin
   ContactBuffer<T> a, b;
   bool has = false;
   ASSERT_TRUE(generateTriangleContacts(box, pose, tri, 9u, T(0.05), T(0.01), T(1), a, has).ok());
-  ASSERT_TRUE(generateTriangleContacts(box, pose, tri, 9u, TriangleContactSettings<T>{T(0.05), T(0.01), T(1)}, b).ok());
+  ASSERT_TRUE(generateTriangleContacts(box, pose, tri, 9u, b, TriangleContactSettings<T>{T(0.05), T(0.01), T(1)}).ok());
   EXPECT_TRUE(has);
   ASSERT_EQ(a.count, 4u);
   ASSERT_EQ(a.count, b.count);

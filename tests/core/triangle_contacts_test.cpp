@@ -33,8 +33,8 @@ TYPED_TEST_SUITE(TriangleContacts, Scalars);
 TYPED_TEST(TriangleContacts, RestingBoxGivesFourCornerContactsWithTheGap) {
   using T = TypeParam;
   ContactBuffer<T> c;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0.2, -0.1, 0.51), this->big(), 7u,
-                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)}, c)
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0.2, -0.1, 0.51), this->big(), 7u, c,
+                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 4u);
@@ -54,8 +54,8 @@ TYPED_TEST(TriangleContacts, PenetratingBoxReportsNegativeSeparationAndKeepsTheD
   const double a = 0.1;
   const Transform<T> pose(Vec3<T>(T(0), T(0), T(0.45)), Quat<T>(Eigen::AngleAxis<T>(T(a), Vec3<T>::UnitY())));
   ContactBuffer<T> c;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), pose, this->big(), 0u,
-                                       TriangleContactSettings<T>{T(0.2), T(0.2), T(1)}, c)
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), pose, this->big(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.2), T(0.2), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 4u);
@@ -76,8 +76,8 @@ TYPED_TEST(TriangleContacts, PenetratingBoxReportsNegativeSeparationAndKeepsTheD
 TYPED_TEST(TriangleContacts, ContactsStopBeyondContactDistance) {
   using T = TypeParam;
   ContactBuffer<T> c;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, 0, 0.6), this->big(), 0u,
-                                       TriangleContactSettings<T>{T(0.05), T(0.01), T(1)}, c)
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, 0, 0.6), this->big(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.05), T(0.01), T(1)})
                   .ok());
   EXPECT_EQ(c.count, 0u);
 }
@@ -87,7 +87,7 @@ TYPED_TEST(TriangleContacts, CapsuleLyingFlatGivesTwoContactsUnderItsEnds) {
   ContactBuffer<T> c;
   // Radius 0.25, half height 1 along X, axis at z = 0.24: both ends 0.01 deep.
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(CapsuleGeometry<T>(T(0.25), T(1))), this->at(0, 0, 0.24),
-                                       this->big(), 0u, TriangleContactSettings<T>{T(0.01), T(0.01), T(1)}, c)
+                                       this->big(), 0u, c, TriangleContactSettings<T>{T(0.01), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 2u);
@@ -107,7 +107,7 @@ TYPED_TEST(TriangleContacts, BigBoxOverSmallTriangleContactsAtTheTriangleVertice
   small.verts[2] = Vec3<T>(T(0), T(0.3), T(0));
   ContactBuffer<T> c;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(2), T(2), T(0.5))), this->at(0, 0, 0.52), small, 0u,
-                                       TriangleContactSettings<T>{T(0.05), T(0.01), T(1)}, c)
+                                       c, TriangleContactSettings<T>{T(0.05), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 3u);
@@ -124,8 +124,8 @@ TYPED_TEST(TriangleContacts, EdgeOnBoxGivesOneContactAlongTheClosestFeatureNorma
   using T = TypeParam;
   // The box beside the triangle's edge y = -10 (|x| < 10 there), its face 0.03 away along -y, level with the plane.
   ContactBuffer<T> c;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, -10.53, 0.2), this->big(), 0u,
-                                       TriangleContactSettings<T>{T(0.05), T(0.01), T(1)}, c)
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, -10.53, 0.2), this->big(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.05), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 1u);
@@ -142,7 +142,7 @@ TYPED_TEST(TriangleContacts, RestingConvexHullGivesFourContacts) {
   ASSERT_TRUE(cookConvexMesh(cube, hull).ok());
   ContactBuffer<T> c;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(ConvexMeshGeometry<T>(hull)), this->at(1, 1, 0.5), this->big(), 0u,
-                                       TriangleContactSettings<T>{T(0.01), T(0.01), T(1)}, c)
+                                       c, TriangleContactSettings<T>{T(0.01), T(0.01), T(1)})
                   .ok());
   ASSERT_GT(c.count, 0u);
   EXPECT_EQ(c.count, 4u);
@@ -154,16 +154,16 @@ TYPED_TEST(TriangleContacts, InvalidInputReturnsAStatusAndWritesNothing) {
   using T = TypeParam;
   ContactBuffer<T> c;
   c.count = 3;
-  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u,
-                                     TriangleContactSettings<T>{T(-1), T(0), T(1)}, c)
+  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u, c,
+                                     TriangleContactSettings<T>{T(-1), T(0), T(1)})
                 .code,
             StatusCode::InvalidArgument);
-  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u,
-                                     TriangleContactSettings<T>{T(0), T(0), T(0)}, c)
+  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u, c,
+                                     TriangleContactSettings<T>{T(0), T(0), T(0)})
                 .code,
             StatusCode::InvalidArgument);
-  EXPECT_EQ(generateTriangleContacts(Geometry<T>(SphereGeometry<T>(T(1))), this->at(0, 0, 1), this->big(), 0u,
-                                     TriangleContactSettings<T>{T(0), T(0), T(1)}, c)
+  EXPECT_EQ(generateTriangleContacts(Geometry<T>(SphereGeometry<T>(T(1))), this->at(0, 0, 1), this->big(), 0u, c,
+                                     TriangleContactSettings<T>{T(0), T(0), T(1)})
                 .code,
             StatusCode::Unsupported);
   EXPECT_EQ(c.count, 3u);

@@ -78,8 +78,8 @@ template <class T> void run(gq::fuzz::Bytes& in) {
     ContactBuffer<T> contacts;
     contacts.count = 999;
     const T contactDistance = in.scalar<T>(), margin = in.scalar<T>(), length = in.scalar<T>();
-    const Status s = generateTriangleContacts(shape, pose, tris[0], 3u,
-                                              TriangleContactSettings<T>{contactDistance, margin, length}, contacts);
+    const Status s = generateTriangleContacts(shape, pose, tris[0], 3u, contacts,
+                                              TriangleContactSettings<T>{contactDistance, margin, length});
     if (!s.ok()) fuzz::require(contacts.count == 999);
     for (std::uint32_t i = 0; s.ok() && i < contacts.count; ++i)
       fuzz::require(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&

@@ -88,7 +88,7 @@ TYPED_TEST(BadInputMeshQueries, NaNPoseIsInvalidArgumentInEveryMeshQuery) {
   ContactBuffer<T> contacts;
   contacts.count = 4242;
   EXPECT_EQ(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(1), T(1), T(1))), nanPose<T>(), unitTriangle<T>(), 0u,
-                                     TriangleContactSettings<T>{T(0.1), T(0.01), T(1)}, contacts)
+                                     contacts, TriangleContactSettings<T>{T(0.1), T(0.01), T(1)})
                 .code,
             StatusCode::InvalidArgument);
   EXPECT_EQ(contacts.count, 4242u);
@@ -132,7 +132,7 @@ TYPED_TEST(BadInputMeshQueries, ShapesOutsideTheSpecsListReturnUnsupported) {
                                            Transform<T>()).code, StatusCode::Unsupported);
   ContactBuffer<T> contacts;
   EXPECT_EQ(generateTriangleContacts(Geometry<T>(SphereGeometry<T>(T(1))), Transform<T>(), unitTriangle<T>(), 0u,
-                                     TriangleContactSettings<T>{T(0.1), T(0.01), T(1)}, contacts)
+                                     contacts, TriangleContactSettings<T>{T(0.1), T(0.01), T(1)})
                 .code,
             StatusCode::Unsupported);
   EXPECT_EQ(received.count, 4242u);
@@ -196,8 +196,8 @@ TYPED_TEST(BadInputMeshQueries, TriangleContactsRejectBadDistancesAndDegenerateO
   ContactBuffer<T> contacts;
   contacts.count = 4242;
   auto call = [&](const Triangle<T>& tri, T contactDistance, T margin, T toleranceLength) {
-    return generateTriangleContacts(box, Transform<T>(), tri, 0u,
-                                    TriangleContactSettings<T>{contactDistance, margin, toleranceLength}, contacts)
+    return generateTriangleContacts(box, Transform<T>(), tri, 0u, contacts,
+                                    TriangleContactSettings<T>{contactDistance, margin, toleranceLength})
         .code;
   };
   EXPECT_EQ(call(unitTriangle<T>(), T(-0.1), T(0), T(1)), StatusCode::InvalidArgument);
@@ -228,7 +228,7 @@ TYPED_TEST(BadInputMeshQueries, RawTrianglesBeyondThePairMagnitudeAreInvalidArgu
   contacts.count = 4242;
   const Geometry<T> box = BoxGeometry<T>(T(1), T(1), T(1));
   const Status s =
-      generateTriangleContacts(box, pose, tri, 0u, TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)}, contacts);
+      generateTriangleContacts(box, pose, tri, 0u, contacts, TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)});
   EXPECT_EQ(s.code, StatusCode::InvalidArgument) << s.toString();
   EXPECT_NE(s.message.find("too far"), std::string::npos) << s.message;
   EXPECT_EQ(contacts.count, 4242u);
@@ -238,8 +238,8 @@ TYPED_TEST(BadInputMeshQueries, RawTrianglesBeyondThePairMagnitudeAreInvalidArgu
             StatusCode::InvalidArgument);
   EXPECT_TRUE(hasHit && sameBits(hit, sentinelSweepHit<T>()));
   const Geometry<T> hugeBox = BoxGeometry<T>(far, T(1), T(1));
-  EXPECT_EQ(generateTriangleContacts(hugeBox, Transform<T>(), unitTriangle<T>(), 0u,
-                                     TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)}, contacts)
+  EXPECT_EQ(generateTriangleContacts(hugeBox, Transform<T>(), unitTriangle<T>(), 0u, contacts,
+                                     TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)})
                 .code,
             StatusCode::InvalidArgument);
   // At the bound: accepted, finite contacts.
@@ -248,8 +248,8 @@ TYPED_TEST(BadInputMeshQueries, RawTrianglesBeyondThePairMagnitudeAreInvalidArgu
   wide.verts[0] = Vec3<T>(-bound, -bound, T(0));
   wide.verts[1] = Vec3<T>(bound, -bound, T(0));
   wide.verts[2] = Vec3<T>(T(0), bound, T(0));
-  ASSERT_TRUE(generateTriangleContacts(box, Transform<T>(Vec3<T>(T(0), T(0), T(0.9))), wide, 0u,
-                                       TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)}, contacts)
+  ASSERT_TRUE(generateTriangleContacts(box, Transform<T>(Vec3<T>(T(0), T(0), T(0.9))), wide, 0u, contacts,
+                                       TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)})
                   .ok());
   for (std::uint32_t i = 0; i < contacts.count; ++i)
     EXPECT_TRUE(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&

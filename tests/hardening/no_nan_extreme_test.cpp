@@ -113,8 +113,8 @@ TYPED_TEST(NoNaN, MeshQueriesOverExtremeSizesAnswerFiniteOrAnError) {
           EXPECT_TRUE(isFinite(hit.position) && isFinite(hit.normal) && std::isfinite(hit.distance)) << type << " " << s;
 
         ContactBuffer<T> contacts;
-        st = generateTriangleContacts(g, pose, tris[2], 2u, TriangleContactSettings<T>{T(0.1 * s), T(0.01 * s), T(s)},
-                                      contacts);
+        st = generateTriangleContacts(g, pose, tris[2], 2u, contacts,
+                                      TriangleContactSettings<T>{T(0.1 * s), T(0.01 * s), T(s)});
         for (std::uint32_t i = 0; st.ok() && i < contacts.count; ++i)
           EXPECT_TRUE(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&
                       std::isfinite(contacts.contacts[i].separation)) << type << " " << s;

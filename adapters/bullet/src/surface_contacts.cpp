@@ -158,7 +158,7 @@ void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry
     settings.contactDistance = std::max(reach, Real(0));
     settings.meshContactMargin = kMeshContactMarginFactor * size;
     settings.toleranceLength = size;
-    if (!generateTriangleContacts(contactGeom, q.convex.pose, tri, index, settings, buffer).ok()) return;
+    if (!generateTriangleContacts(contactGeom, q.convex.pose, tri, index, buffer, settings).ok()) return;
     for (std::uint32_t i = 0; i < buffer.count; ++i)
       report(q, buffer.contacts[i].position, buffer.contacts[i].normal, buffer.contacts[i].separation, index,
              alongFace(buffer.contacts[i].normal, tri));

@@ -45,8 +45,8 @@ template <class T> struct TriangleContactSettings {
 // written.
 template <class T>
 Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
-                                std::uint32_t triangleIndex, const TriangleContactSettings<T>& settings,
-                                ContactBuffer<T>& contacts);
+                                std::uint32_t triangleIndex, ContactBuffer<T>& contacts,
+                                const TriangleContactSettings<T>& settings = TriangleContactSettings<T>());
 
 template <class T>
 [[deprecated("pass the distances in a TriangleContactSettings; hasContacts is contacts.count > 0")]] inline Status
@@ -57,7 +57,7 @@ generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, cons
   settings.contactDistance = contactDistance;
   settings.meshContactMargin = meshContactMargin;
   settings.toleranceLength = toleranceLength;
-  const Status s = generateTriangleContacts(geom, pose, triangle, triangleIndex, settings, contacts);
+  const Status s = generateTriangleContacts(geom, pose, triangle, triangleIndex, contacts, settings);
   if (s.ok()) hasContacts = contacts.count > 0;
   return s;
 }

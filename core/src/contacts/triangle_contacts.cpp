@@ -161,8 +161,8 @@ Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const
 
 template <class T>
 Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
-                                std::uint32_t triangleIndex, const TriangleContactSettings<T>& settings,
-                                ContactBuffer<T>& contacts) {
+                                std::uint32_t triangleIndex, ContactBuffer<T>& contacts,
+                                const TriangleContactSettings<T>& settings) {
   return detail::guarded([&]() -> Status {
     const T contactDistance = settings.contactDistance;
     const T meshContactMargin = settings.meshContactMargin;
@@ -250,10 +250,10 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
 }
 
 template Status generateTriangleContacts<float>(const Geometry<float>&, const Transform<float>&, const Triangle<float>&,
-                                                std::uint32_t, const TriangleContactSettings<float>&,
-                                                ContactBuffer<float>&);
+                                                std::uint32_t, ContactBuffer<float>&,
+                                                const TriangleContactSettings<float>&);
 template Status generateTriangleContacts<double>(const Geometry<double>&, const Transform<double>&,
                                                  const Triangle<double>&, std::uint32_t,
-                                                 const TriangleContactSettings<double>&, ContactBuffer<double>&);
+                                                 ContactBuffer<double>&, const TriangleContactSettings<double>&);
 
 }  // namespace gq
