@@ -20,6 +20,7 @@
 //   DistanceResult::distance      > 0 apart, 0 touching, < 0 penetrating: minus the penetration depth (a triangle
 //                                 mesh or heightfield is a surface, not a solid: 0 from touching on)
 //   DistanceResult::normal        unit, from geom0 towards geom1; when penetrating, -PenetrationResult::direction
+//                                 (where the MTD is not unique, both separate the pair)
 //   PenetrationResult::direction  unit; translating geom0 by direction * depth separates (it points from geom1
 //                                 towards geom0); depth >= 0 and equals -distance
 //   overlap                       true exactly when distance <= 0 (touching overlaps)
