@@ -2,7 +2,8 @@
 // Self-collision and self-distance of a RobotModel: forward kinematics, a broadphase over link bounding spheres
 // (the link pairs the allowed-collision matrix leaves, listed once), shape spheres and oriented boxes, then
 // gq::overlap / gq::distance on the shape pairs that survive.
-// A checker owns scratch buffers: use one per thread (the model itself is shared and immutable).
+// A checker owns scratch buffers: use one per thread (the model itself is shared and immutable). It is movable, not
+// copyable (build another from the same model).
 #include <cstdint>
 #include <memory>
 #include <string>
