@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 
+#include "bvh/bvh.h"
 #include "gq/cooking.h"
 #include "mesh_test_helpers.h"
 
@@ -85,8 +86,8 @@ template <class T> void checkBvh(const TriangleMesh<T>& mesh) {
       }
       return;
     }
-    ASSERT_LT(ref, mesh.bvh.nodes.size());
-    const Bvh4Node& n = mesh.bvh.nodes[ref];
+    ASSERT_LT(ref, mesh.accel->bvh.nodes.size());
+    const Bvh4Node& n = mesh.accel->bvh.nodes[ref];
     for (int i = 0; i < 4; ++i) {
       if (n.child[i] == Bvh4Node::kEmpty) continue;
       Bounds3<T> b = Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[i]), T(n.minY[i]), T(n.minZ[i])),
@@ -96,7 +97,7 @@ template <class T> void checkBvh(const TriangleMesh<T>& mesh) {
     }
   };
   const T inf = std::numeric_limits<T>::infinity();
-  walk(mesh.bvh.rootChild, Bounds3<T>::fromMinMax(Vec3<T>::Constant(-inf), Vec3<T>::Constant(inf)));
+  walk(mesh.accel->bvh.rootChild, Bounds3<T>::fromMinMax(Vec3<T>::Constant(-inf), Vec3<T>::Constant(inf)));
   for (int s : seen) ASSERT_EQ(s, 1);
 }
 
@@ -108,7 +109,7 @@ TYPED_TEST(MeshCook, BvhLeavesHoldEveryTriangleOnceInsideTheirBoxes) {
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   checkBvh(*mesh);
   const auto small = meshtest::cook(meshtest::quadStack<T>(1).vertices, meshtest::quadStack<T>(1).triangles);
-  EXPECT_TRUE(Bvh4Node::isLeaf(small->bvh.rootChild));  // 2 triangles: one leaf, no nodes
+  EXPECT_TRUE(Bvh4Node::isLeaf(small->accel->bvh.rootChild));  // 2 triangles: one leaf, no nodes
   checkBvh(*small);
 }
 
@@ -129,6 +130,7 @@ TYPED_TEST(MeshCookData, BunnyBvhUsesAtMost32BytesPerTriangle) {
               report.cookedTriangles, report.removedDegenerate, report.bvhBytes, perTriangle,
               mesh->hullVertices.size());
   EXPECT_LE(perTriangle, 32.0);
+  EXPECT_EQ(mesh->bvhBytes, report.bvhBytes);  // public on the mesh as well
   checkBvh(*mesh);
 }
 

@@ -80,13 +80,14 @@ TYPED_TEST(MeshQueryPairs, FindOverlapTriangleMeshReportsExactlyTheTouchedTriang
       expected = bruteForceBox(tris, BoxL{test::toLD(pose.p), r, test::toLD(he)}, band<T>(), amb);
     }
     if (amb) { ++ambiguous; continue; }
-    bool overflow = true;
-    std::uint32_t count = 0;
-    ASSERT_TRUE(findOverlapTriangleMesh(geom, pose, mesh, meshPose, buffer.data(), std::uint32_t(buffer.size()), 0,
-                                        overflow, count).ok());
-    EXPECT_FALSE(overflow);
-    const std::set<std::uint32_t> got(buffer.begin(), buffer.begin() + count);
-    ASSERT_EQ(got.size(), count) << "duplicates reported";
+    TriangleOverlapPageResult page;
+    page.overflow = true;
+    ASSERT_TRUE(findOverlapTriangleMesh(geom, pose, mesh, meshPose,
+                                        TriangleOverlapPage{buffer.data(), std::uint32_t(buffer.size()), 0}, page)
+                    .ok());
+    EXPECT_FALSE(page.overflow);
+    const std::set<std::uint32_t> got(buffer.begin(), buffer.begin() + page.count);
+    ASSERT_EQ(got.size(), page.count) << "duplicates reported";
     ASSERT_EQ(got, expected) << "pose " << i << " kind " << kind;
     nonEmpty += !expected.empty();
   }
@@ -101,36 +102,41 @@ TYPED_TEST(MeshQueryPairs, FindOverlapTriangleMeshPagesWithStartIndexAndOverflow
   const Geometry<T> sphere = SphereGeometry<T>(T(0.6));
   const Transform<T> pose(Vec3<T>(T(0.9), 0, 0));
   std::vector<std::uint32_t> all(2000);
-  bool overflow = true;
-  std::uint32_t total = 0;
-  ASSERT_TRUE(findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), all.data(), 2000u, 0u, overflow, total).ok());
-  ASSERT_FALSE(overflow);
+  TriangleOverlapPageResult whole;
+  ASSERT_TRUE(
+      findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), TriangleOverlapPage{all.data(), 2000u, 0u}, whole)
+          .ok());
+  ASSERT_FALSE(whole.overflow);
+  const std::uint32_t total = whole.count;
   ASSERT_GT(total, 20u);
   // Pages of 7: each page continues where the previous stopped; overflow on every page but the last.
   std::vector<std::uint32_t> paged;
-  std::uint32_t start = 0;
+  std::uint32_t indices[7];
+  TriangleOverlapPage page{indices, 7u, 0u};
   for (;;) {
-    std::uint32_t page[7];
-    std::uint32_t count = 0;
-    ASSERT_TRUE(findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), page, 7u, start, overflow, count).ok());
-    paged.insert(paged.end(), page, page + count);
-    start += count;
-    if (!overflow) break;
-    ASSERT_EQ(count, 7u);
+    TriangleOverlapPageResult received;
+    ASSERT_TRUE(findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), page, received).ok());
+    paged.insert(paged.end(), indices, indices + received.count);
+    page.start += received.count;
+    if (!received.overflow) break;
+    ASSERT_EQ(received.count, 7u);
   }
   EXPECT_EQ(paged, std::vector<std::uint32_t>(all.begin(), all.begin() + total));
   // A buffer that fits exactly does not overflow; a zero-size buffer reports overflow when anything overlaps.
-  std::uint32_t count = 0;
-  ASSERT_TRUE(findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), all.data(), total, 0u, overflow, count).ok());
-  EXPECT_FALSE(overflow);
-  EXPECT_EQ(count, total);
-  ASSERT_TRUE(findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), nullptr, 0u, 0u, overflow, count).ok());
-  EXPECT_TRUE(overflow);
-  EXPECT_EQ(count, 0u);
-  // startIndex past the end: nothing, no overflow.
-  ASSERT_TRUE(findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), all.data(), 10u, total, overflow, count).ok());
-  EXPECT_FALSE(overflow);
-  EXPECT_EQ(count, 0u);
+  TriangleOverlapPageResult r;
+  ASSERT_TRUE(
+      findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), TriangleOverlapPage{all.data(), total, 0u}, r).ok());
+  EXPECT_FALSE(r.overflow);
+  EXPECT_EQ(r.count, total);
+  ASSERT_TRUE(
+      findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), TriangleOverlapPage{nullptr, 0u, 0u}, r).ok());
+  EXPECT_TRUE(r.overflow);
+  EXPECT_EQ(r.count, 0u);
+  // A start past the end: nothing, no overflow.
+  ASSERT_TRUE(
+      findOverlapTriangleMesh(sphere, pose, mesh, Transform<T>(), TriangleOverlapPage{all.data(), 10u, total}, r).ok());
+  EXPECT_FALSE(r.overflow);
+  EXPECT_EQ(r.count, 0u);
 }
 
 TYPED_TEST(MeshQueryPairs, FindOverlapRejectsOtherShapesAndNullBuffersWithoutWriting) {
@@ -138,16 +144,23 @@ TYPED_TEST(MeshQueryPairs, FindOverlapRejectsOtherShapesAndNullBuffersWithoutWri
   const MeshData<T> data = meshtest::quadStack<T>(1);
   const TriangleMeshGeometry<T> mesh(meshtest::cook(data.vertices, data.triangles));
   std::uint32_t buffer[4] = {7, 7, 7, 7};
-  bool overflow = true;
-  std::uint32_t count = 99;
-  EXPECT_EQ(findOverlapTriangleMesh(Geometry<T>(PlaneGeometry<T>()), Transform<T>(), mesh, Transform<T>(), buffer, 4u, 0u,
-                                    overflow, count).code, StatusCode::Unsupported);
-  EXPECT_EQ(findOverlapTriangleMesh(Geometry<T>(SphereGeometry<T>(1)), Transform<T>(), mesh, Transform<T>(), nullptr, 4u,
-                                    0u, overflow, count).code, StatusCode::InvalidArgument);
-  EXPECT_EQ(findOverlapTriangleMesh(Geometry<T>(SphereGeometry<T>(-1)), Transform<T>(), mesh, Transform<T>(), buffer, 4u,
-                                    0u, overflow, count).code, StatusCode::InvalidArgument);
-  EXPECT_EQ(count, 99u);
-  EXPECT_TRUE(overflow);
+  TriangleOverlapPageResult r;
+  r.overflow = true;
+  r.count = 99;
+  EXPECT_EQ(findOverlapTriangleMesh(Geometry<T>(PlaneGeometry<T>()), Transform<T>(), mesh, Transform<T>(),
+                                    TriangleOverlapPage{buffer, 4u, 0u}, r)
+                .code,
+            StatusCode::Unsupported);
+  EXPECT_EQ(findOverlapTriangleMesh(Geometry<T>(SphereGeometry<T>(1)), Transform<T>(), mesh, Transform<T>(),
+                                    TriangleOverlapPage{nullptr, 4u, 0u}, r)
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(findOverlapTriangleMesh(Geometry<T>(SphereGeometry<T>(-1)), Transform<T>(), mesh, Transform<T>(),
+                                    TriangleOverlapPage{buffer, 4u, 0u}, r)
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(r.count, 99u);
+  EXPECT_TRUE(r.overflow);
   EXPECT_EQ(buffer[0], 7u);
 }
 
@@ -184,12 +197,12 @@ TYPED_TEST(MeshQueryPairs, FindOverlapHeightFieldReportsExactlyTheTouchedTriangl
       expected = bruteForceBox(tris, BoxL{test::toLD(pose.p), r, test::toLD(he)}, band<T>(), amb, &valid);
     }
     if (amb) { ++ambiguous; continue; }
-    bool overflow = true;
-    std::uint32_t count = 0;
-    ASSERT_TRUE(findOverlapHeightField(geom, pose, hf, fieldPose, buffer.data(), std::uint32_t(buffer.size()), 0u,
-                                       overflow, count).ok());
-    const std::set<std::uint32_t> got(buffer.begin(), buffer.begin() + count);
-    ASSERT_EQ(got.size(), count);
+    TriangleOverlapPageResult page;
+    ASSERT_TRUE(findOverlapHeightField(geom, pose, hf, fieldPose,
+                                       TriangleOverlapPage{buffer.data(), std::uint32_t(buffer.size()), 0u}, page)
+                    .ok());
+    const std::set<std::uint32_t> got(buffer.begin(), buffer.begin() + page.count);
+    ASSERT_EQ(got.size(), page.count);
     ASSERT_EQ(got, expected) << "pose " << i;
     nonEmpty += !expected.empty();
   }

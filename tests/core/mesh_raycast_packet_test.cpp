@@ -51,9 +51,9 @@ struct Counts {
 template <class T>
 void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins, const std::vector<Vec3<T>>& targets,
                bool tightMaxT, Counts& counts) {
-  ASSERT_TRUE(Bvh4Node::isLeaf(mesh.bvh.rootChild));
-  const std::uint32_t count = Bvh4Node::leafCount(mesh.bvh.rootChild);
-  const TrianglePacket4& packet = mesh.trianglePackets.at(mesh.bvh.rootPacket);
+  ASSERT_TRUE(Bvh4Node::isLeaf(mesh.accel->bvh.rootChild));
+  const std::uint32_t count = Bvh4Node::leafCount(mesh.accel->bvh.rootChild);
+  const TrianglePacket4& packet = mesh.accel->trianglePackets.at(mesh.accel->bvh.rootPacket);
   for (std::size_t r = 0; r < origins.size(); ++r) {
     const Vec3<T> dir = (targets[r] - origins[r]).normalized();
     const detail::WatertightRay<T> exactRay = detail::makeWatertightRay(origins[r], dir);
@@ -146,8 +146,8 @@ TYPED_TEST(MeshRaycastPacket, PreTestRejectsTrianglesTheRayClearlyMisses) {
   }
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   ASSERT_NE(mesh, nullptr);
-  ASSERT_TRUE(Bvh4Node::isLeaf(mesh->bvh.rootChild));
-  const TrianglePacket4& packet = mesh->trianglePackets.at(mesh->bvh.rootPacket);
+  ASSERT_TRUE(Bvh4Node::isLeaf(mesh->accel->bvh.rootChild));
+  const TrianglePacket4& packet = mesh->accel->trianglePackets.at(mesh->accel->bvh.rootPacket);
   for (int i = 0; i < 4; ++i) {
     const Vec3<T> target(T(2 * i) + T(0.25), T(0.25), T(0));
     const Vec3<T> origin = target + Vec3<T>(T(0.3), T(-0.2), T(100));

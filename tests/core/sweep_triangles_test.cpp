@@ -72,13 +72,15 @@ TYPED_TEST(SweepTriangles, BackFacesAreCulledUnlessDoubleSidedOrMeshBothSides) {
   bool has = true;
   ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has).ok());
   EXPECT_FALSE(has);
-  ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has, kDefaultHitFlags,
-                             nullptr, T(0), true).ok());
+  ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has,
+                             TriangleSweepSettings<T>{kDefaultHitFlags, nullptr, T(0), true})
+                  .ok());
   ASSERT_TRUE(has);
   EXPECT_NEAR(double(hit.distance), 2.5, this->kTol);
   EXPECT_NEAR(double(hit.normal.x()), -1.0, this->kTol);  // faces against the sweep
   ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has,
-                             kDefaultHitFlags | HitFlag::MeshBothSides).ok());
+                             TriangleSweepSettings<T>{kDefaultHitFlags | HitFlag::MeshBothSides})
+                  .ok());
   EXPECT_TRUE(has);
 }
 
@@ -90,17 +92,20 @@ TYPED_TEST(SweepTriangles, AnyHitReturnsTheFirstHitFoundStartingWithTheCachedInd
   bool has = false;
   const std::uint32_t cached = 2;
   ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 3u, hit, has,
-                             kDefaultHitFlags | HitFlag::AnyHit, &cached).ok());
+                             TriangleSweepSettings<T>{kDefaultHitFlags | HitFlag::AnyHit, &cached})
+                  .ok());
   ASSERT_TRUE(has);
   EXPECT_EQ(hit.faceIndex, 2u);
   EXPECT_NEAR(double(hit.distance), 4.0, this->kTol);
   // Without anyHit the cached index is only an order: the closest still wins.
-  ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 3u, hit, has, kDefaultHitFlags,
-                             &cached).ok());
+  ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 3u, hit, has,
+                             TriangleSweepSettings<T>{kDefaultHitFlags, &cached})
+                  .ok());
   EXPECT_EQ(hit.faceIndex, 1u);
   // anyHit without a cached index: the first triangle in order that is hit.
   ASSERT_TRUE(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 3u, hit, has,
-                             kDefaultHitFlags | HitFlag::AnyHit).ok());
+                             TriangleSweepSettings<T>{kDefaultHitFlags | HitFlag::AnyHit})
+                  .ok());
   EXPECT_EQ(hit.faceIndex, 0u);
 }
 
@@ -136,12 +141,16 @@ TYPED_TEST(SweepTriangles, InvalidInputReturnsAStatusAndWritesNothing) {
   hit.distance = T(42);
   bool has = true;
   const std::uint32_t badCache = 7;
-  EXPECT_EQ(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has, kDefaultHitFlags,
-                           &badCache).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has,
+                           TriangleSweepSettings<T>{kDefaultHitFlags, &badCache})
+                .code,
+            StatusCode::InvalidArgument);
   EXPECT_EQ(sweepTriangles(Vec3<T>(T(2), T(0), T(0)), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has).code,
             StatusCode::InvalidArgument);
   EXPECT_EQ(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), tris.data(), 1u, hit, has,
-                           kDefaultHitFlags | HitFlag::MeshMultiple).code, StatusCode::InvalidArgument);
+                           TriangleSweepSettings<T>{kDefaultHitFlags | HitFlag::MeshMultiple})
+                .code,
+            StatusCode::InvalidArgument);
   EXPECT_EQ(sweepTriangles(this->x(), T(10), sphere, Transform<T>(), static_cast<const Triangle<T>*>(nullptr), 1u, hit,
                            has).code, StatusCode::InvalidArgument);
   EXPECT_EQ(sweepTriangles(this->x(), T(10), Geometry<T>(PlaneGeometry<T>()), Transform<T>(), tris.data(), 1u, hit,

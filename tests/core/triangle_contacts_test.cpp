@@ -33,10 +33,10 @@ TYPED_TEST_SUITE(TriangleContacts, Scalars);
 TYPED_TEST(TriangleContacts, RestingBoxGivesFourCornerContactsWithTheGap) {
   using T = TypeParam;
   ContactBuffer<T> c;
-  bool has = false;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0.2, -0.1, 0.51), this->big(), 7u, T(0.02), T(0.01),
-                                       T(1), c, has).ok());
-  ASSERT_TRUE(has);
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0.2, -0.1, 0.51), this->big(), 7u, c,
+                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)})
+                  .ok());
+  ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 4u);
   this->expectNormalUp(c);
   for (std::uint32_t i = 0; i < c.count; ++i) {
@@ -54,9 +54,10 @@ TYPED_TEST(TriangleContacts, PenetratingBoxReportsNegativeSeparationAndKeepsTheD
   const double a = 0.1;
   const Transform<T> pose(Vec3<T>(T(0), T(0), T(0.45)), Quat<T>(Eigen::AngleAxis<T>(T(a), Vec3<T>::UnitY())));
   ContactBuffer<T> c;
-  bool has = false;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), pose, this->big(), 0u, T(0.2), T(0.2), T(1), c, has).ok());
-  ASSERT_TRUE(has);
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), pose, this->big(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.2), T(0.2), T(1)})
+                  .ok());
+  ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 4u);
   this->expectNormalUp(c);
   // Bottom corners sit at z = 0.45 - 0.5 cos a -/+ 0.5 sin a.
@@ -75,21 +76,20 @@ TYPED_TEST(TriangleContacts, PenetratingBoxReportsNegativeSeparationAndKeepsTheD
 TYPED_TEST(TriangleContacts, ContactsStopBeyondContactDistance) {
   using T = TypeParam;
   ContactBuffer<T> c;
-  bool has = true;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, 0, 0.6), this->big(), 0u, T(0.05), T(0.01), T(1),
-                                       c, has).ok());
-  EXPECT_FALSE(has);
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, 0, 0.6), this->big(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.05), T(0.01), T(1)})
+                  .ok());
   EXPECT_EQ(c.count, 0u);
 }
 
 TYPED_TEST(TriangleContacts, CapsuleLyingFlatGivesTwoContactsUnderItsEnds) {
   using T = TypeParam;
   ContactBuffer<T> c;
-  bool has = false;
   // Radius 0.25, half height 1 along X, axis at z = 0.24: both ends 0.01 deep.
-  ASSERT_TRUE(generateTriangleContacts(Geometry<T>(CapsuleGeometry<T>(T(0.25), T(1))), this->at(0, 0, 0.24), this->big(),
-                                       0u, T(0.01), T(0.01), T(1), c, has).ok());
-  ASSERT_TRUE(has);
+  ASSERT_TRUE(generateTriangleContacts(Geometry<T>(CapsuleGeometry<T>(T(0.25), T(1))), this->at(0, 0, 0.24),
+                                       this->big(), 0u, c, TriangleContactSettings<T>{T(0.01), T(0.01), T(1)})
+                  .ok());
+  ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 2u);
   this->expectNormalUp(c);
   for (std::uint32_t i = 0; i < c.count; ++i) {
@@ -106,10 +106,10 @@ TYPED_TEST(TriangleContacts, BigBoxOverSmallTriangleContactsAtTheTriangleVertice
   small.verts[1] = Vec3<T>(T(0.3), T(-0.3), T(0));
   small.verts[2] = Vec3<T>(T(0), T(0.3), T(0));
   ContactBuffer<T> c;
-  bool has = false;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(2), T(2), T(0.5))), this->at(0, 0, 0.52), small, 0u,
-                                       T(0.05), T(0.01), T(1), c, has).ok());
-  ASSERT_TRUE(has);
+                                       c, TriangleContactSettings<T>{T(0.05), T(0.01), T(1)})
+                  .ok());
+  ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 3u);
   this->expectNormalUp(c);
   for (std::uint32_t i = 0; i < c.count; ++i) {
@@ -124,10 +124,10 @@ TYPED_TEST(TriangleContacts, EdgeOnBoxGivesOneContactAlongTheClosestFeatureNorma
   using T = TypeParam;
   // The box beside the triangle's edge y = -10 (|x| < 10 there), its face 0.03 away along -y, level with the plane.
   ContactBuffer<T> c;
-  bool has = false;
-  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, -10.53, 0.2), this->big(), 0u, T(0.05), T(0.01),
-                                       T(1), c, has).ok());
-  ASSERT_TRUE(has);
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0, -10.53, 0.2), this->big(), 0u, c,
+                                       TriangleContactSettings<T>{T(0.05), T(0.01), T(1)})
+                  .ok());
+  ASSERT_GT(c.count, 0u);
   ASSERT_EQ(c.count, 1u);
   EXPECT_NEAR(double(c.contacts[0].separation), 0.03, this->kTol);
   EXPECT_NEAR(double(c.contacts[0].normal.y()), -1.0, this->kTol);
@@ -141,10 +141,10 @@ TYPED_TEST(TriangleContacts, RestingConvexHullGivesFourContacts) {
   std::shared_ptr<const ConvexMesh<T>> hull;
   ASSERT_TRUE(cookConvexMesh(cube, hull).ok());
   ContactBuffer<T> c;
-  bool has = false;
   ASSERT_TRUE(generateTriangleContacts(Geometry<T>(ConvexMeshGeometry<T>(hull)), this->at(1, 1, 0.5), this->big(), 0u,
-                                       T(0.01), T(0.01), T(1), c, has).ok());
-  ASSERT_TRUE(has);
+                                       c, TriangleContactSettings<T>{T(0.01), T(0.01), T(1)})
+                  .ok());
+  ASSERT_GT(c.count, 0u);
   EXPECT_EQ(c.count, 4u);
   this->expectNormalUp(c);
   for (std::uint32_t i = 0; i < c.count; ++i) EXPECT_NEAR(double(c.contacts[i].separation), 0.0, this->kTol);
@@ -154,15 +154,19 @@ TYPED_TEST(TriangleContacts, InvalidInputReturnsAStatusAndWritesNothing) {
   using T = TypeParam;
   ContactBuffer<T> c;
   c.count = 3;
-  bool has = true;
-  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u, T(-1), T(0), T(1), c, has).code,
+  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u, c,
+                                     TriangleContactSettings<T>{T(-1), T(0), T(1)})
+                .code,
             StatusCode::InvalidArgument);
-  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u, T(0), T(0), T(0), c, has).code,
+  EXPECT_EQ(generateTriangleContacts(this->unitBox(), this->at(0, 0, 1), this->big(), 0u, c,
+                                     TriangleContactSettings<T>{T(0), T(0), T(0)})
+                .code,
             StatusCode::InvalidArgument);
-  EXPECT_EQ(generateTriangleContacts(Geometry<T>(SphereGeometry<T>(T(1))), this->at(0, 0, 1), this->big(), 0u, T(0),
-                                     T(0), T(1), c, has).code, StatusCode::Unsupported);
+  EXPECT_EQ(generateTriangleContacts(Geometry<T>(SphereGeometry<T>(T(1))), this->at(0, 0, 1), this->big(), 0u, c,
+                                     TriangleContactSettings<T>{T(0), T(0), T(1)})
+                .code,
+            StatusCode::Unsupported);
   EXPECT_EQ(c.count, 3u);
-  EXPECT_TRUE(has);
 }
 
 }  // namespace

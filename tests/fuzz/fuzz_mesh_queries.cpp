@@ -22,15 +22,16 @@ template <class T> void run(gq::fuzz::Bytes& in) {
   const HeightFieldGeometry<T> hf(hfData, hs, rs, cs);
   const std::uint32_t meshTriangles = mesh.mesh->inputTriangleCount();
   {
-    std::uint32_t results[8], count = 999;
-    bool overflow = false;
-    const std::uint32_t start = std::uint32_t(in.small(6));
-    Status s = findOverlapTriangleMesh(shape, pose, mesh, meshPose, results, 8u, start, overflow, count);
-    if (!s.ok()) fuzz::require(count == 999);
-    for (std::uint32_t i = 0; s.ok() && i < count; ++i) fuzz::require(results[i] < meshTriangles);
-    count = 999;
-    s = findOverlapHeightField(shape, pose, hf, meshPose, results, 8u, start, overflow, count);
-    if (!s.ok()) fuzz::require(count == 999);
+    std::uint32_t results[8];
+    const TriangleOverlapPage page{results, 8u, std::uint32_t(in.small(6))};
+    TriangleOverlapPageResult received;
+    received.count = 999;
+    Status s = findOverlapTriangleMesh(shape, pose, mesh, meshPose, page, received);
+    if (!s.ok()) fuzz::require(received.count == 999);
+    for (std::uint32_t i = 0; s.ok() && i < received.count; ++i) fuzz::require(results[i] < meshTriangles);
+    received.count = 999;
+    s = findOverlapHeightField(shape, pose, hf, meshPose, page, received);
+    if (!s.ok()) fuzz::require(received.count == 999);
   }
   {
     PenetrationResult<T> r;
@@ -66,8 +67,8 @@ template <class T> void run(gq::fuzz::Bytes& in) {
     const std::uint32_t* cachedIndex = in.flag() ? &cached : nullptr;
     const T inflation = in.flag() ? in.scalar<T>() : T(0);
     const bool doubleSided = in.flag();
-    const Status s = sweepTriangles<T>(dir, maxDist, shape, pose, tris, triCount, hit, hasHit, flags, cachedIndex,
-                                       inflation, doubleSided);
+    const Status s = sweepTriangles<T>(dir, maxDist, shape, pose, tris, triCount, hit, hasHit,
+                                       TriangleSweepSettings<T>{flags, cachedIndex, inflation, doubleSided});
     if (!s.ok()) fuzz::require(hasHit && hit.distance == T(-7777));
     else if (hasHit)
       fuzz::require(isFinite(hit.position) && isFinite(hit.normal) && std::isfinite(hit.distance) &&
@@ -76,11 +77,10 @@ template <class T> void run(gq::fuzz::Bytes& in) {
   if (triCount > 0) {
     ContactBuffer<T> contacts;
     contacts.count = 999;
-    bool hasContacts = true;
     const T contactDistance = in.scalar<T>(), margin = in.scalar<T>(), length = in.scalar<T>();
-    const Status s = generateTriangleContacts(shape, pose, tris[0], 3u, contactDistance, margin, length, contacts,
-                                              hasContacts);
-    if (!s.ok()) fuzz::require(contacts.count == 999 && hasContacts);
+    const Status s = generateTriangleContacts(shape, pose, tris[0], 3u, contacts,
+                                              TriangleContactSettings<T>{contactDistance, margin, length});
+    if (!s.ok()) fuzz::require(contacts.count == 999);
     for (std::uint32_t i = 0; s.ok() && i < contacts.count; ++i)
       fuzz::require(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&
                     std::isfinite(contacts.contacts[i].separation));

@@ -51,14 +51,18 @@ TYPED_TEST(BadInputMeshQueries, NaNPoseIsInvalidArgumentInEveryMeshQuery) {
   EXPECT_EQ(getTriangle(heightFieldGeometry<T>(), nanPose<T>(), 0u, tri).code, StatusCode::InvalidArgument);
   EXPECT_TRUE(sameBits(tri, sentinelTriangle<T>()));
 
-  std::uint32_t results[4] = {7, 7, 7, 7}, count = 4242;
-  bool overflow = true;
-  EXPECT_EQ(findOverlapTriangleMesh(sphere, nanPose<T>(), cubeMesh<T>(), Transform<T>(), results, 4u, 0u, overflow,
-                                    count).code, StatusCode::InvalidArgument);
-  EXPECT_EQ(findOverlapHeightField(sphere, Transform<T>(), heightFieldGeometry<T>(), nanPose<T>(), results, 4u, 0u,
-                                   overflow, count).code, StatusCode::InvalidArgument);
-  EXPECT_EQ(count, 4242u);
-  EXPECT_TRUE(overflow);
+  std::uint32_t results[4] = {7, 7, 7, 7};
+  TriangleOverlapPageResult received{4242, true};
+  EXPECT_EQ(findOverlapTriangleMesh(sphere, nanPose<T>(), cubeMesh<T>(), Transform<T>(),
+                                    TriangleOverlapPage{results, 4u, 0u}, received)
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(findOverlapHeightField(sphere, Transform<T>(), heightFieldGeometry<T>(), nanPose<T>(),
+                                   TriangleOverlapPage{results, 4u, 0u}, received)
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(received.count, 4242u);
+  EXPECT_TRUE(received.overflow);
   EXPECT_EQ(results[0], 7u);
 
   bool found = true;
@@ -83,36 +87,41 @@ TYPED_TEST(BadInputMeshQueries, NaNPoseIsInvalidArgumentInEveryMeshQuery) {
 
   ContactBuffer<T> contacts;
   contacts.count = 4242;
-  bool hasContacts = true;
-  EXPECT_EQ(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(1), T(1), T(1))), nanPose<T>(), unitTriangle<T>(),
-                                     0u, T(0.1), T(0.01), T(1), contacts, hasContacts).code,
+  EXPECT_EQ(generateTriangleContacts(Geometry<T>(BoxGeometry<T>(T(1), T(1), T(1))), nanPose<T>(), unitTriangle<T>(), 0u,
+                                     contacts, TriangleContactSettings<T>{T(0.1), T(0.01), T(1)})
+                .code,
             StatusCode::InvalidArgument);
   EXPECT_EQ(contacts.count, 4242u);
-  EXPECT_TRUE(hasContacts);
 }
 
 TYPED_TEST(BadInputMeshQueries, NullResultBufferWithNonZeroSizeIsInvalidArgument) {
   using T = TypeParam;
-  bool overflow = true;
-  std::uint32_t count = 4242;
+  TriangleOverlapPageResult received{4242, true};
   const Geometry<T> sphere = SphereGeometry<T>(T(0.5));
-  EXPECT_EQ(findOverlapTriangleMesh(sphere, Transform<T>(), cubeMesh<T>(), Transform<T>(), nullptr, 4u, 0u, overflow,
-                                    count).code, StatusCode::InvalidArgument);
-  EXPECT_EQ(findOverlapHeightField(sphere, Transform<T>(), heightFieldGeometry<T>(), Transform<T>(), nullptr, 4u, 0u,
-                                   overflow, count).code, StatusCode::InvalidArgument);
-  EXPECT_EQ(count, 4242u);
-  // bufferSize 0 with a null buffer is a valid "count only" call.
+  EXPECT_EQ(findOverlapTriangleMesh(sphere, Transform<T>(), cubeMesh<T>(), Transform<T>(),
+                                    TriangleOverlapPage{nullptr, 4u, 0u}, received)
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(findOverlapHeightField(sphere, Transform<T>(), heightFieldGeometry<T>(), Transform<T>(),
+                                   TriangleOverlapPage{nullptr, 4u, 0u}, received)
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(received.count, 4242u);
+  // Capacity 0 with a null buffer is a valid "count only" call.
   EXPECT_TRUE(findOverlapTriangleMesh(sphere, Transform<T>(Vec3<T>(T(1), T(0), T(0))), cubeMesh<T>(), Transform<T>(),
-                                      nullptr, 0u, 0u, overflow, count).ok());
+                                      TriangleOverlapPage{nullptr, 0u, 0u}, received)
+                  .ok());
 }
 
 TYPED_TEST(BadInputMeshQueries, ShapesOutsideTheSpecsListReturnUnsupported) {
   using T = TypeParam;
-  bool overflow = true;
-  std::uint32_t results[2], count = 4242;
+  std::uint32_t results[2];
+  TriangleOverlapPageResult received{4242, true};
   const Geometry<T> hull = ConvexMeshGeometry<T>(Cooked<T>::get().hull);
-  EXPECT_EQ(findOverlapTriangleMesh(hull, Transform<T>(), cubeMesh<T>(), Transform<T>(), results, 2u, 0u, overflow,
-                                    count).code, StatusCode::Unsupported);
+  EXPECT_EQ(findOverlapTriangleMesh(hull, Transform<T>(), cubeMesh<T>(), Transform<T>(),
+                                    TriangleOverlapPage{results, 2u, 0u}, received)
+                .code,
+            StatusCode::Unsupported);
   SweepHit<T> hit = sentinelSweepHit<T>();
   bool hasHit = true;
   const Triangle<T> triangles[1] = {unitTriangle<T>()};
@@ -122,11 +131,12 @@ TYPED_TEST(BadInputMeshQueries, ShapesOutsideTheSpecsListReturnUnsupported) {
   EXPECT_EQ(computeTriangleMeshPenetration(mtd, Geometry<T>(cubeMesh<T>()), Transform<T>(), cubeMesh<T>(),
                                            Transform<T>()).code, StatusCode::Unsupported);
   ContactBuffer<T> contacts;
-  bool hasContacts = true;
   EXPECT_EQ(generateTriangleContacts(Geometry<T>(SphereGeometry<T>(T(1))), Transform<T>(), unitTriangle<T>(), 0u,
-                                     T(0.1), T(0.01), T(1), contacts, hasContacts).code, StatusCode::Unsupported);
-  EXPECT_EQ(count, 4242u);
-  EXPECT_TRUE(hasHit && hasContacts && sameBits(mtd, sentinelPenetration<T>()));
+                                     contacts, TriangleContactSettings<T>{T(0.1), T(0.01), T(1)})
+                .code,
+            StatusCode::Unsupported);
+  EXPECT_EQ(received.count, 4242u);
+  EXPECT_TRUE(hasHit && sameBits(mtd, sentinelPenetration<T>()));
 }
 
 TYPED_TEST(BadInputMeshQueries, EmptyCallbackOrNegativeToleranceIsInvalidArgument) {
@@ -162,10 +172,14 @@ TYPED_TEST(BadInputMeshQueries, SweepTrianglesRejectsNullArraysNaNVerticesAndBad
   EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, static_cast<const Triangle<T>*>(nullptr), 2u, hit,
                            hasHit).code, StatusCode::InvalidArgument);
   const std::uint32_t cached = 2;
-  EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, triangles, 2u, hit, hasHit, kDefaultHitFlags,
-                           &cached).code, StatusCode::InvalidArgument);
   EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, triangles, 2u, hit, hasHit,
-                           kDefaultHitFlags | HitFlag::Mtd).code, StatusCode::InvalidArgument);
+                              TriangleSweepSettings<T>{kDefaultHitFlags, &cached})
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(10), sphere, above, triangles, 2u, hit, hasHit,
+                              TriangleSweepSettings<T>{kDefaultHitFlags | HitFlag::Mtd})
+                .code,
+            StatusCode::InvalidArgument);
   EXPECT_EQ(sweepTriangles<T>(-Vec3<T>::UnitZ(), T(-1), sphere, above, triangles, 2u, hit, hasHit).code,
             StatusCode::InvalidArgument);
   EXPECT_EQ(sweepTriangles<T>(Vec3<T>(T(0), T(0), T(-2)), T(10), sphere, above, triangles, 2u, hit, hasHit).code,
@@ -181,10 +195,10 @@ TYPED_TEST(BadInputMeshQueries, TriangleContactsRejectBadDistancesAndDegenerateO
   const Geometry<T> box = BoxGeometry<T>(T(1), T(1), T(1));
   ContactBuffer<T> contacts;
   contacts.count = 4242;
-  bool hasContacts = true;
   auto call = [&](const Triangle<T>& tri, T contactDistance, T margin, T toleranceLength) {
-    return generateTriangleContacts(box, Transform<T>(), tri, 0u, contactDistance, margin, toleranceLength, contacts,
-                                    hasContacts).code;
+    return generateTriangleContacts(box, Transform<T>(), tri, 0u, contacts,
+                                    TriangleContactSettings<T>{contactDistance, margin, toleranceLength})
+        .code;
   };
   EXPECT_EQ(call(unitTriangle<T>(), T(-0.1), T(0), T(1)), StatusCode::InvalidArgument);
   EXPECT_EQ(call(unitTriangle<T>(), T(0.1), kNaN<T>, T(1)), StatusCode::InvalidArgument);
@@ -196,7 +210,6 @@ TYPED_TEST(BadInputMeshQueries, TriangleContactsRejectBadDistancesAndDegenerateO
   nan.verts[0].y() = kNaN<T>;
   EXPECT_EQ(call(nan, T(0.1), T(0), T(1)), StatusCode::InvalidArgument);
   EXPECT_EQ(contacts.count, 4242u);
-  EXPECT_TRUE(hasContacts);
 }
 
 // A raw triangle is a pair query's second geometry: vertices more than 1e9 (float) / 1e75 (double) from the shape's
@@ -213,30 +226,32 @@ TYPED_TEST(BadInputMeshQueries, RawTrianglesBeyondThePairMagnitudeAreInvalidArgu
                           Quat<T>(T(-0.767184), T(0.422382), T(0.482723), T(0)).normalized());
   ContactBuffer<T> contacts;
   contacts.count = 4242;
-  bool hasContacts = true;
   const Geometry<T> box = BoxGeometry<T>(T(1), T(1), T(1));
-  const Status s = generateTriangleContacts(box, pose, tri, 0u, T(0.5), T(0.5), T(0.5), contacts, hasContacts);
+  const Status s =
+      generateTriangleContacts(box, pose, tri, 0u, contacts, TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)});
   EXPECT_EQ(s.code, StatusCode::InvalidArgument) << s.toString();
   EXPECT_NE(s.message.find("too far"), std::string::npos) << s.message;
   EXPECT_EQ(contacts.count, 4242u);
-  EXPECT_TRUE(hasContacts);
   SweepHit<T> hit = sentinelSweepHit<T>();
   bool hasHit = true;
   EXPECT_EQ(sweepTriangles<T>(Vec3<T>::UnitZ(), T(1), Geometry<T>(SphereGeometry<T>(T(1))), pose, &tri, 1u, hit, hasHit).code,
             StatusCode::InvalidArgument);
   EXPECT_TRUE(hasHit && sameBits(hit, sentinelSweepHit<T>()));
   const Geometry<T> hugeBox = BoxGeometry<T>(far, T(1), T(1));
-  EXPECT_EQ(generateTriangleContacts(hugeBox, Transform<T>(), unitTriangle<T>(), 0u, T(0.5), T(0.5), T(0.5), contacts,
-                                     hasContacts).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(generateTriangleContacts(hugeBox, Transform<T>(), unitTriangle<T>(), 0u, contacts,
+                                     TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)})
+                .code,
+            StatusCode::InvalidArgument);
   // At the bound: accepted, finite contacts.
   const T bound = std::is_same_v<T, float> ? T(1e9) : T(1e75);
   Triangle<T> wide;
   wide.verts[0] = Vec3<T>(-bound, -bound, T(0));
   wide.verts[1] = Vec3<T>(bound, -bound, T(0));
   wide.verts[2] = Vec3<T>(T(0), bound, T(0));
-  ASSERT_TRUE(generateTriangleContacts(box, Transform<T>(Vec3<T>(T(0), T(0), T(0.9))), wide, 0u, T(0.5), T(0.5), T(0.5),
-                                       contacts, hasContacts).ok());
-  for (std::uint32_t i = 0; hasContacts && i < contacts.count; ++i)
+  ASSERT_TRUE(generateTriangleContacts(box, Transform<T>(Vec3<T>(T(0), T(0), T(0.9))), wide, 0u, contacts,
+                                       TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)})
+                  .ok());
+  for (std::uint32_t i = 0; i < contacts.count; ++i)
     EXPECT_TRUE(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&
                 std::isfinite(contacts.contacts[i].separation));
 }

@@ -108,21 +108,21 @@ TYPED_TEST(NoNaN, MeshQueriesOverExtremeSizesAnswerFiniteOrAnError) {
         SweepHit<T> hit;
         bool hasHit = false;
         st = sweepTriangles<T>(grazing, T(4 * s), g, Transform<T>(pose.p + Vec3<T>(T(0), T(0), T(2 * s))), tris, 12u,
-                               hit, hasHit, kDefaultHitFlags, nullptr, T(0.001 * s));
+                               hit, hasHit, TriangleSweepSettings<T>{kDefaultHitFlags, nullptr, T(0.001 * s)});
         if (st.ok() && hasHit)
           EXPECT_TRUE(isFinite(hit.position) && isFinite(hit.normal) && std::isfinite(hit.distance)) << type << " " << s;
 
         ContactBuffer<T> contacts;
-        bool hasContacts = false;
-        st = generateTriangleContacts(g, pose, tris[2], 2u, T(0.1 * s), T(0.01 * s), T(s), contacts, hasContacts);
+        st = generateTriangleContacts(g, pose, tris[2], 2u, contacts,
+                                      TriangleContactSettings<T>{T(0.1 * s), T(0.01 * s), T(s)});
         for (std::uint32_t i = 0; st.ok() && i < contacts.count; ++i)
           EXPECT_TRUE(isFinite(contacts.contacts[i].position) && isFinite(contacts.contacts[i].normal) &&
                       std::isfinite(contacts.contacts[i].separation)) << type << " " << s;
 
-        std::uint32_t results[32], count = 0;
-        bool overflow = false;
-        st = findOverlapTriangleMesh(g, pose, mesh, meshPose, results, 32u, 0u, overflow, count);
-        for (std::uint32_t i = 0; st.ok() && i < count; ++i) EXPECT_LT(results[i], 12u);
+        std::uint32_t results[32];
+        TriangleOverlapPageResult received;
+        st = findOverlapTriangleMesh(g, pose, mesh, meshPose, TriangleOverlapPage{results, 32u, 0u}, received);
+        for (std::uint32_t i = 0; st.ok() && i < received.count; ++i) EXPECT_LT(results[i], 12u);
       }
       bool found = false;
       const Status st = findOverlapTriangleMeshPairs<T>([](std::uint32_t, std::uint32_t) { return true; }, mesh,

@@ -118,21 +118,21 @@ template <class T> void runScenario(const std::vector<Geometry<T>>& geoms, const
     d.vec(b.min), d.vec(b.max);
   }
   if (const auto* mesh = g1.template getIf<TriangleMeshGeometry<T>>()) {
-    std::uint32_t results[16], count = 0;
-    bool overflow = false;
-    d.status(findOverlapTriangleMesh(g0, s.pose0, *mesh, s.pose1, results, 16u, 0u, overflow, count));
-    d.value(count), d.value(overflow);
-    for (std::uint32_t i = 0; i < count; ++i) d.value(results[i]);
+    std::uint32_t results[16];
+    TriangleOverlapPageResult received;
+    d.status(findOverlapTriangleMesh(g0, s.pose0, *mesh, s.pose1, TriangleOverlapPage{results, 16u, 0u}, received));
+    d.value(received.count), d.value(received.overflow);
+    for (std::uint32_t i = 0; i < received.count; ++i) d.value(results[i]);
     PenetrationResult<T> r;
     d.status(computeTriangleMeshPenetration(r, g0, s.pose0, *mesh, s.pose1));
     d.value(r.penetrating), d.vec(r.direction), d.value(r.depth);
   }
   if (const auto* hf = g1.template getIf<HeightFieldGeometry<T>>()) {
-    std::uint32_t results[16], count = 0;
-    bool overflow = false;
-    d.status(findOverlapHeightField(g0, s.pose0, *hf, s.pose1, results, 16u, 0u, overflow, count));
-    d.value(count), d.value(overflow);
-    for (std::uint32_t i = 0; i < count; ++i) d.value(results[i]);
+    std::uint32_t results[16];
+    TriangleOverlapPageResult received;
+    d.status(findOverlapHeightField(g0, s.pose0, *hf, s.pose1, TriangleOverlapPage{results, 16u, 0u}, received));
+    d.value(received.count), d.value(received.overflow);
+    for (std::uint32_t i = 0; i < received.count; ++i) d.value(results[i]);
   }
 }
 

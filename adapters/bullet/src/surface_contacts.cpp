@@ -154,10 +154,11 @@ void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry
   const Real size = q.convex.view->size;
   if (contactGeom.type() != GeometryType::Custom) {
     ContactBuffer<Real> buffer;
-    bool has = false;
-    if (!generateTriangleContacts(contactGeom, q.convex.pose, tri, index, std::max(reach, Real(0)),
-                                  kMeshContactMarginFactor * size, size, buffer, has).ok())
-      return;
+    TriangleContactSettings<Real> settings;
+    settings.contactDistance = std::max(reach, Real(0));
+    settings.meshContactMargin = kMeshContactMarginFactor * size;
+    settings.toleranceLength = size;
+    if (!generateTriangleContacts(contactGeom, q.convex.pose, tri, index, buffer, settings).ok()) return;
     for (std::uint32_t i = 0; i < buffer.count; ++i)
       report(q, buffer.contacts[i].position, buffer.contacts[i].normal, buffer.contacts[i].separation, index,
              alongFace(buffer.contacts[i].normal, tri));
@@ -178,12 +179,11 @@ Geometry<Real> contactGeometry(const Geometry<Real>& g) {
 }
 
 Status overlappingTriangles(const PlacedShape& surface, const Geometry<Real>& box, const Pose& boxPose,
-                            std::uint32_t* page, std::uint32_t start, bool& more, std::uint32_t& count) {
+                            const TriangleOverlapPage& page, TriangleOverlapPageResult& received) {
   const Geometry<Real>& g = surface.view->geom;
   if (const auto* mesh = g.getIf<TriangleMeshGeometry<Real>>())
-    return findOverlapTriangleMesh(box, boxPose, *mesh, surface.pose, page, kTrianglePage, start, more, count);
-  return findOverlapHeightField(box, boxPose, g.get<HeightFieldGeometry<Real>>(), surface.pose, page, kTrianglePage,
-                                start, more, count);
+    return findOverlapTriangleMesh(box, boxPose, *mesh, surface.pose, page, received);
+  return findOverlapHeightField(box, boxPose, g.get<HeightFieldGeometry<Real>>(), surface.pose, page, received);
 }
 
 }  // namespace
@@ -197,14 +197,15 @@ void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold,
   const Geometry<Real> contactGeom = contactGeometry(a.view->geom);
   InternalEdgeFilter filter(sink);
   const SurfaceQuery q{a, b, threshold, filter};
-  std::array<std::uint32_t, kTrianglePage> page;
-  bool more = true;
-  for (std::uint32_t start = 0; more;) {
-    std::uint32_t count = 0;
-    if (!overlappingTriangles(b, box, boxPose, page.data(), start, more, count).ok()) break;
-    for (std::uint32_t i = 0; i < count; ++i) triangleContacts(q, page[i], contactGeom);
-    start += count;
-    if (count == 0) break;
+  std::array<std::uint32_t, kTrianglePage> indices;
+  TriangleOverlapPage page{indices.data(), kTrianglePage, 0};
+  for (bool more = true; more;) {
+    TriangleOverlapPageResult received;
+    if (!overlappingTriangles(b, box, boxPose, page, received).ok()) break;
+    for (std::uint32_t i = 0; i < received.count; ++i) triangleContacts(q, indices[i], contactGeom);
+    page.start += received.count;
+    more = received.overflow;
+    if (received.count == 0) break;
   }
   filter.flush();
 }

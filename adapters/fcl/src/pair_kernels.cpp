@@ -159,14 +159,15 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   std::uint32_t start = 0, nextPage = kFirstTrianglePage;
   const std::size_t first = out.size();
   for (;;) {
-    bool overflow = false;
-    std::uint32_t count = 0;
     // Exact candidates are contacts themselves: fetch no more than the result has room for (the query stops there).
     const std::uint32_t pageSize =
         exactCandidates && !withGeometry && room < nextPage ? std::uint32_t(room) : nextPage;
     nextPage = std::min(kTrianglePage, 4 * nextPage);
-    Status s = findOverlapTriangleMesh(query, queryPose, mesh, meshPose, page, pageSize, start, overflow, count);
+    TriangleOverlapPageResult received;
+    Status s =
+        findOverlapTriangleMesh(query, queryPose, mesh, meshPose, TriangleOverlapPage{page, pageSize, start}, received);
     if (!s.ok()) return s;
+    const std::uint32_t count = received.count;
     if (!withGeometry && !exactCandidates) {
       if (!instance) instance.emplace(mesh, meshPose);
       nearestFirst(*instance, queryPose.p, page, count);
@@ -187,7 +188,7 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
       if (out.size() - first >= room) return s;
     }
     start += count;
-    if (!overflow) return s;
+    if (!received.overflow) return s;
   }
 }
 

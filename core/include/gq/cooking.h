@@ -8,12 +8,15 @@
 #include <string>
 #include <vector>
 
-#include "gq/bvh.h"
 #include "gq/geometry.h"
 #include "gq/math.h"
 #include "gq/status.h"
 
 namespace gq {
+
+namespace detail {
+struct MeshAccel;  // core/src/bvh/bvh.h
+}  // namespace detail
 
 // ---- Convex hull -------------------------------------------------------------------------------------------
 template <class T> struct HullPolygon {
@@ -58,7 +61,10 @@ template <class T> struct TriangleMesh {
   std::vector<TriangleIndices> triangles;  // cooked order (BVH leaf order), degenerate triangles removed
   std::vector<std::uint32_t> inputIndex;   // cooked -> input triangle index (reported as faceIndex)
   std::vector<std::uint32_t> cookedIndex;  // input -> cooked index, kRemovedTriangle if removed
-  Bvh4 bvh;
+  // The BVH and its leaf triangle packets (a private layout, built by cookTriangleMesh; null in a mesh not made by
+  // it, which validation rejects), and their size in bytes.
+  std::shared_ptr<const detail::MeshAccel> accel;
+  std::size_t bvhBytes = 0;
   Bounds3<T> localBounds;
   // Vertices on the convex hull of the used vertices (all used vertices when the mesh is flat): the exact
   // world AABB under any scale and pose is the AABB of these.
@@ -66,8 +72,6 @@ template <class T> struct TriangleMesh {
   // Copies of the 3 vertices of every cooked triangle, in leaf order: a leaf's triangles are contiguous in memory
   // (one cache-friendly read instead of an index load plus three scattered vertex loads per triangle).
   std::vector<Vec3<T>> triangleVertices;
-  // Float SoA copies of each leaf's triangles for the SIMD ray pre-test (index: Bvh4Node::leafPacket).
-  std::vector<TrianglePacket4> trianglePackets;
   std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
 };
 

@@ -2,6 +2,7 @@
 // Mesh and heightfield queries (the spec's PxMeshQuery).
 #include <cstdint>
 #include <functional>
+#include <type_traits>
 
 #include "gq/geometry.h"
 #include "gq/hit.h"
@@ -31,20 +32,55 @@ Status getTriangle(const HeightFieldGeometry<T>& heightField, const Transform<T>
 
 
 // ---- Mesh and heightfield overlaps (PxMeshQuery::findOverlapTriangleMesh / findOverlapHeightField) ------------
+// One page of a triangle-overlap query: the first `start` overlapping triangles are skipped, then up to `capacity`
+// indices are written to `indices`. `indices` may be null only when capacity is 0 (a count-only call: overflow then
+// says whether any overlapping triangle exists past `start`).
+struct TriangleOverlapPage {
+  std::uint32_t* indices = nullptr;  // caller's buffer of `capacity` entries
+  std::uint32_t capacity = 0;        // entries `indices` holds
+  std::uint32_t start = 0;           // overlapping triangles to skip (the previous pages' counts)
+};
+// What a page received: `count` indices written; `overflow` is set when more overlapping triangles remain (ask for
+// the next page with start += count).
+struct TriangleOverlapPageResult {
+  std::uint32_t count = 0;
+  bool overflow = false;
+};
+
 // Triangles of the instance that a sphere, capsule or box (`geom`, other types: Unsupported) touches or crosses.
 // Indices are input triangle indices (heightfield: 2*cell or 2*cell+1), enumerated in a fixed order for a given
-// input. Paging: the first `startIndex` overlapping triangles are skipped, then up to `bufferSize` are written to
-// `results` and `count` receives how many; `overflow` is set when more overlapping triangles remain (call again with
-// startIndex += count). `results` may be null only when bufferSize is 0.
+// input, so pages are consistent across calls.
 template <class T>
 Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
-                               const Transform<T>& meshPose, std::uint32_t* results, std::uint32_t bufferSize,
-                               std::uint32_t startIndex, bool& overflow, std::uint32_t& count);
+                               const Transform<T>& meshPose, const TriangleOverlapPage& page,
+                               TriangleOverlapPageResult& result);
 template <class T>
 Status findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose,
                               const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
-                              std::uint32_t* results, std::uint32_t bufferSize, std::uint32_t startIndex,
-                              bool& overflow, std::uint32_t& count);
+                              const TriangleOverlapPage& page, TriangleOverlapPageResult& result);
+
+template <class T>
+[[deprecated("pass a TriangleOverlapPage and receive a TriangleOverlapPageResult")]] inline Status
+findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
+                        const Transform<T>& meshPose, std::uint32_t* results, std::uint32_t bufferSize,
+                        std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+  TriangleOverlapPageResult out;
+  const Status s =
+      findOverlapTriangleMesh(geom, pose, mesh, meshPose, TriangleOverlapPage{results, bufferSize, startIndex}, out);
+  if (s.ok()) { overflow = out.overflow; count = out.count; }
+  return s;
+}
+template <class T>
+[[deprecated("pass a TriangleOverlapPage and receive a TriangleOverlapPageResult")]] inline Status
+findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose, const HeightFieldGeometry<T>& heightField,
+                       const Transform<T>& heightFieldPose, std::uint32_t* results, std::uint32_t bufferSize,
+                       std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+  TriangleOverlapPageResult out;
+  const Status s = findOverlapHeightField(geom, pose, heightField, heightFieldPose,
+                                          TriangleOverlapPage{results, bufferSize, startIndex}, out);
+  if (s.ok()) { overflow = out.overflow; count = out.count; }
+  return s;
+}
 
 // ---- Mesh vs mesh triangle pairs (PxMeshQuery::findOverlapTriangleMesh with a report callback) ----------------
 // Receives (triangle of mesh0, triangle of mesh1), input indices; return false to stop the query.
@@ -75,15 +111,40 @@ Status computeHeightFieldPenetration(PenetrationResult<T>& result, const Geometr
                                      std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr);
 
 // ---- Sweep against an array of triangles (PxGeometryQuery::sweep with a PxTriangle buffer) ---------------------
+// The optional part of a triangle sweep.
+template <class T> struct TriangleSweepSettings {
+  // Defaults, AssumeNoInitialOverlap, PreciseSweep, MeshBothSides, AnyHit (MeshMultiple and Mtd: InvalidArgument).
+  HitFlags flags = kDefaultHitFlags;
+  // Optional, < triangleCount: this triangle is tested first (the previous frame's hit).
+  const std::uint32_t* cachedIndex = nullptr;
+  // >= 0, a length: grows the swept shape by a rounded shell.
+  T inflation = T(0);
+  // Disables back-face culling (as MeshBothSides does).
+  bool doubleSided = false;
+};
+
 // Sweeps a sphere, capsule or box (others: Unsupported) against `triangleCount` world-space triangles (front face
-// counter-clockwise). Flags: defaults, assumeNoInitialOverlap, preciseSweep, meshBothSides, anyHit (meshMultiple and
-// mtd: InvalidArgument). `cachedIndex` (optional, < triangleCount) is tested first; anyHit returns the first hit
-// found, otherwise the closest (ties: the triangle facing the sweep most, then the smaller index) with its array
-// index in faceIndex. doubleSided (or meshBothSides) disables back-face culling. `hasHit` says whether `hit` was written.
+// counter-clockwise). The cached triangle is tested first; AnyHit returns the first hit found, otherwise the closest
+// (ties: the triangle facing the sweep most, then the smaller index) with its array index in faceIndex. `hasHit`
+// says whether `hit` was written. The required arguments keep sweep()'s order (motion, swept shape, target, outputs).
 template <class T>
 Status sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
                       const Triangle<T>* triangles, std::uint32_t triangleCount, SweepHit<T>& hit, bool& hasHit,
-                      HitFlags hitFlags = kDefaultHitFlags, const std::uint32_t* cachedIndex = nullptr,
-                      T inflation = T(0), bool doubleSided = false);
+                      const TriangleSweepSettings<T>& settings = TriangleSweepSettings<T>());
+
+// (Flags is deduced, so a braced `{}` after hasHit selects the settings form.)
+template <class T, class Flags, std::enable_if_t<std::is_convertible_v<Flags, HitFlags>, int> = 0>
+[[deprecated("pass the flags, cachedIndex, inflation and doubleSided in a TriangleSweepSettings")]] inline Status
+sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
+               const Triangle<T>* triangles, std::uint32_t triangleCount, SweepHit<T>& hit, bool& hasHit,
+               Flags hitFlags, const std::uint32_t* cachedIndex = nullptr, T inflation = T(0),
+               bool doubleSided = false) {
+  TriangleSweepSettings<T> settings;
+  settings.flags = HitFlags(hitFlags);
+  settings.cachedIndex = cachedIndex;
+  settings.inflation = inflation;
+  settings.doubleSided = doubleSided;
+  return sweepTriangles(unitDir, maxDist, geom, pose, triangles, triangleCount, hit, hasHit, settings);
+}
 
 }  // namespace gq

@@ -4,6 +4,35 @@
 //  - validate their input and return a Status; on failure they write no output;
 //  - never throw;
 //  - are instantiated for float and double.
+//
+// Parameter order, one rule for every query here and in gq/mesh_query.h and gq/contacts.h:
+//   inputs, then outputs, then optional arguments with defaults (flags, inflation, warm-start cache, tolerance,
+//   iteration limit) or one settings struct (TriangleSweepSettings, TriangleContactSettings).
+// Except where PhysX puts the result first, kept so PhysX users' code reads the same: the result struct of
+// computePenetration, distance and distanceWithin (then beyond and maxDistance), computeTriangleMeshPenetration and
+// computeHeightFieldPenetration (PxGeometryQuery::computePenetration(direction, depth, ...)), the bounds of
+// computeGeomBounds (PxGeometryQuery::computeGeomBounds(bounds, ...)), and the report callback of
+// findOverlapTriangleMeshPairs. A paged output (findOverlapTriangleMesh / findOverlapHeightField) is a
+// TriangleOverlapPage (the caller's buffer, its capacity, the start) in and a TriangleOverlapPageResult out.
+//
+// Sign conventions (every pair, float and double; tests/core/sign_conventions_property_test.cpp checks the first
+// four rows against each other on seeded poses):
+//   DistanceResult::distance      > 0 apart, 0 touching, < 0 penetrating: minus the penetration depth (a triangle
+//                                 mesh or heightfield is a surface, not a solid: 0 from touching on)
+//   DistanceResult::normal        unit, from geom0 towards geom1; when penetrating, -PenetrationResult::direction
+//                                 (where the MTD is not unique, both separate the pair)
+//   PenetrationResult::direction  unit; translating geom0 by direction * depth separates (it points from geom1
+//                                 towards geom0); depth >= 0 and equals -distance
+//   overlap                       true exactly when distance <= 0 (touching overlaps)
+//   ContactPoint (contacts.h)     normal unit, from the triangle towards the geometry; separation > 0 gap, < 0 depth
+//   SweepHit::normal              against the motion (normal . unitDir <= 0), pushing the swept shape out of the
+//                                 target; an initial overlap reports distance 0 and normal -unitDir, or with
+//                                 HitFlag::Mtd distance = -depth and the normal out of the target
+//   RaycastHit::normal            the outward surface normal at the hit (a double-sided mesh: the side the ray hit);
+//                                 an origin inside a solid: distance 0, normal -unitDir
+//   PointDistanceResult::distance >= 0; 0 inside a solid
+//   plane                         x = 0 of its frame, normal +X; the solid half-space x <= 0 for overlaps, sweeps,
+//                                 penetration and distance
 #include <array>
 #include <cstdint>
 

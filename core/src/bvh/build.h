@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gq/bvh.h"
+#include "bvh/bvh.h"
 #include "gq/math.h"
 
 namespace gq::detail {

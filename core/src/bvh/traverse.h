@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "gq/bvh.h"
+#include "bvh/bvh.h"
 #include "gq/math.h"
 
 #ifdef GQ_SSE42

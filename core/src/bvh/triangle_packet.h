@@ -1,5 +1,5 @@
 #pragma once
-// Conservative SIMD pre-test of a ray against the (up to) 4 triangles of a leaf packet (gq/bvh.h TrianglePacket4),
+// Conservative SIMD pre-test of a ray against the (up to) 4 triangles of a leaf packet (bvh/bvh.h TrianglePacket4),
 // in float. It only decides which triangles need the exact watertight test in T (mesh/triangle.h): a triangle that
 // the exact test would hit is never rejected, so results stay exact in float and double.
 //
@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "gq/bvh.h"
+#include "bvh/bvh.h"
 #include "gq/math.h"
 
 #ifdef GQ_SSE42

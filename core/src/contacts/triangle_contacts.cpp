@@ -161,9 +161,12 @@ Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const
 
 template <class T>
 Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
-                                std::uint32_t triangleIndex, T contactDistance, T meshContactMargin, T toleranceLength,
-                                ContactBuffer<T>& contacts, bool& hasContacts) {
+                                std::uint32_t triangleIndex, ContactBuffer<T>& contacts,
+                                const TriangleContactSettings<T>& settings) {
   return detail::guarded([&]() -> Status {
+    const T contactDistance = settings.contactDistance;
+    const T meshContactMargin = settings.meshContactMargin;
+    const T toleranceLength = settings.toleranceLength;
     if (Status s = validateContacts(geom, pose, triangle, contactDistance, meshContactMargin, toleranceLength); !s.ok())
       return s;
     const detail::ConvexShape<T> a = detail::makeConvexShape(geom, pose);
@@ -242,15 +245,15 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
       out.separation = c.separation;
       out.triangleIndex = triangleIndex;
     }
-    hasContacts = contacts.count > 0;
     return Status();
   });
 }
 
 template Status generateTriangleContacts<float>(const Geometry<float>&, const Transform<float>&, const Triangle<float>&,
-                                                std::uint32_t, float, float, float, ContactBuffer<float>&, bool&);
+                                                std::uint32_t, ContactBuffer<float>&,
+                                                const TriangleContactSettings<float>&);
 template Status generateTriangleContacts<double>(const Geometry<double>&, const Transform<double>&,
-                                                 const Triangle<double>&, std::uint32_t, double, double, double,
-                                                 ContactBuffer<double>&, bool&);
+                                                 const Triangle<double>&, std::uint32_t,
+                                                 ContactBuffer<double>&, const TriangleContactSettings<double>&);
 
 }  // namespace gq

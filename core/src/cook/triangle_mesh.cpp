@@ -109,7 +109,8 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
     auto mesh = std::make_shared<TriangleMesh<T>>();
     mesh->vertices = vertices;
     std::vector<std::uint32_t> order;
-    mesh->bvh = detail::buildBvh4(primBounds, order);
+    auto accel = std::make_shared<detail::MeshAccel>();
+    accel->bvh = detail::buildBvh4(primBounds, order);
     mesh->triangles.resize(kept.size());
     mesh->inputIndex.resize(kept.size());
     mesh->cookedIndex.assign(triangles.size(), kRemovedTriangle);
@@ -123,7 +124,9 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
       for (std::uint32_t v : triangles[input]) mesh->triangleVertices.push_back(vertices[v]);
       for (std::uint32_t v : triangles[input]) usedFlag[v] = 1;
     }
-    mesh->trianglePackets = detail::buildTrianglePackets(mesh->bvh, mesh->triangleVertices);
+    accel->trianglePackets = detail::buildTrianglePackets(accel->bvh, mesh->triangleVertices);
+    mesh->bvhBytes = accel->bvh.bytes();
+    mesh->accel = std::move(accel);
     std::vector<std::uint32_t> used;
     for (std::uint32_t v = 0; v < vertices.size(); ++v)
       if (usedFlag[v]) {
@@ -136,7 +139,7 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
       report->inputTriangles = std::uint32_t(triangles.size());
       report->removedDegenerate = std::uint32_t(triangles.size() - kept.size());
       report->cookedTriangles = std::uint32_t(kept.size());
-      report->bvhBytes = mesh->bvh.bytes();
+      report->bvhBytes = mesh->bvhBytes;
     }
     out = std::move(mesh);
     return Status();

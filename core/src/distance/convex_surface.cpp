@@ -32,7 +32,7 @@ template <class T> struct Best {
 // whose box passes is pruned by the shape's ball too before its GJK (hulls and boxes: the ball test takes mesh-convex30
 // distance in the FCL adapter from ~206,000 to ~165,000 instructions).
 template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const MeshSurface<T>& mesh, Best<T>& best) {
-  const Bvh4& bvh = mesh.mesh().bvh;
+  const Bvh4& bvh = mesh.mesh().accel->bvh;
   if (bvh.rootChild == Bvh4Node::kEmpty) return;
   const Bounds3<T> box = shape.worldBounds();
   const bool ballBound = shape.distanceRunsGjk();  // a triangle's ball bound before its GJK
@@ -59,7 +59,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
       }
       continue;
     }
-    const Bvh4Node& node = mesh.mesh().bvh.nodes[e.ref];
+    const Bvh4Node& node = mesh.mesh().accel->bvh.nodes[e.ref];
     Entry children[4];
     int n = 0;
     for (int lane = 0; lane < 4; ++lane) {
@@ -111,7 +111,7 @@ Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, cons
   Best<T> best;
   const auto* m = g1.template getIf<TriangleMeshGeometry<T>>();
   // An empty mesh keeps its status; a heightfield without a cell within the bound (holes included) is beyond it.
-  const bool searchable = !m || m->mesh->bvh.rootChild != Bvh4Node::kEmpty;
+  const bool searchable = !m || m->mesh->accel->bvh.rootChild != Bvh4Node::kEmpty;
   if (cache) cache->iterations = 0;
   if (farEnough < T(0) && searchable) {  // nothing of a surface is closer than 0
     out.distance = surfaceBoundBeyond(farEnough);

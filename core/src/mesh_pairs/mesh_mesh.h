@@ -37,8 +37,8 @@ template <class T> struct BvhOverlapEntry {
 // fn(cookedA, triA, cookedB, triB) returns true to stop; returns whether it stopped.
 template <class T, class PairFn>
 bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T margin, PairFn&& fn) {
-  const Bvh4& bvhA = a.mesh().bvh;
-  const Bvh4& bvhB = b.mesh().bvh;
+  const Bvh4& bvhA = a.mesh().accel->bvh;
+  const Bvh4& bvhB = b.mesh().accel->bvh;
   if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return false;
   const auto meets = [margin](const Bounds3<T>& x, const Bounds3<T>& y) { return grown(x, margin).overlaps(y); };
   // A's box against B's node on both sets of face axes (a separating plane on either set proves the nodes apart).
@@ -122,8 +122,8 @@ MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>
                                    T limitSq = std::numeric_limits<T>::infinity()) {
   MeshPairClosest<T> best;
   best.distSq = limitSq;
-  const Bvh4& bvhA = a.mesh().bvh;
-  const Bvh4& bvhB = b.mesh().bvh;
+  const Bvh4& bvhA = a.mesh().accel->bvh;
+  const Bvh4& bvhB = b.mesh().accel->bvh;
   if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return best;
   struct Entry {
     BvhPairEntry<T> pair;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bounds/bounds.h"
+#include "bvh/bvh.h"
 #include "cook/height_field_layout.h"
 #include "gq/cooking.h"
 #include "gq/mesh_query.h"
@@ -136,7 +137,7 @@ template <class T> class MeshSurface {
   }
 
   template <class Fn> bool forEachTriangle(const Bounds3<T>& worldBox, Fn&& fn) const {
-    const Bvh4& bvh = inst_.mesh.bvh;
+    const Bvh4& bvh = inst_.mesh.accel->bvh;
     if (bvh.rootChild == Bvh4Node::kEmpty) return false;
     const FloatBounds q = toFloatBounds(toMeshSpace(worldBox));
     std::uint32_t stack[kStackSize];

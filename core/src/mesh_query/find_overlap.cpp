@@ -21,15 +21,18 @@ template <class T> Status checkQueryShape(const Geometry<T>& g, const Transform<
   return Status();
 }
 
-template <class T> Status checkBuffer(const std::uint32_t* results, std::uint32_t bufferSize) {
-  if (results == nullptr && bufferSize > 0) return Status::invalid("results is null but bufferSize is not 0");
+Status checkPage(const TriangleOverlapPage& page) {
+  if (page.indices == nullptr && page.capacity > 0)
+    return Status::invalid("page.indices is null but page.capacity is not 0");
   return Status();
 }
 
-// Walks the overlapping triangles in the surface's fixed order, skipping the first startIndex.
+// Walks the overlapping triangles in the surface's fixed order, skipping the first page.start.
 template <class T, class Surface>
-void collectOverlaps(const detail::TriangleQueryShape<T>& shape, const Surface& surface, std::uint32_t* results,
-                     std::uint32_t bufferSize, std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+void collectOverlaps(const detail::TriangleQueryShape<T>& shape, const Surface& surface,
+                     const TriangleOverlapPage& page, TriangleOverlapPageResult& result) {
+  std::uint32_t* const results = page.indices;
+  const std::uint32_t bufferSize = page.capacity, startIndex = page.start;
   std::uint32_t seen = 0, written = 0;
   bool more = false;
   surface.forEachTriangle(shape.cullBounds(), [&](std::uint32_t index, const Triangle<T>& tri) {
@@ -42,23 +45,23 @@ void collectOverlaps(const detail::TriangleQueryShape<T>& shape, const Surface& 
     results[written++] = index;
     return false;
   });
-  overflow = more;
-  count = written;
+  result.overflow = more;
+  result.count = written;
 }
 
 }  // namespace
 
 template <class T>
 Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
-                               const Transform<T>& meshPose, std::uint32_t* results, std::uint32_t bufferSize,
-                               std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+                               const Transform<T>& meshPose, const TriangleOverlapPage& page,
+                               TriangleOverlapPageResult& result) {
   return detail::guarded([&]() -> Status {
     if (Status s = checkQueryShape(geom, pose); !s.ok()) return s;
     if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), meshPose, "meshPose"); !s.ok()) return s;
-    if (Status s = checkBuffer<T>(results, bufferSize); !s.ok()) return s;
+    if (Status s = checkPage(page); !s.ok()) return s;
     const detail::TriangleQueryShape<T> shape(geom, pose.relativeTo(meshPose));
     const detail::MeshSurface<T> surface(mesh, Transform<T>());
-    collectOverlaps(shape, surface, results, bufferSize, startIndex, overflow, count);
+    collectOverlaps(shape, surface, page, result);
     return Status();
   });
 }
@@ -66,33 +69,32 @@ Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose
 template <class T>
 Status findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose,
                               const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
-                              std::uint32_t* results, std::uint32_t bufferSize, std::uint32_t startIndex,
-                              bool& overflow, std::uint32_t& count) {
+                              const TriangleOverlapPage& page, TriangleOverlapPageResult& result) {
   return detail::guarded([&]() -> Status {
     if (Status s = checkQueryShape(geom, pose); !s.ok()) return s;
     if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), heightFieldPose, "heightFieldPose"); !s.ok())
       return s;
     if (!detail::heightFieldIsWellFormed(*heightField.heightField))
       return Status::invalid("heightfield data is empty or inconsistent (use cookHeightField)");
-    if (Status s = checkBuffer<T>(results, bufferSize); !s.ok()) return s;
+    if (Status s = checkPage(page); !s.ok()) return s;
     const detail::TriangleQueryShape<T> shape(geom, pose.relativeTo(heightFieldPose));
     const detail::HeightFieldSurface<T> surface(heightField, Transform<T>());
-    collectOverlaps(shape, surface, results, bufferSize, startIndex, overflow, count);
+    collectOverlaps(shape, surface, page, result);
     return Status();
   });
 }
 
 template Status findOverlapTriangleMesh<float>(const Geometry<float>&, const Transform<float>&,
                                                const TriangleMeshGeometry<float>&, const Transform<float>&,
-                                               std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+                                               const TriangleOverlapPage&, TriangleOverlapPageResult&);
 template Status findOverlapTriangleMesh<double>(const Geometry<double>&, const Transform<double>&,
                                                 const TriangleMeshGeometry<double>&, const Transform<double>&,
-                                                std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+                                                const TriangleOverlapPage&, TriangleOverlapPageResult&);
 template Status findOverlapHeightField<float>(const Geometry<float>&, const Transform<float>&,
                                               const HeightFieldGeometry<float>&, const Transform<float>&,
-                                              std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+                                              const TriangleOverlapPage&, TriangleOverlapPageResult&);
 template Status findOverlapHeightField<double>(const Geometry<double>&, const Transform<double>&,
                                                const HeightFieldGeometry<double>&, const Transform<double>&,
-                                               std::uint32_t*, std::uint32_t, std::uint32_t, bool&, std::uint32_t&);
+                                               const TriangleOverlapPage&, TriangleOverlapPageResult&);
 
 }  // namespace gq

@@ -53,7 +53,7 @@ void pointDistanceTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform
       }
     }
   };
-  traverseNearest(mesh.bvh, bestSq, lowerBound, leaf);
+  traverseNearest(mesh.accel->bvh, bestSq, lowerBound, leaf);
   out.distance = std::sqrt(bestSq);
   out.closestPoint = pose.transform(bestPoint);
   out.closestIndex = mesh.inputIndex[bestCooked];

@@ -37,7 +37,7 @@ template <class T> class MeshRaycaster {
   // Cooked indices of the leaf's triangles that pass the packet pre-test, as a bit mask over first + i.
   int candidates(std::uint32_t leafRef, std::uint32_t packet, float tMax) const {
     const int lanes = (1 << Bvh4Node::leafCount(leafRef)) - 1;
-    return packetCandidates(mesh_.trianglePackets[packet], packetRay_, tMax, cull_) & lanes;
+    return packetCandidates(mesh_.accel->trianglePackets[packet], packetRay_, tMax, cull_) & lanes;
   }
 
   bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
@@ -53,7 +53,7 @@ template <class T> class MeshRaycaster {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
-    traverseRayLeaves(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    traverseRayLeaves(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
       for (int mask = candidates(ref, packet, tMax); mask; mask &= mask - 1) {
         const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
@@ -77,7 +77,7 @@ template <class T> class MeshRaycaster {
     auto farther = [](const RawHit<T>& a, const RawHit<T>& b) { return a.tri.t < b.tri.t; };  // max-heap on t
     T limit = maxDist;
     float tMax = floatCeil(maxDist);
-    traverseRayLeaves(mesh_.bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    traverseRayLeaves(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
       for (int mask = candidates(ref, packet, tMax); mask; mask &= mask - 1) {
         const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));

@@ -43,7 +43,7 @@ template <class T> T childEntry(const FatRay<T>& ray, const Bvh4Node& n, int lan
 // current pruning distance.
 template <class T, class TMax, class Visit>
 void traverseFatRay(const TriangleMesh<T>& mesh, const FatRay<T>& ray, TMax&& tMax, Visit&& visit) {
-  const Bvh4& bvh = mesh.bvh;
+  const Bvh4& bvh = mesh.accel->bvh;
   if (bvh.rootChild == Bvh4Node::kEmpty) return;
   struct Entry {
     std::uint32_t ref;
@@ -121,7 +121,7 @@ void sweepConvexTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, cons
   if (!(out.initialOverlap && q.mtd)) return;
   // The triangles overlapping at the start: those whose boxes meet the start box.
   std::vector<std::uint32_t> candidates;
-  collectTriangles(inst.mesh.bvh, toFloatBounds(startBox), candidates);
+  collectTriangles(inst.mesh.accel->bvh, toFloatBounds(startBox), candidates);
   TriangleMtdPicker<T> mtd;
   for (const std::uint32_t cooked : candidates) {
     const Triangle<T> tri = inst.worldTriangle(cooked);

@@ -56,8 +56,12 @@ template <class T> Triangle<T> shifted(const Triangle<T>& tri, const Vec3<T>& or
 template <class T>
 Status sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
                       const Triangle<T>* triangles, std::uint32_t triangleCount, SweepHit<T>& hit, bool& hasHit,
-                      HitFlags hitFlags, const std::uint32_t* cachedIndex, T inflation, bool doubleSided) {
+                      const TriangleSweepSettings<T>& settings) {
   return detail::guarded([&]() -> Status {
+    const HitFlags hitFlags = settings.flags;
+    const std::uint32_t* cachedIndex = settings.cachedIndex;
+    const T inflation = settings.inflation;
+    const bool doubleSided = settings.doubleSided;
     if (Status s = validateTriangleSweep(unitDir, maxDist, geom, pose, triangles, triangleCount, hitFlags, cachedIndex,
                                          inflation);
         !s.ok())
@@ -116,10 +120,10 @@ Status sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom
 }
 
 template Status sweepTriangles<float>(const Vec3<float>&, float, const Geometry<float>&, const Transform<float>&,
-                                      const Triangle<float>*, std::uint32_t, SweepHit<float>&, bool&, HitFlags,
-                                      const std::uint32_t*, float, bool);
+                                      const Triangle<float>*, std::uint32_t, SweepHit<float>&, bool&,
+                                      const TriangleSweepSettings<float>&);
 template Status sweepTriangles<double>(const Vec3<double>&, double, const Geometry<double>&, const Transform<double>&,
-                                       const Triangle<double>*, std::uint32_t, SweepHit<double>&, bool&, HitFlags,
-                                       const std::uint32_t*, double, bool);
+                                       const Triangle<double>*, std::uint32_t, SweepHit<double>&, bool&,
+                                       const TriangleSweepSettings<double>&);
 
 }  // namespace gq

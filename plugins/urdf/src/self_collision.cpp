@@ -99,8 +99,87 @@ template <class T> bool cullBoxIsTheBox(const Geometry<T>& g, const detail::Cull
 
 }  // namespace
 
+template <class T> struct SelfCollisionChecker<T>::Impl {
+  Impl(std::shared_ptr<const RobotModel<T>> model, const CheckerOptions& options);
+  Status checkSelfCollision(const std::vector<T>& q, CollisionResult& result, const CollisionRequest& request);
+  Status selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result);
+  Status checkSelfCollisionBatch(const std::vector<std::vector<T>>& qs, std::vector<std::uint8_t>& colliding);
+
+  // Fixed per shape, in the frame of its rigid body (the links joined to it by fixed joints): an enclosing sphere
+  // and an enclosing box, both grown by the culling slack; the box is carried to the world as an oriented box.
+  struct ShapeBound {
+    std::uint32_t body = 0;
+    Transform<T> poseInBody;
+    Vec3<T> centreInBody = Vec3<T>::Zero();
+    T radius = T(0);
+    Vec3<T> boxCentre = Vec3<T>::Zero();   // body frame
+    Mat3<T> boxAxes = Mat3<T>::Identity();  // columns: box axes in the body frame
+    Vec3<T> halfExtents = Vec3<T>::Zero();
+    bool hasCapsule = false;  // an enclosing capsule (body frame) tighter than the sphere; else the sphere
+    Vec3<T> capsuleStart = Vec3<T>::Zero(), capsuleSpan = Vec3<T>::Zero();
+    T capsuleRadius = T(0);
+    bool hasHull = false;  // mesh shapes: `hull` is their convex hull, tested before the triangles
+    Geometry<T> hull;
+    bool valid = false;     // validateGeometry passed (shape and hull): core's kernels may be called directly
+    bool exactBox = false;  // a box whose culling box is itself: the oriented-box SAT decides box-box pairs
+  };
+  // Capsule enclosing every shape of a link (body frame), when tighter than the link sphere.
+  struct LinkCapsule {
+    bool used = false;
+    Vec3<T> start = Vec3<T>::Zero(), span = Vec3<T>::Zero();
+    T radius = T(0);
+  };
+  // A link pair the allowed-collision matrix leaves, with what its shape loop needs.
+  struct CheckedPair {
+    LinkPair links;
+    T reach2 = T(0);            // (sum of the link sphere radii)^2: centres farther apart than this cull the pair
+    bool shapeSpheres = false;  // a link has several shapes: test shape spheres and capsules before the boxes
+    bool linkCapsules = false;  // a link has a capsule: test link capsules after the link spheres
+  };
+
+  void orderPairsByContactFrequency(std::uint32_t samples);
+  Status placeBodies(const std::vector<T>& q);
+  void placeLinkSpheres();
+  void placeShapeSpheres();
+  void placeShape(std::uint32_t shape);
+  void placeCapsule(std::uint32_t shape);
+  void placeLinkCapsule(std::uint32_t link);
+  bool linkCapsulesDisjoint(std::uint32_t linkA, std::uint32_t linkB);
+  const Transform<T>& shapePose(std::uint32_t shape);
+  bool shapesMayTouch(std::uint32_t shapeA, std::uint32_t shapeB, bool shapeSpheres);
+  Status overlapShapes(const Geometry<T>& a, const Transform<T>& poseA, const Geometry<T>& b, const Transform<T>& poseB,
+                       bool valid, bool& hit);
+  Status narrowPhase(std::uint32_t shapeA, std::uint32_t shapeB, bool& hit);
+  Status linkPairCollides(const CheckedPair& pair, bool& hit);
+
+  std::shared_ptr<const RobotModel<T>> model_;
+  std::shared_ptr<const detail::KinematicChain<T>> chain_;  // compiled forward kinematics (immutable, shared)
+  std::vector<CheckedPair> checkedPairs_;    // link pairs with shapes that the allowed-collision matrix leaves,
+                                             // most often touching first (orderPairsByContactFrequency)
+  std::vector<std::uint32_t> shapedLinks_;   // links with at least one shape
+  std::vector<ShapeBound> shapeBounds_;
+  std::vector<std::uint32_t> linkBody_;
+  std::vector<Vec3<T>> linkCentreInBody_;    // per link: sphere enclosing its shapes' spheres
+  std::vector<T> linkRadius_;
+  std::vector<LinkCapsule> linkCapsules_;
+  T slack_ = T(0);                           // absolute culling slack (rounding of world placements)
+  // Per configuration.
+  std::vector<Mat3<T>> bodyRotations_;
+  std::vector<Vec3<T>> bodyPositions_;
+  std::vector<Quat<T>> bodyQuats_;                   // valid when quatStamp_[b] == stamp_
+  std::vector<Vec3<T>> linkCentres_, shapeCentres_;  // world sphere centres
+  std::vector<Transform<T>> shapePoses_;             // valid when poseStamp_[s] == stamp_
+  std::vector<OrientedBox<T>> shapeBoxes_;           // valid when boxStamp_[s] == stamp_
+  std::vector<Vec3<T>> capsuleStarts_, capsuleSpans_;  // world; valid when capsuleStamp_[s] == stamp_
+  std::vector<Vec3<T>> linkCapsuleStarts_, linkCapsuleSpans_;  // world; valid when linkCapsuleStamp_[l] == stamp_
+  std::vector<std::uint32_t> boxStamp_, poseStamp_, quatStamp_, capsuleStamp_, linkCapsuleStamp_;
+  std::uint32_t stamp_ = 0;
+  std::vector<LinkPair> hits_;              // colliding pairs found so far in this call
+  std::size_t lastNarrow_ = 0;
+};
+
 template <class T>
-SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model, const CheckerOptions& options)
+SelfCollisionChecker<T>::Impl::Impl(std::shared_ptr<const RobotModel<T>> model, const CheckerOptions& options)
     : model_(std::move(model)), chain_(std::make_shared<detail::KinematicChain<T>>(*model_)) {
   const RobotModel<T>& m = *model_;
   const std::size_t links = m.links.size(), shapes = m.shapes.size();
@@ -192,7 +271,7 @@ SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T
 }
 
 // Pairs that touch often go first (pair_order.h); checks in the constructor's sampling see the link order.
-template <class T> void SelfCollisionChecker<T>::orderPairsByContactFrequency(std::uint32_t samples) {
+template <class T> void SelfCollisionChecker<T>::Impl::orderPairsByContactFrequency(std::uint32_t samples) {
   CollisionRequest all;
   all.allPairs = true;
   detail::orderByContactFrequency(
@@ -200,7 +279,7 @@ template <class T> void SelfCollisionChecker<T>::orderPairsByContactFrequency(st
       [&](const std::vector<T>& q, CollisionResult& r) { return checkSelfCollision(q, r, all); }, samples);
 }
 
-template <class T> Status SelfCollisionChecker<T>::placeBodies(const std::vector<T>& q) {
+template <class T> Status SelfCollisionChecker<T>::Impl::placeBodies(const std::vector<T>& q) {
   Status s = chain_->place(q, bodyRotations_, bodyPositions_);
   if (!s.ok()) return s;
   if (++stamp_ == 0) {  // wrapped: forget every placement
@@ -215,7 +294,7 @@ template <class T> Status SelfCollisionChecker<T>::placeBodies(const std::vector
 }
 
 // Local pointers and a local result: the stores cannot alias the inputs, so nothing is reloaded per link.
-template <class T> void SelfCollisionChecker<T>::placeLinkSpheres() {
+template <class T> void SelfCollisionChecker<T>::Impl::placeLinkSpheres() {
   const Mat3<T>* rotations = bodyRotations_.data();
   const Vec3<T>* positions = bodyPositions_.data();
   const std::uint32_t* bodies = linkBody_.data();
@@ -228,7 +307,7 @@ template <class T> void SelfCollisionChecker<T>::placeLinkSpheres() {
   }
 }
 
-template <class T> void SelfCollisionChecker<T>::placeShapeSpheres() {
+template <class T> void SelfCollisionChecker<T>::Impl::placeShapeSpheres() {
   for (std::size_t i = 0; i < shapeBounds_.size(); ++i) {
     const ShapeBound& sb = shapeBounds_[i];
     shapeCentres_[i].noalias() = bodyRotations_[sb.body] * sb.centreInBody;
@@ -237,7 +316,7 @@ template <class T> void SelfCollisionChecker<T>::placeShapeSpheres() {
 }
 
 // The shape's oriented box in the world (for the midphase).
-template <class T> void SelfCollisionChecker<T>::placeShape(std::uint32_t i) {
+template <class T> void SelfCollisionChecker<T>::Impl::placeShape(std::uint32_t i) {
   if (boxStamp_[i] == stamp_) return;
   boxStamp_[i] = stamp_;
   const ShapeBound& sb = shapeBounds_[i];
@@ -249,7 +328,7 @@ template <class T> void SelfCollisionChecker<T>::placeShape(std::uint32_t i) {
   box.halfExtents = sb.halfExtents;
 }
 
-template <class T> void SelfCollisionChecker<T>::placeCapsule(std::uint32_t i) {
+template <class T> void SelfCollisionChecker<T>::Impl::placeCapsule(std::uint32_t i) {
   if (capsuleStamp_[i] == stamp_) return;
   capsuleStamp_[i] = stamp_;
   const ShapeBound& sb = shapeBounds_[i];
@@ -260,7 +339,7 @@ template <class T> void SelfCollisionChecker<T>::placeCapsule(std::uint32_t i) {
 }
 
 // A link without a capsule of its own is its sphere: a capsule of zero span.
-template <class T> void SelfCollisionChecker<T>::placeLinkCapsule(std::uint32_t l) {
+template <class T> void SelfCollisionChecker<T>::Impl::placeLinkCapsule(std::uint32_t l) {
   if (linkCapsuleStamp_[l] == stamp_) return;
   linkCapsuleStamp_[l] = stamp_;
   const LinkCapsule& c = linkCapsules_[l];
@@ -275,7 +354,7 @@ template <class T> void SelfCollisionChecker<T>::placeLinkCapsule(std::uint32_t 
   linkCapsuleSpans_[l].noalias() = r * c.span;
 }
 
-template <class T> bool SelfCollisionChecker<T>::linkCapsulesDisjoint(std::uint32_t a, std::uint32_t b) {
+template <class T> bool SelfCollisionChecker<T>::Impl::linkCapsulesDisjoint(std::uint32_t a, std::uint32_t b) {
   placeLinkCapsule(a);
   placeLinkCapsule(b);
   return capsulesDisjoint(linkCapsuleStarts_[a], linkCapsuleSpans_[a],
@@ -285,7 +364,7 @@ template <class T> bool SelfCollisionChecker<T>::linkCapsulesDisjoint(std::uint3
 
 // The shape's pose for the narrow phase: the body's rotation as a quaternion (once per body and configuration)
 // composed with the shape's constant pose in the body.
-template <class T> const Transform<T>& SelfCollisionChecker<T>::shapePose(std::uint32_t i) {
+template <class T> const Transform<T>& SelfCollisionChecker<T>::Impl::shapePose(std::uint32_t i) {
   if (poseStamp_[i] == stamp_) return shapePoses_[i];
   poseStamp_[i] = stamp_;
   const std::uint32_t b = shapeBounds_[i].body;
@@ -299,7 +378,7 @@ template <class T> const Transform<T>& SelfCollisionChecker<T>::shapePose(std::u
 
 // Shape spheres and capsules (only when a link has several shapes: a single shape's sphere and capsule are its
 // link's, tested already; a sphere stands in for a shape without a capsule), then oriented boxes.
-template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa, std::uint32_t sb, bool shapeSpheres) {
+template <class T> bool SelfCollisionChecker<T>::Impl::shapesMayTouch(std::uint32_t sa, std::uint32_t sb, bool shapeSpheres) {
   if (shapeSpheres) {
     const ShapeBound& a = shapeBounds_[sa];
     const ShapeBound& b = shapeBounds_[sb];
@@ -322,7 +401,7 @@ template <class T> bool SelfCollisionChecker<T>::shapesMayTouch(std::uint32_t sa
 // gq::overlap, or for convex-hull pairs of validated shapes core's convex kernel directly (the same answer without
 // the façade's validation and relative pose: ~500 instructions per call).
 template <class T>
-Status SelfCollisionChecker<T>::overlapShapes(const Geometry<T>& ga, const Transform<T>& pa, const Geometry<T>& gb,
+Status SelfCollisionChecker<T>::Impl::overlapShapes(const Geometry<T>& ga, const Transform<T>& pa, const Geometry<T>& gb,
                                               const Transform<T>& pb, bool valid, bool& hit) {
   if (valid && convexKernelPair(ga, gb)) {
     hit = gq::detail::overlapConvexShapes(ga, pa, gb, pb);
@@ -332,7 +411,7 @@ Status SelfCollisionChecker<T>::overlapShapes(const Geometry<T>& ga, const Trans
 }
 
 // Mesh shapes first meet as their convex hulls (GJK): disjoint hulls prove disjoint meshes.
-template <class T> Status SelfCollisionChecker<T>::narrowPhase(std::uint32_t sa, std::uint32_t sb, bool& hit) {
+template <class T> Status SelfCollisionChecker<T>::Impl::narrowPhase(std::uint32_t sa, std::uint32_t sb, bool& hit) {
   const Geometry<T>& ga = model_->shapes[sa].geometry;
   const Geometry<T>& gb = model_->shapes[sb].geometry;
   const Transform<T>& pa = shapePose(sa);
@@ -351,7 +430,7 @@ template <class T> Status SelfCollisionChecker<T>::narrowPhase(std::uint32_t sa,
   return overlapShapes(ga, pa, gb, pb, valid, hit);
 }
 
-template <class T> Status SelfCollisionChecker<T>::linkPairCollides(const CheckedPair& pair, bool& hit) {
+template <class T> Status SelfCollisionChecker<T>::Impl::linkPairCollides(const CheckedPair& pair, bool& hit) {
   hit = false;
   for (std::uint32_t sa : model_->links[pair.links.a].shapes)
     for (std::uint32_t sb : model_->links[pair.links.b].shapes) {
@@ -369,7 +448,7 @@ template <class T> Status SelfCollisionChecker<T>::linkPairCollides(const Checke
 }
 
 template <class T>
-Status SelfCollisionChecker<T>::checkSelfCollision(const std::vector<T>& q, CollisionResult& result,
+Status SelfCollisionChecker<T>::Impl::checkSelfCollision(const std::vector<T>& q, CollisionResult& result,
                                                    const CollisionRequest& request) {
   Status s = placeBodies(q);
   if (!s.ok()) return s;
@@ -393,7 +472,7 @@ Status SelfCollisionChecker<T>::checkSelfCollision(const std::vector<T>& q, Coll
 }
 
 template <class T>
-Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::vector<T>>& qs,
+Status SelfCollisionChecker<T>::Impl::checkSelfCollisionBatch(const std::vector<std::vector<T>>& qs,
                                                         std::vector<std::uint8_t>& colliding) {
   std::vector<std::uint8_t> out(qs.size(), 0);
   CollisionRequest firstOnly;
@@ -412,7 +491,7 @@ Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::v
 // bound is its enclosing spheres' gap, or for mesh shapes their hulls' distance (a mesh lies in its hull; GJK on two
 // hulls costs a fraction of a dual BVH traversal), and each pair's search (GJK, a mesh's traversal) is bounded by
 // the best so far (distanceWithin).
-template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result) {
+template <class T> Status SelfCollisionChecker<T>::Impl::selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result) {
   Status s = placeBodies(q);
   if (!s.ok()) return s;
   placeShapeSpheres();
@@ -456,6 +535,30 @@ template <class T> Status SelfCollisionChecker<T>::selfDistance(const std::vecto
   }
   result = best;
   return {};
+}
+
+template <class T>
+SelfCollisionChecker<T>::SelfCollisionChecker(std::shared_ptr<const RobotModel<T>> model, const CheckerOptions& options)
+    : impl_(std::make_unique<Impl>(std::move(model), options)) {}
+template <class T> SelfCollisionChecker<T>::~SelfCollisionChecker() = default;
+template <class T> SelfCollisionChecker<T>::SelfCollisionChecker(SelfCollisionChecker&&) noexcept = default;
+template <class T>
+SelfCollisionChecker<T>& SelfCollisionChecker<T>::operator=(SelfCollisionChecker&&) noexcept = default;
+template <class T> const RobotModel<T>& SelfCollisionChecker<T>::model() const { return *impl_->model_; }
+template <class T> std::size_t SelfCollisionChecker<T>::lastNarrowPhasePairs() const { return impl_->lastNarrow_; }
+template <class T>
+Status SelfCollisionChecker<T>::checkSelfCollision(const std::vector<T>& q, CollisionResult& result,
+                                                   const CollisionRequest& request) {
+  return impl_->checkSelfCollision(q, result, request);
+}
+template <class T>
+Status SelfCollisionChecker<T>::selfDistance(const std::vector<T>& q, SelfDistanceResult<T>& result) {
+  return impl_->selfDistance(q, result);
+}
+template <class T>
+Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::vector<T>>& qs,
+                                                        std::vector<std::uint8_t>& colliding) {
+  return impl_->checkSelfCollisionBatch(qs, colliding);
 }
 
 template class SelfCollisionChecker<float>;

@@ -1,6 +1,8 @@
 #pragma once
 // Wide (4-way) bounding volume hierarchy over triangles. Node bounds are stored in float (rounded outward) for
-// both scalar types so that one SSE instruction tests a ray against four children.
+// both scalar types so that one SSE instruction tests a ray against four children. The layout is private to the
+// library: a cooked TriangleMesh holds it behind an opaque pointer (TriangleMesh::accel), so it can change without
+// changing the public headers.
 #include <cstdint>
 #include <vector>
 
@@ -45,5 +47,15 @@ struct Bvh4 {
   std::uint32_t leafCount = 0;                 // leaves, numbered 0..leafCount-1 (their packet indices)
   std::size_t bytes() const { return nodes.size() * sizeof(Bvh4Node); }
 };
+
+namespace detail {
+// What cookTriangleMesh builds for the queries (declared opaque in gq/cooking.h): the BVH over the cooked
+// triangles and the float SoA copies of each leaf's triangles for the SIMD ray pre-test (index:
+// Bvh4Node::leafPacket, Bvh4::rootPacket).
+struct MeshAccel {
+  Bvh4 bvh;
+  std::vector<TrianglePacket4> trianglePackets;
+};
+}  // namespace detail
 
 }  // namespace gq
