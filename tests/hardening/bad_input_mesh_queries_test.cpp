@@ -217,7 +217,7 @@ TYPED_TEST(BadInputMeshQueries, RawTrianglesBeyondThePairMagnitudeAreInvalidArgu
   const Geometry<T> box = BoxGeometry<T>(T(1), T(1), T(1));
   const Status s = generateTriangleContacts(box, pose, tri, 0u, T(0.5), T(0.5), T(0.5), contacts, hasContacts);
   EXPECT_EQ(s.code, StatusCode::InvalidArgument) << s.toString();
-  EXPECT_NE(s.message.find("too far"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("too far"), std::string::npos) << s.toString();
   EXPECT_EQ(contacts.count, 4242u);
   EXPECT_TRUE(hasContacts);
   SweepHit<T> hit = sentinelSweepHit<T>();

@@ -37,6 +37,6 @@ template <class T> struct ContactBuffer {
 template <class T>
 Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
                                 std::uint32_t triangleIndex, T contactDistance, T meshContactMargin, T toleranceLength,
-                                ContactBuffer<T>& contacts, bool& hasContacts);
+                                ContactBuffer<T>& contacts, bool& hasContacts) noexcept;
 
 }  // namespace gq

@@ -22,12 +22,12 @@ template <class T> struct Triangle {
 // A mirrored scale swaps vertices 1 and 2 (and the reported vertex indices), so the winding stays outward.
 template <class T>
 Status getTriangle(const TriangleMeshGeometry<T>& mesh, const Transform<T>& pose, std::uint32_t triangleIndex,
-                   Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr);
+                   Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr) noexcept;
 
 // World-space triangle of a heightfield; vertex indices are sample indices (row * columns + column).
 template <class T>
 Status getTriangle(const HeightFieldGeometry<T>& heightField, const Transform<T>& pose,
-                   std::uint32_t triangleIndex, Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr);
+                   std::uint32_t triangleIndex, Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr) noexcept;
 
 
 // ---- Mesh and heightfield overlaps (PxMeshQuery::findOverlapTriangleMesh / findOverlapHeightField) ------------
@@ -39,12 +39,12 @@ Status getTriangle(const HeightFieldGeometry<T>& heightField, const Transform<T>
 template <class T>
 Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
                                const Transform<T>& meshPose, std::uint32_t* results, std::uint32_t bufferSize,
-                               std::uint32_t startIndex, bool& overflow, std::uint32_t& count);
+                               std::uint32_t startIndex, bool& overflow, std::uint32_t& count) noexcept;
 template <class T>
 Status findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose,
                               const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
                               std::uint32_t* results, std::uint32_t bufferSize, std::uint32_t startIndex,
-                              bool& overflow, std::uint32_t& count);
+                              bool& overflow, std::uint32_t& count) noexcept;
 
 // ---- Mesh vs mesh triangle pairs (PxMeshQuery::findOverlapTriangleMesh with a report callback) ----------------
 // Receives (triangle of mesh0, triangle of mesh1), input indices; return false to stop the query.
@@ -56,7 +56,7 @@ using TrianglePairCallback = std::function<bool(std::uint32_t triangle0, std::ui
 template <class T>
 Status findOverlapTriangleMeshPairs(const TrianglePairCallback& callback, const TriangleMeshGeometry<T>& mesh0,
                                     const Transform<T>& pose0, const TriangleMeshGeometry<T>& mesh1,
-                                    const Transform<T>& pose1, bool& overlapFound, T tolerance = T(0));
+                                    const Transform<T>& pose1, bool& overlapFound, T tolerance = T(0)) noexcept;
 
 // ---- Iterative mesh / heightfield penetration (PxComputeTriangleMeshPenetration, PxComputeHeightFieldPenetration)
 // `geom` is a sphere, capsule, box, convex mesh or convex custom shape. Each iteration takes the triangles the shape
@@ -68,11 +68,11 @@ Status findOverlapTriangleMeshPairs(const TrianglePairCallback& callback, const 
 template <class T>
 Status computeTriangleMeshPenetration(PenetrationResult<T>& result, const Geometry<T>& geom, const Transform<T>& pose,
                                       const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose,
-                                      std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr);
+                                      std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr) noexcept;
 template <class T>
 Status computeHeightFieldPenetration(PenetrationResult<T>& result, const Geometry<T>& geom, const Transform<T>& pose,
                                      const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
-                                     std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr);
+                                     std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr) noexcept;
 
 // ---- Sweep against an array of triangles (PxGeometryQuery::sweep with a PxTriangle buffer) ---------------------
 // Sweeps a sphere, capsule or box (others: Unsupported) against `triangleCount` world-space triangles (front face
@@ -84,6 +84,6 @@ template <class T>
 Status sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
                       const Triangle<T>* triangles, std::uint32_t triangleCount, SweepHit<T>& hit, bool& hasHit,
                       HitFlags hitFlags = kDefaultHitFlags, const std::uint32_t* cachedIndex = nullptr,
-                      T inflation = T(0), bool doubleSided = false);
+                      T inflation = T(0), bool doubleSided = false) noexcept;
 
 }  // namespace gq

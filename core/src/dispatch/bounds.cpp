@@ -54,15 +54,15 @@ template <class T> Bounds3<T> grow(const Bounds3<T>& b, T offset, T inflation) {
 
 template <class T>
 Status computeGeomBounds(Bounds3<T>& bounds, const Geometry<T>& geom, const Transform<T>& pose, T offset,
-                         T inflation) {
+                         T inflation) noexcept {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkGeometryAndPose(geom, pose, "geometry pose"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(geom, pose, detail::kGeometryPoseField); !s.ok()) return s;
     if (!std::isfinite(offset) || offset < T(0)) return Status::invalid("bounds offset must be finite and >= 0");
     if (!std::isfinite(inflation) || !(inflation > T(0)))
       return Status::invalid("bounds inflation must be finite and > 0");
     const Bounds3<T> tight = kBoundsTable<T>[static_cast<std::size_t>(geom.type())](geom, pose);
     if (tight.isEmpty() || !isFinite(tight.min) || !isFinite(tight.max))
-      return Status::internal(std::string("bounds kernel for ") + toString(geom.type()) + " returned no box");
+      return Status::internal("the bounds kernel of this geometry type returned no box").withType(geom.type());
     const bool unbounded = isUnbounded(tight.min.minCoeff()) || isUnbounded(tight.max.maxCoeff());
     const Bounds3<T> out = unbounded ? growUnbounded(tight, offset) : grow(tight, offset, inflation);
     if (!isFinite(out.min) || !isFinite(out.max)) return Status::invalid("bounds overflow the scalar range");

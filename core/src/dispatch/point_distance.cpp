@@ -21,7 +21,7 @@ Status call(const Geometry<T>& g, const Transform<T>& pose, const Vec3<T>& point
 
 template <class T>
 Status unsupported(const Geometry<T>& g, const Transform<T>&, const Vec3<T>&, PointDistanceResult<T>&) {
-  return Status::unsupported(std::string("pointDistance to a ") + toString(g.type()));
+  return Status::unsupported("pointDistance is not available for this geometry type").withType(g.type());
 }
 
 template <class T> constexpr std::array<PointDistanceFn<T>, kGeometryTypeCount> kPointDistanceTable = {
@@ -40,10 +40,10 @@ static_assert(kPointDistanceTable<float>.size() == kGeometryTypeCount, "one entr
 
 template <class T>
 Status pointDistance(const Vec3<T>& point, const Geometry<T>& geom, const Transform<T>& pose,
-                     PointDistanceResult<T>& result) {
+                     PointDistanceResult<T>& result) noexcept {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkFinite(point, "point"); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(geom, pose, "geometry pose"); !s.ok()) return s;
+    if (Status s = detail::checkFinite(point, detail::kPointField); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(geom, pose, detail::kGeometryPoseField); !s.ok()) return s;
     PointDistanceResult<T> out;
     if (Status s = kPointDistanceTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, point, out); !s.ok())
       return s;

@@ -34,14 +34,14 @@ template <class T> constexpr std::array<RaycastFn<T>, kGeometryTypeCount> kRayca
 template <class T>
 Status validateRaycast(const Vec3<T>& origin, const Vec3<T>& dir, const Geometry<T>& geom, const Transform<T>& pose,
                        T maxDist, HitFlags flags, std::uint32_t maxHits, const RaycastHit<T>* hits) {
-  if (Status s = detail::checkFinite(origin, "ray origin"); !s.ok()) return s;
-  if (Status s = detail::checkUnitDirection(dir, "ray direction"); !s.ok()) return s;
-  if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
+  if (Status s = detail::checkFinite(origin, detail::kRayOriginField); !s.ok()) return s;
+  if (Status s = detail::checkUnitDirection(dir, detail::kRayDirectionField); !s.ok()) return s;
+  if (Status s = detail::checkMaxDist(maxDist); !s.ok()) return s;
   if (maxHits == 0) return Status::invalid("maxHits must be >= 1");
   if (hits == nullptr) return Status::invalid("hit buffer is null");
   if (flags.has(HitFlag::Mtd) || flags.has(HitFlag::PreciseSweep) || flags.has(HitFlag::AssumeNoInitialOverlap))
     return Status::invalid("mtd, preciseSweep and assumeNoInitialOverlap are sweep flags, not raycast flags");
-  if (Status s = detail::checkGeometryAndPose(geom, pose, "geometry pose"); !s.ok()) return s;
+  if (Status s = detail::checkGeometryAndPose(geom, pose, detail::kGeometryPoseField); !s.ok()) return s;
   // Kernels work in the geometry's frame; an origin whose offset from the pose overflows T has no local position.
   if (!isFinite(Vec3<T>(origin - pose.p)))
     return Status::invalid("ray origin is too far from the geometry pose: their difference overflows the precision");
@@ -52,7 +52,7 @@ Status validateRaycast(const Vec3<T>& origin, const Vec3<T>& dir, const Geometry
 
 template <class T>
 Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
-               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount) {
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept {
   return detail::guarded([&]() -> Status {
     if (Status s = validateRaycast(origin, unitDir, geom, pose, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
     // Several hits only with MeshMultiple (the spec); solids cap themselves at one.

@@ -401,7 +401,7 @@ Status SelfCollisionChecker<T>::checkSelfCollisionBatch(const std::vector<std::v
   CollisionResult r;
   for (std::size_t i = 0; i < qs.size(); ++i) {
     Status s = checkSelfCollision(qs[i], r, firstOnly);
-    if (!s.ok()) return Status(s.code, "configuration " + std::to_string(i) + ": " + s.message);
+    if (!s.ok()) return Status::owned(s.code, "configuration " + std::to_string(i) + ": " + s.detailedMessage());
     out[i] = r.colliding ? 1 : 0;
   }
   colliding = std::move(out);
