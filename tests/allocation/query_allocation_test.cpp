@@ -320,7 +320,7 @@ TYPED_TEST(QueryAllocation, MeshQueriesAllocateNothing) {
                 st = computeHeightFieldPenetration(pen, s.geom, pose, hf, hfPose, 4u, &iterations);
                 EXPECT_TRUE(st.ok() || st.code == StatusCode::Unsupported) << st.toString();
                 st = computeTriangleMeshPenetration(pen, s.geom, pose, mesh, nanPose<T>());
-                EXPECT_EQ(st.code, StatusCode::InvalidArgument);
+                EXPECT_FALSE(st.ok());  // InvalidArgument, or Unsupported for a shape it does not take
               }),
               0)
         << where("computeTriangleMeshPenetration, computeHeightFieldPenetration", s.name);
@@ -332,7 +332,9 @@ TYPED_TEST(QueryAllocation, TriangleContactsAndTriangleSweepsAllocateNothing) {
   Triangle<T> tris[4];
   for (int k = 0; k < 4; ++k) {
     const T x = T(-1 + 0.6 * k);
-    tris[k].verts = {Vec3<T>(x, T(-1), T(-0.2)), Vec3<T>(x + T(1), T(-1), T(-0.2)), Vec3<T>(x, T(1), T(-0.1))};
+    tris[k].verts[0] = Vec3<T>(x, T(-1), T(-0.2));
+    tris[k].verts[1] = Vec3<T>(x + T(1), T(-1), T(-0.2));
+    tris[k].verts[2] = Vec3<T>(x, T(1), T(-0.1));
   }
   Triangle<T> nanTri = tris[0];
   nanTri.verts[1].x() = std::numeric_limits<T>::quiet_NaN();

@@ -227,7 +227,7 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
       // Nothing under the face (the shape is beside the triangle): keep the closest point and its normal.
       if (!face.empty()) {
         normal = n;
-        candidates.swap(face);
+        candidates.assign(face.begin(), face.end());  // copied, not swapped: each buffer keeps its capacity
       }
     }
     std::array<Candidate<T>, kMaxTriangleContacts> kept;

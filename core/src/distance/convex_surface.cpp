@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "bvh/traverse.h"
 #include "distance/surface_distance.h"
 #include "mesh_pairs/shape_triangle.h"
 #include "mesh_pairs/surface.h"
