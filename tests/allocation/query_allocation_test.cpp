@@ -159,6 +159,17 @@ std::string where(const char* family, const char* a, const char* b = "") {
 
 TYPED_TEST(QueryAllocation, StatusFitsSixteenBytes) { EXPECT_LE(sizeof(Status), 16u); }
 
+// The counter sees allocations: an owned message (the loading paths' form) is one, and its copies share it.
+TYPED_TEST(QueryAllocation, CounterSeesTheOwnedMessageAllocation) {
+  Status owned, copy;
+  EXPECT_EQ(allocationsDuring([&] {
+              owned = Status::owned(StatusCode::FileError, "cannot open mesh file 'a.obj'");
+              copy = owned;
+            }),
+            1);
+  EXPECT_STREQ(copy.message(), "cannot open mesh file 'a.obj'");
+}
+
 TYPED_TEST(QueryAllocation, RaycastAllocatesNothing) {
   using T = TypeParam;
   const Vec3<T> origin(T(-5), T(0.1), T(0.05));

@@ -83,7 +83,8 @@ struct [[nodiscard]] Status {
   // The static message ("" for a plain success). Details are not in it: see toString().
   const char* message() const noexcept;
   // "<code>: <message> (<detail>)", e.g. "invalid argument: ray direction is not a unit vector (length 1.5)".
-  // Allocates (a std::string); for reporting, never called by a query.
+  // Builds a std::string (which may throw std::bad_alloc, as any string); for reporting, never called by a query.
+  // Everything else a Status does (construct, copy, move, destroy) is noexcept.
   std::string toString() const;
   // "<message> (<detail>)": toString() without the code, for a caller that wraps the message in its own.
   std::string detailedMessage() const;
