@@ -5,6 +5,7 @@
 // then the same solids as gq's; Bullet's default 0.04 margin would grow its hull). Counters: `hits` and
 // `meanDistance` over the 64 sweeps, so the backends' answers can be compared in the output.
 // Run: bench_sweep --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <cstdlib>
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
@@ -99,11 +100,11 @@ template <class T> gq::Geometry<T> gqTarget(Target t) {
   const Scene& s = scene();
   if (t == Target::Bunny) {
     std::shared_ptr<const gq::TriangleMesh<T>> mesh;
-    gq::cookTriangleMesh(cast<T>(s.vertices), s.triangles, mesh);
+    if (!gq::cookTriangleMesh(cast<T>(s.vertices), s.triangles, mesh).ok()) std::abort();  // the scene is valid
     return gq::TriangleMeshGeometry<T>(mesh, gq::MeshScale<T>(), gq::MeshGeometryFlag::DoubleSided);
   }
   std::shared_ptr<const gq::ConvexMesh<T>> hull;
-  gq::cookConvexMesh(cast<T>(s.targetHull), hull);
+  if (!gq::cookConvexMesh(cast<T>(s.targetHull), hull).ok()) std::abort();
   return gq::ConvexMeshGeometry<T>(hull);
 }
 
@@ -111,7 +112,7 @@ template <class T> gq::Geometry<T> gqSwept(Swept w) {
   if (w == Swept::Box) return gq::BoxGeometry<T>(T(boxHalf()), T(boxHalf()), T(boxHalf()));
   if (w == Swept::Capsule) return gq::CapsuleGeometry<T>(T(capsuleRadius()), T(capsuleHalfHeight()));
   std::shared_ptr<const gq::ConvexMesh<T>> hull;
-  gq::cookConvexMesh(cast<T>(scene().sweptHull), hull);
+  if (!gq::cookConvexMesh(cast<T>(scene().sweptHull), hull).ok()) std::abort();
   return gq::ConvexMeshGeometry<T>(hull);
 }
 
@@ -134,7 +135,7 @@ template <class T> void BM_Sweep_gq(benchmark::State& state, Target target, Swep
     for (int i = 0; i < kSweeps; ++i) {
       gq::SweepHit<T> hit;
       bool hasHit = false;
-      gq::sweep(dirs[i], T(maxDist()), g0, starts[i], g1, gq::Transform<T>(), hit, hasHit);
+      (void)gq::sweep(dirs[i], T(maxDist()), g0, starts[i], g1, gq::Transform<T>(), hit, hasHit);  // valid input: timed
       if (hasHit) {
         ++hits;
         total += double(hit.distance);
@@ -248,7 +249,7 @@ double meanGapAtHits(Target target, Swept swept, const Report& r) {
     gq::Transform<double> at = c.start;
     at.p += r.distance[k] * c.dir;
     gq::DistanceResult<double> d;
-    gq::distance(d, g0, at, g1, gq::Transform<double>());
+    (void)gq::distance(d, g0, at, g1, gq::Transform<double>());  // valid input: timed
     sum += d.distance;
   }
   return sum / double(r.index.size());

@@ -101,7 +101,7 @@ const CaseParser::LoadedMesh& CaseParser::loadMesh(const std::string& file, cons
   const std::string key = path.lexically_normal().string();
   if (auto it = meshFiles_.find(key); it != meshFiles_.end()) return it->second;
   MeshData<double> data;
-  if (Status s = loadMeshFile<double>(key, data); !s.ok()) throw FieldError(field, s.message);
+  if (Status s = loadMeshFile<double>(key, data); !s.ok()) throw FieldError(field, s.detailedMessage());
   LoadedMesh mesh;
   mesh.vertices = std::move(data.vertices);
   mesh.triangles = std::move(data.triangles);

@@ -34,7 +34,7 @@ template <class T> Status place(GqShapeFactory<T>& shapes, const ShapeDesc& d, c
 }
 
 template <class T> Result finish(const Status& status, double ns, ResultFields fields) {
-  if (!status.ok()) return Result::failure(status.message, ns);
+  if (!status.ok()) return Result::failure(status.toString(), ns);
   Result r;
   r.ok = true;
   r.ns = ns;
@@ -44,7 +44,7 @@ template <class T> Result finish(const Status& status, double ns, ResultFields f
 
 template <class T> Result runRaycast(GqShapeFactory<T>& shapes, const RaycastCase& q, int repeat) {
   Placed<T> target;
-  if (Status s = place(shapes, q.geom, q.pose, target); !s.ok()) return Result::failure(s.message);
+  if (Status s = place(shapes, q.geom, q.pose, target); !s.ok()) return Result::failure(s.toString());
   const HitFlags flags(q.flags);
   const Vec3<T> origin = q.origin.cast<T>(), dir = q.dir.cast<T>();
   std::vector<RaycastHit<T>> hits(q.maxHits);
@@ -61,8 +61,8 @@ template <class T> Result runRaycast(GqShapeFactory<T>& shapes, const RaycastCas
 
 template <class T> Result runPair(GqShapeFactory<T>& shapes, QueryKind kind, const PairCase& q, int repeat) {
   Placed<T> a, b;
-  if (Status s = place(shapes, q.geom0, q.pose0, a); !s.ok()) return Result::failure(s.message);
-  if (Status s = place(shapes, q.geom1, q.pose1, b); !s.ok()) return Result::failure(s.message);
+  if (Status s = place(shapes, q.geom0, q.pose0, a); !s.ok()) return Result::failure(s.toString());
+  if (Status s = place(shapes, q.geom1, q.pose1, b); !s.ok()) return Result::failure(s.toString());
   Status status;
   if (kind == QueryKind::Overlap) {
     bool overlapping = false;
@@ -84,7 +84,7 @@ template <class T> Result runPair(GqShapeFactory<T>& shapes, QueryKind kind, con
 
 template <class T> Result runPointDistance(GqShapeFactory<T>& shapes, const PointDistanceCase& q, int repeat) {
   Placed<T> target;
-  if (Status s = place(shapes, q.geom, q.pose, target); !s.ok()) return Result::failure(s.message);
+  if (Status s = place(shapes, q.geom, q.pose, target); !s.ok()) return Result::failure(s.toString());
   const Vec3<T> point = q.point.cast<T>();
   PointDistanceResult<T> res;
   Status status;
@@ -94,8 +94,8 @@ template <class T> Result runPointDistance(GqShapeFactory<T>& shapes, const Poin
 
 template <class T> Result runSweep(GqShapeFactory<T>& shapes, const SweepCase& q, int repeat) {
   Placed<T> a, b;
-  if (Status s = place(shapes, q.geom0, q.pose0, a); !s.ok()) return Result::failure(s.message);
-  if (Status s = place(shapes, q.geom1, q.pose1, b); !s.ok()) return Result::failure(s.message);
+  if (Status s = place(shapes, q.geom0, q.pose0, a); !s.ok()) return Result::failure(s.toString());
+  if (Status s = place(shapes, q.geom1, q.pose1, b); !s.ok()) return Result::failure(s.toString());
   const Vec3<T> dir = q.dir.cast<T>();
   const HitFlags flags(q.flags);
   SweepHit<T> hit;
@@ -118,7 +118,7 @@ template <class T> Result runSweep(GqShapeFactory<T>& shapes, const SweepCase& q
 
 template <class T> Result runBounds(GqShapeFactory<T>& shapes, const BoundsCase& q, int repeat) {
   Placed<T> target;
-  if (Status s = place(shapes, q.geom, q.pose, target); !s.ok()) return Result::failure(s.message);
+  if (Status s = place(shapes, q.geom, q.pose, target); !s.ok()) return Result::failure(s.toString());
   Bounds3<T> bounds;
   Status status;
   const double ns = medianNanoseconds(repeat, [&] {

@@ -1,6 +1,7 @@
 // gq-pairs: prints the pair matrix of every query family by asking the library itself — each cell is the Status
 // the query returns for one canonical pair of overlapping geometries. The README's matrix is this program's output
 // (a ctest compares them), so the README cannot drift from the dispatch tables.
+#include <cstdlib>
 #include <array>
 #include <cstdio>
 #include <functional>
@@ -30,20 +31,20 @@ std::vector<Geometry<T>> canonicalGeometries() {
   std::vector<Vec3<T>> cube;
   for (int i = 0; i < 8; ++i) cube.emplace_back(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5);
   std::shared_ptr<const gq::ConvexMesh<T>> hull;
-  gq::cookConvexMesh(cube, hull);
+  if (!gq::cookConvexMesh(cube, hull).ok()) std::abort();  // fixed, valid inputs: cooking cannot fail
   // A closed octahedron surface.
   const std::vector<Vec3<T>> v = {{0.6, 0, 0}, {-0.6, 0, 0}, {0, 0.6, 0}, {0, -0.6, 0}, {0, 0, 0.6}, {0, 0, -0.6}};
   const std::vector<gq::TriangleIndices> t = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                               {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
   std::shared_ptr<const gq::TriangleMesh<T>> mesh;
-  gq::cookTriangleMesh(v, t, mesh);
+  if (!gq::cookTriangleMesh(v, t, mesh).ok()) std::abort();
   gq::HeightFieldDesc<T> desc;
   desc.rows = desc.columns = 3;
   desc.heights.assign(9, 0.0);
   std::shared_ptr<const gq::HeightField<T>> hf;
-  gq::cookHeightField(desc, hf);
+  if (!gq::cookHeightField(desc, hf).ok()) std::abort();
   gq::CustomGeometry<T> cylinder;
-  gq::makeCylinder<T>(0.4, 0.4, cylinder);
+  if (!gq::makeCylinder<T>(0.4, 0.4, cylinder).ok()) std::abort();
   return {gq::SphereGeometry<T>(0.5),
           gq::PlaneGeometry<T>(),
           gq::CapsuleGeometry<T>(0.3, 0.4),

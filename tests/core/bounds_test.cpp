@@ -198,7 +198,7 @@ TYPED_TEST(Bounds, InvalidOffsetInflationOrPoseIsRejectedAndWritesNothing) {
     Bounds3<T> b = sentinel;
     const Status s = computeGeomBounds(b, c.geom, c.pose, c.offset, c.inflation);
     EXPECT_EQ(s.code, StatusCode::InvalidArgument) << s.toString();
-    EXPECT_FALSE(s.message.empty());
+    EXPECT_STRNE(s.message(), "");
     EXPECT_EQ(b.min, sentinel.min);
     EXPECT_EQ(b.max, sentinel.max);
   }

@@ -337,13 +337,13 @@ TYPED_TEST(CustomCallbacks, NonFiniteCallbackAnswerIsAnInternalErrorAndWritesNot
   r.depth = T(42);
   const Status s = computePenetration(r, ball, Transform<T>(), this->sphere, Transform<T>(Vec3<T>(T(0.5), T(0), T(0))));
   EXPECT_EQ(s.code, StatusCode::InternalError);
-  EXPECT_NE(s.message.find("ball"), std::string::npos);
+  EXPECT_NE(s.toString().find("ball"), std::string::npos);
   EXPECT_EQ(r.depth, T(42));
   DistanceResult<T> d;
   d.distance = T(42);
   const Status sd = distance(d, ball, Transform<T>(), this->sphere, Transform<T>(Vec3<T>(T(2), T(0), T(0))));
   EXPECT_EQ(sd.code, StatusCode::InternalError);
-  EXPECT_NE(sd.message.find("ball"), std::string::npos);
+  EXPECT_NE(sd.toString().find("ball"), std::string::npos);
   EXPECT_EQ(d.distance, T(42));
 }
 

@@ -223,7 +223,8 @@ TYPED_TEST(BoxCylinderDistanceTest, FacadeAnswersACustomCylinderAndABoxByTheCert
     gq::DistanceResult<T> r0, r1, gjk;
     ASSERT_TRUE(gq::distance(r0, gc, pc, gb, pb, &c0).ok()) << "pose " << i;
     ASSERT_TRUE(gq::distance(r1, gb, pb, gc, pc, &c1).ok()) << "pose " << i;
-    gq::detail::distanceGjk(gc, pc, gb, pb, static_cast<gq::GjkCache<T>*>(nullptr), gjk);
+    ASSERT_TRUE(gq::detail::distanceGjk(gc, pc, gb, pb, static_cast<gq::GjkCache<T>*>(nullptr), gjk).ok())
+        << "pose " << i;
     EXPECT_NEAR(double(r0.distance), double(gjk.distance), tol) << "pose " << i;
     EXPECT_NEAR(double(r1.distance), double(r0.distance), tol) << "pose " << i;
     if (c0.iterations > 0 || !(r0.distance > T(0))) continue;

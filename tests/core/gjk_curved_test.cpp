@@ -66,7 +66,7 @@ TYPED_TEST(GjkCurved, CapsuleAgainstCylinderConvergesFromAColdStartToTheExactDis
     gq::DistanceResult<T> d;
     const gq::Status s = gq::distance(d, cap, p1, cyl, p0);
     // Ok, or a Warning when rounding stalls GJK with a certified error bound just above its tolerance.
-    ASSERT_TRUE(s.ok()) << "pose " << i << ": " << s.message;
+    ASSERT_TRUE(s.ok()) << "pose " << i << ": " << s.toString();
     EXPECT_NEAR(double(d.distance), double(exact), double(tolerance)) << "pose " << i;
     bool hit = true;
     ASSERT_TRUE(gq::overlap(cap, p1, cyl, p0, hit).ok());

@@ -77,7 +77,7 @@ TYPED_TEST(GjkSupport, EpaTranslationByDepthAlongNormalSeparates) {
     const auto e = gq::detail::epaPenetration(a, gq::detail::makeConvexShape<T>(g1, p1));
     if (!(e.depth > slack)) continue;
     ++tested;
-    ASSERT_TRUE(e.status.ok()) << e.status.message;
+    ASSERT_TRUE(e.status.ok()) << e.status.toString();
     const auto moved = [&](T t) { return gq::Transform<T>(p1.p + t * e.normal, p1.q); };
     EXPECT_FALSE(gq::detail::gjkOverlap(a, gq::detail::makeConvexShape<T>(g1, moved(e.depth + slack)))) << "pose " << i;
     EXPECT_TRUE(gq::detail::gjkOverlap(a, gq::detail::makeConvexShape<T>(g1, moved(e.depth - slack)))) << "pose " << i;

@@ -25,7 +25,7 @@ TYPED_TEST(MeshCook, OutOfRangeIndexIsInvalidArgumentNamingTheTriangle) {
   std::shared_ptr<const TriangleMesh<T>> out;
   const Status s = cookTriangleMesh(m.vertices, tris, out);
   EXPECT_EQ(s.code, StatusCode::InvalidArgument);
-  EXPECT_NE(s.message.find("triangle 1"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("triangle 1"), std::string::npos) << s.toString();
   EXPECT_EQ(out, nullptr);
 }
 
@@ -36,7 +36,7 @@ TYPED_TEST(MeshCook, NonFiniteVertexIsInvalidArgumentNamingTheVertex) {
   std::shared_ptr<const TriangleMesh<T>> out;
   const Status s = cookTriangleMesh(m.vertices, m.triangles, out);
   EXPECT_EQ(s.code, StatusCode::InvalidArgument);
-  EXPECT_NE(s.message.find("vertex 2"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("vertex 2"), std::string::npos) << s.toString();
   EXPECT_EQ(out, nullptr);
 }
 

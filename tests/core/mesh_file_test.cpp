@@ -155,7 +155,7 @@ TYPED_TEST(MeshFile, MissingFileIsFileErrorNamingThePath) {
   const std::string path = (this->dir / "no_such_mesh.obj").string();
   const Status s = loadMeshFile(path, m);
   EXPECT_EQ(s.code, StatusCode::FileError);
-  EXPECT_NE(s.message.find(path), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find(path), std::string::npos) << s.toString();
   EXPECT_TRUE(m.vertices.empty());
 }
 
@@ -291,13 +291,13 @@ TYPED_TEST(MeshFile, BadObjAndAsciiStlContentIsParseErrorNamingTheLineAndChanges
     m.vertices = {Vec3<T>(1, 2, 3)};
     const Status s = loadMeshFile(this->write(name, content), m);
     EXPECT_EQ(s.code, StatusCode::ParseError) << name << ": " << s.toString();
-    EXPECT_NE(s.message.find(name), std::string::npos) << s.message;
+    EXPECT_NE(s.toString().find(name), std::string::npos) << s.toString();
     ASSERT_EQ(m.vertices.size(), 1u) << name;
     EXPECT_TRUE(m.triangles.empty()) << name;
   }
   MeshData<T> m;
   const Status s = loadMeshFile(this->write("word2.obj", "v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n"), m);
-  EXPECT_NE(s.message.find("line 2"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("line 2"), std::string::npos) << s.toString();
 }
 
 // The bunny of the shared data folder, read exactly: every triangle corner holds the strtod of the file's text, and a

@@ -243,7 +243,7 @@ TYPED_TEST(MeshRaycast, GetTriangleRejectsInvalidIndex) {
   const TriangleMeshGeometry<T> g(this->mesh);
   const Status s = getTriangle(g, Transform<T>(), 6, tri);
   EXPECT_EQ(s.code, StatusCode::InvalidArgument);
-  EXPECT_NE(s.message.find("6"), std::string::npos);
+  EXPECT_NE(s.toString().find("6"), std::string::npos);
   EXPECT_EQ(tri.verts[0], Vec3<T>(7, 7, 7));  // untouched
 }
 

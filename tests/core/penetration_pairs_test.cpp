@@ -194,7 +194,7 @@ TYPED_TEST(Penetration, UnsupportedCellsSayWhetherTheSpecExcludesThem) {
   r.depth = T(42);
   const Status s = computePenetration<T>(r, PlaneGeometry<T>(), Transform<T>(), PlaneGeometry<T>(), Transform<T>());
   EXPECT_EQ(s.code, StatusCode::Unsupported);
-  EXPECT_NE(s.message.find("not defined by the spec"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("not defined by the spec"), std::string::npos) << s.toString();
   EXPECT_EQ(r.depth, T(42));  // output untouched
 }
 

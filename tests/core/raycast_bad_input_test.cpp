@@ -131,7 +131,7 @@ template <class T> void expectRejected(const RayCall<T>& call, const gq::Geometr
   const gq::Status s = run(call, geom, hits, count);
   const std::string where = what + " on " + gq::toString(geom.type());
   EXPECT_FALSE(s.ok()) << where;
-  EXPECT_FALSE(s.message.empty()) << where;
+  EXPECT_STRNE(s.message(), "") << where;
   EXPECT_EQ(count, kCountSentinel) << where;
   EXPECT_EQ(std::memcmp(before.data(), static_cast<const void*>(hits.data()), before.size()), 0)
       << where << ": the hit buffer was written";
@@ -287,7 +287,7 @@ template <class T> void expectMeshCookRejected(const std::vector<gq::Vec3<T>>& v
   report.inputTriangles = 4242;
   const gq::Status s = gq::cookTriangleMesh(v, t, out, &report);
   EXPECT_EQ(s.code, code) << what << ": " << s.toString();
-  EXPECT_FALSE(s.message.empty()) << what;
+  EXPECT_STRNE(s.message(), "") << what;
   EXPECT_EQ(out, sentinel) << what << ": output written";
 }
 
@@ -312,7 +312,7 @@ TYPED_TEST(RaycastBadInput, CookConvexMeshRejectsTooFewCoplanarAndNonFinitePoint
     std::shared_ptr<const gq::ConvexMesh<T>> out = sentinel;
     const gq::Status s = gq::cookConvexMesh(pts, out);
     EXPECT_EQ(s.code, code) << what << ": " << s.toString();
-    EXPECT_FALSE(s.message.empty()) << what;
+    EXPECT_STRNE(s.message(), "") << what;
     EXPECT_EQ(out, sentinel) << what << ": output written";
   };
   check({}, gq::StatusCode::DegenerateMesh, "no points");
@@ -353,7 +353,7 @@ template <class T> void expectLoadRejected(const std::string& path, gq::StatusCo
   out.triangles = {{0, 0, 0}};
   const gq::Status s = gq::loadMeshFile(path, out);
   EXPECT_EQ(s.code, code) << what << ": " << s.toString();
-  EXPECT_FALSE(s.message.empty()) << what;
+  EXPECT_STRNE(s.message(), "") << what;
   ASSERT_EQ(out.vertices.size(), 1u) << what << ": output written";
   EXPECT_EQ(out.vertices[0], gq::Vec3<T>(1, 2, 3)) << what;
   EXPECT_EQ(out.triangles.size(), 1u) << what;

@@ -94,15 +94,16 @@ template <class T> struct FallbackData {
       FallbackData f;
       std::vector<Vec3<T>> cube;
       for (int i = 0; i < 8; ++i) cube.emplace_back(T(i & 1 ? 1 : -1), T(i & 2 ? 1 : -1), T(i & 4 ? 1 : -1));
-      cookConvexMesh(cube, f.hull);
-      cookTriangleMesh(cube,
+      if (!cookConvexMesh(cube, f.hull).ok()) std::abort();  // fixed, valid inputs
+      if (!cookTriangleMesh(cube,
                        {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                         {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}},
-                       f.mesh);
+                       f.mesh).ok())
+        std::abort();
       HeightFieldDesc<T> hf;
       hf.rows = hf.columns = 4;
       for (int i = 0; i < 16; ++i) hf.heights.push_back(T((i * 7) % 5) / T(4));
-      cookHeightField(hf, f.heightField);
+      if (!cookHeightField(hf, f.heightField).ok()) std::abort();
       return f;
     }();
     return d;

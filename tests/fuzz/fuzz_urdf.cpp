@@ -59,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   auto model = std::make_shared<gq::urdf::RobotModel<double>>();
   const gq::Status s = gq::urdf::loadRobotFromStrings(urdf, srdf, meshDir(), options, *model);
   if (!s.ok()) {
-    if (!model->links.empty() || s.message.empty()) std::abort();
+    if (!model->links.empty() || *s.message() == '\0') std::abort();
     return 0;
   }
   std::vector<gq::Transform<double>> poses;

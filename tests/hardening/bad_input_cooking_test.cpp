@@ -114,7 +114,7 @@ TYPED_TEST(BadInputCooking, HeightFieldWithTooFewOrAbsurdlyManySamplesIsInvalidA
     desc.columns = columns;
     const Status s = cookHeightField(desc, out);  // the absurd sizes must fail before allocating anything
     EXPECT_EQ(s.code, StatusCode::InvalidArgument) << rows << " x " << columns;
-    EXPECT_FALSE(s.message.empty());
+    EXPECT_STRNE(s.message(), "");
   }
   EXPECT_EQ(out, nullptr);
 }
@@ -162,7 +162,7 @@ TYPED_TEST(BadInputCooking, MalformedOrEmptyMeshFileIsParseError) {
     MeshData<T> m = sentinelMeshData<T>();
     const Status s = loadMeshFile(scratchFile(name, bytes).string(), m);
     EXPECT_EQ(s.code, StatusCode::ParseError) << name << ": " << s.toString();
-    EXPECT_FALSE(s.message.empty());
+    EXPECT_STRNE(s.message(), "");
     EXPECT_TRUE(isSentinel(m)) << name;
   }
 }

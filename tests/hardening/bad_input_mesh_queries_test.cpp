@@ -230,7 +230,7 @@ TYPED_TEST(BadInputMeshQueries, RawTrianglesBeyondThePairMagnitudeAreInvalidArgu
   const Status s =
       generateTriangleContacts(box, pose, tri, 0u, contacts, TriangleContactSettings<T>{T(0.5), T(0.5), T(0.5)});
   EXPECT_EQ(s.code, StatusCode::InvalidArgument) << s.toString();
-  EXPECT_NE(s.message.find("too far"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("too far"), std::string::npos) << s.toString();
   EXPECT_EQ(contacts.count, 4242u);
   SweepHit<T> hit = sentinelSweepHit<T>();
   bool hasHit = true;

@@ -188,7 +188,7 @@ TYPED_TEST(BadInputQueries, SizesBeyondTheSupportedMagnitudeAreInvalidArgumentIn
         continue;
       }
       EXPECT_EQ(o.status.code, StatusCode::InvalidArgument) << toString(g.type()) << " " << o.family;
-      EXPECT_NE(o.status.message.find("supported magnitude"), std::string::npos) << o.status.message;
+      EXPECT_NE(o.status.toString().find("supported magnitude"), std::string::npos) << o.status.toString();
     }
   }
 }

@@ -61,7 +61,7 @@ TYPED_TEST(BadInputUrdf, JointGraphWithACycleIsParseErrorNamingALinkOnIt) {
     RobotModel<TypeParam> m;
     const Status s = urdf::loadRobotFromStrings(xml, "", "/tmp", quickOptions(), m);
     EXPECT_EQ(s.code, StatusCode::ParseError) << s.toString();
-    EXPECT_NE(s.message.find("cycle through link"), std::string::npos) << s.message;
+    EXPECT_NE(s.toString().find("cycle through link"), std::string::npos) << s.toString();
   }
 }
 
@@ -78,7 +78,7 @@ TYPED_TEST(BadInputUrdf, LinkThatIsTheChildOfTwoJointsIsParseError) {
   RobotModel<TypeParam> m;
   const Status s = urdf::loadRobotFromStrings(xml, "", "/tmp", quickOptions(), m);
   EXPECT_EQ(s.code, StatusCode::ParseError) << s.toString();
-  EXPECT_NE(s.message.find("link 'c' is the child of more than one joint"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("link 'c' is the child of more than one joint"), std::string::npos) << s.toString();
   EXPECT_TRUE(m.links.empty());
 }
 
@@ -91,7 +91,7 @@ TYPED_TEST(BadInputUrdf, PercentInAnAttributeOtherThanAMeshFilenameIsParseError)
     RobotModel<TypeParam> m;
     const Status s = urdf::loadRobotFromStrings(twoLinkUrdf(geometry), "", "/tmp", quickOptions(), m);
     EXPECT_EQ(s.code, StatusCode::ParseError) << geometry << ": " << s.toString();
-    EXPECT_NE(s.message.find("contains '%'"), std::string::npos) << s.message;
+    EXPECT_NE(s.toString().find("contains '%'"), std::string::npos) << s.toString();
     EXPECT_TRUE(m.links.empty());
   }
   RobotModel<TypeParam> m;

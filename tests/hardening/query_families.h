@@ -104,7 +104,7 @@ void expectEveryFamilyReturns(const FamilyInputs<T>& in, StatusCode code, const 
   for (const FamilyOutcome& o : runEveryFamily(in)) {
     if (std::find(except.begin(), except.end(), o.family) != except.end()) continue;
     EXPECT_EQ(o.status.code, code) << o.family << ": " << o.status.toString();
-    EXPECT_FALSE(o.status.message.empty()) << o.family << " gave no message";
+    EXPECT_STRNE(o.status.message(), "") << o.family << " gave no message";
   }
 }
 

@@ -60,23 +60,23 @@ TYPED_TEST(UrdfLoading, MissingMeshFileFailsWithAnErrorNamingTheFile) {
   RobotModel<TypeParam> m;
   const Status s = loadString(oneLinkUrdf("<mesh filename=\"package://my_pkg/meshes/no_such_part.stl\"/>"), "", m);
   EXPECT_EQ(s.code, StatusCode::FileError);
-  EXPECT_NE(s.message.find("no_such_part.stl"), std::string::npos) << s.message;
+  EXPECT_NE(s.toString().find("no_such_part.stl"), std::string::npos) << s.toString();
   RobotModel<TypeParam> r;
   const Status rel = loadString(oneLinkUrdf("<mesh filename=\"meshes/missing_relative.obj\"/>"), "", r);
   EXPECT_EQ(rel.code, StatusCode::FileError);
-  EXPECT_NE(rel.message.find("missing_relative.obj"), std::string::npos) << rel.message;
+  EXPECT_NE(rel.toString().find("missing_relative.obj"), std::string::npos) << rel.toString();
 }
 
 TYPED_TEST(UrdfLoading, MissingUrdfOrSrdfFileFailsNamingIt) {
   RobotModel<TypeParam> m;
   Status s = loadRobot("/nonexistent/robot.urdf", "", testOptions(Representation::Hull), m);
   EXPECT_EQ(s.code, StatusCode::FileError);
-  EXPECT_NE(s.message.find("/nonexistent/robot.urdf"), std::string::npos);
+  EXPECT_NE(s.toString().find("/nonexistent/robot.urdf"), std::string::npos);
   const fs::path urdf = scratchDir() / "one_link.urdf";
   std::ofstream(urdf) << oneLinkUrdf("<box size=\"1 1 1\"/>");
   s = loadRobot(urdf.string(), "/nonexistent/robot.srdf", testOptions(Representation::Hull), m);
   EXPECT_EQ(s.code, StatusCode::FileError);
-  EXPECT_NE(s.message.find("/nonexistent/robot.srdf"), std::string::npos);
+  EXPECT_NE(s.toString().find("/nonexistent/robot.srdf"), std::string::npos);
 }
 
 TYPED_TEST(UrdfLoading, MalformedUrdfFailsWithAClearParseError) {
@@ -91,7 +91,7 @@ TYPED_TEST(UrdfLoading, MalformedUrdfFailsWithAClearParseError) {
     RobotModel<TypeParam> m;
     const Status s = loadString(xml, "", m);
     EXPECT_EQ(s.code, StatusCode::ParseError) << xml << " -> " << s.toString();
-    EXPECT_NE(s.message.find("URDF"), std::string::npos) << s.message;
+    EXPECT_NE(s.toString().find("URDF"), std::string::npos) << s.toString();
     EXPECT_TRUE(m.links.empty()) << "no output on failure";
   }
 }
@@ -105,7 +105,7 @@ TYPED_TEST(UrdfLoading, MalformedSrdfFailsWithAClearParseError) {
     RobotModel<TypeParam> m;
     const Status s = loadString(urdf, srdf, m);
     EXPECT_EQ(s.code, StatusCode::ParseError) << srdf << " -> " << s.toString();
-    EXPECT_NE(s.message.find("SRDF"), std::string::npos) << s.message;
+    EXPECT_NE(s.toString().find("SRDF"), std::string::npos) << s.toString();
   }
 }
 

@@ -32,7 +32,7 @@ std::string scaledKey(const ShapeDesc& desc) {
 bool cookHullPolygons(const std::vector<Vec3d>& points, HullPolygons& out, std::string& error) {
   std::shared_ptr<const ConvexMesh<double>> hull;
   if (Status s = cookConvexMesh<double>(points, hull); !s.ok()) {
-    error = s.message;
+    error = s.detailedMessage();
     return false;
   }
   out.vertices = hull->vertices;

@@ -105,7 +105,7 @@ template <class T> void measure(const char* precision, const DemoOptions& option
     row.precision = precision;
     row.rays = options.rays;
     if (!shape.status.ok()) {
-      row.error = shape.status.message;
+      row.error = shape.status.detailedMessage();
       rows.push_back(row);
       continue;
     }
@@ -114,7 +114,7 @@ template <class T> void measure(const char* precision, const DemoOptions& option
     Status status;
     const std::vector<T> distances = castRays(shape, rays, options.repetitions, row.nsPerRay, status);
     if (!status.ok()) {
-      row.error = status.message;
+      row.error = status.detailedMessage();
       rows.push_back(row);
       continue;
     }

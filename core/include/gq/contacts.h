@@ -46,13 +46,13 @@ template <class T> struct TriangleContactSettings {
 template <class T>
 Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
                                 std::uint32_t triangleIndex, ContactBuffer<T>& contacts,
-                                const TriangleContactSettings<T>& settings = TriangleContactSettings<T>());
+                                const TriangleContactSettings<T>& settings = TriangleContactSettings<T>()) noexcept;
 
 template <class T>
 [[deprecated("pass the distances in a TriangleContactSettings; hasContacts is contacts.count > 0")]] inline Status
 generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
                          std::uint32_t triangleIndex, T contactDistance, T meshContactMargin, T toleranceLength,
-                         ContactBuffer<T>& contacts, bool& hasContacts) {
+                         ContactBuffer<T>& contacts, bool& hasContacts) noexcept {
   TriangleContactSettings<T> settings;
   settings.contactDistance = contactDistance;
   settings.meshContactMargin = meshContactMargin;

@@ -18,6 +18,7 @@ template <class T> class CustomGeometryCallbacks {
  public:
   virtual ~CustomGeometryCallbacks() = default;
 
+  // A string literal (static storage): a Status about the shape keeps the pointer and prints the name in toString().
   virtual const char* name() const = 0;
   // Tight local bounds.
   virtual Bounds3<T> localBounds() const = 0;

@@ -126,6 +126,6 @@ template <class T> class Geometry {
 };
 
 // Checks sizes (> 0 and finite; capsule halfHeight >= 0), cooked data present, scales finite and non-zero.
-template <class T> Status validateGeometry(const Geometry<T>& geom);
+template <class T> Status validateGeometry(const Geometry<T>& geom) noexcept;
 
 }  // namespace gq

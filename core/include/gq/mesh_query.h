@@ -23,12 +23,12 @@ template <class T> struct Triangle {
 // A mirrored scale swaps vertices 1 and 2 (and the reported vertex indices), so the winding stays outward.
 template <class T>
 Status getTriangle(const TriangleMeshGeometry<T>& mesh, const Transform<T>& pose, std::uint32_t triangleIndex,
-                   Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr);
+                   Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr) noexcept;
 
 // World-space triangle of a heightfield; vertex indices are sample indices (row * columns + column).
 template <class T>
 Status getTriangle(const HeightFieldGeometry<T>& heightField, const Transform<T>& pose,
-                   std::uint32_t triangleIndex, Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr);
+                   std::uint32_t triangleIndex, Triangle<T>& triangle, std::uint32_t* vertexIndices = nullptr) noexcept;
 
 
 // ---- Mesh and heightfield overlaps (PxMeshQuery::findOverlapTriangleMesh / findOverlapHeightField) ------------
@@ -53,17 +53,17 @@ struct TriangleOverlapPageResult {
 template <class T>
 Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
                                const Transform<T>& meshPose, const TriangleOverlapPage& page,
-                               TriangleOverlapPageResult& result);
+                               TriangleOverlapPageResult& result) noexcept;
 template <class T>
 Status findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose,
                               const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
-                              const TriangleOverlapPage& page, TriangleOverlapPageResult& result);
+                              const TriangleOverlapPage& page, TriangleOverlapPageResult& result) noexcept;
 
 template <class T>
 [[deprecated("pass a TriangleOverlapPage and receive a TriangleOverlapPageResult")]] inline Status
 findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
                         const Transform<T>& meshPose, std::uint32_t* results, std::uint32_t bufferSize,
-                        std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+                        std::uint32_t startIndex, bool& overflow, std::uint32_t& count) noexcept {
   TriangleOverlapPageResult out;
   const Status s =
       findOverlapTriangleMesh(geom, pose, mesh, meshPose, TriangleOverlapPage{results, bufferSize, startIndex}, out);
@@ -74,7 +74,7 @@ template <class T>
 [[deprecated("pass a TriangleOverlapPage and receive a TriangleOverlapPageResult")]] inline Status
 findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose, const HeightFieldGeometry<T>& heightField,
                        const Transform<T>& heightFieldPose, std::uint32_t* results, std::uint32_t bufferSize,
-                       std::uint32_t startIndex, bool& overflow, std::uint32_t& count) {
+                       std::uint32_t startIndex, bool& overflow, std::uint32_t& count) noexcept {
   TriangleOverlapPageResult out;
   const Status s = findOverlapHeightField(geom, pose, heightField, heightFieldPose,
                                           TriangleOverlapPage{results, bufferSize, startIndex}, out);
@@ -92,7 +92,7 @@ using TrianglePairCallback = std::function<bool(std::uint32_t triangle0, std::ui
 template <class T>
 Status findOverlapTriangleMeshPairs(const TrianglePairCallback& callback, const TriangleMeshGeometry<T>& mesh0,
                                     const Transform<T>& pose0, const TriangleMeshGeometry<T>& mesh1,
-                                    const Transform<T>& pose1, bool& overlapFound, T tolerance = T(0));
+                                    const Transform<T>& pose1, bool& overlapFound, T tolerance = T(0)) noexcept;
 
 // ---- Iterative mesh / heightfield penetration (PxComputeTriangleMeshPenetration, PxComputeHeightFieldPenetration)
 // `geom` is a sphere, capsule, box, convex mesh or convex custom shape. Each iteration takes the triangles the shape
@@ -104,11 +104,11 @@ Status findOverlapTriangleMeshPairs(const TrianglePairCallback& callback, const 
 template <class T>
 Status computeTriangleMeshPenetration(PenetrationResult<T>& result, const Geometry<T>& geom, const Transform<T>& pose,
                                       const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose,
-                                      std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr);
+                                      std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr) noexcept;
 template <class T>
 Status computeHeightFieldPenetration(PenetrationResult<T>& result, const Geometry<T>& geom, const Transform<T>& pose,
                                      const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
-                                     std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr);
+                                     std::uint32_t maxIter = 4, std::uint32_t* iterations = nullptr) noexcept;
 
 // ---- Sweep against an array of triangles (PxGeometryQuery::sweep with a PxTriangle buffer) ---------------------
 // The optional part of a triangle sweep.
@@ -130,7 +130,7 @@ template <class T> struct TriangleSweepSettings {
 template <class T>
 Status sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
                       const Triangle<T>* triangles, std::uint32_t triangleCount, SweepHit<T>& hit, bool& hasHit,
-                      const TriangleSweepSettings<T>& settings = TriangleSweepSettings<T>());
+                      const TriangleSweepSettings<T>& settings = TriangleSweepSettings<T>()) noexcept;
 
 // (Flags is deduced, so a braced `{}` after hasHit selects the settings form.)
 template <class T, class Flags, std::enable_if_t<std::is_convertible_v<Flags, HitFlags>, int> = 0>
@@ -138,7 +138,7 @@ template <class T, class Flags, std::enable_if_t<std::is_convertible_v<Flags, Hi
 sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
                const Triangle<T>* triangles, std::uint32_t triangleCount, SweepHit<T>& hit, bool& hasHit,
                Flags hitFlags, const std::uint32_t* cachedIndex = nullptr, T inflation = T(0),
-               bool doubleSided = false) {
+               bool doubleSided = false) noexcept {
   TriangleSweepSettings<T> settings;
   settings.flags = HitFlags(hitFlags);
   settings.cachedIndex = cachedIndex;

@@ -50,12 +50,12 @@ namespace gq {
 // report up to maxHits with HitFlag::MeshMultiple. `hitCount` receives the number of hits written.
 template <class T>
 Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
-               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount);
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept;
 
 // World AABB of `geom` at `pose`: extents grow by `offset`, then scale about the centre by `inflation`.
 template <class T>
 Status computeGeomBounds(Bounds3<T>& bounds, const Geometry<T>& geom, const Transform<T>& pose, T offset = T(0),
-                         T inflation = T(tol::kDefaultBoundsInflation));
+                         T inflation = T(tol::kDefaultBoundsInflation)) noexcept;
 
 template <class T> struct PointDistanceResult {
   T distance = T(0);                  // Euclidean (not squared); 0 inside a solid
@@ -66,12 +66,12 @@ template <class T> struct PointDistanceResult {
 // Distance from a point to a sphere, capsule, box, convex or triangle mesh (others: Unsupported).
 template <class T>
 Status pointDistance(const Vec3<T>& point, const Geometry<T>& geom, const Transform<T>& pose,
-                     PointDistanceResult<T>& result);
+                     PointDistanceResult<T>& result) noexcept;
 
 // Boolean overlap; touching counts as overlapping. Plane vs plane/mesh/heightfield: Unsupported.
 template <class T>
 Status overlap(const Geometry<T>& geom0, const Transform<T>& pose0, const Geometry<T>& geom1,
-               const Transform<T>& pose1, bool& overlapping);
+               const Transform<T>& pose1, bool& overlapping) noexcept;
 
 template <class T> struct PenetrationResult {
   bool penetrating = false;
@@ -82,7 +82,7 @@ template <class T> struct PenetrationResult {
 // Minimum translational distance (MTD) for convex pairs (including plane and custom convex).
 template <class T>
 Status computePenetration(PenetrationResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
-                          const Geometry<T>& geom1, const Transform<T>& pose1);
+                          const Geometry<T>& geom1, const Transform<T>& pose1) noexcept;
 
 template <class T> struct DistanceResult {
   T distance = T(0);                 // signed: > 0 separation, < 0 penetration depth (convex pairs)
@@ -104,7 +104,7 @@ template <class T> struct GjkCache {
 // Signed separation distance with witness points and normal.
 template <class T>
 Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
-                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache = nullptr);
+                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache = nullptr) noexcept;
 
 // Distance for a caller that keeps only distances below `maxDistance` (the nearest pair so far; MoveIt pre-seeds
 // FCL's result with it): GJK and mesh or heightfield searches stop once the pair is proven farther. A pair closer than
@@ -114,13 +114,13 @@ Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Trans
 template <class T>
 Status distanceWithin(DistanceResult<T>& result, bool& beyond, T maxDistance, const Geometry<T>& geom0,
                       const Transform<T>& pose0, const Geometry<T>& geom1, const Transform<T>& pose1,
-                      GjkCache<T>* cache = nullptr);
+                      GjkCache<T>* cache = nullptr) noexcept;
 
 // Sweeps geom0 from pose0 along unitDir up to maxDist against geom1 at pose1. `hasHit` says whether `hit` was
 // written. `inflation` grows geom0 by a rounded shell.
 template <class T>
 Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const Transform<T>& pose0,
              const Geometry<T>& geom1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit,
-             HitFlags hitFlags = kDefaultHitFlags, T inflation = T(0));
+             HitFlags hitFlags = kDefaultHitFlags, T inflation = T(0)) noexcept;
 
 }  // namespace gq

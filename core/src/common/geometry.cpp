@@ -141,7 +141,7 @@ template Problem pairGeometryProblem<float>(const Geometry<float>&);
 template Problem pairGeometryProblem<double>(const Geometry<double>&);
 }  // namespace detail
 
-template <class T> Status validateGeometry(const Geometry<T>& geom) { return detail::geometryProblem(geom).status(); }
+template <class T> Status validateGeometry(const Geometry<T>& geom) noexcept { return detail::geometryProblem(geom).status(); }
 
 template Status validateGeometry<float>(const Geometry<float>&);
 template Status validateGeometry<double>(const Geometry<double>&);

@@ -1,8 +1,11 @@
 #pragma once
 // Input checks shared by the query façades. Each returns Ok or an InvalidArgument status naming the field.
-// The success path builds no string: rules answer a Problem (a code and a static reason, none when valid), and the
-// Status with its message is composed only for a rejected input. A primitive query spends ~20 instructions here.
+// Nothing allocates: rules answer a Problem (a code and a static reason, none when valid) and messages are literals
+// (FieldText), with a number such as a vector's length as the Status detail. A primitive query spends ~20
+// instructions here.
 #include <cmath>
+#include <exception>
+#include <new>
 #include <string>
 #include <type_traits>
 
@@ -31,7 +34,6 @@ struct Problem {
 // 1e300 < 1.8e308. Beyond it a product overflows and an answer would be garbage (fuzz_pair_queries: a double sphere
 // of radius 1.8e308 gave a penetration direction of length 2e-33).
 template <class T> constexpr T kMaxMagnitude = std::is_same_v<T, float> ? T(1e9) : T(1e75);
-constexpr const char* kMaxMagnitudeText = "1e9 in float, 1e75 in double";
 
 // The geometry rules (common/geometry.cpp); validateGeometry() is their Status form. pairGeometryProblem adds the
 // size bound kMaxMagnitude of pair queries.
@@ -52,32 +54,49 @@ template <class T> bool poseIsValid(const Transform<T>& pose) {
   return T(0) * pose.p.x() + T(0) * pose.p.y() + T(0) * pose.p.z() == T(0) && isUnitQuaternion(pose.q);
 }
 
-template <class T> Status checkFinite(const Vec3<T>& v, const char* what) {
-  if (!isFinite(v)) return Status::invalid(std::string(what) + " is not finite");
+// The messages naming one input of a query: pre-composed literals, so a rejection builds no string.
+struct FieldText {
+  const char* notFinite;
+  const char* notUnit;  // a direction: "is not a unit vector"; a pose: "rotation is not a unit quaternion"
+};
+constexpr FieldText kPointField{"point is not finite", "point is not finite"};
+constexpr FieldText kRayOriginField{"ray origin is not finite", "ray origin is not finite"};
+constexpr FieldText kRayDirectionField{"ray direction is not finite", "ray direction is not a unit vector"};
+constexpr FieldText kSweepDirectionField{"sweep direction is not finite", "sweep direction is not a unit vector"};
+constexpr FieldText kPoseField{"pose is not finite", "pose rotation is not a unit quaternion"};
+constexpr FieldText kPose0Field{"pose0 is not finite", "pose0 rotation is not a unit quaternion"};
+constexpr FieldText kPose1Field{"pose1 is not finite", "pose1 rotation is not a unit quaternion"};
+constexpr FieldText kGeometryPoseField{"geometry pose is not finite", "geometry pose rotation is not a unit quaternion"};
+constexpr FieldText kMeshPoseField{"meshPose is not finite", "meshPose rotation is not a unit quaternion"};
+constexpr FieldText kHeightFieldPoseField{"heightFieldPose is not finite",
+                                          "heightFieldPose rotation is not a unit quaternion"};
+
+template <class T> Status checkFinite(const Vec3<T>& v, const FieldText& field) {
+  if (!isFinite(v)) return Status::invalid(field.notFinite);
   return {};
 }
 
-template <class T> Status checkUnitDirection(const Vec3<T>& d, const char* what) {
+// A non-unit direction's length goes in the Status detail (formatted by toString()).
+template <class T> Status checkUnitDirection(const Vec3<T>& d, const FieldText& field) {
   if (isFinite(d) && squaredNormIsUnit(double(d.squaredNorm()), tol::kUnitDirection)) return {};
-  if (!isFinite(d)) return Status::invalid(std::string(what) + " is not finite");
+  if (!isFinite(d)) return Status::invalid(field.notFinite);
   const double len = std::sqrt(double(d.squaredNorm()));
-  if (std::abs(len - 1.0) > tol::kUnitDirection)
-    return Status::invalid(std::string(what) + " is not a unit vector (length " + std::to_string(len) + ")");
+  if (std::abs(len - 1.0) > tol::kUnitDirection) return Status::invalid(field.notUnit).withLength(float(len));
   return {};
 }
 
-template <class T> Status checkPose(const Transform<T>& pose, const char* what) {
+template <class T> Status checkPose(const Transform<T>& pose, const FieldText& field) {
   if (poseIsValid(pose)) return {};
-  if (!pose.isFinite()) return Status::invalid(std::string(what) + " is not finite");
+  if (!pose.isFinite()) return Status::invalid(field.notFinite);
   const double n = std::sqrt(double(pose.q.squaredNorm()));
-  if (std::abs(n - 1.0) > tol::kUnitQuaternion)
-    return Status::invalid(std::string(what) + " rotation is not a unit quaternion (norm " + std::to_string(n) + ")");
+  if (std::abs(n - 1.0) > tol::kUnitQuaternion) return Status::invalid(field.notUnit).withNorm(float(n));
   return {};
 }
 
-template <class T> Status checkNonNegative(T x, const char* what) {
-  if (!std::isfinite(x) && !(x > 0)) return Status::invalid(std::string(what) + " is NaN or -inf");
-  if (!(x >= T(0))) return Status::invalid(std::string(what) + " is negative");
+// maxDist, the one non-negative scalar the queries take.
+template <class T> Status checkMaxDist(T x) {
+  if (!std::isfinite(x) && !(x > 0)) return Status::invalid("maxDist is NaN or -inf");
+  if (!(x >= T(0))) return Status::invalid("maxDist is negative");
   return {};
 }
 
@@ -88,9 +107,10 @@ template <class T> bool isNonConvexCustom(const Geometry<T>& g) {
 }
 
 // Geometry + pose, the pair every query takes.
-template <class T> Status checkGeometryAndPose(const Geometry<T>& g, const Transform<T>& pose, const char* poseName) {
+template <class T>
+Status checkGeometryAndPose(const Geometry<T>& g, const Transform<T>& pose, const FieldText& poseField) {
   if (const Problem p = geometryProblem(g)) return p.status();
-  return checkPose(pose, poseName);
+  return checkPose(pose, poseField);
 }
 
 // Both inputs of a pair query ("pose0", "pose1").
@@ -107,10 +127,9 @@ template <class T> bool pairPosesAreValid(const Transform<T>& p0, const Transfor
 }
 
 template <class T> Status pairPosesStatus(const Transform<T>& p0, const Transform<T>& p1) {
-  if (Status s = checkPose(p0, "pose0"); !s.ok()) return s;
-  if (Status s = checkPose(p1, "pose1"); !s.ok()) return s;
-  return Status::invalid(std::string("pose1 is too far from pose0: a pair query takes offsets up to ") +
-                         kMaxMagnitudeText);
+  if (Status s = checkPose(p0, kPose0Field); !s.ok()) return s;
+  if (Status s = checkPose(p1, kPose1Field); !s.ok()) return s;
+  return Status::invalid("pose1 is too far from pose0: a pair query takes offsets up to 1e9 in float, 1e75 in double");
 }
 
 template <class T>
@@ -119,30 +138,31 @@ Status checkPairInputs(const Geometry<T>& g0, const Transform<T>& p0, const Geom
       pairOffsetIsSupported(p0, p1))
     return {};
   if (const Problem p = pairGeometryProblem(g0)) return p.status();
-  if (Status s = checkPose(p0, "pose0"); !s.ok()) return s;
+  if (Status s = checkPose(p0, kPose0Field); !s.ok()) return s;
   if (const Problem p = pairGeometryProblem(g1)) return p.status();
-  if (Status s = checkPose(p1, "pose1"); !s.ok()) return s;
-  return Status::invalid(std::string("pose1 is too far from pose0: a pair query takes offsets up to ") +
-                         kMaxMagnitudeText);
+  return pairPosesStatus(p0, p1);
 }
 
 // A raw triangle given with a shape (generateTriangleContacts, sweepTriangles) is the second geometry of a pair
-// query: finite vertices within kMaxMagnitude of the shape's pose. nullptr when valid.
+// query: finite vertices within kMaxMagnitude of the shape's pose. nullptr when valid, else the whole message.
 template <class T> const char* rawTriangleProblem(const Triangle<T>& tri, const Transform<T>& pose) {
   for (const Vec3<T>& v : tri.verts) {
-    if (!isFinite(v)) return "has a non-finite vertex";
+    if (!isFinite(v)) return "the triangle has a non-finite vertex";
     if (!((v - pose.p).array().abs() <= kMaxMagnitude<T>).all())
-      return "has a vertex too far from the pose (offsets up to 1e9 in float, 1e75 in double)";
+      return "the triangle has a vertex too far from the pose (offsets up to 1e9 in float, 1e75 in double)";
   }
   return nullptr;
 }
 
-// Runs `body` (returning Status) and turns any escaping exception into InternalError: nothing throws out.
+// Runs `body` (returning Status) and turns any escaping exception into InternalError: nothing throws out. Only an
+// exception, which has allocated already, makes the one owned message (its what()) of a query.
 template <class F> Status guarded(F&& body) noexcept {
   try {
     return body();
+  } catch (const std::bad_alloc&) {
+    return Status::internal("out of memory");
   } catch (const std::exception& e) {
-    return Status::internal(e.what());
+    return Status::owned(StatusCode::InternalError, e.what());
   } catch (...) {
     return Status::internal("unknown exception");
   }

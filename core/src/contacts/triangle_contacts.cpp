@@ -143,12 +143,11 @@ Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const
   // Shape and triangle are a pair query's two geometries: sizes and offsets within kMaxMagnitude (a float triangle
   // 4e28 from the shape gave contact positions of -inf: fuzz_mesh_queries).
   if (const detail::Problem p = detail::pairGeometryProblem(geom)) return p.status();
-  if (Status s = detail::checkPose(pose, "pose"); !s.ok()) return s;
+  if (Status s = detail::checkPose(pose, detail::kPoseField); !s.ok()) return s;
   const GeometryType t = geom.type();
   if (t != GeometryType::Capsule && t != GeometryType::Box && t != GeometryType::ConvexMesh)
-    return Status::unsupported(std::string("generateTriangleContacts with a ") + toString(t) +
-                               " (capsule, box or convex mesh only)");
-  if (const char* problem = detail::rawTriangleProblem(tri, pose)) return Status::invalid(std::string("the triangle ") + problem);
+    return Status::unsupported("generateTriangleContacts takes a capsule, box or convex mesh").withType(t);
+  if (const char* problem = detail::rawTriangleProblem(tri, pose)) return Status::invalid(problem);
   if (!(std::isfinite(contactDistance) && contactDistance >= T(0))) return Status::invalid("contactDistance must be finite and >= 0");
   if (!(std::isfinite(meshContactMargin) && meshContactMargin >= T(0))) return Status::invalid("meshContactMargin must be finite and >= 0");
   if (!(std::isfinite(toleranceLength) && toleranceLength > T(0))) return Status::invalid("toleranceLength must be finite and > 0");
@@ -162,7 +161,7 @@ Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const
 template <class T>
 Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
                                 std::uint32_t triangleIndex, ContactBuffer<T>& contacts,
-                                const TriangleContactSettings<T>& settings) {
+                                const TriangleContactSettings<T>& settings) noexcept {
   return detail::guarded([&]() -> Status {
     const T contactDistance = settings.contactDistance;
     const T meshContactMargin = settings.meshContactMargin;
@@ -231,7 +230,7 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
       // Nothing under the face (the shape is beside the triangle): keep the closest point and its normal.
       if (!face.empty()) {
         normal = n;
-        candidates.swap(face);
+        candidates.assign(face.begin(), face.end());  // copied, not swapped: each buffer keeps its capacity
       }
     }
     std::array<Candidate<T>, kMaxTriangleContacts> kept;

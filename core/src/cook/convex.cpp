@@ -76,7 +76,7 @@ Status runQhull(std::vector<double>& coords, double premergeRadius, std::vector<
   const int exitCode = qh_new_qhull(qh, 3, numPoints, coords.data(), False, command.data(), nullptr, err);
   Status status;
   if (exitCode != 0) {
-    status = Status::degenerate("convex hull failed (points coplanar, collinear or coincident?): qhull: " +
+    status = Status::owned(StatusCode::DegenerateMesh, "convex hull failed (points coplanar, collinear or coincident?): qhull: " +
                                 sink.firstLine());
   } else {
     facetT* facet;
@@ -208,16 +208,16 @@ Status cookConvexMesh(const std::vector<Vec3<T>>& points, std::shared_ptr<const 
                       const ConvexCookParams& params) {
   try {
     if (points.size() < 4)
-      return Status::degenerate("convex hull needs at least 4 points (got " + std::to_string(points.size()) + ")");
+      return Status::owned(StatusCode::DegenerateMesh, "convex hull needs at least 4 points (got " + std::to_string(points.size()) + ")");
     if (!(params.planeTolerance >= 0) || !std::isfinite(params.planeTolerance))
       return Status::invalid("planeTolerance must be finite and >= 0");
     std::vector<Vec3d> input;
     input.reserve(points.size());
     Bounds3<double> box;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (!isFinite(points[i])) return Status::invalid("convex point " + std::to_string(i) + " is not finite");
+      if (!isFinite(points[i])) return Status::owned(StatusCode::InvalidArgument, "convex point " + std::to_string(i) + " is not finite");
       if (points[i].template cast<double>().cwiseAbs().maxCoeff() > kMaxHullCoordinate)
-        return Status::invalid("convex point " + std::to_string(i) + " has a coordinate beyond 1e50");
+        return Status::owned(StatusCode::InvalidArgument, "convex point " + std::to_string(i) + " has a coordinate beyond 1e50");
       input.push_back(points[i].template cast<double>());
       box.include(input.back());
     }
@@ -233,7 +233,7 @@ Status cookConvexMesh(const std::vector<Vec3<T>>& points, std::shared_ptr<const 
     out = std::move(hull);
     return {};
   } catch (const std::exception& e) {
-    return Status::internal(std::string("convex cooking: ") + e.what());
+    return Status::owned(StatusCode::InternalError, std::string("convex cooking: ") + e.what());
   }
 }
 

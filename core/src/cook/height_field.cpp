@@ -14,22 +14,22 @@ namespace {
 
 template <class T> Status validateHeightFieldDesc(const HeightFieldDesc<T>& desc) {
   if (desc.rows < 2 || desc.columns < 2)
-    return Status::invalid("heightfield needs at least 2 rows and 2 columns of samples (got " +
+    return Status::owned(StatusCode::InvalidArgument, "heightfield needs at least 2 rows and 2 columns of samples (got " +
                            std::to_string(desc.rows) + " x " + std::to_string(desc.columns) + ")");
   const std::uint64_t samples = std::uint64_t(desc.rows) * desc.columns;
   if (samples > tol::kMaxHeightFieldSamples)
-    return Status::invalid("heightfield has " + std::to_string(samples) + " samples, more than the limit of " +
+    return Status::owned(StatusCode::InvalidArgument, "heightfield has " + std::to_string(samples) + " samples, more than the limit of " +
                            std::to_string(tol::kMaxHeightFieldSamples));
   if (desc.heights.size() != samples)
-    return Status::invalid("heightfield heights has " + std::to_string(desc.heights.size()) +
+    return Status::owned(StatusCode::InvalidArgument, "heightfield heights has " + std::to_string(desc.heights.size()) +
                            " entries, expected rows * columns = " + std::to_string(samples));
   for (std::size_t i = 0; i < desc.heights.size(); ++i)
     if (!std::isfinite(desc.heights[i]))
-      return Status::invalid("heightfield height " + std::to_string(i) + " is not finite");
+      return Status::owned(StatusCode::InvalidArgument, "heightfield height " + std::to_string(i) + " is not finite");
   const std::uint64_t cells = std::uint64_t(desc.rows - 1) * (desc.columns - 1);
   for (std::uint32_t h : desc.holes)
     if (h >= cells)
-      return Status::invalid("heightfield hole index " + std::to_string(h) + " is out of range (" +
+      return Status::owned(StatusCode::InvalidArgument, "heightfield hole index " + std::to_string(h) + " is out of range (" +
                              std::to_string(cells) + " cells)");
   return {};
 }

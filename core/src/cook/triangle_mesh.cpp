@@ -21,11 +21,11 @@ template <class T> Status validateMeshInput(const std::vector<Vec3<T>>& vertices
   if (triangles.size() > std::size_t(Bvh4Node::kLeafFirstMask))
     return Status::invalid("triangle mesh has more than 2^28 triangles");
   for (std::size_t i = 0; i < vertices.size(); ++i)
-    if (!isFinite(vertices[i])) return Status::invalid("vertex " + std::to_string(i) + " is not finite");
+    if (!isFinite(vertices[i])) return Status::owned(StatusCode::InvalidArgument, "vertex " + std::to_string(i) + " is not finite");
   for (std::size_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
       if (triangles[t][k] >= vertices.size())
-        return Status::invalid("triangle " + std::to_string(t) + " has vertex index " +
+        return Status::owned(StatusCode::InvalidArgument, "triangle " + std::to_string(t) + " has vertex index " +
                                std::to_string(triangles[t][k]) + " out of range (" + std::to_string(vertices.size()) +
                                " vertices)");
   return {};
@@ -104,7 +104,7 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
       primBounds.push_back(detail::roundOutward<T>(a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)));
     }
     if (kept.empty())
-      return Status::degenerate("all " + std::to_string(triangles.size()) + " triangles are degenerate (zero area)");
+      return Status::owned(StatusCode::DegenerateMesh, "all " + std::to_string(triangles.size()) + " triangles are degenerate (zero area)");
 
     auto mesh = std::make_shared<TriangleMesh<T>>();
     mesh->vertices = vertices;

@@ -15,8 +15,8 @@ template <class T> const CustomGeometryCallbacks<T>* callbacksIf(const Geometry<
   return c ? c->callbacks.get() : nullptr;
 }
 
-template <class T> Status badAnswer(const CustomGeometryCallbacks<T>& cb, const char* what) {
-  return Status::internal(std::string("the custom geometry '") + cb.name() + "' returned " + what);
+template <class T> Status badAnswer(const CustomGeometryCallbacks<T>& cb, CustomIssue issue) {
+  return Status::aboutCustom(StatusCode::InternalError, issue, cb.name());
 }
 
 // The penetration callback of `self` (at pSelf) against `other` (at pOther). `sign` = +1 when self is geom0, -1 when
@@ -33,7 +33,7 @@ Status askPenetration(const CustomGeometryCallbacks<T>& self, const Transform<T>
   if (pen) {
     const T unitError = std::abs(dirLocal.norm() - T(1));
     if (!isFinite(dirLocal) || !std::isfinite(d) || d < T(0) || !(unitError <= T(tol::kUnitDirection)))
-      return badAnswer(self, "a non-finite, negative or non-unit penetration");
+      return badAnswer(self, CustomIssue::BadPenetration);
     direction = sign * pSelf.rotate(dirLocal.normalized());
     depth = d;
   }
@@ -52,7 +52,7 @@ Status askDistance(const CustomGeometryCallbacks<T>& self, const Transform<T>& p
   const T unitError = std::abs(local.normal.norm() - T(1));
   if (!std::isfinite(local.distance) || !isFinite(local.point0) || !isFinite(local.point1) ||
       !(unitError <= T(tol::kUnitDirection)))
-    return badAnswer(self, "a non-finite distance or a normal that is not unit");
+    return badAnswer(self, CustomIssue::BadDistance);
   out.distance = local.distance;
   out.normal = (flip ? T(-1) : T(1)) * pSelf.rotate(local.normal);
   out.point0 = pSelf.transform(flip ? local.point1 : local.point0);

@@ -58,12 +58,12 @@ namespace {
 // The one path of both overloads once the geometry is valid.
 template <class T>
 Status boundsOfGeometry(Bounds3<T>& bounds, const Geometry<T>& geom, const Transform<T>& pose, T offset, T inflation) {
-  if (Status s = detail::checkPose(pose, "geometry pose"); !s.ok()) return s;
+  if (Status s = detail::checkPose(pose, detail::kGeometryPoseField); !s.ok()) return s;
   if (!std::isfinite(offset) || offset < T(0)) return Status::invalid("bounds offset must be finite and >= 0");
   if (!std::isfinite(inflation) || !(inflation > T(0))) return Status::invalid("bounds inflation must be finite and > 0");
   const Bounds3<T> tight = kBoundsTable<T>[static_cast<std::size_t>(geom.type())](geom, pose);
   if (tight.isEmpty() || !isFinite(tight.min) || !isFinite(tight.max))
-    return Status::internal(std::string("bounds kernel for ") + toString(geom.type()) + " returned no box");
+    return Status::internal("the bounds kernel of this geometry type returned no box").withType(geom.type());
   const bool unbounded = isUnbounded(tight.min.minCoeff()) || isUnbounded(tight.max.maxCoeff());
   const Bounds3<T> out = unbounded ? growUnbounded(tight, offset) : grow(tight, offset, inflation);
   if (!isFinite(out.min) || !isFinite(out.max)) return Status::invalid("bounds overflow the scalar range");
@@ -75,7 +75,7 @@ Status boundsOfGeometry(Bounds3<T>& bounds, const Geometry<T>& geom, const Trans
 
 template <class T>
 Status computeGeomBounds(Bounds3<T>& bounds, const Geometry<T>& geom, const Transform<T>& pose, T offset,
-                         T inflation) {
+                         T inflation) noexcept {
   return detail::guarded([&]() -> Status {
     if (const detail::Problem p = detail::geometryProblem(geom)) return p.status();
     return boundsOfGeometry(bounds, geom, pose, offset, inflation);

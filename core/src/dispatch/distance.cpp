@@ -86,7 +86,8 @@ Status boxBox(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& 
 template <class T>
 Status unsupported(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&,
                    GjkCache<T>*, DistanceResult<T>&, T) {
-  return Status::unsupported(std::string("distance between ") + toString(g0.type()) + " and " + toString(g1.type()));
+  return Status::unsupported("distance is not available between this pair of geometry types")
+      .withTypes(g0.type(), g1.type());
 }
 
 // The mirrored pair: runs Fn(geom1, geom0) and flips the answer. The cache direction lives in the caller's geom0
@@ -304,7 +305,7 @@ Status distancePrepared(DistanceResult<T>& result, const Shape<T>& shape0, const
 
 template <class T>
 Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
-                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache) {
+                const Geometry<T>& geom1, const Transform<T>& pose1, GjkCache<T>* cache) noexcept {
   return detail::distanceGeometries(result, geom0, pose0, geom1, pose1, cache, std::numeric_limits<T>::infinity(),
                                     static_cast<bool*>(nullptr));
 }
@@ -312,7 +313,7 @@ Status distance(DistanceResult<T>& result, const Geometry<T>& geom0, const Trans
 template <class T>
 Status distanceWithin(DistanceResult<T>& result, bool& beyond, T maxDistance, const Geometry<T>& geom0,
                       const Transform<T>& pose0, const Geometry<T>& geom1, const Transform<T>& pose1,
-                      GjkCache<T>* cache) {
+                      GjkCache<T>* cache) noexcept {
   return detail::distanceGeometries(result, geom0, pose0, geom1, pose1, cache, maxDistance, &beyond);
 }
 

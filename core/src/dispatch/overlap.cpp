@@ -108,20 +108,20 @@ Status customFirst(const Geometry<T>& g0, const Transform<T>& p0, const Geometry
 // The rejection of a pair in which a custom shape is not convex (only raycast and bounds answer those).
 template <class T> Status nonConvexCustomStatus(const Geometry<T>& g0, const Geometry<T>& g1) {
   const Geometry<T>& g = detail::isNonConvexCustom(g0) ? g0 : g1;
-  return Status::unsupported(std::string("overlap with the non-convex custom geometry '") + callbacksOf(g).name() +
-                             "' (only raycast and bounds are available for it)");
+  return Status::aboutCustom(StatusCode::Unsupported, CustomIssue::NonConvexOverlap, callbacksOf(g).name());
 }
 
 template <class T>
 Status notDefinedBySpec(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&, bool&) {
-  return Status::unsupported(std::string("overlap of ") + toString(g0.type()) + " and " + toString(g1.type()) +
-                             " is not defined by the spec (PhysX does not support this pair)");
+  return Status::unsupported("overlap of this pair of geometry types is not defined by the spec (PhysX does not "
+                             "support it)")
+      .withTypes(g0.type(), g1.type());
 }
 
 template <class T>
 Status notYetImplemented(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&, bool&) {
-  return Status::unsupported(std::string("overlap of ") + toString(g0.type()) + " and " + toString(g1.type()) +
-                             " is not implemented yet");
+  return Status::unsupported("overlap of this pair of geometry types is not implemented yet")
+      .withTypes(g0.type(), g1.type());
 }
 
 template <class T, GeometryType A, GeometryType B, OverlapFn<T> Fn> constexpr void setPair(OverlapTable<T>& table) {
@@ -231,7 +231,7 @@ template <class T>
 
 template <class T>
 Status overlap(const Geometry<T>& geom0, const Transform<T>& pose0, const Geometry<T>& geom1,
-               const Transform<T>& pose1, bool& overlapping) {
+               const Transform<T>& pose1, bool& overlapping) noexcept {
   return detail::guarded([&]() -> Status {
     if (detail::pairGeometryProblem(geom0) || detail::pairGeometryProblem(geom1)) [[unlikely]]
       return detail::checkPairInputs(geom0, pose0, geom1, pose1);

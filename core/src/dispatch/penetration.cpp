@@ -110,8 +110,7 @@ Status customFirst(const Geometry<T>& g0, const Transform<T>& p0, const Geometry
 // The rejection of a pair in which a custom shape is not convex (only raycast and bounds answer those).
 template <class T> Status nonConvexCustomStatus(const Geometry<T>& g0, const Geometry<T>& g1) {
   const Geometry<T>& g = detail::isNonConvexCustom(g0) ? g0 : g1;
-  return Status::unsupported(std::string("penetration with the non-convex custom geometry '") + callbacksOf(g).name() +
-                             "' (only raycast and bounds are available for it)");
+  return Status::aboutCustom(StatusCode::Unsupported, CustomIssue::NonConvexPenetration, callbacksOf(g).name());
 }
 
 // A convex shape against a triangle mesh or heightfield: the spec's iterative algorithm with its usual 4 iterations.
@@ -127,8 +126,9 @@ Status surfaceKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geomet
 
 template <class T>
 Status notDefinedBySpec(const Geometry<T>& g0, const Transform<T>&, const Geometry<T>& g1, const Transform<T>&, PenetrationResult<T>&) {
-  return Status::unsupported(std::string("penetration of ") + toString(g0.type()) + " and " + toString(g1.type()) +
-                             " is not defined by the spec (PhysX does not support this pair)");
+  return Status::unsupported("penetration of this pair of geometry types is not defined by the spec (PhysX does not "
+                             "support it)")
+      .withTypes(g0.type(), g1.type());
 }
 
 template <class T, GeometryType A, GeometryType B, PenetrationFn<T> Fn> constexpr void setPair(PenetrationTable<T>& table) {
@@ -251,7 +251,7 @@ template <class T>
 
 template <class T>
 Status computePenetration(PenetrationResult<T>& result, const Geometry<T>& geom0, const Transform<T>& pose0,
-                          const Geometry<T>& geom1, const Transform<T>& pose1) {
+                          const Geometry<T>& geom1, const Transform<T>& pose1) noexcept {
   return detail::guarded([&]() -> Status {
     if (detail::pairGeometryProblem(geom0) || detail::pairGeometryProblem(geom1)) [[unlikely]]
       return detail::checkPairInputs(geom0, pose0, geom1, pose1);

@@ -22,7 +22,7 @@ Status call(const Geometry<T>& g, const Transform<T>& pose, const Vec3<T>& point
 
 template <class T>
 Status unsupported(const Geometry<T>& g, const Transform<T>&, const Vec3<T>&, PointDistanceResult<T>&) {
-  return Status::unsupported(std::string("pointDistance to a ") + toString(g.type()));
+  return Status::unsupported("pointDistance is not available for this geometry type").withType(g.type());
 }
 
 template <class T> constexpr std::array<PointDistanceFn<T>, kGeometryTypeCount> kPointDistanceTable = {
@@ -45,7 +45,7 @@ namespace {
 template <class T>
 Status pointDistanceGeometry(const Vec3<T>& point, const Geometry<T>& geom, const Transform<T>& pose,
                              PointDistanceResult<T>& result) {
-  if (Status s = detail::checkPose(pose, "geometry pose"); !s.ok()) return s;
+  if (Status s = detail::checkPose(pose, detail::kGeometryPoseField); !s.ok()) return s;
   PointDistanceResult<T> out;
   if (Status s = kPointDistanceTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, point, out); !s.ok())
     return s;
@@ -59,9 +59,9 @@ Status pointDistanceGeometry(const Vec3<T>& point, const Geometry<T>& geom, cons
 
 template <class T>
 Status pointDistance(const Vec3<T>& point, const Geometry<T>& geom, const Transform<T>& pose,
-                     PointDistanceResult<T>& result) {
+                     PointDistanceResult<T>& result) noexcept {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkFinite(point, "point"); !s.ok()) return s;
+    if (Status s = detail::checkFinite(point, detail::kPointField); !s.ok()) return s;
     if (const detail::Problem p = detail::geometryProblem(geom)) return p.status();
     return pointDistanceGeometry(point, geom, pose, result);
   });
@@ -71,7 +71,7 @@ template <class T>
 Status pointDistance(const Vec3<T>& point, const Shape<T>& shape, const Transform<T>& pose,
                      PointDistanceResult<T>& result) noexcept {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkFinite(point, "point"); !s.ok()) return s;
+    if (Status s = detail::checkFinite(point, detail::kPointField); !s.ok()) return s;
     if (!detail::ShapeAccess<T>::made(shape)) return Status::invalid(detail::emptyShapeText());
     return pointDistanceGeometry(point, shape.geometry(), pose, result);
   });

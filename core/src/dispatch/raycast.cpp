@@ -37,9 +37,9 @@ template <class T> constexpr std::array<RaycastFn<T>, kGeometryTypeCount> kRayca
 template <class T>
 Status validateRay(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, HitFlags flags, std::uint32_t maxHits,
                    const RaycastHit<T>* hits) {
-  if (Status s = detail::checkFinite(origin, "ray origin"); !s.ok()) return s;
-  if (Status s = detail::checkUnitDirection(dir, "ray direction"); !s.ok()) return s;
-  if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
+  if (Status s = detail::checkFinite(origin, detail::kRayOriginField); !s.ok()) return s;
+  if (Status s = detail::checkUnitDirection(dir, detail::kRayDirectionField); !s.ok()) return s;
+  if (Status s = detail::checkMaxDist(maxDist); !s.ok()) return s;
   if (maxHits == 0) return Status::invalid("maxHits must be >= 1");
   if (hits == nullptr) return Status::invalid("hit buffer is null");
   if (flags.has(HitFlag::Mtd) || flags.has(HitFlag::PreciseSweep) || flags.has(HitFlag::AssumeNoInitialOverlap))
@@ -48,7 +48,7 @@ Status validateRay(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, HitFlag
 }
 
 template <class T> Status validateRayPose(const Vec3<T>& origin, const Transform<T>& pose) {
-  if (Status s = detail::checkPose(pose, "geometry pose"); !s.ok()) return s;
+  if (Status s = detail::checkPose(pose, detail::kGeometryPoseField); !s.ok()) return s;
   // Kernels work in the geometry's frame; an origin whose offset from the pose overflows T has no local position.
   if (!isFinite(Vec3<T>(origin - pose.p)))
     return Status::invalid("ray origin is too far from the geometry pose: their difference overflows the precision");
@@ -76,7 +76,7 @@ Status raycastGeometry(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geom
 
 template <class T>
 Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
-               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount) {
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept {
   return detail::guarded([&]() -> Status {
     if (Status s = validateRay(origin, unitDir, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
     if (const detail::Problem p = detail::geometryProblem(geom)) return p.status();

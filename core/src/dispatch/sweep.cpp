@@ -72,8 +72,8 @@ bool isSweepable(GeometryType t) {
 // Everything but the geometries' own checks (a prepared shape made them once).
 template <class T>
 Status validateSweepQuery(const Vec3<T>& dir, T maxDist, HitFlags flags, T inflation) {
-  if (Status s = detail::checkUnitDirection(dir, "sweep direction"); !s.ok()) return s;
-  if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
+  if (Status s = detail::checkUnitDirection(dir, detail::kSweepDirectionField); !s.ok()) return s;
+  if (Status s = detail::checkMaxDist(maxDist); !s.ok()) return s;
   if (!std::isfinite(inflation) || inflation < T(0)) return Status::invalid("inflation must be finite and >= 0");
   if (flags.has(HitFlag::MeshMultiple)) return Status::invalid("meshMultiple is not supported by sweeps (one hit)");
   return {};
@@ -81,25 +81,27 @@ Status validateSweepQuery(const Vec3<T>& dir, T maxDist, HitFlags flags, T infla
 
 template <class T> Status validateSweepTypes(const Geometry<T>& g0, const Geometry<T>& g1) {
   if (!isSweepable(g0.type()))
-    return Status::unsupported(std::string("sweeping a ") + toString(g0.type()) +
-                               " (the swept geometry must be a sphere, capsule, box or convex mesh)");
+    return Status::unsupported("the swept geometry must be a sphere, capsule, box or convex mesh").withType(g0.type());
   if (const auto* c = g1.template getIf<CustomGeometry<T>>(); c && !c->callbacks->isConvex())
     return Status::unsupported("sweep against a non-convex custom geometry");
   return {};
 }
 
-// Applies the spec's incompatibilities: returns the flags to use and a warning message ("" if none).
-template <class T> HitFlags resolveFlags(HitFlags flags, T maxDist, T inflation, std::string& warning) {
+// Applies the spec's incompatibilities: returns the flags to use and a warning message (nullptr if none). The mtd
+// rule removes the flags of the other two, so only the last two can apply together: their message is composed here.
+template <class T> HitFlags resolveFlags(HitFlags flags, T maxDist, T inflation, const char*& warning) {
   if (flags.has(HitFlag::Mtd) && (flags.has(HitFlag::PreciseSweep) || flags.has(HitFlag::AssumeNoInitialOverlap))) {
-    warning += "mtd is incompatible with preciseSweep and assumeNoInitialOverlap: those are ignored. ";
+    warning = "mtd is incompatible with preciseSweep and assumeNoInitialOverlap: those are ignored.";
     flags = flags.without(HitFlag::PreciseSweep | HitFlag::AssumeNoInitialOverlap);
   }
   if (flags.has(HitFlag::PreciseSweep) && inflation > T(0)) {
-    warning += "preciseSweep is incompatible with inflation: preciseSweep is ignored. ";
+    warning = "preciseSweep is incompatible with inflation: preciseSweep is ignored.";
     flags = flags.without(HitFlag::PreciseSweep);
   }
   if (flags.has(HitFlag::AssumeNoInitialOverlap) && maxDist == T(0)) {
-    warning += "assumeNoInitialOverlap with a zero-length sweep: ignored, the overlap is tested. ";
+    warning = warning ? "preciseSweep is incompatible with inflation: preciseSweep is ignored. assumeNoInitialOverlap "
+                        "with a zero-length sweep: ignored, the overlap is tested."
+                      : "assumeNoInitialOverlap with a zero-length sweep: ignored, the overlap is tested.";
     flags = flags.without(HitFlag::AssumeNoInitialOverlap);
   }
   return flags;
@@ -153,7 +155,7 @@ Status sweepShapes(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, 
   return guarded([&]() -> Status {
     if (!pairPosesAreValid(pose0, pose1)) return pairPosesStatus(pose0, pose1);
     if (Status s = validateSweepTypes(geom0, geom1); !s.ok()) return s;
-    std::string warning;
+    const char* warning = nullptr;
     const T reach = std::min(maxDist, T(tol::kMaxSweepDistance));
     const HitFlags flags = resolveFlags(hitFlags, reach, inflation, warning);
 
@@ -177,7 +179,7 @@ Status sweepShapes(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, 
     if (!finiteOutcome(o)) return Status::internal("sweep produced a non-finite result");
     hasHit = o.hit;
     if (o.hit) writeHit(o, q, pose0.p, hit);
-    return warning.empty() ? Status() : Status::warning(warning);
+    return warning ? Status::warning(warning) : Status();
   });
 }
 
@@ -186,7 +188,7 @@ Status sweepShapes(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, 
 template <class T>
 Status sweep(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom0, const Transform<T>& pose0,
              const Geometry<T>& geom1, const Transform<T>& pose1, SweepHit<T>& hit, bool& hasHit, HitFlags hitFlags,
-             T inflation) {
+             T inflation) noexcept {
   return detail::guarded([&]() -> Status {
     if (Status s = validateSweepQuery(unitDir, maxDist, hitFlags, inflation); !s.ok()) return s;
     if (detail::pairGeometryProblem(geom0) || detail::pairGeometryProblem(geom1))

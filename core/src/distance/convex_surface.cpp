@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "bvh/traverse.h"
 #include "distance/surface_distance.h"
 #include "mesh_pairs/shape_triangle.h"
 #include "mesh_pairs/surface.h"
@@ -40,12 +41,12 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
     std::uint32_t ref;
     T lower;
   };
-  std::vector<Entry> stack;
-  stack.reserve(64);
-  stack.push_back({bvh.rootChild, T(0)});
-  while (!stack.empty()) {
-    const Entry e = stack.back();
-    stack.pop_back();
+  // A fixed stack (no allocation): at most 4 pushes per level of a BVH's bounded depth (bvh/traverse.h).
+  Entry stack[kBvhStackSize];
+  int top = 0;
+  stack[top++] = {bvh.rootChild, T(0)};
+  while (top > 0) {
+    const Entry e = stack[--top];
     if (e.lower > best.boundSq()) continue;
     if (Bvh4Node::isLeaf(e.ref)) {
       for (std::uint32_t k = 0; k < Bvh4Node::leafCount(e.ref); ++k) {
@@ -67,7 +68,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
       const Entry c{node.child[lane], boxDistanceSq(box, mesh.childWorldBounds(node, lane))};
       if (!(c.lower > best.boundSq())) insertNearestLast(children, n, c);
     }
-    for (int i = 0; i < n; ++i) stack.push_back(children[i]);
+    for (int i = 0; i < n; ++i) stack[top++] = children[i];
   }
 }
 

@@ -40,7 +40,7 @@ Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geome
   }
   if (!g.coresOverlap) {
     writeSeparated(g, out);
-    return g.status.ok() ? Status() : Status::warning(g.status.message);
+    return g.status.ok() ? Status() : g.status.withCode(StatusCode::Warning);
   }
   const EpaResult<T> e = epaPenetration(a, b, &g.simplex);
   const auto* h0 = g0.template getIf<ConvexMeshGeometry<T>>();
@@ -50,7 +50,7 @@ Status distanceGjk(const Geometry<T>& g0, const Transform<T>& pose0, const Geome
   out.normal = e.normal;
   out.point0 = e.point0;
   out.point1 = e.point1;
-  return e.status.ok() ? Status() : Status::warning(e.status.message);
+  return e.status.ok() ? Status() : e.status.withCode(StatusCode::Warning);
 }
 
 template Status distanceGjk<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&,

@@ -454,8 +454,7 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
   finishPenetration(a, b, upperPoint.a, upperPoint.b, n, upper, r);
   const T curved = T(kEpaCurvedTolerance) * (a.size + b.size);  // the size of D = A - B
   if (!(upper - lower <= std::max(tolerance, curved)))
-    r.status = Status::notConverged("EPA stopped after " + std::to_string(it) + " iterations with error bound " +
-                                    std::to_string(double(upper - lower)));
+    r.status = Status::notConverged("EPA stopped without a certified depth").withIterations(it, float(upper - lower));
   return r;
 }
 

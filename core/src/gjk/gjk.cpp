@@ -203,8 +203,7 @@ GjkResult<T> gjkDistance(const ConvexShape<T>& a, const ConvexShape<T>& b, GjkCa
   r.iterations = it;
   r.errorBound = r.coresOverlap ? T(0) : std::max(T(0), v.norm() - lowerBound);
   if (!converged && !r.beyond && !(r.errorBound <= gapTolerance))
-    r.status = Status::notConverged("GJK stopped after " + std::to_string(it) + " iterations with error bound " +
-                                    std::to_string(double(r.errorBound)));
+    r.status = Status::notConverged("GJK stopped without a certified distance").withIterations(it, float(r.errorBound));
   if (r.beyond) {
     r.distance = lowerBound - a.margin - b.margin;
   } else if (!r.coresOverlap) {

@@ -48,15 +48,15 @@ template <class T> void appendNode(const aiScene& scene, const aiNode& node, con
 }
 
 template <class T> Status loadWithAssimp(const std::string& path, MeshData<T>& out, bool ignoreRootTransform) {
-  if (!std::ifstream(path).good()) return Status::fileError("cannot open mesh file '" + path + "'");
+  if (!std::ifstream(path).good()) return Status::owned(StatusCode::FileError, "cannot open mesh file '" + path + "'");
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (scene == nullptr || scene->mRootNode == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-    return Status::parseError("cannot parse mesh file '" + path + "': " + importer.GetErrorString());
+    return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': " + importer.GetErrorString());
   MeshData<T> data;
   // The root's own transform (e.g. a DAE up-axis conversion) is dropped on request; children keep theirs.
   appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), !ignoreRootTransform, data);
-  if (data.triangles.empty()) return Status::parseError("mesh file '" + path + "' contains no triangles");
+  if (data.triangles.empty()) return Status::owned(StatusCode::ParseError, "mesh file '" + path + "' contains no triangles");
   out = std::move(data);
   return Status();
 }

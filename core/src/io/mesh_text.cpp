@@ -11,11 +11,11 @@ namespace gq::io {
 
 Status readFileText(const std::string& path, std::string& text) {
   std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) return Status::fileError("mesh file '" + path + "' is a folder");
+  if (std::filesystem::is_directory(path, ignored)) return Status::owned(StatusCode::FileError, "mesh file '" + path + "' is a folder");
   std::ifstream in(path, std::ios::binary);
-  if (!in.good()) return Status::fileError("cannot open mesh file '" + path + "'");
+  if (!in.good()) return Status::owned(StatusCode::FileError, "cannot open mesh file '" + path + "'");
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Status::fileError("cannot read mesh file '" + path + "'");
+  if (in.bad()) return Status::owned(StatusCode::FileError, "cannot read mesh file '" + path + "'");
   text = std::move(content);
   return Status();
 }
@@ -53,7 +53,7 @@ std::string_view nextToken(std::string_view line, std::size_t& pos) {
 }
 
 Status lineError(const std::string& path, std::size_t line, const std::string& what) {
-  return Status::parseError("cannot parse mesh file '" + path + "': line " + std::to_string(line) + ": " + what);
+  return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': line " + std::to_string(line) + ": " + what);
 }
 
 template <class T>

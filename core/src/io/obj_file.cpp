@@ -45,12 +45,12 @@ template <class T> Status readObj(const std::string& path, const std::string& te
   if (!tinyobj::LoadObj(&attrib, &shapes, nullptr, &warn, &err, &stream, nullptr, /*triangulate=*/false,
                         /*default_vcols_fallback=*/false)) {
     while (!err.empty() && (err.back() == '\n' || err.back() == '.')) err.pop_back();
-    return Status::parseError("cannot parse mesh file '" + path + "': " + (err.empty() ? "invalid OBJ" : err));
+    return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': " + (err.empty() ? "invalid OBJ" : err));
   }
   std::vector<Vec3<T>> positions;
   if (Status s = readVertexLines(path, text, positions); !s.ok()) return s;
   if (positions.size() * 3 != attrib.vertices.size())
-    return Status::parseError("cannot parse mesh file '" + path + "': " + std::to_string(positions.size()) +
+    return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': " + std::to_string(positions.size()) +
                               " vertex lines but " + std::to_string(attrib.vertices.size() / 3) + " vertices");
 
   std::vector<TriangleIndices> triangles;
@@ -60,12 +60,12 @@ template <class T> Status readObj(const std::string& path, const std::string& te
     std::size_t offset = 0;
     for (const unsigned char corners : mesh.num_face_vertices) {
       if (offset + corners > mesh.indices.size())
-        return Status::parseError("cannot parse mesh file '" + path + "': a face has more than 255 corners");
+        return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': a face has more than 255 corners");
       polygon.clear();
       for (std::size_t c = 0; c < corners; ++c) {
         const int index = mesh.indices[offset + c].vertex_index;
         if (index < 0 || std::size_t(index) >= positions.size())
-          return Status::parseError("cannot parse mesh file '" + path + "': a face refers to a vertex outside the " +
+          return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': a face refers to a vertex outside the " +
                                     std::to_string(positions.size()) + " vertices");
         polygon.push_back(std::uint32_t(index));
       }
@@ -73,9 +73,9 @@ template <class T> Status readObj(const std::string& path, const std::string& te
       triangulatePolygon(polygon, positions, triangles);
     }
     if (offset != mesh.indices.size())
-      return Status::parseError("cannot parse mesh file '" + path + "': a face has more than 255 corners");
+      return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': a face has more than 255 corners");
   }
-  if (triangles.empty()) return Status::parseError("mesh file '" + path + "' contains no triangles");
+  if (triangles.empty()) return Status::owned(StatusCode::ParseError, "mesh file '" + path + "' contains no triangles");
   out = joinVertices(positions, triangles);
   return Status();
 }

@@ -16,7 +16,7 @@ namespace {
 
 template <class T> Status readBinaryStl(const std::string& path, const std::string& text, std::uint32_t count,
                                         MeshData<T>& out) {
-  if (count == 0) return Status::parseError("mesh file '" + path + "' contains no triangles");
+  if (count == 0) return Status::owned(StatusCode::ParseError, "mesh file '" + path + "' contains no triangles");
   std::vector<Vec3<T>> positions;
   std::vector<TriangleIndices> triangles;
   positions.reserve(std::size_t(count) * 3);
@@ -27,7 +27,7 @@ template <class T> Status readBinaryStl(const std::string& path, const std::stri
       float xyz[3];
       std::memcpy(xyz, record + 12 + 12 * c, sizeof xyz);
       if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
-        return Status::parseError("cannot parse mesh file '" + path + "': triangle " + std::to_string(t) +
+        return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': triangle " + std::to_string(t) +
                                   " has a coordinate that is not a finite number");
       positions.push_back(Vec3<T>(T(xyz[0]), T(xyz[1]), T(xyz[2])));
     }
@@ -87,7 +87,7 @@ template <class T> Status readAsciiStl(const std::string& path, const std::strin
   }
   // A missing final `endsolid` is tolerated (some writers omit it); a cut facet is not.
   if (state == State::InFacet) return lineError(path, facetLine, "the file ends inside this facet");
-  if (triangles.empty()) return Status::parseError("mesh file '" + path + "' contains no triangles");
+  if (triangles.empty()) return Status::owned(StatusCode::ParseError, "mesh file '" + path + "' contains no triangles");
   out = joinVertices(positions, triangles);
   return Status();
 }
@@ -111,7 +111,7 @@ template <class T> Status readStl(const std::string& path, const std::string& te
     } else {
       why += " (shorter than the 84-byte binary header)";
     }
-    return Status::parseError("cannot parse mesh file '" + path + "': " + why);
+    return Status::owned(StatusCode::ParseError, "cannot parse mesh file '" + path + "': " + why);
   }
   return readAsciiStl(path, text, out);
 }

@@ -6,6 +6,7 @@
 // against B's own node box). Inline template: the pair callable is inlined into the leaf loop.
 #include <vector>
 
+#include "common/thread_scratch.h"
 #include "mesh_pairs/surface.h"
 #include "mesh_pairs/triangle_tests.h"
 
@@ -45,8 +46,8 @@ bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T mar
   const auto nodesMeet = [&](const Bounds3<T>& boxA, const Bounds3<T>& boxB, const Bounds3<T>& localB) {
     return meets(boxA, boxB) && b.toLocalBox(grown(boxA, margin)).overlaps(localB);
   };
-  std::vector<BvhOverlapEntry<T>> stack;
-  stack.reserve(128);
+  ThreadScratch<BvhOverlapEntry<T>> scratch;  // `fn` may be a user callback that queries again: see ThreadScratch
+  std::vector<BvhOverlapEntry<T>>& stack = scratch.get();
   // Root boxes from the cooked mesh-space bounds (one box map each, not a pass over the hull vertices).
   const Bounds3<T> rootA = a.toWorldBox(a.mesh().localBounds), rootB = b.toWorldBox(b.mesh().localBounds);
   if (!nodesMeet(rootA, rootB, b.mesh().localBounds)) return false;
@@ -129,8 +130,8 @@ MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>
     BvhPairEntry<T> pair;
     T lower;
   };
-  std::vector<Entry> stack;
-  stack.reserve(128);
+  ThreadScratch<Entry> scratch;
+  std::vector<Entry>& stack = scratch.get();
   const Bounds3<T> rootA = a.toWorldBox(a.mesh().localBounds), rootB = b.toWorldBox(b.mesh().localBounds);
   stack.push_back({{bvhA.rootChild, bvhB.rootChild, rootA, rootB}, boxDistanceSq(rootA, rootB)});
   while (!stack.empty() && best.distSq > T(0)) {

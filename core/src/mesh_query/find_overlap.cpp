@@ -14,10 +14,10 @@ namespace {
 
 // The spec's PxMeshQuery accepts only spheres, capsules and boxes.
 template <class T> Status checkQueryShape(const Geometry<T>& g, const Transform<T>& pose) {
-  if (Status s = detail::checkGeometryAndPose(g, pose, "pose"); !s.ok()) return s;
+  if (Status s = detail::checkGeometryAndPose(g, pose, detail::kPoseField); !s.ok()) return s;
   const GeometryType t = g.type();
   if (t != GeometryType::Sphere && t != GeometryType::Capsule && t != GeometryType::Box)
-    return Status::unsupported(std::string("mesh overlap queries take a sphere, capsule or box, not ") + toString(t));
+    return Status::unsupported("mesh overlap queries take a sphere, capsule or box").withType(t);
   return Status();
 }
 
@@ -54,10 +54,10 @@ void collectOverlaps(const detail::TriangleQueryShape<T>& shape, const Surface& 
 template <class T>
 Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose, const TriangleMeshGeometry<T>& mesh,
                                const Transform<T>& meshPose, const TriangleOverlapPage& page,
-                               TriangleOverlapPageResult& result) {
+                               TriangleOverlapPageResult& result) noexcept {
   return detail::guarded([&]() -> Status {
     if (Status s = checkQueryShape(geom, pose); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), meshPose, "meshPose"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), meshPose, detail::kMeshPoseField); !s.ok()) return s;
     if (Status s = checkPage(page); !s.ok()) return s;
     const detail::TriangleQueryShape<T> shape(geom, pose.relativeTo(meshPose));
     const detail::MeshSurface<T> surface(mesh, Transform<T>());
@@ -69,10 +69,10 @@ Status findOverlapTriangleMesh(const Geometry<T>& geom, const Transform<T>& pose
 template <class T>
 Status findOverlapHeightField(const Geometry<T>& geom, const Transform<T>& pose,
                               const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
-                              const TriangleOverlapPage& page, TriangleOverlapPageResult& result) {
+                              const TriangleOverlapPage& page, TriangleOverlapPageResult& result) noexcept {
   return detail::guarded([&]() -> Status {
     if (Status s = checkQueryShape(geom, pose); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), heightFieldPose, "heightFieldPose"); !s.ok())
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), heightFieldPose, detail::kHeightFieldPoseField); !s.ok())
       return s;
     if (!detail::heightFieldIsWellFormed(*heightField.heightField))
       return Status::invalid("heightfield data is empty or inconsistent (use cookHeightField)");

@@ -12,11 +12,11 @@ namespace gq {
 template <class T>
 Status findOverlapTriangleMeshPairs(const TrianglePairCallback& callback, const TriangleMeshGeometry<T>& mesh0,
                                     const Transform<T>& pose0, const TriangleMeshGeometry<T>& mesh1,
-                                    const Transform<T>& pose1, bool& overlapFound, T tolerance) {
+                                    const Transform<T>& pose1, bool& overlapFound, T tolerance) noexcept {
   return detail::guarded([&]() -> Status {
     if (!callback) return Status::invalid("callback is empty");
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh0), pose0, "pose0"); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh1), pose1, "pose1"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh0), pose0, detail::kPose0Field); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh1), pose1, detail::kPose1Field); !s.ok()) return s;
     if (!std::isfinite(tolerance) || tolerance < T(0)) return Status::invalid("tolerance is negative or not finite");
     const detail::MeshSurface<T> a(mesh0, Transform<T>());
     const detail::MeshSurface<T> b(mesh1, pose1.relativeTo(pose0));

@@ -7,15 +7,14 @@ namespace gq {
 
 template <class T>
 Status getTriangle(const TriangleMeshGeometry<T>& mesh, const Transform<T>& pose, std::uint32_t triangleIndex,
-                   Triangle<T>& triangle, std::uint32_t* vertexIndices) {
+                   Triangle<T>& triangle, std::uint32_t* vertexIndices) noexcept {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), pose, "mesh pose"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), pose, detail::kPoseField); !s.ok()) return s;
     if (triangleIndex >= mesh.mesh->inputTriangleCount())
-      return Status::invalid("triangle index " + std::to_string(triangleIndex) + " out of range (" +
-                             std::to_string(mesh.mesh->inputTriangleCount()) + " triangles)");
+      return Status::invalid("triangle index is out of range of the mesh's input triangles").withIndex(triangleIndex);
     const std::uint32_t cooked = mesh.mesh->cookedIndex[triangleIndex];
     if (cooked == kRemovedTriangle)
-      return Status::invalid("triangle " + std::to_string(triangleIndex) + " was removed as degenerate at cooking");
+      return Status::invalid("the triangle was removed as degenerate at cooking").withIndex(triangleIndex);
     triangle = detail::MeshInstance<T>(mesh, pose).worldTriangle(cooked, vertexIndices);
     return Status();
   });

@@ -10,16 +10,15 @@ namespace gq {
 
 template <class T>
 Status getTriangle(const HeightFieldGeometry<T>& heightField, const Transform<T>& pose, std::uint32_t triangleIndex,
-                   Triangle<T>& triangle, std::uint32_t* vertexIndices) {
+                   Triangle<T>& triangle, std::uint32_t* vertexIndices) noexcept {
   return detail::guarded([&]() -> Status {
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), pose, "heightfield pose"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), pose, detail::kPoseField); !s.ok()) return s;
     const HeightField<T>& hf = *heightField.heightField;
     if (!detail::heightFieldIsWellFormed(hf))
       return Status::invalid("heightfield data is empty or inconsistent (use cookHeightField)");
     const std::uint32_t count = detail::heightFieldTriangleCount(hf);
     if (triangleIndex >= count)
-      return Status::invalid("heightfield triangle index " + std::to_string(triangleIndex) + " is out of range (" +
-                             std::to_string(count) + " triangles)");
+      return Status::invalid("triangle index is out of range of the heightfield's triangles").withIndex(triangleIndex);
     const std::array<std::uint32_t, 3> samples = detail::heightFieldTriangleSamples(hf, triangleIndex);
     for (int i = 0; i < 3; ++i) {
       triangle.verts[i] = pose.transform(detail::heightFieldVertex(heightField, samples[i]));

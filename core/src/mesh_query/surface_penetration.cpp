@@ -15,9 +15,9 @@ namespace gq {
 namespace {
 
 template <class T> Status checkPenetrationShape(const Geometry<T>& g, const Transform<T>& pose, std::uint32_t maxIter) {
-  if (Status s = detail::checkGeometryAndPose(g, pose, "pose"); !s.ok()) return s;
+  if (Status s = detail::checkGeometryAndPose(g, pose, detail::kPoseField); !s.ok()) return s;
   if (!detail::isConvexShapeType(g.type()))
-    return Status::unsupported(std::string("mesh penetration takes a convex shape, not ") + toString(g.type()));
+    return Status::unsupported("mesh penetration takes a convex shape").withType(g.type());
   if (const auto* c = g.template getIf<CustomGeometry<T>>(); c && !c->callbacks->isConvex())
     return Status::unsupported("mesh penetration needs a convex custom geometry (isConvex() is false)");
   if (maxIter == 0) return Status::invalid("maxIter must be at least 1");
@@ -101,10 +101,10 @@ Status penetrationInSurfaceFrame(PenetrationResult<T>& result, const Geometry<T>
 template <class T>
 Status computeTriangleMeshPenetration(PenetrationResult<T>& result, const Geometry<T>& geom, const Transform<T>& pose,
                                       const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose,
-                                      std::uint32_t maxIter, std::uint32_t* iterations) {
+                                      std::uint32_t maxIter, std::uint32_t* iterations) noexcept {
   return detail::guarded([&]() -> Status {
     if (Status s = checkPenetrationShape(geom, pose, maxIter); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), meshPose, "meshPose"); !s.ok()) return s;
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(mesh), meshPose, detail::kMeshPoseField); !s.ok()) return s;
     return penetrationInSurfaceFrame(result, geom, pose, detail::MeshSurface<T>(mesh, Transform<T>()), meshPose,
                                      mesh.doubleSided(), maxIter, iterations);
   });
@@ -113,10 +113,10 @@ Status computeTriangleMeshPenetration(PenetrationResult<T>& result, const Geomet
 template <class T>
 Status computeHeightFieldPenetration(PenetrationResult<T>& result, const Geometry<T>& geom, const Transform<T>& pose,
                                      const HeightFieldGeometry<T>& heightField, const Transform<T>& heightFieldPose,
-                                     std::uint32_t maxIter, std::uint32_t* iterations) {
+                                     std::uint32_t maxIter, std::uint32_t* iterations) noexcept {
   return detail::guarded([&]() -> Status {
     if (Status s = checkPenetrationShape(geom, pose, maxIter); !s.ok()) return s;
-    if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), heightFieldPose, "heightFieldPose"); !s.ok())
+    if (Status s = detail::checkGeometryAndPose(Geometry<T>(heightField), heightFieldPose, detail::kHeightFieldPoseField); !s.ok())
       return s;
     if (!detail::heightFieldIsWellFormed(*heightField.heightField))
       return Status::invalid("heightfield data is empty or inconsistent (use cookHeightField)");

@@ -104,7 +104,8 @@ template <class T> struct Candidate {
 // early-out distance the walk and the triangle tests read.
 template <class T> class HitCollector {
  public:
-  HitCollector(T maxDist, std::uint32_t cap, bool anyHit) : maxDist_(maxDist), cap_(cap), anyHit_(anyHit) {}
+  HitCollector(T maxDist, std::uint32_t cap, bool anyHit)
+      : maxDist_(maxDist), cap_(cap), anyHit_(anyHit), hits_(threadScratch()) {}
 
   T limit() const { return limit_; }
   bool done() const { return anyHit_ && !hits_.empty(); }
@@ -129,6 +130,13 @@ template <class T> class HitCollector {
 
  private:
   static bool byDistance(const Candidate<T>& a, const Candidate<T>& b) { return a.t < b.t; }
+  // The hits of the thread's current raycast: kept per thread, so a raycast allocates only while the buffer grows to
+  // the most hits a call has kept (one collector per thread at a time: a heightfield raycast runs no user code).
+  static std::vector<Candidate<T>>& threadScratch() {
+    thread_local std::vector<Candidate<T>> hits;
+    hits.clear();
+    return hits;
+  }
   // Once the buffer is full only closer hits matter.
   void updateLimit() { limit_ = std::max_element(hits_.begin(), hits_.end(), byDistance)->t; }
 
@@ -136,7 +144,7 @@ template <class T> class HitCollector {
   std::uint32_t cap_;
   bool anyHit_;
   T limit_ = maxDist_;
-  std::vector<Candidate<T>> hits_;
+  std::vector<Candidate<T>>& hits_;
 };
 
 template <class T> class HeightFieldRaycaster {

@@ -168,8 +168,9 @@ std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transf
   const bool cull = !(g.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
   const MeshRaycaster<T> caster(mesh, org, dir, cull);
   if (ray.maxHits > 1) {
-    std::vector<RawHit<T>> raw;
-    raw.reserve(std::min<std::uint32_t>(ray.maxHits, 64));
+    // Kept per thread (a mesh raycast runs no user code): no allocation once it holds the most hits a call kept.
+    thread_local std::vector<RawHit<T>> raw;
+    raw.clear();
     const std::uint32_t n = caster.multiple(ray.maxDist, ray.maxHits, raw);
     for (std::uint32_t i = 0; i < n; ++i) hits[i] = makeHit(mesh, pose, frame, ray, g.doubleSided(), raw[i]);
     return n;

@@ -55,8 +55,7 @@ void sweepConvexCustom(const Geometry<T>& g0, const Transform<T>& p0, const Geom
   }
   if (!hasHit) return;
   if (!validHit(hit, q.maxDist)) {
-    out.status = Status::internal(std::string("the custom geometry '") + cb.name() +
-                                  "' returned an invalid sweep hit (non-finite, non-unit normal or outside [0, maxDist])");
+    out.status = Status::aboutCustom(StatusCode::InternalError, CustomIssue::BadSweepHit, cb.name());
     return;
   }
   out.hit = true;

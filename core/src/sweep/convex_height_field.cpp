@@ -55,7 +55,12 @@ void sweepConvexHeightField(const Geometry<T>& g0, const Transform<T>& p0, const
   const ConvexShape<T> a = makeSweptShape(g0, p0, q.inflation);
   const Bounds3<T> shapeBox = sweptBoundsInFrame(a, p1, q.dir, q.maxDist);
   const CellRange range = cellsUnder(hfGeom, shapeBox);
-  std::vector<std::uint32_t> candidates;
+  // Scratch kept per thread (the swept shape is a primitive or hull: no user code runs here), so a sweep allocates
+  // only while they grow to the most candidates a call has had.
+  thread_local std::vector<std::uint32_t> candidates;
+  thread_local std::vector<std::pair<T, std::uint32_t>> order;
+  candidates.clear();
+  order.clear();
   for (std::uint32_t r = range.r0; r <= range.r1 && range.c0 <= range.c1; ++r)
     for (std::uint32_t c = range.c0; c <= range.c1; ++c) {
       if (hf.isHole(r, c)) continue;
@@ -67,7 +72,6 @@ void sweepConvexHeightField(const Geometry<T>& g0, const Transform<T>& p0, const
   // Candidates ordered by the first parameter at which the start box, moving along dir, meets their boxes (world).
   const Bounds3<T> startBox = sweptBoundsInFrame(a, Transform<T>(), q.dir, T(0));
   const FatRay<T> ray{startBox.center(), q.dir, startBox.extents()};
-  std::vector<std::pair<T, std::uint32_t>> order;
   for (const std::uint32_t tri : candidates) {
     const Triangle<T> t = heightFieldTriangle(hfGeom, p1, tri);
     Bounds3<T> box;

@@ -17,20 +17,22 @@
 namespace gq::detail {
 namespace {
 
-// Cooked triangle indices in leaves whose boxes overlap `q`.
-void collectTriangles(const Bvh4& bvh, const FloatBounds& q, std::vector<std::uint32_t>& out) {
+// Visits the cooked triangle indices in leaves whose boxes overlap `q`. A fixed stack (no allocation): at most 4
+// pushes per level of a BVH's bounded depth (bvh/traverse.h).
+template <class Visit> void forTrianglesInBox(const Bvh4& bvh, const FloatBounds& q, Visit&& visit) {
   if (bvh.rootChild == Bvh4Node::kEmpty) return;
-  std::vector<std::uint32_t> stack{bvh.rootChild};
-  while (!stack.empty()) {
-    const std::uint32_t ref = stack.back();
-    stack.pop_back();
+  std::uint32_t stack[kBvhStackSize];
+  int top = 0;
+  stack[top++] = bvh.rootChild;
+  while (top > 0) {
+    const std::uint32_t ref = stack[--top];
     if (Bvh4Node::isLeaf(ref)) {
-      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(ref); ++k) out.push_back(Bvh4Node::leafFirst(ref) + k);
+      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(ref); ++k) visit(Bvh4Node::leafFirst(ref) + k);
       continue;
     }
     const Bvh4Node& node = bvh.nodes[ref];
     for (int lane = 0; lane < 4; ++lane)
-      if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q)) stack.push_back(node.child[lane]);
+      if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q)) stack[top++] = node.child[lane];
   }
 }
 
@@ -120,18 +122,17 @@ void sweepConvexTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, cons
   out.faceIndex = picker.bestIndex;
   if (!(out.initialOverlap && q.mtd)) return;
   // The triangles overlapping at the start: those whose boxes meet the start box.
-  std::vector<std::uint32_t> candidates;
-  collectTriangles(inst.mesh.accel->bvh, toFloatBounds(startBox), candidates);
   TriangleMtdPicker<T> mtd;
-  for (const std::uint32_t cooked : candidates) {
+  forTrianglesInBox(inst.mesh.accel->bvh, toFloatBounds(startBox), [&](std::uint32_t cooked) {
     const Triangle<T> tri = inst.worldTriangle(cooked);
     T facing;
     ToiResult<T> unused;
     SweepQuery<T> overlapOnly = q;
     overlapOnly.maxDist = T(0);
-    if (!sweepOneTriangle(a, tri, overlapOnly, doubleSided, unused, facing)) continue;  // culled along dir
-    if (unused.kind == ToiResult<T>::Kind::InitialOverlap) mtd.offer(a, tri, inst.mesh.inputIndex[cooked], doubleSided || !q.cullBackFaces);
-  }
+    if (!sweepOneTriangle(a, tri, overlapOnly, doubleSided, unused, facing)) return;  // culled along dir
+    if (unused.kind == ToiResult<T>::Kind::InitialOverlap)
+      mtd.offer(a, tri, inst.mesh.inputIndex[cooked], doubleSided || !q.cullBackFaces);
+  });
   mtd.writeTo(out, q.dir);
 }
 

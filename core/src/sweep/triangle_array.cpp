@@ -24,23 +24,22 @@ template <class T>
 Status validateTriangleSweep(const Vec3<T>& dir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
                              const Triangle<T>* triangles, std::uint32_t count, HitFlags flags,
                              const std::uint32_t* cachedIndex, T inflation) {
-  if (Status s = detail::checkUnitDirection(dir, "sweep direction"); !s.ok()) return s;
-  if (Status s = detail::checkNonNegative(maxDist, "maxDist"); !s.ok()) return s;
+  if (Status s = detail::checkUnitDirection(dir, detail::kSweepDirectionField); !s.ok()) return s;
+  if (Status s = detail::checkMaxDist(maxDist); !s.ok()) return s;
   if (!std::isfinite(inflation) || inflation < T(0)) return Status::invalid("inflation must be finite and >= 0");
   if (flags.has(HitFlag::MeshMultiple)) return Status::invalid("meshMultiple is not supported by sweepTriangles (one hit)");
   if (flags.has(HitFlag::Mtd)) return Status::invalid("mtd is not supported by sweepTriangles");
   if (const detail::Problem p = detail::pairGeometryProblem(geom)) return p.status();  // a pair query's sizes
-  if (Status s = detail::checkPose(pose, "pose"); !s.ok()) return s;
+  if (Status s = detail::checkPose(pose, detail::kPoseField); !s.ok()) return s;
   const GeometryType t = geom.type();
   if (t != GeometryType::Sphere && t != GeometryType::Capsule && t != GeometryType::Box)
-    return Status::unsupported(std::string("sweepTriangles with a ") + toString(t) +
-                               " (the swept geometry must be a sphere, capsule or box)");
+    return Status::unsupported("sweepTriangles takes a sphere, capsule or box as the swept geometry").withType(t);
   if (count > 0 && triangles == nullptr) return Status::invalid("triangles is null with a non-zero count");
   for (std::uint32_t i = 0; i < count; ++i)
     if (const char* problem = detail::rawTriangleProblem(triangles[i], pose))
-      return Status::invalid("triangle " + std::to_string(i) + " " + problem);
+      return Status::invalid(problem).withIndex(i);
   if (cachedIndex && *cachedIndex >= count)
-    return Status::invalid("cachedIndex " + std::to_string(*cachedIndex) + " is out of range");
+    return Status::invalid("cachedIndex is out of range of the triangles").withIndex(*cachedIndex);
   return {};
 }
 
@@ -56,7 +55,7 @@ template <class T> Triangle<T> shifted(const Triangle<T>& tri, const Vec3<T>& or
 template <class T>
 Status sweepTriangles(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geom, const Transform<T>& pose,
                       const Triangle<T>* triangles, std::uint32_t triangleCount, SweepHit<T>& hit, bool& hasHit,
-                      const TriangleSweepSettings<T>& settings) {
+                      const TriangleSweepSettings<T>& settings) noexcept {
   return detail::guarded([&]() -> Status {
     const HitFlags hitFlags = settings.flags;
     const std::uint32_t* cachedIndex = settings.cachedIndex;

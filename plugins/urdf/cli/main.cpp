@@ -45,7 +45,7 @@ gq::Status load(const CommonOptions& o, const std::string& mode, std::shared_ptr
   auto model = std::make_shared<RobotModel<double>>();
   s = loadRobot(o.urdf, o.srdf, lo, *model);
   if (!s.ok()) return s;
-  if (s.code == gq::StatusCode::Warning) std::cerr << "warning: " << s.message << "\n";
+  if (s.code == gq::StatusCode::Warning) std::cerr << "warning: " << s.detailedMessage() << "\n";
   out = model;
   return {};
 }
@@ -87,13 +87,13 @@ int runInfo(const CommonOptions& o) {
 
 gq::Status readConfiguration(const std::string& path, const RobotModel<double>& m, std::vector<double>& q) {
   std::ifstream in(path);
-  if (!in) return gq::Status::fileError("configuration file '" + path + "' cannot be opened");
+  if (!in) return gq::Status::owned(gq::StatusCode::FileError, "configuration file '" + path + "' cannot be opened");
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded()) return gq::Status::parseError("configuration file '" + path + "' is not valid JSON");
+  if (j.is_discarded()) return gq::Status::owned(gq::StatusCode::ParseError, "configuration file '" + path + "' is not valid JSON");
   q = m.home;
   if (j.is_array()) {
     if (j.size() != q.size() || !std::all_of(j.begin(), j.end(), [](auto& v) { return v.is_number(); }))
-      return gq::Status::invalid("configuration array needs " + std::to_string(q.size()) + " numbers");
+      return gq::Status::owned(gq::StatusCode::InvalidArgument, "configuration array needs " + std::to_string(q.size()) + " numbers");
     for (std::size_t i = 0; i < q.size(); ++i) q[i] = j[i].get<double>();
     return {};
   }
@@ -101,7 +101,7 @@ gq::Status readConfiguration(const std::string& path, const RobotModel<double>& 
   for (auto it = j.begin(); it != j.end(); ++it) {
     const auto v = std::find(m.variables.begin(), m.variables.end(), it.key());
     if (v == m.variables.end() || !it.value().is_number())
-      return gq::Status::invalid("configuration names unknown joint '" + it.key() + "' or has a non-number value");
+      return gq::Status::owned(gq::StatusCode::InvalidArgument, "configuration names unknown joint '" + it.key() + "' or has a non-number value");
     q[std::size_t(v - m.variables.begin())] = it.value().get<double>();
   }
   return {};
@@ -170,7 +170,7 @@ int runNever(const CommonOptions& o, std::uint64_t samples, std::uint64_t seed, 
     std::cout << srdf;
   } else {
     std::ofstream f(out);
-    if (!(f << srdf)) return fail(gq::Status::fileError("cannot write '" + out + "'"));
+    if (!(f << srdf)) return fail(gq::Status::owned(gq::StatusCode::FileError, "cannot write '" + out + "'"));
   }
   std::fprintf(stderr, "%zu link pairs never collided in %llu samples\n", r.never.size(), (unsigned long long)samples);
   return 0;
@@ -241,11 +241,11 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
         "date,machine,commit,load1,mode,backend,checks_per_s_median,repetitions,configurations,ratio";
     std::string existing;
     if (std::ifstream in(b.csv); in && std::getline(in, existing) && existing != header)
-      return fail(gq::Status::fileError("'" + b.csv + "' has other columns than '" + header +
+      return fail(gq::Status::owned(gq::StatusCode::FileError, "'" + b.csv + "' has other columns than '" + header +
                                               "': not appending to it"));
     out.open(b.csv, std::ios::app);
     if (existing.empty()) out << header << "\n";
-    if (!out) return fail(gq::Status::fileError("cannot write '" + b.csv + "'"));
+    if (!out) return fail(gq::Status::owned(gq::StatusCode::FileError, "cannot write '" + b.csv + "'"));
   }
   char date[32];
   const std::time_t now = std::time(nullptr);
@@ -290,7 +290,7 @@ int runBench(const CommonOptions& o, const BenchOptions& b) {
         std::printf("%-15s %-8s %14.0f %10s\n", mode.c_str(), row->backend.c_str(), row->rate,
                     isGq && ratio > 0 ? std::to_string(ratio).substr(0, 5).c_str() : "");
       else
-        std::printf("%-15s %-8s %14s  (%s)\n", mode.c_str(), row->backend.c_str(), "n/a", row->status.message.c_str());
+        std::printf("%-15s %-8s %14s  (%s)\n", mode.c_str(), row->backend.c_str(), "n/a", row->status.detailedMessage().c_str());
       if (out.is_open())
         out << date << "," << machine << "," << commit << "," << load1 << "," << urdfStem << ":" << mode << "," << row->backend << ","
             << (row->rate > 0 ? std::to_string(row->rate) : "unsupported") << "," << b.repetitions << "," << b.n

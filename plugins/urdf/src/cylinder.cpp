@@ -20,7 +20,7 @@ template <class T> Transform<T> cylinderAxisToUrdfZ() {
 template <class T> Status cylinderShape(T radius, T length, Shape<T>& shape, Transform<T>& fit) {
   CustomGeometry<T> cylinder;
   if (Status s = makeCylinder(radius, T(0.5) * length, cylinder); !s.ok())
-    return Status::parseError("cylinder needs a positive finite radius and length (radius " +
+    return Status::owned(StatusCode::ParseError, "cylinder needs a positive finite radius and length (radius " +
                               std::to_string(double(radius)) + ", length " + std::to_string(double(length)) + ")");
   shape.geometry = cylinder;
   shape.source = ShapeSource::Cylinder;

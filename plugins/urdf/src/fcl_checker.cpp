@@ -66,7 +66,7 @@ Status toFcl(const Shape<double>& shape, std::shared_ptr<fcl::CollisionGeometryd
     offset.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   } else if (auto* h = g.getIf<ConvexMeshGeometry<double>>()) out = convexToFcl(*h->mesh);
   else if (auto* m = g.getIf<TriangleMeshGeometry<double>>()) out = meshToFcl(*m->mesh);
-  else return Status::unsupported(std::string("FCL checker: ") + toString(g.type()));
+  else return Status::owned(StatusCode::Unsupported, std::string("FCL checker: ") + toString(g.type()));
   return {};
 }
 

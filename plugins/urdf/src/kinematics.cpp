@@ -11,14 +11,14 @@ namespace detail {
 
 template <class T> Status checkConfiguration(const RobotModel<T>& model, const std::vector<T>& q) {
   if (q.size() != model.variables.size())
-    return Status::invalid("configuration has " + std::to_string(q.size()) + " values, the robot has " +
+    return Status::owned(StatusCode::InvalidArgument, "configuration has " + std::to_string(q.size()) + " values, the robot has " +
                            std::to_string(model.variables.size()) + " joints");
   for (const auto& j : model.joints) {
     if (j.variable < 0) continue;
     const T v = q[std::size_t(j.variable)];
-    if (!std::isfinite(v)) return Status::invalid("joint '" + j.name + "' value is not finite");
+    if (!std::isfinite(v)) return Status::owned(StatusCode::InvalidArgument, "joint '" + j.name + "' value is not finite");
     if (j.type != JointType::Continuous && !(v >= j.lower - limitSlack(j) && v <= j.upper + limitSlack(j)))
-      return Status::invalid("joint '" + j.name + "' value " + std::to_string(double(v)) + " is outside its limits [" +
+      return Status::owned(StatusCode::InvalidArgument, "joint '" + j.name + "' value " + std::to_string(double(v)) + " is outside its limits [" +
                              std::to_string(double(j.lower)) + ", " + std::to_string(double(j.upper)) + "]");
   }
   return {};

@@ -37,7 +37,7 @@ std::mutex& parserMutex() {
 
 Status readFile(const std::string& path, const char* what, std::string& out) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Status::fileError(std::string(what) + " file '" + path + "' cannot be opened");
+  if (!in) return Status::owned(StatusCode::FileError, std::string(what) + " file '" + path + "' cannot be opened");
   std::stringstream ss;
   ss << in.rdbuf();
   out = ss.str();
@@ -115,7 +115,7 @@ std::string preParseProblem(const std::string& xml) {
 }
 
 Status parseUrdfModel(const std::string& xml, ::urdf::ModelInterfaceSharedPtr& model) {
-  if (const std::string problem = preParseProblem(xml); !problem.empty()) return Status::parseError(problem);
+  if (const std::string problem = preParseProblem(xml); !problem.empty()) return Status::owned(StatusCode::ParseError, problem);
   std::lock_guard<std::mutex> lock(parserMutex());
   CapturedLog log;
   console_bridge::useOutputHandler(&log);
@@ -130,11 +130,11 @@ Status parseUrdfModel(const std::string& xml, ::urdf::ModelInterfaceSharedPtr& m
   // the robot would silently lose a collision body, so any collision error fails the load.
   if (model && log.messages.find("collision") != std::string::npos) {
     model.reset();
-    return Status::parseError("malformed URDF: " + log.messages);
+    return Status::owned(StatusCode::ParseError, "malformed URDF: " + log.messages);
   }
   if (model) return {};
   std::string why = !thrown.empty() ? thrown : log.messages;
-  return Status::parseError("malformed URDF: " + (why.empty() ? std::string("urdfdom rejected the document") : why));
+  return Status::owned(StatusCode::ParseError, "malformed URDF: " + (why.empty() ? std::string("urdfdom rejected the document") : why));
 }
 
 template <class T> Transform<T> toTransform(const ::urdf::Pose& p) {
@@ -166,14 +166,14 @@ Status meshElement(const ::urdf::Mesh& m, const std::string& baseDir, const Load
   if (!s.ok()) return s;
   MeshData<T> mesh;
   s = loadMeshFile(path, mesh, endsWithDae(path));  // ROS tools ignore the DAE root (up-axis) transform
-  if (!s.ok()) return Status(s.code, "mesh file '" + path + "': " + s.message);
+  if (!s.ok()) return Status::owned(s.code, "mesh file '" + path + "': " + s.detailedMessage());
   applyScale(m.scale, mesh);
   shape.file = path;
   s = detail::meshShape(mesh, options.representation, options, shape, fit);
-  if (!s.ok()) return Status(s.code, "mesh file '" + path + "': " + s.message);
+  if (!s.ok()) return Status::owned(s.code, "mesh file '" + path + "': " + s.detailedMessage());
   if (shape.representation != Representation::Mesh) {
     s = detail::measureApproximationError(mesh, shape.geometry, fit, options, shape.error);
-    if (!s.ok()) return Status(s.code, "measuring the approximation error of '" + path + "': " + s.message);
+    if (!s.ok()) return Status::owned(s.code, "measuring the approximation error of '" + path + "': " + s.detailedMessage());
   }
   return {};
 }
@@ -181,7 +181,7 @@ Status meshElement(const ::urdf::Mesh& m, const std::string& baseDir, const Load
 template <class T>
 Status collisionElement(const ::urdf::Collision& c, const std::string& linkName, const std::string& baseDir,
                         const LoadOptions& options, Shape<T>& shape) {
-  if (!c.geometry) return Status::parseError("malformed URDF: a <collision> of link '" + linkName + "' has no geometry");
+  if (!c.geometry) return Status::owned(StatusCode::ParseError, "malformed URDF: a <collision> of link '" + linkName + "' has no geometry");
   Transform<T> fit;
   Status s;
   const ::urdf::Geometry& g = *c.geometry;
@@ -208,7 +208,7 @@ Status collisionElement(const ::urdf::Collision& c, const std::string& linkName,
   if (!s.ok()) return s;
   if (shape.source != ShapeSource::Mesh && shape.source != ShapeSource::Cylinder) {
     s = validateGeometry(shape.geometry);
-    if (!s.ok()) return Status::parseError("malformed URDF: link '" + linkName + "': " + s.message);
+    if (!s.ok()) return Status::owned(StatusCode::ParseError, "malformed URDF: link '" + linkName + "': " + s.detailedMessage());
     shape.bytes = sizeof(Geometry<T>);
   }
   shape.origin = toTransform<T>(c.origin) * fit;
@@ -224,18 +224,18 @@ template <class T> Status convertJoint(const ::urdf::Joint& uj, Joint<T>& j) {
     case ::urdf::Joint::PRISMATIC: j.type = JointType::Prismatic; break;
     case ::urdf::Joint::FIXED: j.type = JointType::Fixed; break;
     default:
-      return Status::unsupported("joint '" + uj.name + "': only revolute, continuous, prismatic and fixed joints");
+      return Status::owned(StatusCode::Unsupported, "joint '" + uj.name + "': only revolute, continuous, prismatic and fixed joints");
   }
   if (j.type == JointType::Fixed) return {};
   Vec3<double> axis(uj.axis.x, uj.axis.y, uj.axis.z);
-  if (!(axis.norm() > 0)) return Status::parseError("malformed URDF: joint '" + uj.name + "' has a zero axis");
+  if (!(axis.norm() > 0)) return Status::owned(StatusCode::ParseError, "malformed URDF: joint '" + uj.name + "' has a zero axis");
   j.axis = axis.normalized().cast<T>();
   if (j.type == JointType::Continuous) {
     j.lower = T(-M_PI);
     j.upper = T(M_PI);
   } else {
     if (!uj.limits || !(uj.limits->lower <= uj.limits->upper))
-      return Status::parseError("malformed URDF: joint '" + uj.name + "' needs limits with lower <= upper");
+      return Status::owned(StatusCode::ParseError, "malformed URDF: joint '" + uj.name + "' needs limits with lower <= upper");
     j.lower = T(uj.limits->lower);
     j.upper = T(uj.limits->upper);
   }
@@ -254,7 +254,7 @@ template <class T> Status resolveMimics(const ::urdf::ModelInterface& um, RobotM
     for (std::size_t hops = 0; um.getJoint(driver)->mimic; ++hops) {
       const auto& mimic = *um.getJoint(driver)->mimic;
       if (hops > model.joints.size() || !index.count(mimic.joint_name))
-        return Status::parseError("malformed URDF: joint '" + j.name + "' mimics an unknown joint or a mimic cycle");
+        return Status::owned(StatusCode::ParseError, "malformed URDF: joint '" + j.name + "' mimics an unknown joint or a mimic cycle");
       off = mult * T(mimic.offset) + off;
       mult = mult * T(mimic.multiplier);
       driver = mimic.joint_name;
@@ -285,7 +285,7 @@ Status buildTree(const ::urdf::ModelInterface& um, const std::string& baseDir, c
     // rather than index link -1.
     const auto parent = head > 0 && ul.parent_joint ? placed.find(ul.parent_joint->parent_link_name) : placed.end();
     if (!placed.emplace(ul.name, std::uint32_t(head)).second || (head > 0 && parent == placed.end()))
-      return Status::parseError("malformed URDF: link '" + ul.name + "' is not reached exactly once from the root");
+      return Status::owned(StatusCode::ParseError, "malformed URDF: link '" + ul.name + "' is not reached exactly once from the root");
     Link<T> link;
     link.name = ul.name;
     for (const auto& c : ul.collision_array) {
@@ -331,7 +331,7 @@ Status loadImpl(const std::string& urdfXml, const std::string& srdfXml, const st
   detail::computeAllowedCollisions(model, srdf, warnings);
   detail::chooseHomeConfiguration(model, srdf);
   out = std::move(model);
-  return warnings.empty() ? Status() : Status::warning(warnings);
+  return warnings.empty() ? Status() : Status::owned(StatusCode::Warning, warnings);
 }
 
 }  // namespace
@@ -355,7 +355,7 @@ Status loadRobotFromStrings(const std::string& urdfXml, const std::string& srdfX
   try {
     return loadImpl(urdfXml, srdfXml, baseDir, options, out);
   } catch (const std::exception& e) {
-    return Status::internal(std::string("loading the robot: ") + e.what());
+    return Status::owned(StatusCode::InternalError, std::string("loading the robot: ") + e.what());
   }
 }
 

@@ -18,7 +18,7 @@ Status parseRepresentation(const std::string& name, Representation& out) {
       out = Representation(i);
       return {};
     }
-  return Status::invalid("unknown representation '" + name +
+  return Status::owned(StatusCode::InvalidArgument, "unknown representation '" + name +
                          "' (expected mesh, hull, box, box-aabb, capsule, sphere or best-primitive)");
 }
 

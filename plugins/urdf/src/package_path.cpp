@@ -53,7 +53,7 @@ Status resolvePackage(const std::string& uri, const LoadOptions& options, std::s
   const std::string body = uri.substr(std::string("package://").size());
   const auto slash = body.find('/');
   if (slash == std::string::npos || slash == 0)
-    return Status::parseError("malformed package URI '" + uri + "' (expected package://<package>/<path>)");
+    return Status::owned(StatusCode::ParseError, "malformed package URI '" + uri + "' (expected package://<package>/<path>)");
   const std::string pkg = body.substr(0, slash), rest = body.substr(slash + 1);
   std::vector<std::string> roots = options.packagePaths;
   if (options.useRosPackagePath)
@@ -62,7 +62,7 @@ Status resolvePackage(const std::string& uri, const LoadOptions& options, std::s
     if (findInRoot(root, pkg, rest, path)) return {};
   std::string searched;
   for (const auto& root : roots) searched += (searched.empty() ? "" : ", ") + root;
-  return Status::fileError("mesh file '" + uri + "' not found: package '" + pkg + "' searched in [" + searched +
+  return Status::owned(StatusCode::FileError, "mesh file '" + uri + "' not found: package '" + pkg + "' searched in [" + searched +
                            "] (add --package-path or set ROS_PACKAGE_PATH)");
 }
 
@@ -73,7 +73,7 @@ Status resolveMeshPath(const std::string& uri, const std::string& baseDir, const
   if (startsWith(uri, "package://")) return resolvePackage(uri, options, path);
   fs::path p = startsWith(uri, "file://") ? fs::path(uri.substr(7)) : fs::path(uri);
   if (p.is_relative()) p = fs::path(baseDir) / p;
-  if (!isFile(p)) return Status::fileError("mesh file '" + uri + "' not found (looked at " + p.string() + ")");
+  if (!isFile(p)) return Status::owned(StatusCode::FileError, "mesh file '" + uri + "' not found (looked at " + p.string() + ")");
   path = p.string();
   return {};
 }

@@ -480,7 +480,7 @@ Status SelfCollisionChecker<T>::Impl::checkSelfCollisionBatch(const std::vector<
   CollisionResult r;
   for (std::size_t i = 0; i < qs.size(); ++i) {
     Status s = checkSelfCollision(qs[i], r, firstOnly);
-    if (!s.ok()) return Status(s.code, "configuration " + std::to_string(i) + ": " + s.message);
+    if (!s.ok()) return Status::owned(s.code, "configuration " + std::to_string(i) + ": " + s.detailedMessage());
     out[i] = r.colliding ? 1 : 0;
   }
   colliding = std::move(out);

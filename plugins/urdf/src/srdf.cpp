@@ -18,7 +18,7 @@ Status parseDisabled(const tinyxml2::XMLElement& robot, SrdfData& out) {
   for (auto* e = robot.FirstChildElement("disable_collisions"); e; e = e->NextSiblingElement("disable_collisions")) {
     SrdfDisabledPair pair{attribute(*e, "link1"), attribute(*e, "link2"), attribute(*e, "reason")};
     if (pair.link1.empty() || pair.link2.empty())
-      return Status::parseError("malformed SRDF: <disable_collisions> on line " + std::to_string(e->GetLineNum()) +
+      return Status::owned(StatusCode::ParseError, "malformed SRDF: <disable_collisions> on line " + std::to_string(e->GetLineNum()) +
                                 " needs both link1 and link2");
     out.disabled.push_back(std::move(pair));
   }
@@ -31,7 +31,7 @@ Status parseGroupStates(const tinyxml2::XMLElement& robot, SrdfData& out) {
     for (auto* j = g->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
       double value = 0;
       if (j->QueryDoubleAttribute("value", &value) != tinyxml2::XML_SUCCESS || attribute(*j, "name").empty())
-        return Status::parseError("malformed SRDF: <joint> of group_state '" + state.name + "' on line " +
+        return Status::owned(StatusCode::ParseError, "malformed SRDF: <joint> of group_state '" + state.name + "' on line " +
                                   std::to_string(j->GetLineNum()) + " needs a name and a numeric value");
       state.values.emplace_back(attribute(*j, "name"), value);
     }
@@ -45,7 +45,7 @@ Status parseGroupStates(const tinyxml2::XMLElement& robot, SrdfData& out) {
 Status parseSrdf(const std::string& xml, SrdfData& out) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS)
-    return Status::parseError(std::string("malformed SRDF: XML error on line ") + std::to_string(doc.ErrorLineNum()) +
+    return Status::owned(StatusCode::ParseError, std::string("malformed SRDF: XML error on line ") + std::to_string(doc.ErrorLineNum()) +
                               ": " + doc.ErrorStr());
   const tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
   if (!robot) return Status::parseError("malformed SRDF: no <robot> root element");
