@@ -4,7 +4,10 @@
 // (30, 100, 300 random points on an ellipsoid, all hull vertices) and the same 64 seeded pose pairs (about half of
 // them overlapping), plus box-box, capsule-box and cylinder-box (gq's custom CylinderCallbacks) on the 30-point
 // scene's poses (libccd only). Also the boolean
-// overlaps: gq's GJK early-out kernel and the public gq::overlap vs ccdGJKIntersect and fcl::collide. Counters:
+// overlaps: gq's GJK early-out kernel and the public gq::overlap vs ccdGJKIntersect and fcl::collide. And the
+// penetration depth (MTD) of hull pairs on 64 overlapping pose pairs (drawn as above, the separated ones skipped):
+// gq::computePenetration (exact) and gq::distance (signed: EPA) vs libccd's ccdGJKPenetration and
+// ccdMPRPenetration, Bullet's GJK + EPA and FCL's collide with a contact (GST_LIBCCD). Counters:
 // `overlapping` = pairs the backend reported as intersecting.
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
@@ -63,6 +66,30 @@ const Scene& scene(int n) {
   return *cache[n];
 }
 
+// The same hull and pose distribution, only the overlapping pairs (gq::distance < 0), 64 of them.
+const Scene& overlappingScene(int n) {
+  static std::vector<std::unique_ptr<Scene>> cache(512);
+  if (!cache[n]) {
+    auto s = std::make_unique<Scene>();
+    std::mt19937_64 gen(1234 + n);
+    s->hull = randomHull(n, gen);
+    std::uniform_real_distribution<double> u(-1.1, 1.1);
+    std::normal_distribution<double> normal;
+    const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s->hull);
+    while (s->hull && int(s->pose0.size()) < kPairs) {
+      const auto rot = [&] { return gq::Quat<double>(normal(gen), normal(gen), normal(gen), normal(gen)).normalized(); };
+      const gq::Transform<double> p0(gq::Vec3<double>(u(gen), u(gen), u(gen)), rot());
+      const gq::Transform<double> p1(gq::Vec3<double>(u(gen), u(gen), u(gen)), rot());
+      gq::DistanceResult<double> r;
+      if (!gq::distance(r, hull, p0, hull, p1).ok() || !(r.distance < 0)) continue;
+      s->pose0.push_back(p0);
+      s->pose1.push_back(p1);
+    }
+    cache[n] = std::move(s);
+  }
+  return *cache[n];
+}
+
 // ---- runners: one pass over the 64 pairs, noinline so that callgrind reports each one's instruction count ------
 // (`bench_convex_distance --once` runs every runner once per size and exits: for callgrind, see the results CSV).
 using Caches = std::vector<gq::GjkCache<double>>;
@@ -94,6 +121,17 @@ using Caches = std::vector<gq::GjkCache<double>>;
     bool hit = false;
     (void)gq::overlap(g0, s.pose0[i], g1, s.pose1[i], hit);  // valid input: timed
     overlapping += hit;
+  }
+  return overlapping;
+}
+
+[[gnu::noinline]] int runGqPenetration(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    gq::PenetrationResult<double> r;
+    (void)gq::computePenetration(r, g0, s.pose0[i], g1, s.pose1[i]);  // valid input: timed
+    overlapping += r.penetrating;
+    benchmark::DoNotOptimize(r);
   }
   return overlapping;
 }
@@ -174,6 +212,19 @@ ccd_t makeCcd() {
   return overlapping;
 }
 
+[[gnu::noinline]] int runCcdMprPenetration(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  const ccd_t ccd = makeCcd();
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    const CcdShape a{&g0, s.pose0[i]}, b{&g1, s.pose1[i]};
+    ccd_real_t depth;
+    ccd_vec3_t dir, pos;
+    overlapping += ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos) == 0;
+    benchmark::DoNotOptimize(depth);
+  }
+  return overlapping;
+}
+
 // ---- FCL (GST_INDEP) ------------------------------------------------------------------------------------------
 struct FclScene {
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> o0, o1;
@@ -230,6 +281,22 @@ const FclScene& fclScene(const Scene& s) {
   return overlapping;
 }
 
+// Penetration depth through collide() with one contact; GST_LIBCCD (GST_INDEP returns no contact for Convex pairs).
+[[gnu::noinline]] int runFclPenetration(const FclScene& f) {
+  fcl::CollisionRequestd request;
+  request.gjk_solver_type = fcl::GST_LIBCCD;
+  request.enable_contact = true;
+  request.num_max_contacts = 1;
+  int overlapping = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    fcl::CollisionResultd r;
+    fcl::collide(f.o0[i].get(), f.o1[i].get(), request, r);
+    overlapping += r.numContacts() > 0;
+    benchmark::DoNotOptimize(r);
+  }
+  return overlapping;
+}
+
 // ---- Bullet (float64) ----------------------------------------------------------------------------------------
 btTransform bulletPose(const gq::Transform<double>& p) {
   return btTransform(btQuaternion(p.q.x(), p.q.y(), p.q.z(), p.q.w()), btVector3(p.p.x(), p.p.y(), p.p.z()));
@@ -259,6 +326,39 @@ std::unique_ptr<btConvexHullShape> bulletHull(const gq::ConvexMesh<double>& hull
     benchmark::DoNotOptimize(out);
   }
   return overlapping;
+}
+
+// ---- penetration rows: the overlapping scene, hull vs hull ------------------------------------------------------
+template <class Run> void benchOverlapping(benchmark::State& state, Run run) {
+  const Scene& s = overlappingScene(int(state.range(0)));
+  if (!s.hull) return state.SkipWithError("convex cooking failed");
+  const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
+  int overlapping = 0;
+  for (auto _ : state) overlapping = run(s, hull);
+  state.counters["overlapping"] = overlapping;
+  state.SetItemsProcessed(state.iterations() * kPairs);
+}
+
+void BM_PenGqPenetration(benchmark::State& state) {
+  benchOverlapping(state, [](const Scene& s, const gq::Geometry<double>& h) { return runGqPenetration(s, h, h); });
+}
+void BM_PenGqDistance(benchmark::State& state) {
+  benchOverlapping(state, [](const Scene& s, const gq::Geometry<double>& h) { return runGqDistance(s, h, h, nullptr); });
+}
+void BM_PenCcdGJKPenetration(benchmark::State& state) {
+  benchOverlapping(state, [](const Scene& s, const gq::Geometry<double>& h) { return runCcdPenetration(s, h, h); });
+}
+void BM_PenCcdMPRPenetration(benchmark::State& state) {
+  benchOverlapping(state, [](const Scene& s, const gq::Geometry<double>& h) { return runCcdMprPenetration(s, h, h); });
+}
+void BM_PenFclCollideContact(benchmark::State& state) {
+  benchOverlapping(state, [](const Scene& s, const gq::Geometry<double>&) { return runFclPenetration(fclScene(s)); });
+}
+void BM_PenBulletGjkEpa(benchmark::State& state) {
+  const Scene& s = overlappingScene(int(state.range(0)));
+  if (!s.hull) return state.SkipWithError("convex cooking failed");
+  const std::unique_ptr<btConvexHullShape> hull = bulletHull(*s.hull);
+  benchOverlapping(state, [&](const Scene& sc, const gq::Geometry<double>&) { return runBulletDistance(sc, *hull); });
 }
 
 // ---- shape pairs --------------------------------------------------------------------------------------------
@@ -337,6 +437,18 @@ void BM_BulletGjkEpaDistance(benchmark::State& state) {
 
 // One pass of every runner for one shape pair (`--once ARG`) or all of them (`--once`), for
 // `valgrind --tool=callgrind` instruction counts (inclusive cost of each run* function / 64 = per query).
+// `--once-penetration N`: the penetration rows' runners once on the overlapping scene of N-point hulls.
+void runOncePenetration(int n) {
+  const Scene& s = overlappingScene(n);
+  const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
+  runGqPenetration(s, hull, hull);
+  runGqDistance(s, hull, hull, nullptr);
+  runCcdPenetration(s, hull, hull);
+  runCcdMprPenetration(s, hull, hull);
+  runFclPenetration(fclScene(s));
+  runBulletDistance(s, *bulletHull(*s.hull));
+}
+
 void runOnce(const std::vector<int>& args) {
   for (int arg : args) {
     const Scene& s = sceneFor(arg);
@@ -371,8 +483,18 @@ BENCHMARK(BM_CcdGJKPenetration)->Arg(30)->Arg(100)->Arg(300)->Arg(1)->Arg(2)->Ar
 BENCHMARK(BM_FclIndepDistance)->Arg(30)->Arg(100)->Arg(300);
 BENCHMARK(BM_FclIndepCollide)->Arg(30)->Arg(100)->Arg(300);
 BENCHMARK(BM_BulletGjkEpaDistance)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_PenGqPenetration)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_PenGqDistance)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_PenCcdGJKPenetration)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_PenCcdMPRPenetration)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_PenFclCollideContact)->Arg(30)->Arg(100)->Arg(300);
+BENCHMARK(BM_PenBulletGjkEpa)->Arg(30)->Arg(100)->Arg(300);
 
 int main(int argc, char** argv) {
+  if (argc > 2 && std::string(argv[1]) == "--once-penetration") {
+    runOncePenetration(std::stoi(argv[2]));
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--once") {
     runOnce(argc > 2 ? std::vector<int>{std::stoi(argv[2])} : std::vector<int>{30, 100, 300, 1, 2, 3});
     return 0;

@@ -38,9 +38,10 @@ template <class T, PenetrationFn<T> Fn>
 Status framed(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b, const Transform<T>& p1,
               PenetrationResult<T>& result) {
   const detail::PairFrame<T> frame = detail::pairFrame(a.radius, p0, b.radius, p1);
-  if (Status s = Fn(a.geom, frame.pose0, b.geom, frame.pose1, result); !s.ok()) return s;
+  const Status s = Fn(a.geom, frame.pose0, b.geom, frame.pose1, result);  // Ok, or a Warning with an answer
+  if (!s.ok()) return s;
   if (result.penetrating) result.direction = frame.world.rotate(result.direction);
-  return Status();
+  return s;
 }
 
 // A sphere, capsule or box pair: both positions translated by the smaller shape's, rotations kept (normalised as the
@@ -62,9 +63,10 @@ Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0, const de
 template <class T, PenetrationCell<T> Cell>
 Status swappedCell(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
                    const Transform<T>& p1, PenetrationResult<T>& result) {
-  if (Status s = Cell(b, p1, a, p0, result); !s.ok()) return s;
+  const Status s = Cell(b, p1, a, p0, result);
+  if (!s.ok()) return s;
   result.direction = -result.direction;
-  return Status();
+  return s;
 }
 
 // Adapts a kernel on concrete geometry types to the table's signature.
@@ -80,9 +82,10 @@ Status pairKernel(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<
 template <class T, PenetrationFn<T> Fn>
 Status swapped(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
                PenetrationResult<T>& result) {
-  if (Status s = Fn(g1, p1, g0, p0, result); !s.ok()) return s;
+  const Status s = Fn(g1, p1, g0, p0, result);
+  if (!s.ok()) return s;
   result.direction = -result.direction;
-  return Status();
+  return s;
 }
 
 template <class T> const CustomGeometryCallbacks<T>& callbacksOf(const Geometry<T>& g) {
@@ -212,16 +215,17 @@ Status penetrationCell(PenetrationResult<T>& result, const ShapeRef<T>& a, const
                        const ShapeRef<T>& b, const Transform<T>& pose1) {
   PenetrationResult<T> local;
   const PenetrationCell<T> fn = kPenetrationTable<T>[std::size_t(a.type())][std::size_t(b.type())];
-  if (Status s = fn(a, pose0, b, pose1, local); !s.ok()) [[unlikely]]
+  const Status s = fn(a, pose0, b, pose1, local);  // Ok, or a Warning with an answer
+  if (!s.ok()) [[unlikely]]
     return s;
   if (!local.penetrating) {
     result = PenetrationResult<T>();
-    return Status();
+    return s;
   }
   if (!isFinite(local.direction) || !std::isfinite(local.depth)) [[unlikely]]
     return Status::internal("computePenetration produced a non-finite result");
   result = local;
-  return Status();
+  return s;
 }
 
 // Valid shapes: the poses, then the non-convex custom shapes, then the table.

@@ -81,16 +81,24 @@ template <class T> Vec3<T> edgeDirection(const Polytope<T>& poly, const std::arr
   return (poly.vertices[edge[1]] - poly.vertices[edge[0]]).stableNormalized();
 }
 
-template <class T> void edgeArcs(const Polytope<T>& poly, T sign, std::vector<EdgeArc<T>>& arcs) {
+template <class T> EdgeArc<T> edgeArc(const Polytope<T>& poly, std::size_t i, T sign) {
   const PolytopeTopology& topo = *poly.topology;
+  const Vec3<T> n1 = poly.faceNormals[topo.edgeFaces[i][0]] * sign, n2 = poly.faceNormals[topo.edgeFaces[i][1]] * sign;
+  const Vec3<T> plane = n2.cross(n1);
+  const bool flat = isFlatArc(plane);
+  const Vec3<T> direction = flat ? edgeDirection(poly, topo.edges[i]) : Vec3<T>::Zero();
+  return {n1, n2, plane, topo.edges[i][0], flat, direction};
+}
+
+template <class T> void edgeArcs(const Polytope<T>& poly, T sign, std::vector<EdgeArc<T>>& arcs) {
   arcs.clear();
-  for (std::size_t i = 0; i < topo.edges.size(); ++i) {
-    const Vec3<T> n1 = poly.faceNormals[topo.edgeFaces[i][0]] * sign, n2 = poly.faceNormals[topo.edgeFaces[i][1]] * sign;
-    const Vec3<T> plane = n2.cross(n1);
-    const bool flat = isFlatArc(plane);
-    const Vec3<T> direction = flat ? edgeDirection(poly, topo.edges[i]) : Vec3<T>::Zero();
-    arcs.push_back({n1, n2, plane, topo.edges[i][0], flat, direction});
-  }
+  for (std::size_t i = 0; i < poly.topology->edges.size(); ++i) arcs.push_back(edgeArc(poly, i, sign));
+}
+
+template <class T> void edgeArcs(const Polytope<T>& poly, T sign, const std::vector<std::uint32_t>& edges,
+                                 std::vector<EdgeArc<T>>& arcs) {
+  arcs.clear();
+  for (const std::uint32_t i : edges) arcs.push_back(edgeArc(poly, i, sign));
 }
 
 enum class Crossing { No, Yes, Maybe };
@@ -114,17 +122,15 @@ template <class T> ArcScratch<T>& arcScratch() {
   return s;
 }
 
-// Edge-edge facets of A - B for two polytopes with known edge faces.
+// Every pair of an arc of A (arcsA) and an arc of -B (arcsB): the facets of A - B they make.
 template <class T>
-void testEdgePairsGaussMap(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated, SatResult<T>& best) {
+void testArcPairs(const Polytope<T>& a, const Polytope<T>& b, const std::vector<EdgeArc<T>>& arcsA,
+                  const std::vector<EdgeArc<T>>& arcsB, bool stopWhenSeparated, SatResult<T>& best) {
   const T eps = T(tol::Rel<T>::kEpsilon);
-  ArcScratch<T>& s = arcScratch<T>();
-  edgeArcs(a, T(1), s.a);
-  edgeArcs(b, T(-1), s.b);
-  for (const EdgeArc<T>& ea : s.a) {
+  for (const EdgeArc<T>& ea : arcsA) {
     const Vec3<T> coneMid = ea.n1 + ea.n2;
     const Vec3<T>& va = a.vertices[ea.vertex];
-    for (const EdgeArc<T>& eb : s.b) {
+    for (const EdgeArc<T>& eb : arcsB) {
       if (ea.flat || eb.flat) {  // no usable arc: the pair's axis from the edge directions, both signs
         const Vec3<T> da = ea.flat ? ea.direction : Vec3<T>(ea.plane.normalized());
         const Vec3<T> db = eb.flat ? eb.direction : Vec3<T>(eb.plane.normalized());
@@ -150,6 +156,15 @@ void testEdgePairsGaussMap(const Polytope<T>& a, const Polytope<T>& b, bool stop
       if (stopWhenSeparated && best.depth < T(0)) return;
     }
   }
+}
+
+// Edge-edge facets of A - B for two polytopes with known edge faces.
+template <class T>
+void testEdgePairsGaussMap(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated, SatResult<T>& best) {
+  ArcScratch<T>& s = arcScratch<T>();
+  edgeArcs(a, T(1), s.a);
+  edgeArcs(b, T(-1), s.b);
+  testArcPairs(a, b, s.a, s.b, stopWhenSeparated, best);
 }
 
 // Edge-edge axes when one side has no Gauss map (a segment core, or non-manifold input): every pair of
@@ -398,6 +413,17 @@ void buildConvexPolytope(const ConvexMeshGeometry<T>& convex, const Transform<T>
   fillCoordinates(out);
 }
 
+template <class T> T minProjection(const Polytope<T>& p, const Vec3<T>& n) { return minDot(p, n); }
+
+template <class T>
+void satEdgePairs(const Polytope<T>& a, const Polytope<T>& b, const std::vector<std::uint32_t>& edgesA,
+                  const std::vector<std::uint32_t>& edgesB, SatResult<T>& best) {
+  ArcScratch<T>& s = arcScratch<T>();
+  edgeArcs(a, T(1), edgesA, s.a);
+  edgeArcs(b, T(-1), edgesB, s.b);
+  testArcPairs(a, b, s.a, s.b, false, best);
+}
+
 template <class T> SatResult<T> satMinimumOverlap(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated) {
   SatResult<T> best{std::numeric_limits<T>::max(), Vec3<T>::UnitX()};
   // Face axes first: they are the most likely to separate, and cost one projection each.
@@ -608,6 +634,9 @@ template void buildSegmentPolytope<float>(const Segment<float>&, Polytope<float>
 template void buildBoxPolytope<float>(const BoxGeometry<float>&, const Transform<float>&, Polytope<float>&);
 template void buildConvexPolytope<float>(const ConvexMeshGeometry<float>&, const Transform<float>&, Polytope<float>&);
 template SatResult<float> satMinimumOverlap<float>(const Polytope<float>&, const Polytope<float>&, bool);
+template float minProjection<float>(const Polytope<float>&, const Vec3<float>&);
+template void satEdgePairs<float>(const Polytope<float>&, const Polytope<float>&, const std::vector<std::uint32_t>&,
+                                 const std::vector<std::uint32_t>&, SatResult<float>&);
 template ClosestResult<float> closestPointToPolytope<float>(const Vec3<float>&, const Polytope<float>&);
 template ClosestResult<float> closestSegmentToPolytope<float>(const Segment<float>&, const Polytope<float>&);
 template RoundedCore<float> sphereCore<float>(const SphereGeometry<float>&, const Transform<float>&);
@@ -625,6 +654,9 @@ template void buildSegmentPolytope<double>(const Segment<double>&, Polytope<doub
 template void buildBoxPolytope<double>(const BoxGeometry<double>&, const Transform<double>&, Polytope<double>&);
 template void buildConvexPolytope<double>(const ConvexMeshGeometry<double>&, const Transform<double>&, Polytope<double>&);
 template SatResult<double> satMinimumOverlap<double>(const Polytope<double>&, const Polytope<double>&, bool);
+template double minProjection<double>(const Polytope<double>&, const Vec3<double>&);
+template void satEdgePairs<double>(const Polytope<double>&, const Polytope<double>&, const std::vector<std::uint32_t>&,
+                                 const std::vector<std::uint32_t>&, SatResult<double>&);
 template ClosestResult<double> closestPointToPolytope<double>(const Vec3<double>&, const Polytope<double>&);
 template ClosestResult<double> closestSegmentToPolytope<double>(const Segment<double>&, const Polytope<double>&);
 template RoundedCore<double> sphereCore<double>(const SphereGeometry<double>&, const Transform<double>&);

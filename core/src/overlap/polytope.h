@@ -74,6 +74,13 @@ template <class T> struct SatResult {
 // Minimum push-out of a over the Minkowski-difference facet normals of a and b. With stopWhenSeparated the
 // search ends at the first separating axis (enough for a boolean overlap).
 template <class T> SatResult<T> satMinimumOverlap(const Polytope<T>& a, const Polytope<T>& b, bool stopWhenSeparated);
+// Pieces of it for searches that prove most axes irrelevant first (penetration/polytope_mtd.h): the smallest
+// projection of p's vertices on n (a face g of b pushes a out by -b.faceOffsets[g] - minProjection(a, m_g)), and the
+// edge-edge facets of the listed edges of a with the listed edges of b, kept in `best` when smaller.
+template <class T> T minProjection(const Polytope<T>& p, const Vec3<T>& n);
+template <class T>
+void satEdgePairs(const Polytope<T>& a, const Polytope<T>& b, const std::vector<std::uint32_t>& edgesA,
+                  const std::vector<std::uint32_t>& edgesB, SatResult<T>& best);
 
 template <class T> struct ClosestResult {
   T distance;

@@ -1,6 +1,7 @@
-// Box/convex MTD: exact SAT over the face normals of both and the edge pairs whose Gauss-map arcs cross.
+// Box/convex MTD: the exact SAT over the facets of the Minkowski difference, the axes a certificate proves irrelevant
+// skipped (penetration/polytope_mtd.h).
 #include "penetration/penetration.h"
-#include "overlap/polytope.h"
+#include "penetration/polytope_mtd.h"
 
 namespace gq::detail {
 
@@ -11,7 +12,7 @@ bool penetrationBoxConvex(const BoxGeometry<T>& g0, const Transform<T>& p0, cons
   Polytope<T>& b = scratchPolytope<T>(1);
   buildBoxPolytope(g0, p0, a);
   buildConvexPolytope(g1, p1, b);
-  return penetrationPolytopes(a, b, direction, depth);
+  return penetrationPolytopesCertified(a, boxInnerBall(g0, p0), b, hullInnerBall(g1, p1, b), direction, depth);
 }
 
 template bool penetrationBoxConvex<float>(const BoxGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&,

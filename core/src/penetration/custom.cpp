@@ -1,5 +1,5 @@
 // MTD of a convex custom geometry with any support-mapped shape: GJK, then EPA when they overlap
-// (penetration/gjk_epa.h); EPA out of iterations is reported as its status.
+// (penetration/gjk_epa.h); EPA out of iterations answers with its best upper bound under a Warning.
 #include "penetration/gjk_epa.h"
 #include "penetration/penetration.h"
 

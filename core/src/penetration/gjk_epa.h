@@ -16,11 +16,15 @@ template <class T> Status mtdByEpa(const ConvexShape<T>& a, const ConvexShape<T>
   return epa.status;
 }
 
+// EPA out of iterations answers with its best upper bound (a translation that separates) under a Warning, as
+// distance does on the same pair: the caller gets a usable push-out, flagged as not certified to tolerance.
 template <class T>
 Status penetrationGjkEpa(const ConvexShape<T>& a, const ConvexShape<T>& b, bool& penetrating, Vec3<T>& direction,
                          T& depth) {
   penetrating = gjkOverlap(a, b);
-  return penetrating ? mtdByEpa(a, b, direction, depth) : Status();
+  if (!penetrating) return Status();
+  const Status epa = mtdByEpa(a, b, direction, depth);
+  return epa.ok() ? Status() : epa.withCode(StatusCode::Warning);
 }
 
 }  // namespace gq::detail

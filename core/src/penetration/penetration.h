@@ -43,8 +43,8 @@ template <class T> bool penetrationConvexConvex(const ConvexMeshGeometry<T>& g0,
 namespace gq::detail {
 template <class T> bool penetrationPlaneCustom(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CustomGeometry<T>& g1, const Transform<T>& p1,
                                                Vec3<T>& direction, T& depth);
-// Convex custom geometry (either side) against sphere, capsule, box, convex or custom: GJK + EPA. Fails with
-// EPA's status when it does not converge.
+// Convex custom geometry (either side) against sphere, capsule, box, convex or custom: GJK + EPA. EPA out of
+// iterations: its best upper bound, with a Warning.
 template <class T> Status penetrationCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1,
                                                bool& penetrating, Vec3<T>& direction, T& depth);
 }  // namespace gq::detail
