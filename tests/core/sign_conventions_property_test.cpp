@@ -22,7 +22,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
 #include <memory>
 #include <sstream>
@@ -172,8 +171,8 @@ template <class T> Counts checkPair(const Shapes<T>& shapes, Kind a, Kind b, std
     const Status sp = computePenetration(pen, g0, p0, g1, p1);
     DistanceResult<T> dist;
     const Status sd = distance(dist, g0, p0, g1, p1);
-    // NotConverged is an honest refusal (GJK/EPA on a curved shape in float can stall above its tolerance): the
-    // pose is counted and replaced by another.
+    // NotConverged would be a refusal: penetration answers an EPA out of iterations with its upper bound under a
+    // Warning, as distance does. Counted (and the pose replaced) so that the count can be required to be zero.
     if (so.code == StatusCode::NotConverged || sp.code == StatusCode::NotConverged ||
         sd.code == StatusCode::NotConverged) {
       ++counts.unconverged;
@@ -260,9 +259,7 @@ TYPED_TEST(SignConventions, DistancePenetrationAndOverlapAgreeOnEveryPair) {
       const Counts c = checkPair<T>(shapes, a, b, ++seed);
       if (c.answered == 0) continue;  // at most one family answers the pair
       EXPECT_EQ(c.failed, 0) << kindName(a) << " vs " << kindName(b) << ": failed checks";
-      EXPECT_LE(c.unconverged, kPosesPerPair / 100) << kindName(a) << " vs " << kindName(b);
-      if (c.unconverged > 0)
-        std::printf("%s vs %s: %d poses NotConverged (replaced)\n", kindName(a), kindName(b), c.unconverged);
+      EXPECT_EQ(c.unconverged, 0) << kindName(a) << " vs " << kindName(b) << ": poses NotConverged";
       EXPECT_EQ(c.answered, kPosesPerPair) << kindName(a) << " vs " << kindName(b);
       if (!isSurface(a) && !isSurface(b)) {
         // The poses reach both sides of the sign change.
