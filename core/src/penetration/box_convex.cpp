@@ -12,7 +12,7 @@ bool penetrationBoxConvex(const BoxGeometry<T>& g0, const Transform<T>& p0, cons
   Polytope<T>& b = scratchPolytope<T>(1);
   buildBoxPolytope(g0, p0, a);
   buildConvexPolytope(g1, p1, b);
-  return penetrationPolytopesCertified(a, boxInnerBall(g0, p0), b, hullInnerBall(g1, p1, b), direction, depth);
+  return penetrationPolytopesCertified(a, boxInnerEllipsoid(g0, p0), b, hullInnerEllipsoid(g1, p1, b), direction, depth);
 }
 
 template bool penetrationBoxConvex<float>(const BoxGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&,

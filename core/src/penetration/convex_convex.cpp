@@ -12,7 +12,7 @@ bool penetrationConvexConvex(const ConvexMeshGeometry<T>& g0, const Transform<T>
   Polytope<T>& b = scratchPolytope<T>(1);
   buildConvexPolytope(g0, p0, a);
   buildConvexPolytope(g1, p1, b);
-  return penetrationPolytopesCertified(a, hullInnerBall(g0, p0, a), b, hullInnerBall(g1, p1, b), direction, depth);
+  return penetrationPolytopesCertified(a, hullInnerEllipsoid(g0, p0, a), b, hullInnerEllipsoid(g1, p1, b), direction, depth);
 }
 
 template bool penetrationConvexConvex<float>(const ConvexMeshGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&,
