@@ -131,6 +131,13 @@ inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafF
         } while (mask);
         continue;
       }
+      const int j = __builtin_ctz(unsigned(mask));
+      if ((mask & (mask - 1)) == 0) {  // two children entered (the common case): push the farther one
+        const int nearLane = tn[j] < tn[i] ? j : i, farLane = i + j - nearLane;
+        stack[top++] = Entry{node.child[farLane], node.leafPacket[farLane], tn[farLane]};
+        e = Entry{node.child[nearLane], node.leafPacket[nearLane], tn[nearLane]};
+        continue;
+      }
       // Collect hit children sorted by entry distance (insertion sort of at most 4).
       Entry hit[4];
       hit[0] = Entry{node.child[i], node.leafPacket[i], tn[i]};
