@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "bvh/bvh.h"
 #include "gq/math.h"
@@ -39,8 +40,12 @@ template <class T> inline BvhRay makeBvhRay(const Vec3<T>& org, const Vec3<T>& d
     float d = static_cast<float>(dir[i]);
     if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
     r.invDir[i] = 1.0f / d;
-    const double originError = std::abs(double(org[i]) - double(r.org[i]));
-    r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+    if constexpr (std::is_same_v<T, float>) {
+      r.slack[i] = 0.0f;  // the origin is exactly the float one
+    } else {
+      const double originError = std::abs(double(org[i]) - double(r.org[i]));
+      r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+    }
     // minX, minY, minZ, maxX, maxY, maxZ: 4 floats each.
     const std::uint32_t minPlane = 4u * std::uint32_t(i), maxPlane = 12u + 4u * std::uint32_t(i);
     r.nearOffset[i] = r.invDir[i] >= 0.0f ? minPlane : maxPlane;
