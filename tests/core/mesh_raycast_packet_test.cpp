@@ -7,7 +7,10 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <type_traits>
 
+#include "bvh/build.h"
+#include "bvh/triangle_exact4.h"
 #include "bvh/triangle_packet.h"
 #include "mesh/triangle.h"
 #include "mesh_test_helpers.h"
@@ -53,7 +56,9 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
                bool tightMaxT, Counts& counts) {
   ASSERT_TRUE(Bvh4Node::isLeaf(mesh.accel->bvh.rootChild));
   const std::uint32_t count = Bvh4Node::leafCount(mesh.accel->bvh.rootChild);
-  const TrianglePacket4& packet = mesh.accel->trianglePackets.at(mesh.accel->bvh.rootPacket);
+  // Float meshes keep exact vertex packets instead; the pre-test is checked on packets built here for both.
+  const std::vector<TrianglePacket4> packets = detail::buildTrianglePackets(mesh.accel->bvh, mesh.triangleVertices);
+  const TrianglePacket4& packet = packets.at(mesh.accel->bvh.rootPacket);
   for (std::size_t r = 0; r < origins.size(); ++r) {
     const Vec3<T> dir = (targets[r] - origins[r]).normalized();
     const detail::WatertightRay<T> exactRay = detail::makeWatertightRay(origins[r], dir);
@@ -68,10 +73,15 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
         }
       }
       const int mask = detail::packetCandidates(packet, packetRay, floatCeil(maxT), cull);
+      int exactMask = 0xf;  // float meshes: the 4-wide exact test on the mesh's vertex packet
+      if constexpr (std::is_same_v<T, float>)
+        exactMask = detail::exactTriangleCandidates(mesh.accel->vertexPackets.at(mesh.accel->bvh.rootPacket),
+                                                    detail::makeWatertightRay4(exactRay), maxT, cull);
       for (std::uint32_t i = 0; i < count; ++i) {
         const Vec3<T>* v = &mesh.triangleVertices[3 * i];
         detail::TriangleRayHit<T> h;
         const bool exact = detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h);
+        EXPECT_FALSE(exact && !((exactMask >> i) & 1)) << "the 4-wide exact test dropped a hit";
         const bool kept = (mask >> i) & 1;
         ++counts.tested;
         counts.exactHits += exact;
@@ -147,7 +157,8 @@ TYPED_TEST(MeshRaycastPacket, PreTestRejectsTrianglesTheRayClearlyMisses) {
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   ASSERT_NE(mesh, nullptr);
   ASSERT_TRUE(Bvh4Node::isLeaf(mesh->accel->bvh.rootChild));
-  const TrianglePacket4& packet = mesh->accel->trianglePackets.at(mesh->accel->bvh.rootPacket);
+  const std::vector<TrianglePacket4> packets = detail::buildTrianglePackets(mesh->accel->bvh, mesh->triangleVertices);
+  const TrianglePacket4& packet = packets.at(mesh->accel->bvh.rootPacket);
   for (int i = 0; i < 4; ++i) {
     const Vec3<T> target(T(2 * i) + T(0.25), T(0.25), T(0));
     const Vec3<T> origin = target + Vec3<T>(T(0.3), T(-0.2), T(100));

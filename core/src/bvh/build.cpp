@@ -210,6 +210,21 @@ std::vector<TrianglePacket4> buildTrianglePackets(const Bvh4& bvh, const std::ve
 template std::vector<TrianglePacket4> buildTrianglePackets<float>(const Bvh4&, const std::vector<Vec3<float>>&);
 template std::vector<TrianglePacket4> buildTrianglePackets<double>(const Bvh4&, const std::vector<Vec3<double>>&);
 
+std::vector<TriangleVertices4> buildVertexPackets(const Bvh4& bvh, const std::vector<Vec3<float>>& triangleVertices) {
+  std::vector<TriangleVertices4> packets(bvh.leafCount, TriangleVertices4{});
+  auto fill = [&](TriangleVertices4& p, std::uint32_t leafRef) {
+    const std::uint32_t first = Bvh4Node::leafFirst(leafRef), count = Bvh4Node::leafCount(leafRef);
+    for (std::uint32_t i = 0; i < count; ++i)
+      for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a) p.v[k][a][i] = triangleVertices[3 * std::size_t(first + i) + std::size_t(k)][a];
+  };
+  if (Bvh4Node::isLeaf(bvh.rootChild)) fill(packets[bvh.rootPacket], bvh.rootChild);
+  for (const Bvh4Node& node : bvh.nodes)
+    for (int i = 0; i < 4; ++i)
+      if (Bvh4Node::isLeaf(node.child[i])) fill(packets[node.leafPacket[i]], node.child[i]);
+  return packets;
+}
+
 template <class T> Bounds3<float> roundOutward(const Vec3<T>& lo, const Vec3<T>& hi) {
   return Bounds3<float>::fromMinMax(Vec3<float>(roundDown(lo.x()), roundDown(lo.y()), roundDown(lo.z())),
                                     Vec3<float>(roundUp(hi.x()), roundUp(hi.y()), roundUp(hi.z())));

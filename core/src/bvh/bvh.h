@@ -40,6 +40,13 @@ struct alignas(16) TrianglePacket4 {
   float e2x[4], e2y[4], e2z[4];
 };
 
+// The (up to 4) triangles of one leaf of a float mesh, exact vertex copies in structure-of-arrays form: lane i holds
+// v0, v1, v2 of triangle first + i. The float watertight test runs on them 4 lanes at a time (bvh/triangle_exact4.h).
+// Unused lanes are 0.
+struct alignas(16) TriangleVertices4 {
+  float v[3][3][4];  // v[vertex][axis][lane]
+};
+
 struct Bvh4 {
   std::vector<Bvh4Node> nodes;  // nodes[0] is the root (absent when the mesh has one leaf's worth or less)
   std::uint32_t rootChild = Bvh4Node::kEmpty;  // root reference: node index or a leaf
@@ -50,11 +57,13 @@ struct Bvh4 {
 
 namespace detail {
 // What cookTriangleMesh builds for the queries (declared opaque in gq/cooking.h): the BVH over the cooked
-// triangles and the float SoA copies of each leaf's triangles for the SIMD ray pre-test (index:
-// Bvh4Node::leafPacket, Bvh4::rootPacket).
+// triangles and the float SoA copies of each leaf's triangles for the SIMD ray tests (index: Bvh4Node::leafPacket,
+// Bvh4::rootPacket). A double mesh has trianglePackets (the conservative float pre-test, bvh/triangle_packet.h); a
+// float mesh has vertexPackets instead (its exact vertices, tested 4-wide by the exact test itself).
 struct MeshAccel {
   Bvh4 bvh;
   std::vector<TrianglePacket4> trianglePackets;
+  std::vector<TriangleVertices4> vertexPackets;
 };
 }  // namespace detail
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "bvh/bvh.h"
 #include "gq/math.h"
@@ -23,6 +24,9 @@ struct BvhRay {
   alignas(16) float org[3];
   float invDir[3];
   float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |invDir|
+  // Per axis, the float offset in a Bvh4Node of the child bounds the ray enters (near) and leaves (far) by: the min
+  // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis.
+  std::uint32_t nearOffset[3], farOffset[3];
   // Relative padding on [tNear, tFar] covering the rounding of the slab arithmetic and of the float direction.
   static constexpr float kRelPad = 16.0f * std::numeric_limits<float>::epsilon();
 };
@@ -36,34 +40,46 @@ template <class T> inline BvhRay makeBvhRay(const Vec3<T>& org, const Vec3<T>& d
     float d = static_cast<float>(dir[i]);
     if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
     r.invDir[i] = 1.0f / d;
-    const double originError = std::abs(double(org[i]) - double(r.org[i]));
-    r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+    if constexpr (std::is_same_v<T, float>) {
+      r.slack[i] = 0.0f;  // the origin is exactly the float one
+    } else {
+      const double originError = std::abs(double(org[i]) - double(r.org[i]));
+      r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+    }
+    // minX, minY, minZ, maxX, maxY, maxZ: 4 floats each.
+    const std::uint32_t minPlane = 4u * std::uint32_t(i), maxPlane = 12u + 4u * std::uint32_t(i);
+    r.nearOffset[i] = r.invDir[i] >= 0.0f ? minPlane : maxPlane;
+    r.farOffset[i] = r.invDir[i] >= 0.0f ? maxPlane : minPlane;
   }
   return r;
 }
 
-// Tests the ray against the 4 children of `node` for t in [0, tMax]; returns a 4-bit hit mask and the entry
-// distances of the children in tNear.
+// Tests the ray against the 4 children of `node` for t in [0, tMax]; returns a 4-bit hit mask (empty lanes never set)
+// and the entry distances of the children in tNear.
 inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax, float tNear[4]) {
 #ifdef GQ_SSE42
+  // With a positive (negative) inverse the min (max) plane gives the smaller slab distance, and rounding keeps that
+  // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
+  const float* base = node.minX;
   const __m128 ox = _mm_set1_ps(ray.org[0]), oy = _mm_set1_ps(ray.org[1]), oz = _mm_set1_ps(ray.org[2]);
   const __m128 ix = _mm_set1_ps(ray.invDir[0]), iy = _mm_set1_ps(ray.invDir[1]), iz = _mm_set1_ps(ray.invDir[2]);
   const __m128 sx = _mm_set1_ps(ray.slack[0]), sy = _mm_set1_ps(ray.slack[1]), sz = _mm_set1_ps(ray.slack[2]);
-  const __m128 x0 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.minX), ox), ix);
-  const __m128 x1 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.maxX), ox), ix);
-  const __m128 y0 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.minY), oy), iy);
-  const __m128 y1 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.maxY), oy), iy);
-  const __m128 z0 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.minZ), oz), iz);
-  const __m128 z1 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.maxZ), oz), iz);
-  const __m128 nearX = _mm_sub_ps(_mm_min_ps(x0, x1), sx), farX = _mm_add_ps(_mm_max_ps(x0, x1), sx);
-  const __m128 nearY = _mm_sub_ps(_mm_min_ps(y0, y1), sy), farY = _mm_add_ps(_mm_max_ps(y0, y1), sy);
-  const __m128 nearZ = _mm_sub_ps(_mm_min_ps(z0, z1), sz), farZ = _mm_add_ps(_mm_max_ps(z0, z1), sz);
+  const __m128 nearX = _mm_sub_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.nearOffset[0]), ox), ix), sx);
+  const __m128 nearY = _mm_sub_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.nearOffset[1]), oy), iy), sy);
+  const __m128 nearZ = _mm_sub_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.nearOffset[2]), oz), iz), sz);
+  const __m128 farX = _mm_add_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.farOffset[0]), ox), ix), sx);
+  const __m128 farY = _mm_add_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.farOffset[1]), oy), iy), sy);
+  const __m128 farZ = _mm_add_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.farOffset[2]), oz), iz), sz);
   __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
   __m128 tf = _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax)));
   tn = _mm_mul_ps(tn, _mm_set1_ps(1.0f - BvhRay::kRelPad));
   tf = _mm_mul_ps(tf, _mm_set1_ps(1.0f + BvhRay::kRelPad));
   _mm_storeu_ps(tNear, tn);
-  return _mm_movemask_ps(_mm_cmple_ps(tn, tf));
+  // Empty lanes (all-+inf boxes) fail the slab test only for a finite float origin and tMax; an origin beyond the
+  // float range (|x| > 3.4e38 in mesh space) gives inf - inf = NaN there, so they are masked out explicitly.
+  const __m128i empty = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(node.child)),
+                                        _mm_set1_epi32(-1));
+  return _mm_movemask_ps(_mm_andnot_ps(_mm_castsi128_ps(empty), _mm_cmple_ps(tn, tf)));
 #else
   const float* lo[3] = {node.minX, node.minY, node.minZ};
   const float* hi[3] = {node.maxX, node.maxY, node.maxZ};
@@ -79,17 +95,17 @@ inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax
     tn *= 1.0f - BvhRay::kRelPad;
     tf *= 1.0f + BvhRay::kRelPad;
     tNear[i] = tn;
-    if (tn <= tf) mask |= 1 << i;
+    if (tn <= tf && node.child[i] != Bvh4Node::kEmpty) mask |= 1 << i;
   }
   return mask;
 #endif
 }
 
-// Visits leaves whose boxes the ray enters within [0, tMax], nearest child first. `leaf(ref, packet)` gets the leaf
-// reference and its packet number (Bvh4Node::leafPacket) and returns true to stop; it may lower tMax (a float
-// reference owned by the caller) to prune.
-template <class LeafFn>
-inline void traverseRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
+// Walks the leaves whose boxes the ray enters within [0, tMax]. Ordered: nearest child first, and entries whose entry
+// distance passed tMax (lowered by the leaf handler since they were pushed) are dropped. Unordered (any hit: the walk
+// stops at the first hit, so the order buys nothing and sorting costs per node): the children are pushed as found.
+template <bool kOrdered, class LeafFn>
+inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
   struct Entry { std::uint32_t ref, packet; float tNear; };
   Entry stack[kBvhStackSize];
   int top = 0;
@@ -97,35 +113,68 @@ inline void traverseRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, L
   stack[top++] = {bvh.rootChild, bvh.rootPacket, 0.0f};
   while (top > 0) {
     Entry e = stack[--top];
-    if (e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
-    // Descend through inner nodes, pushing the farther children and continuing with the nearest.
+    if (kOrdered && e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
+    // Descend through inner nodes, pushing the other children and continuing with one (the nearest when ordered).
     bool missed = false;
     while (!Bvh4Node::isLeaf(e.ref)) {
       const Bvh4Node& node = bvh.nodes[e.ref];
-      float tn[4];
-      int mask = intersectChildren(node, ray, tMax, tn);
-      // Empty lanes (all-+inf boxes) fail the slab test only for a finite float origin; an origin beyond the float
-      // range (|x| > 3.4e38 in mesh space) gives inf - inf = NaN there, so they are masked out explicitly.
-      for (int i = 0; i < 4; ++i)
-        if (node.child[i] == Bvh4Node::kEmpty) mask &= ~(1 << i);
+      alignas(16) float tn[4];
+      int mask = intersectChildren(node, ray, tMax, tn);  // empty lanes never set
       if (mask == 0) { missed = true; break; }
+      int i = __builtin_ctz(unsigned(mask));
+      mask &= mask - 1;
+      if (mask == 0) {  // one child entered: no stack traffic
+        e = Entry{node.child[i], node.leafPacket[i], tn[i]};
+        continue;
+      }
+      if (!kOrdered) {
+        e = Entry{node.child[i], node.leafPacket[i], tn[i]};
+        do {
+          i = __builtin_ctz(unsigned(mask));
+          mask &= mask - 1;
+          stack[top++] = Entry{node.child[i], node.leafPacket[i], tn[i]};
+        } while (mask);
+        continue;
+      }
+      const int j = __builtin_ctz(unsigned(mask));
+      if ((mask & (mask - 1)) == 0) {  // two children entered (the common case): push the farther one
+        const int nearLane = tn[j] < tn[i] ? j : i, farLane = i + j - nearLane;
+        stack[top++] = Entry{node.child[farLane], node.leafPacket[farLane], tn[farLane]};
+        e = Entry{node.child[nearLane], node.leafPacket[nearLane], tn[nearLane]};
+        continue;
+      }
       // Collect hit children sorted by entry distance (insertion sort of at most 4).
       Entry hit[4];
-      int n = 0;
+      hit[0] = Entry{node.child[i], node.leafPacket[i], tn[i]};
+      int n = 1;
       while (mask) {
-        const int i = __builtin_ctz(unsigned(mask));
+        i = __builtin_ctz(unsigned(mask));
         mask &= mask - 1;
         Entry c{node.child[i], node.leafPacket[i], tn[i]};
         int j = n++;
         while (j > 0 && hit[j - 1].tNear < c.tNear) { hit[j] = hit[j - 1]; --j; }
         hit[j] = c;  // descending: nearest last
       }
-      for (int i = 0; i < n - 1; ++i) stack[top++] = hit[i];
+      for (int k = 0; k < n - 1; ++k) stack[top++] = hit[k];
       e = hit[n - 1];
     }
     if (missed) continue;
     if (leaf(e.ref, e.packet)) return;
   }
+}
+
+// Visits leaves whose boxes the ray enters within [0, tMax], nearest child first. `leaf(ref, packet)` gets the leaf
+// reference and its packet number (Bvh4Node::leafPacket) and returns true to stop; it may lower tMax (a float
+// reference owned by the caller) to prune.
+template <class LeafFn>
+inline void traverseRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
+  walkRayLeaves<true>(bvh, ray, tMax, leaf);
+}
+
+// As traverseRayLeaves in no particular order, for walks that stop at the first leaf answer (any hit).
+template <class LeafFn>
+inline void traverseRayLeavesAnyOrder(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
+  walkRayLeaves<false>(bvh, ray, tMax, leaf);
 }
 
 // As traverseRayLeaves, with `leaf(first, count)` getting the leaf's primitive range.

@@ -7,7 +7,10 @@
 // maxHits closest hits and return them sorted by distance.
 #include <algorithm>
 
+#include <type_traits>
+
 #include "bvh/traverse.h"
+#include "bvh/triangle_exact4.h"
 #include "bvh/triangle_packet.h"
 #include "mesh/mesh_instance.h"
 #include "mesh/triangle.h"
@@ -31,13 +34,23 @@ template <class T> float floatCeil(T t) {
 template <class T> class MeshRaycaster {
  public:
   MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir, bool cullBackFaces)
-      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), bvhRay_(makeBvhRay(org, dir)),
-        packetRay_(makePacketRay(org, dir)), cull_(cullBackFaces) {}
+      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), bvhRay_(makeBvhRay(org, dir)), cull_(cullBackFaces) {
+    if constexpr (kFloat) ray4_ = makeWatertightRay4(ray_);
+    else packetRay_ = makePacketRay(org, dir);
+  }
 
-  // Cooked indices of the leaf's triangles that pass the packet pre-test, as a bit mask over first + i.
-  int candidates(std::uint32_t leafRef, std::uint32_t packet, float tMax) const {
+  // Cooked indices of the leaf's triangles that may pass the exact test within maxT, as a bit mask over first + i.
+  // Float meshes: the exact test itself, 4 lanes at a time; double meshes: the conservative float pre-test at tMax,
+  // a float upper bound of maxT.
+  int candidates(std::uint32_t leafRef, std::uint32_t packet, float tMax, T maxT) const {
     const int lanes = (1 << Bvh4Node::leafCount(leafRef)) - 1;
-    return packetCandidates(mesh_.accel->trianglePackets[packet], packetRay_, tMax, cull_) & lanes;
+    if constexpr (kFloat) {
+      (void)tMax;
+      return exactTriangleCandidates(mesh_.accel->vertexPackets[packet], ray4_, maxT, cull_) & lanes;
+    } else {
+      (void)maxT;
+      return packetCandidates(mesh_.accel->trianglePackets[packet], packetRay_, tMax, cull_) & lanes;
+    }
   }
 
   bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
@@ -48,14 +61,15 @@ template <class T> class MeshRaycaster {
            std::isfinite(hit.u) && std::isfinite(hit.v);
   }
 
-  // Closest hit (anyHit = false) or the first hit found (anyHit = true) within maxDist.
-  bool single(T maxDist, bool anyHit, RawHit<T>& best) const {
+  // Closest hit within maxDist: leaves nearest first, each hit lowering the walk's bound.
+  bool closest(T maxDist, RawHit<T>& best) const {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
     traverseRayLeaves(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
-      for (int mask = candidates(ref, packet, tMax); mask; mask &= mask - 1) {
+      bool lowered = false;
+      for (int mask = candidates(ref, packet, tMax, bestT); mask; mask &= mask - 1) {
         const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
         TriangleRayHit<T> h;
         if (!testTriangle(c, bestT, h)) continue;
@@ -64,9 +78,28 @@ template <class T> class MeshRaycaster {
         best = RawHit<T>{c, h};
         bestT = h.t;
         found = true;
-        if (anyHit) return true;
+        lowered = true;
       }
-      tMax = floatCeil(bestT);
+      if (lowered) tMax = floatCeil(bestT);
+      return false;
+    });
+    return found;
+  }
+
+  // The first hit found within maxDist (any hit): the walk stops there.
+  bool any(T maxDist, RawHit<T>& best) const {
+    float tMax = floatCeil(maxDist);
+    bool found = false;
+    traverseRayLeavesAnyOrder(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+      const std::uint32_t first = Bvh4Node::leafFirst(ref);
+      for (int mask = candidates(ref, packet, tMax, maxDist); mask; mask &= mask - 1) {
+        const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
+        TriangleRayHit<T> h;
+        if (!testTriangle(c, maxDist, h)) continue;
+        best = RawHit<T>{c, h};
+        found = true;
+        return true;
+      }
       return false;
     });
     return found;
@@ -79,7 +112,7 @@ template <class T> class MeshRaycaster {
     float tMax = floatCeil(maxDist);
     traverseRayLeaves(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
-      for (int mask = candidates(ref, packet, tMax); mask; mask &= mask - 1) {
+      for (int mask = candidates(ref, packet, tMax, limit); mask; mask &= mask - 1) {
         const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
         TriangleRayHit<T> h;
         if (!testTriangle(c, limit, h)) continue;
@@ -102,10 +135,12 @@ template <class T> class MeshRaycaster {
   }
 
  private:
+  static constexpr bool kFloat = std::is_same_v<T, float>;
   const TriangleMesh<T>& mesh_;
   WatertightRay<T> ray_;
   BvhRay bvhRay_;
-  PacketRay packetRay_;
+  WatertightRay4 ray4_{};  // float meshes
+  PacketRay packetRay_{};  // double meshes
   bool cull_;
 };
 
@@ -176,7 +211,8 @@ std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transf
     return n;
   }
   RawHit<T> best;
-  if (!caster.single(ray.maxDist, ray.flags.has(HitFlag::AnyHit), best)) return 0;
+  const bool found = ray.flags.has(HitFlag::AnyHit) ? caster.any(ray.maxDist, best) : caster.closest(ray.maxDist, best);
+  if (!found) return 0;
   hits[0] = makeHit(mesh, pose, frame, ray, g.doubleSided(), best);
   return 1;
 }
