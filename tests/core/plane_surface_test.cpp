@@ -63,16 +63,25 @@ template <class T> struct Lowest {
   LD height;
   Vec3<T> point;
 };
+
+// The brute force shared by both surfaces: the point of `local` (surface frame) lowest over the plane, in world.
 template <class T>
-Lowest<T> bruteForceMesh(const TriangleMeshGeometry<T>& g, const std::set<std::uint32_t>& used, const Transform<T>& pose,
-                         const Transform<T>& plane) {
+Lowest<T> lowestOver(const Transform<T>& plane, const Transform<T>& pose, const std::vector<Vec3<T>>& local) {
   Lowest<T> best{std::numeric_limits<LD>::infinity(), Vec3<T>::Zero()};
-  for (std::uint32_t i : used) {
-    const Vec3<T> x = pose.transform(Vec3<T>(g.scale.toMatrix() * g.mesh->vertices[i]));
+  for (const Vec3<T>& v : local) {
+    const Vec3<T> x = pose.transform(v);
     const LD h = heightOver(plane, x);
     if (h < best.height) best = {h, x};
   }
   return best;
+}
+
+template <class T>
+Lowest<T> bruteForceMesh(const TriangleMeshGeometry<T>& g, const std::set<std::uint32_t>& used, const Transform<T>& pose,
+                         const Transform<T>& plane) {
+  std::vector<Vec3<T>> local;
+  for (std::uint32_t i : used) local.emplace_back(g.scale.toMatrix() * g.mesh->vertices[i]);
+  return lowestOver(plane, pose, local);
 }
 
 template <class T> using OverlapPlaneTriangleMesh = PlaneSurface<T>;
@@ -185,20 +194,17 @@ template <class T>
 Lowest<T> bruteForceField(const HeightFieldDesc<T>& desc, const HeightFieldGeometry<T>& g, const Transform<T>& pose,
                           const Transform<T>& plane) {
   const std::set<std::uint32_t> holes(desc.holes.begin(), desc.holes.end());
-  Lowest<T> best{std::numeric_limits<LD>::infinity(), Vec3<T>::Zero()};
+  std::vector<Vec3<T>> local;  // the corners of every cell that is no hole
   for (std::uint32_t r = 0; r + 1 < desc.rows; ++r)
     for (std::uint32_t c = 0; c + 1 < desc.columns; ++c) {
       if (holes.count(r * (desc.columns - 1) + c)) continue;
       for (std::uint32_t k = 0; k < 4; ++k) {
         const std::uint32_t sr = r + (k >> 1), sc = c + (k & 1);
-        const Vec3<T> local(T(sr) * g.rowScale, desc.heights[sr * desc.columns + sc] * g.heightScale,
-                            T(sc) * g.columnScale);
-        const Vec3<T> x = pose.transform(local);
-        const LD h = heightOver(plane, x);
-        if (h < best.height) best = {h, x};
+        local.emplace_back(T(sr) * g.rowScale, desc.heights[sr * desc.columns + sc] * g.heightScale,
+                           T(sc) * g.columnScale);
       }
     }
-  return best;
+  return lowestOver(plane, pose, local);
 }
 
 template <class T> using OverlapPlaneHeightField = PlaneSurface<T>;

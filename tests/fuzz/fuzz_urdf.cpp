@@ -41,6 +41,11 @@ const std::string& meshDir() {
   return dir;
 }
 
+// A failed query names its reason: a Status that is not ok with an empty message is a bug.
+void requireExplained(const gq::Status& s) {
+  if (!s.ok() && *s.message() == '\0') std::abort();
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -62,14 +67,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!model->links.empty() || *s.message() == '\0') std::abort();
     return 0;
   }
+  // Each call may reject what a fuzzed model holds (an SRDF home outside the joint limits, shapes too large for pair
+  // queries): a rejection must say why, an answer must cover every link.
   std::vector<gq::Transform<double>> poses;
-  gq::urdf::forwardKinematics(*model, model->home, poses);
+  const gq::Status kinematics = gq::urdf::forwardKinematics(*model, model->home, poses);
+  requireExplained(kinematics);
+  if (kinematics.ok() && poses.size() != model->links.size()) std::abort();
   gq::urdf::CheckerOptions checkerOptions;
   checkerOptions.orderingSamples = 4;  // the default 256 checks per built checker cut the exec rate ~3x
   gq::urdf::SelfCollisionChecker<double> checker(model, checkerOptions);
   gq::urdf::CollisionResult result;
-  checker.checkSelfCollision(model->home, result);
+  requireExplained(checker.checkSelfCollision(model->home, result));
   gq::urdf::SelfDistanceResult<double> distance;
-  checker.selfDistance(model->home, distance);
+  requireExplained(checker.selfDistance(model->home, distance));
   return 0;
 }

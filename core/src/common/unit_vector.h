@@ -24,6 +24,16 @@ template <class T> inline bool tryUnit(const Vec3<T>& d, Vec3<T>& unit) {
   return true;
 }
 
+// tryUnit for a caller that has |d|^2 (len2) and |d| = sqrt(len2) (len) already: the same answer without a second
+// norm in the common case.
+template <class T> inline bool tryUnitWithNorm(const Vec3<T>& d, T len2, T len, Vec3<T>& unit) {
+  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) [[likely]] {
+    unit = d / len;
+    return true;
+  }
+  return tryUnit(d, unit);
+}
+
 // |d| where |d|^2 may over- or underflow (then by the largest component first); 0, inf or NaN as d has them.
 template <class T> inline T rangeSafeNorm(const Vec3<T>& d) {
   const T len2 = d.squaredNorm();

@@ -45,7 +45,7 @@ inline bool squaredNormIsUnit(double n2, double tolerance) {
   return n2 >= (1.0 - tolerance) * (1.0 - tolerance) && n2 <= (1.0 + tolerance) * (1.0 + tolerance);
 }
 
-template <class T> bool isUnitQuaternion(const Quat<T>& q) {
+template <class T> [[gnu::always_inline]] inline bool isUnitQuaternion(const Quat<T>& q) {
   return squaredNormIsUnit(double(q.squaredNorm()), tol::kUnitQuaternion);
 }
 
@@ -115,14 +115,17 @@ Status checkGeometryAndPose(const Geometry<T>& g, const Transform<T>& pose, cons
 
 // Both inputs of a pair query ("pose0", "pose1").
 // Pair kernels work in pose0's frame: the offset p1 - p0 must be a length they can square (see kMaxMagnitude).
-template <class T> bool pairOffsetIsSupported(const Transform<T>& p0, const Transform<T>& p1) {
+template <class T>
+[[gnu::always_inline]] inline bool pairOffsetIsSupported(const Transform<T>& p0, const Transform<T>& p1) {
   return ((p1.p - p0.p).array().abs() <= kMaxMagnitude<T>).all();
 }
 
 // The poses of a pair query whose geometries are valid (a prepared shape's, or checked before): a handful of compares
 // on the success path. The offset test also proves both positions finite: an infinite or NaN coordinate on either
-// side makes that offset coordinate infinite or NaN (inf - inf is NaN), and both fail `<= kMaxMagnitude`.
-template <class T> bool pairPosesAreValid(const Transform<T>& p0, const Transform<T>& p1) {
+// side makes that offset coordinate infinite or NaN (inf - inf is NaN), and both fail `<= kMaxMagnitude`. Always
+// inline: out of line (GCC's choice once a caller grows) it cost a call and its spills on every query.
+template <class T>
+[[gnu::always_inline]] inline bool pairPosesAreValid(const Transform<T>& p0, const Transform<T>& p1) {
   return pairOffsetIsSupported(p0, p1) && isUnitQuaternion(p0.q) && isUnitQuaternion(p1.q);
 }
 
@@ -155,8 +158,10 @@ template <class T> const char* rawTriangleProblem(const Triangle<T>& tri, const 
 }
 
 // Runs `body` (returning Status) and turns any escaping exception into InternalError: nothing throws out. Only an
-// exception, which has allocated already, makes the one owned message (its what()) of a query.
-template <class F> Status guarded(F&& body) noexcept {
+// exception, which has allocated already, makes the one owned message (its what()) of a query. Always inline: the
+// handlers are off the hot path, and out of line (GCC's choice once a caller grows) the guard cost a call, a frame
+// and the unpacking of the body's captures, ~50 instructions on every query.
+template <class F> [[gnu::always_inline]] inline Status guarded(F&& body) noexcept {
   try {
     return body();
   } catch (const std::bad_alloc&) {

@@ -29,10 +29,10 @@ bool penetrationCapsuleCapsule(const CapsuleGeometry<T>& g0, const Transform<T>&
   const Segment<T> s0 = capsuleSegment(g0, p0), s1 = capsuleSegment(g1, p1);
   const SegmentClosest<T> cp = closestSegmentSegment(s0.a, s0.b, s1.a, s1.b);
   const Vec3<T> d = cp.c0 - cp.c1;
-  const T len = d.norm();
+  const T len2 = d.squaredNorm(), len = std::sqrt(len2);
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;
-  if (!tryUnit(d, direction)) direction = crossingDirection(p0, p1);
+  if (!tryUnitWithNorm(d, len2, len, direction)) direction = crossingDirection(p0, p1);
   depth = pen;
   return true;
 }

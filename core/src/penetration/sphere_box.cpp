@@ -25,7 +25,9 @@ bool penetrationSphereBox(const SphereGeometry<T>& g0, const Transform<T>& p0, c
   if (dist2 > T(0)) {
     const T len = std::sqrt(dist2);
     if (len > g0.radius) return false;
-    direction = p1.rotate(unitOr(d, Vec3<T>(Vec3<T>::UnitX())));
+    Vec3<T> unit;
+    if (!tryUnitWithNorm(d, dist2, len, unit)) unit = Vec3<T>::UnitX();
+    direction = p1.rotate(unit);
     depth = g0.radius - len;
     return true;
   }

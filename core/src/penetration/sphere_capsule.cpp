@@ -12,10 +12,10 @@ bool penetrationSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& p
   const Vec3<T> axis = p1.rotate(Vec3<T>(g1.halfHeight, T(0), T(0)));
   const Vec3<T> q = closestPointOnSegment(Vec3<T>(p1.p - axis), Vec3<T>(p1.p + axis), p0.p);
   const Vec3<T> d = p0.p - q;
-  const T len = d.norm();
+  const T len2 = d.squaredNorm(), len = std::sqrt(len2);
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;
-  if (!tryUnit(d, direction)) direction = anyPerpendicular(p1.rotate(Vec3<T>::UnitX()));
+  if (!tryUnitWithNorm(d, len2, len, direction)) direction = anyPerpendicular(p1.rotate(Vec3<T>::UnitX()));
   depth = pen;
   return true;
 }
