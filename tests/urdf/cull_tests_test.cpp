@@ -6,6 +6,7 @@
 
 #include "../../plugins/urdf/src/cull_tests.h"
 #include "../../plugins/urdf/src/internal.h"
+#include "gq/query.h"
 
 namespace gq::urdf::test {
 namespace {
@@ -58,7 +59,7 @@ template <class T> void expectSegmentDistanceWithinRounding(std::uint64_t seed) 
     }
     const LD exact = exactSegmentDistance(p0.template cast<LD>(), d0.template cast<LD>(), p1.template cast<LD>(),
                                           d1.template cast<LD>());
-    const LD got = std::sqrt(LD(detail::segmentSquaredDistance(p0, d0, p1, d1)));
+    const LD got = std::sqrt(LD(internal::segmentSquaredDistance(p0, d0, p1, d1)));
     const LD size = LD(p0.norm() + d0.norm() + p1.norm() + d1.norm());
     const LD rounding = 64 * LD(std::numeric_limits<T>::epsilon()) * size;  // well inside the checker's slack
     EXPECT_LE(got, exact + rounding) << k;
@@ -77,9 +78,42 @@ TEST(CullTests, SegmentDistanceIsWithinRoundingOfTheExactMinimumEvenForNearlyPar
 TEST(CullTests, CapsulesTouchingAlongTheirLengthAreNotCulled) {
   // Two parallel capsules of radius 0.1 whose axes are 0.2 apart touch along a whole segment.
   const Vec3<double> a(0, 0, 0), span(1, 0, 0), b(0.3, 0.2, 0);
-  EXPECT_FALSE(detail::capsulesDisjoint(a, span, 0.1, b, span, 0.1 + 1e-15));
-  EXPECT_TRUE(detail::capsulesDisjoint(a, span, 0.1, b, span, 0.0999));
+  EXPECT_FALSE(internal::capsulesDisjoint(a, span, 0.1, b, span, 0.1 + 1e-15));
+  EXPECT_TRUE(internal::capsulesDisjoint(a, span, 0.1, b, span, 0.0999));
 }
+
+// The box cull is core's box-box SAT with box b brought into box a's frame: on seeded oriented boxes it must answer
+// "disjoint" exactly when gq::overlap (the façade, which frames the pair itself) answers no overlap.
+template <class T> void expectBoxCullAgreesWithOverlap(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1), size(0.05, 0.6);
+  int disjoint = 0, overlapping = 0;
+  for (int k = 0; k < 2000; ++k) {
+    OrientedBox<T> box[2];
+    Transform<T> pose[2];
+    for (int i = 0; i < 2; ++i) {
+      const double qw = u(rng), qx = u(rng), qy = u(rng), qz = u(rng);
+      const double cx = u(rng), cy = u(rng), cz = u(rng);
+      const double hx = size(rng), hy = size(rng), hz = size(rng);
+      pose[i] = Transform<T>(Vec3<T>(T(cx), T(cy), T(cz)), Quat<T>(T(qw), T(qx), T(qy), T(qz)).normalized());
+      box[i].centre = pose[i].p;
+      box[i].axes = pose[i].q.toRotationMatrix();
+      box[i].halfExtents = Vec3<T>(T(hx), T(hy), T(hz));
+    }
+    bool hit = false;
+    ASSERT_TRUE(gq::overlap<T>(BoxGeometry<T>(box[0].halfExtents), pose[0], BoxGeometry<T>(box[1].halfExtents),
+                               pose[1], hit).ok());
+    const bool culled = internal::orientedBoxesDisjoint(box[0], box[1]);
+    EXPECT_EQ(culled, !hit) << k;
+    (culled ? disjoint : overlapping) += 1;
+  }
+  EXPECT_GT(disjoint, 200);  // both answers are exercised
+  EXPECT_GT(overlapping, 200);
+}
+
+TEST(CullTests, BoxCullAgreesWithTheBoxBoxOverlapQueryDouble) { expectBoxCullAgreesWithOverlap<double>(11); }
+
+TEST(CullTests, BoxCullAgreesWithTheBoxBoxOverlapQueryFloat) { expectBoxCullAgreesWithOverlap<float>(12); }
 
 TEST(CullTests, EnclosingCapsuleContainsEveryPoint) {
   std::mt19937_64 rng(9);
@@ -90,7 +124,7 @@ TEST(CullTests, EnclosingCapsuleContainsEveryPoint) {
     points.emplace_back(0.8 * x, 0.2 * y + 0.3, 0.1 * z);
   }
   Vec3<double> mean;
-  const detail::EnclosingCapsule c = detail::enclosingCapsule(points, detail::principalAxes(points, mean), 0.0);
+  const internal::EnclosingCapsule c = internal::enclosingCapsule(points, internal::principalAxes(points, mean), 0.0);
   double worst = -1;
   for (const auto& p : points) {
     const Vec3<double> start = c.centre - c.halfHeight * c.axis;

@@ -44,7 +44,7 @@ TYPED_TEST_SUITE(CompiledKinematics, Scalars);
 
 // body frame * (link in body) must be the link pose forwardKinematics computes, for every link with shapes.
 template <class T> void expectChainMatchesForwardKinematics(const RobotModel<T>& m, int configurations) {
-  const detail::KinematicChain<T> chain(m);
+  const internal::KinematicChain<T> chain(m);
   std::vector<Mat3<T>> rotations;
   std::vector<Vec3<T>> positions;
   std::vector<Transform<T>> poses;
@@ -76,7 +76,7 @@ TYPED_TEST(CompiledKinematics, BodyFramesTimesLinkOffsetsAreTheForwardKinematics
 TYPED_TEST(CompiledKinematics, FixedJointsJoinLinksIntoOneBody) {
   RobotModel<TypeParam> m;
   ASSERT_TRUE(loadRobotFromStrings(kMixedChain, "", "/", testOptions(Representation::Hull), m).ok());
-  const detail::KinematicChain<TypeParam> chain(m);
+  const internal::KinematicChain<TypeParam> chain(m);
   EXPECT_EQ(chain.bodyOf(std::uint32_t(m.findLink("l4"))), chain.bodyOf(std::uint32_t(m.findLink("l3"))));
   EXPECT_NE(chain.bodyOf(std::uint32_t(m.findLink("l5"))), chain.bodyOf(std::uint32_t(m.findLink("l4"))));
   EXPECT_EQ(chain.bodyCount(), 7u);  // base, l1, l2, l3 (+bare, l4), l5, l6, tip
@@ -86,7 +86,7 @@ TYPED_TEST(CompiledKinematics, InvalidConfigurationsGiveTheForwardKinematicsStat
   using T = TypeParam;
   RobotModel<T> m;
   ASSERT_TRUE(loadRobotFromStrings(kMixedChain, "", "/", testOptions(Representation::Hull), m).ok());
-  const detail::KinematicChain<T> chain(m);
+  const internal::KinematicChain<T> chain(m);
   std::vector<Mat3<T>> rotations(1, Mat3<T>::Constant(T(7)));
   std::vector<Vec3<T>> positions(1, Vec3<T>::Constant(T(7)));
   std::vector<Transform<T>> poses;
@@ -133,7 +133,7 @@ TEST(FastSinCos, WithinTwoUlpsOfLongDoubleAcrossQuadrantsAndBeyondTheJointRange)
     if (k % 4 == 1) x = std::round(x / (M_PI / 4)) * (M_PI / 4) + (u - 0.5) * 1e-9;
     if (k % 16 == 3) x = (u - 0.5) * 4e6;
     double s, c;
-    detail::sinCos(x, s, c);
+    internal::sinCos(x, s, c);
     const long double xl = x;
     if (std::abs(std::sin(xl)) > 1e-300) worst = std::max(worst, ulpError(s, std::sin(xl)));
     if (std::abs(std::cos(xl)) > 1e-300) worst = std::max(worst, ulpError(c, std::cos(xl)));
@@ -143,13 +143,13 @@ TEST(FastSinCos, WithinTwoUlpsOfLongDoubleAcrossQuadrantsAndBeyondTheJointRange)
 
 TEST(FastSinCos, ExactAtZeroAndOddAtOppositeAngles) {
   double s, c;
-  detail::sinCos(0.0, s, c);
+  internal::sinCos(0.0, s, c);
   EXPECT_EQ(s, 0.0);
   EXPECT_EQ(c, 1.0);
   for (double x : {0.3, 1.2, 2.9, 7.5, 100.25}) {
     double sn, cn;
-    detail::sinCos(x, s, c);
-    detail::sinCos(-x, sn, cn);
+    internal::sinCos(x, s, c);
+    internal::sinCos(-x, sn, cn);
     EXPECT_EQ(sn, -s) << x;
     EXPECT_EQ(cn, c) << x;
   }

@@ -183,7 +183,7 @@ TYPED_TEST(SelfCollisionData, PairOrderIsByDecreasingContactCountAndStableOnTies
   const std::vector<LinkPair> given = {{0, 2}, {1, 3}, {2, 4}, {3, 5}};
   std::vector<LinkPair> pairs = given;
   std::uint64_t call = 0;
-  detail::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
+  internal::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
                                   [&](const std::vector<T>&, CollisionResult& r) {
                                     r.pairs.clear();
                                     r.pairs.push_back({2, 4});                   // every sample
@@ -191,16 +191,16 @@ TYPED_TEST(SelfCollisionData, PairOrderIsByDecreasingContactCountAndStableOnTies
                                     return Status();
                                   });
   EXPECT_EQ(pairs, (std::vector<LinkPair>{{2, 4}, {3, 5}, {0, 2}, {1, 3}}));
-  EXPECT_EQ(call, detail::kOrderingSamples);
+  EXPECT_EQ(call, internal::kOrderingSamples);
   pairs = given;
-  detail::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
+  internal::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
                                   [&](const std::vector<T>&, CollisionResult& r) {
                                     r.pairs = {{3, 5}};
                                     return Status::invalid("refused");
                                   });
   EXPECT_EQ(pairs, given);
   call = 0;  // no samples: no check, the given order
-  detail::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
+  internal::orderByContactFrequency(*m, pairs, [](const LinkPair& p) { return p; },
                                   [&](const std::vector<T>&, CollisionResult& r) {
                                     ++call;
                                     r.pairs = {{3, 5}};

@@ -36,11 +36,11 @@ template <class S> Bounds3<S> merged(const Bounds3<S>& a, const Bounds3<S>& b) {
 // World AABB of an object: gq's exact bounds of the converted geometry; FCL's own AABB for geometries gq does not
 // convert (octrees, point clouds) or whose bounds are unbounded (planes, half-spaces: FCL's huge box).
 template <class S> Bounds3<S> worldBounds(::fcl::CollisionObject<S>* obj) {
-  detail::Converted<S> c;
+  internal::Converted<S> c;
   const auto* geometry = obj->collisionGeometry().get();
-  if (detail::convert(geometry, c) == detail::Conversion::Ok && !c.isPlaneLike()) {
+  if (internal::convert(geometry, c) == internal::Conversion::Ok && !c.isPlaneLike()) {
     Bounds3<S> b;
-    const Transform<S> pose = detail::shapePose(c, obj->getTransform());
+    const Transform<S> pose = internal::shapePose(c, obj->getTransform());
     if (computeGeomBounds(b, c.geometry(), pose, S(0), S(1)).ok() && isFinite(b.min) && isFinite(b.max)) return b;
   }
   obj->computeAABB();

@@ -13,14 +13,14 @@ namespace {
 
 // Meshes and two-sided planes: one contact per primitive (pair), gathered in a per-thread buffer.
 template <class S>
-bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const detail::Converted<S>& a, const Transform<S>& pa,
-                    const ::fcl::CollisionGeometry<S>* o2, const detail::Converted<S>& b, const Transform<S>& pb,
+bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const internal::Converted<S>& a, const Transform<S>& pa,
+                    const ::fcl::CollisionGeometry<S>* o2, const internal::Converted<S>& b, const Transform<S>& pb,
                     const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
-  thread_local std::vector<detail::PairContact<S>> contacts;
+  thread_local std::vector<internal::PairContact<S>> contacts;
   contacts.clear();
   const std::size_t room = request.num_max_contacts - std::min(request.num_max_contacts, result.numContacts());
-  if (!detail::pairContacts(a, pa, b, pb, request.enable_contact, room, contacts).ok()) return false;
-  for (const detail::PairContact<S>& c : contacts) {
+  if (!internal::pairContacts(a, pa, b, pb, request.enable_contact, room, contacts).ok()) return false;
+  for (const internal::PairContact<S>& c : contacts) {
     if (result.numContacts() >= request.num_max_contacts) break;
     if (request.enable_contact)
       result.addContact(::fcl::Contact<S>(o1, o2, c.b1, c.b2, c.position, c.normal, c.depth));
@@ -37,15 +37,15 @@ template <class S>
                                                 const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
                                                 const ::fcl::CollisionRequest<S>& request,
                                                 ::fcl::CollisionResult<S>& result, Options options) {
-  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
-  if (detail::isSolid(s1) && detail::isSolid(s2))
-    return detail::solidFclCollide(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result,
+  const internal::FclShape s1 = internal::shapeOf(o1), s2 = internal::shapeOf(o2);
+  if (internal::isSolid(s1) && internal::isSolid(s2))
+    return internal::solidFclCollide(s1, internal::Solid<S>{o1, &tf1}, s2, internal::Solid<S>{o2, &tf2}, request, result,
                                    options);
   if (request.num_max_contacts == 0) return 0;  // FCL: "should stop early", nothing computed
   const std::size_t before = result.numContacts();
-  if (detail::satisfiedBy(request, before)) return before;
-  return detail::collideOthers(o1, tf1, o2, tf2, request, result,
-                               request.enable_contact && detail::contactFromFcl(s1, s2, options));
+  if (internal::satisfiedBy(request, before)) return before;
+  return internal::collideOthers(o1, tf1, o2, tf2, request, result,
+                               request.enable_contact && internal::contactFromFcl(s1, s2, options));
 }
 
 // The whole of collide; each public overload is this function. Bad input (docs/fcl.md) writes nothing and returns
@@ -60,9 +60,9 @@ template <class S>
                                                      const ::fcl::CollisionRequest<S>& request,
                                                      ::fcl::CollisionResult<S>& result, Options options) {
   if (o1 && o2) {
-    const detail::FclShape s1 = detail::commonSolidOf<S>(typeid(*o1)), s2 = detail::commonSolidOf<S>(typeid(*o2));
-    if (s1 != detail::FclShape::Unsupported && s2 != detail::FclShape::Unsupported)
-      return detail::solidFclCollide(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result,
+    const internal::FclShape s1 = internal::commonSolidOf<S>(typeid(*o1)), s2 = internal::commonSolidOf<S>(typeid(*o2));
+    if (s1 != internal::FclShape::Unsupported && s2 != internal::FclShape::Unsupported)
+      return internal::solidFclCollide(s1, internal::Solid<S>{o1, &tf1}, s2, internal::Solid<S>{o2, &tf2}, request, result,
                                      options);
   }
   return collideClassified(o1, tf1, o2, tf2, request, result, options);
@@ -70,7 +70,7 @@ template <class S>
 
 }  // namespace
 
-namespace detail {
+namespace internal {
 
 // Out of line (see solid_pairs.h): the fast path's frame stays small.
 template <class S>
@@ -99,7 +99,7 @@ template std::size_t collideOthers<double>(const ::fcl::CollisionGeometry<double
                                            const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&,
                                            bool);
 
-}  // namespace detail
+}  // namespace internal
 
 template <typename S>
 std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
@@ -143,9 +143,9 @@ template std::size_t collide<double>(const ::fcl::CollisionGeometry<double>*, co
                                      const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&,
                                      const Options&);
 
-template <typename S> void forgetGeometry(const ::fcl::CollisionGeometry<S>* geometry) { detail::forget(geometry); }
+template <typename S> void forgetGeometry(const ::fcl::CollisionGeometry<S>* geometry) { internal::forget(geometry); }
 template void forgetGeometry<float>(const ::fcl::CollisionGeometry<float>*);
 template void forgetGeometry<double>(const ::fcl::CollisionGeometry<double>*);
-void clearGeometryCache() { detail::clearCache(); }
+void clearGeometryCache() { internal::clearCache(); }
 
 }  // namespace gq::fcl

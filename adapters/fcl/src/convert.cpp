@@ -16,7 +16,7 @@
 
 #include "geometry_cache.h"
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 namespace {
 
 template <class T> bool positive(T v) { return std::isfinite(v) && v > T(0); }
@@ -134,4 +134,4 @@ template Conversion convert<double>(const ::fcl::CollisionGeometry<double>*, Con
 template void forget<float>(const ::fcl::CollisionGeometry<float>*);
 template void forget<double>(const ::fcl::CollisionGeometry<double>*);
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

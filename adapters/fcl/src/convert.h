@@ -22,11 +22,11 @@
 namespace fcl {
 template <typename S> class CollisionGeometry;
 }
-namespace gq::detail {
-template <class T> struct ConvexShape;  // gjk/gjk.h
+namespace gq::kernels {
+template <class T> struct ConvexShape;  // gq/kernels/gjk.h
 }
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 
 enum class FclShape : std::uint8_t {
   Sphere, Box, Capsule, Cylinder, Cone, Ellipsoid, Convex, TriangleP, Halfspace, Plane, Mesh, Unsupported
@@ -66,7 +66,7 @@ template <class T> struct Cooked {
   FclShape shape;
   const Geometry<T>* geometry;
   const CandidateVolume<T>* candidate;
-  const gq::detail::ConvexShape<T>* support;
+  const gq::kernels::ConvexShape<T>* support;
   const HullPlanes<T>* planes;  // Convex: its face planes, packed for the point-in-hull test
 };
 
@@ -104,13 +104,13 @@ template <class T> class Converted {
     support_ = cooked.support;
   }
   const CandidateVolume<T>* cachedCandidate() const { return candidate_; }
-  const gq::detail::ConvexShape<T>* cachedSupport() const { return support_; }
+  const gq::kernels::ConvexShape<T>* cachedSupport() const { return support_; }
 
  private:
   Geometry<T> local_;
   const Geometry<T>* geometry_ = &local_;
   const CandidateVolume<T>* candidate_ = nullptr;
-  const gq::detail::ConvexShape<T>* support_ = nullptr;
+  const gq::kernels::ConvexShape<T>* support_ = nullptr;
   std::variant<std::monostate, CylinderCallbacks<T>, ConeCallbacks<T>, EllipsoidCallbacks<T>, TriangleCallbacks<T>>
       callbacks_;
 };
@@ -276,4 +276,4 @@ bool rotationUsable(const Converted<T>& c, const Eigen::Transform<T, 3, Eigen::I
   return c.frame == Frame::TranslationOnly || (isOrthonormal(tf) && positiveDeterminant(tf));
 }
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

@@ -24,11 +24,11 @@ namespace {
 
 // FCL's signed distance for pairs with a BVHModel: minus the deepest contact's depth, witnesses at its position.
 template <class S>
-Status deepestContact(const detail::Converted<S>& a, const Transform<S>& pa, const detail::Converted<S>& b,
-                      const Transform<S>& pb, detail::PairDistance<S>& d) {
-  thread_local std::vector<detail::PairContact<S>> contacts;
+Status deepestContact(const internal::Converted<S>& a, const Transform<S>& pa, const internal::Converted<S>& b,
+                      const Transform<S>& pb, internal::PairDistance<S>& d) {
+  thread_local std::vector<internal::PairContact<S>> contacts;
   contacts.clear();
-  const Status s = detail::pairContacts(a, pa, b, pb, true, std::numeric_limits<std::size_t>::max(), contacts);
+  const Status s = internal::pairContacts(a, pa, b, pb, true, std::numeric_limits<std::size_t>::max(), contacts);
   if (!s.ok() || contacts.empty()) return s;
   const auto deepest = std::max_element(contacts.begin(), contacts.end(),
                                         [](const auto& x, const auto& y) { return x.depth < y.depth; });
@@ -48,26 +48,26 @@ template <class S>
 [[gnu::noinline]] S distanceOthers(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
                                    const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
                                    const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
-  using detail::Conversion;
+  using internal::Conversion;
   constexpr S kNothing = std::numeric_limits<S>::max();
-  if (!detail::isFiniteTransforms(tf1, tf2)) return kNothing;
-  detail::Converted<S> a, b;
-  const Conversion ca = detail::convert(o1, a), cb = detail::convert(o2, b);
+  if (!internal::isFiniteTransforms(tf1, tf2)) return kNothing;
+  internal::Converted<S> a, b;
+  const Conversion ca = internal::convert(o1, a), cb = internal::convert(o2, b);
   if (ca == Conversion::Invalid || cb == Conversion::Invalid) return kNothing;
-  if (!detail::rotationUsable(a, tf1) || !detail::rotationUsable(b, tf2)) return kNothing;
-  const Transform<S> pa = detail::shapePose(a, tf1), pb = detail::shapePose(b, tf2);
+  if (!internal::rotationUsable(a, tf1) || !internal::rotationUsable(b, tf2)) return kNothing;
+  const Transform<S> pa = internal::shapePose(a, tf1), pb = internal::shapePose(b, tf2);
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled)
-    return detail::fclDistance(o1, tf1, o2, tf2, request, result);
-  detail::PairDistance<S> d;
+    return internal::fclDistance(o1, tf1, o2, tf2, request, result);
+  internal::PairDistance<S> d;
   // The result's min_distance as the bound: a pair proven farther changes nothing (FCL prunes its BVH traversal so).
-  Status s = detail::pairDistance(a, pa, b, pb, d, detail::distanceToBeat(result.min_distance));
+  Status s = internal::pairDistance(a, pa, b, pb, d, internal::distanceToBeat(result.min_distance));
   if (s.ok() && (a.isMesh() || b.isMesh()) && d.distance <= S(0) && request.enable_signed_distance)
     s = deepestContact(a, pa, b, pb, d);
   if (s.code == StatusCode::InvalidArgument) return kNothing;
   // FCL 0.7 crashes on these (libccd's GJK calls a null support function for Halfspace/Plane): nothing written.
   if (!s.ok() && (a.isPlaneLike() || b.isPlaneLike())) return kNothing;
-  if (!s.ok()) return detail::fclDistance(o1, tf1, o2, tf2, request, result);
-  detail::countGq();
+  if (!s.ok()) return internal::fclDistance(o1, tf1, o2, tf2, request, result);
+  internal::countGq();
   result.update(d.distance, o1, o2, d.b1, d.b2, d.point1, d.point2);
   return result.min_distance;
 }
@@ -77,9 +77,9 @@ template <class S>
 [[gnu::noinline]] S distanceClassified(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
                                        const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
                                        const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
-  const detail::FclShape s1 = detail::shapeOf(o1), s2 = detail::shapeOf(o2);
-  if (detail::isSolid(s1) && detail::isSolid(s2))
-    return detail::solidFclDistance(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result);
+  const internal::FclShape s1 = internal::shapeOf(o1), s2 = internal::shapeOf(o2);
+  if (internal::isSolid(s1) && internal::isSolid(s2))
+    return internal::solidFclDistance(s1, internal::Solid<S>{o1, &tf1}, s2, internal::Solid<S>{o2, &tf2}, request, result);
   return distanceOthers(o1, tf1, o2, tf2, request, result);
 }
 
@@ -92,9 +92,9 @@ template <class S>
                                              ::fcl::DistanceResult<S>& result) {
   if (satisfied(result)) return result.min_distance;  // request.isSatisfied(result)
   if (o1 && o2) {
-    const detail::FclShape s1 = detail::commonSolidOf<S>(typeid(*o1)), s2 = detail::commonSolidOf<S>(typeid(*o2));
-    if (s1 != detail::FclShape::Unsupported && s2 != detail::FclShape::Unsupported)
-      return detail::solidFclDistance(s1, detail::Solid<S>{o1, &tf1}, s2, detail::Solid<S>{o2, &tf2}, request, result);
+    const internal::FclShape s1 = internal::commonSolidOf<S>(typeid(*o1)), s2 = internal::commonSolidOf<S>(typeid(*o2));
+    if (s1 != internal::FclShape::Unsupported && s2 != internal::FclShape::Unsupported)
+      return internal::solidFclDistance(s1, internal::Solid<S>{o1, &tf1}, s2, internal::Solid<S>{o2, &tf2}, request, result);
   }
   return distanceClassified(o1, tf1, o2, tf2, request, result);
 }

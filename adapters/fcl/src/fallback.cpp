@@ -9,10 +9,10 @@
 
 namespace gq::fcl {
 
-AdapterCounters adapterCounters() { return detail::tCounters; }
-void resetAdapterCounters() { detail::tCounters = AdapterCounters(); }
+AdapterCounters adapterCounters() { return internal::tCounters; }
+void resetAdapterCounters() { internal::tCounters = AdapterCounters(); }
 
-namespace detail {
+namespace internal {
 
 // FCL reports its own errors on std::cerr and returns; an exception (rare: Eigen or allocation) must not cross the
 // adapter's API, so it is swallowed and the result left as FCL left it.
@@ -53,5 +53,5 @@ template double fclDistance<double>(const ::fcl::CollisionGeometry<double>*, con
                                     const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
                                     const ::fcl::DistanceRequest<double>&, ::fcl::DistanceResult<double>&);
 
-}  // namespace detail
+}  // namespace internal
 }  // namespace gq::fcl

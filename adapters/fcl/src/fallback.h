@@ -11,7 +11,7 @@
 
 #include "gq/fcl/collision.h"
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 
 template <class S>
 std::size_t fclCollide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
@@ -29,4 +29,4 @@ inline thread_local AdapterCounters tCounters;
 inline void countGq() { ++tCounters.gq; }
 inline void countFallback() { ++tCounters.fallback; }
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

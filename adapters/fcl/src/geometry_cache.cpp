@@ -21,12 +21,12 @@
 #include <unordered_map>
 #include <vector>
 
-#include "gjk/gjk.h"
 #include "gq/cooking.h"
+#include "gq/kernels/gjk.h"
 #include "pair_kernels.h"
 
-namespace gq::fcl::detail {
-namespace k = gq::detail;
+namespace gq::fcl::internal {
+namespace k = gq::kernels;
 namespace {
 
 constexpr int kFingerprintSamples = 16;
@@ -358,4 +358,4 @@ template Conversion cachedGeometry<double>(const ::fcl::CollisionGeometry<double
 template void forgetCached<float>(const ::fcl::CollisionGeometry<float>*);
 template void forgetCached<double>(const ::fcl::CollisionGeometry<double>*);
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

@@ -16,7 +16,7 @@
 
 #include "convert.h"
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 
 // The cooked geometry of a Convex or a triangle BVHModel (`out`; `type` is the geometry's node type), or the reason
 // there is none: Invalid for an empty, unfinished or uncookable model; NotModelled for point clouds and octrees. The
@@ -32,4 +32,4 @@ bool cachedHulls(const ::fcl::CollisionGeometry<T>* a, const ::fcl::CollisionGeo
 template <class T> void forgetCached(const ::fcl::CollisionGeometry<T>* geometry);
 void clearCached();
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

@@ -22,12 +22,11 @@
 #include <vector>
 
 #include "gq/cooking.h"
+#include "gq/kernels/mesh.h"
 #include "gq/mesh_query.h"
 #include "gq/query.h"
-#include "mesh/mesh_instance.h"
-#include "mesh_pairs/shape_triangle.h"
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 namespace {
 
 // Triangles fetched per findOverlapTriangleMesh call: a first page of kFirstTrianglePage, then pages four times as
@@ -108,7 +107,7 @@ Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const
 // the query's order (the page position is the second key: std::sort then orders as a stable sort would, without
 // the temporary buffer std::stable_sort allocates on every call).
 template <class T>
-void nearestFirst(const gq::detail::MeshInstance<T>& instance, const Vec3<T>& centre, std::uint32_t* page,
+void nearestFirst(const gq::kernels::MeshInstance<T>& instance, const Vec3<T>& centre, std::uint32_t* page,
                   std::uint32_t count) {
   if (count < 2) return;
   struct Keyed {
@@ -153,8 +152,8 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   }
   // Set up once per call, on the first candidate: the mesh's world triangles (the arithmetic of getTriangle, whose
   // checks findOverlapTriangleMesh has made) and the shape for core's boolean shape-triangle test.
-  std::optional<gq::detail::MeshInstance<T>> instance;
-  std::optional<gq::detail::TriangleQueryShape<T>> boolean;
+  std::optional<gq::kernels::MeshInstance<T>> instance;
+  std::optional<gq::kernels::TriangleQueryShape<T>> boolean;
   std::uint32_t page[kTrianglePage];
   std::uint32_t start = 0, nextPage = kFirstTrianglePage;
   const std::size_t first = out.size();
@@ -414,4 +413,4 @@ template Status pairDistance<float>(const Converted<float>&, const Transform<flo
 template Status pairDistance<double>(const Converted<double>&, const Transform<double>&, const Converted<double>&,
                                      const Transform<double>&, PairDistance<double>&, double);
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

@@ -8,7 +8,7 @@
 #include "convert.h"
 #include "gq/status.h"
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 
 inline constexpr int kNoPrimitive = -1;  // FCL's Contact::NONE / DistanceResult::NONE
 
@@ -42,4 +42,4 @@ template <class T>
 Status pairDistance(const Converted<T>& a, const Transform<T>& poseA, const Converted<T>& b, const Transform<T>& poseB,
                     PairDistance<T>& out, T farEnough = std::numeric_limits<T>::infinity());
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

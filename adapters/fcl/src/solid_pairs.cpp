@@ -19,19 +19,15 @@
 #endif
 
 
-#include "custom/callback_queries.h"
 #include "fallback.h"
-#include "distance/distance.h"
 #include "geometry_cache.h"
+#include "gq/kernels.h"
 #include "pair_kernels.h"
-#include "gjk/gjk.h"
-#include "overlap/overlap.h"
-#include "overlap/polytope.h"
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 namespace {
 
-namespace k = gq::detail;
+namespace k = gq::kernels;
 using GT = GeometryType;
 using FS = FclShape;
 
@@ -918,4 +914,4 @@ const std::array<PairEntry<S>, kSolids * kSolids> SolidPairs<S>::table =
 template struct SolidPairs<float>;
 template struct SolidPairs<double>;
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

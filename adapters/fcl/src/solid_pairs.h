@@ -32,7 +32,7 @@
 #include "gq/fcl/collision.h"
 #include "gq/query.h"
 
-namespace gq::fcl::detail {
+namespace gq::fcl::internal {
 
 template <class S> using Isometry = Eigen::Transform<S, 3, Eigen::Isometry>;
 
@@ -180,4 +180,4 @@ inline S solidFclDistance(FclShape sa, Solid<S> a, FclShape sb, Solid<S> b, cons
   return solidPair<S>(sa, sb).fclDistance(a.geometry, a.tf, b.geometry, b.tf, request, result);
 }
 
-}  // namespace gq::fcl::detail
+}  // namespace gq::fcl::internal

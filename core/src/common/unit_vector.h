@@ -1,28 +1,11 @@
 #pragma once
-// d / |d| for differences and cross products whose length may lie at the ends of the floating-point range.
-// d / sqrt(|d|^2) is wrong there: a float offset of ~1e-20 has a subnormal square that keeps a few bits (a normal
-// 2% long, then 10% short, were found by fuzz_pair_queries), and |d|^2 overflows above sqrt(max). Those cases are
-// rescaled by the largest component first; the common case costs two comparisons more than d / |d|.
-#include <cmath>
+// Internal name of the public kernels in gq/kernels/vector.h (declared there, defined in core/src).
 #include <limits>
 
-#include "gq/transform.h"
+#include "gq/kernels/vector.h"
 
 namespace gq::detail {
-
-// True and `unit` = d / |d| when d is non-zero and finite; false (unit untouched) otherwise.
-template <class T> inline bool tryUnit(const Vec3<T>& d, Vec3<T>& unit) {
-  const T len2 = d.squaredNorm();
-  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) {
-    unit = d / std::sqrt(len2);
-    return true;
-  }
-  const T scale = d.cwiseAbs().maxCoeff();
-  if (!(scale > T(0)) || !std::isfinite(scale)) return false;
-  const Vec3<T> scaled = d / scale;
-  unit = scaled / scaled.norm();
-  return true;
-}
+using namespace kernels;
 
 // tryUnit for a caller that has |d|^2 (len2) and |d| = sqrt(len2) (len) already: the same answer without a second
 // norm in the common case.
@@ -33,29 +16,4 @@ template <class T> inline bool tryUnitWithNorm(const Vec3<T>& d, T len2, T len, 
   }
   return tryUnit(d, unit);
 }
-
-// |d| where |d|^2 may over- or underflow (then by the largest component first); 0, inf or NaN as d has them.
-template <class T> inline T rangeSafeNorm(const Vec3<T>& d) {
-  const T len2 = d.squaredNorm();
-  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) return std::sqrt(len2);
-  const T scale = d.cwiseAbs().maxCoeff();
-  if (!(scale > T(0)) || !std::isfinite(scale)) return scale;
-  return scale * (d / scale).norm();
-}
-
-// d / |d|, or `fallback` for d = 0 (or non-finite d).
-template <class T> inline Vec3<T> unitOr(const Vec3<T>& d, const Vec3<T>& fallback) {
-  Vec3<T> unit;
-  return tryUnit(d, unit) ? unit : fallback;
-}
-
-// A unit vector perpendicular to v: v crossed with the coordinate axis least aligned with it (well conditioned);
-// +X for v = 0.
-template <class T> inline Vec3<T> anyPerpendicular(const Vec3<T>& v) {
-  if (!(v.squaredNorm() > T(0))) return Vec3<T>::UnitX();
-  Eigen::Index i;
-  v.cwiseAbs().minCoeff(&i);
-  return v.cross(Vec3<T>::Unit(i)).normalized();
-}
-
 }  // namespace gq::detail

@@ -7,7 +7,8 @@
 
 #include "gq/tolerances.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 template <class T> const CustomGeometryCallbacks<T>* callbacksIf(const Geometry<T>& g) {
@@ -106,4 +107,4 @@ template Status customDistance<float>(const Geometry<float>&, const Transform<fl
 template Status customDistance<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
                                        const Transform<double>&, bool&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -32,7 +32,8 @@
 #include "overlap/box_box_sat.h"
 #include "overlap/segment_box.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 // A touching edge of the moved box pair is found when its segment-box distance is round-off: kTouchUlps machine
@@ -401,4 +402,4 @@ template bool separatedBoxBoxLocal<float>(const Vec3<float>&, const Vec3<float>&
 template bool separatedBoxBoxLocal<double>(const Vec3<double>&, const Vec3<double>&, const Mat3<double>&,
                                            const Vec3<double>&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

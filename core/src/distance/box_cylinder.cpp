@@ -25,7 +25,8 @@
 #include "overlap/overlap.h"
 #include "overlap/segment_box.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 template <class T> void writeSeparatedPair(const Vec3<T>& onBox, const Vec3<T>& onCylinder, T dist,
@@ -236,4 +237,4 @@ template BoxCylinderDistance distanceBoxCylinderLocal<double>(const Vec3<double>
                                                               const Vec3<double>&, double, double,
                                                               DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

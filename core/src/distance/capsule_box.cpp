@@ -11,7 +11,8 @@
 #include "distance/distance.h"
 #include "overlap/segment_box.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 // Separation of the segment and the box along the unit direction n (from the segment towards the box):
@@ -74,4 +75,4 @@ template void distanceCapsuleBox<double>(const CapsuleGeometry<double>&, const T
 template void distanceCapsuleBox<float>(const Vec3<float>&, const Vec3<float>&, float, const Vec3<float>&, DistanceResult<float>&);
 template void distanceCapsuleBox<double>(const Vec3<double>&, const Vec3<double>&, double, const Vec3<double>&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

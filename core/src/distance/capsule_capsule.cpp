@@ -4,7 +4,8 @@
 #include "distance/distance.h"
 #include "shapes/segment.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T> Vec3<T> intersectingAxesNormal(const Vec3<T>& d0, const Vec3<T>& d1, const Vec3<T>& towards) {
   const Vec3<T> c = d0.cross(d1);
@@ -26,4 +27,4 @@ template void distanceCapsuleCapsule<double>(const CapsuleGeometry<double>&, con
 template Vec3<float> intersectingAxesNormal<float>(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&);
 template Vec3<double> intersectingAxesNormal<double>(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -5,7 +5,8 @@
 #include "gjk/support_map.h"
 #include "penetration/penetration.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 // Two overlapping hulls whose EPA did not converge (slivers near the minimum that float cannot expand): the exact
@@ -58,4 +59,4 @@ template Status distanceGjk<float>(const Geometry<float>&, const Transform<float
 template Status distanceGjk<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&,
                                     const Transform<double>&, GjkCache<double>*, DistanceResult<double>&, double, double);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -1,7 +1,8 @@
 // Plane vs box: the corner deepest along -normal, i.e. the box centre's height minus sum_i h_i |n . axis_i|.
 #include "distance/distance.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 void distancePlaneBox(const PlaneGeometry<T>&, const Transform<T>& pose0, const BoxGeometry<T>& g1,
@@ -22,4 +23,4 @@ void distancePlaneBox(const PlaneGeometry<T>&, const Transform<T>& pose0, const 
 template void distancePlaneBox<float>(const PlaneGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distancePlaneBox<double>(const PlaneGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -1,7 +1,8 @@
 // Plane vs capsule: the lower of the segment's end points (height above the plane) minus the radius.
 #include "distance/distance.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 void distancePlaneCapsule(const PlaneGeometry<T>&, const Transform<T>& pose0, const CapsuleGeometry<T>& g1,
@@ -19,4 +20,4 @@ void distancePlaneCapsule(const PlaneGeometry<T>&, const Transform<T>& pose0, co
 template void distancePlaneCapsule<float>(const PlaneGeometry<float>&, const Transform<float>&, const CapsuleGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distancePlaneCapsule<double>(const PlaneGeometry<double>&, const Transform<double>&, const CapsuleGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -3,7 +3,8 @@
 #include "distance/distance.h"
 #include "gjk/gjk.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 void distancePlaneConvex(const PlaneGeometry<T>&, const Transform<T>& pose0, const Geometry<T>& g1,
@@ -21,4 +22,4 @@ void distancePlaneConvex(const PlaneGeometry<T>&, const Transform<T>& pose0, con
 template void distancePlaneConvex<float>(const PlaneGeometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distancePlaneConvex<double>(const PlaneGeometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

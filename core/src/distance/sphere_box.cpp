@@ -4,7 +4,8 @@
 
 #include "distance/distance.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 // Centre c inside the box: the face axis with the least room h_i - |c_i|.
 template <class T> DistanceResult<T> distanceSphereInsideBox(T cx, T cy, T cz, T r, T hx, T hy, T hz) {
@@ -39,4 +40,4 @@ template void distanceSphereBox<double>(const SphereGeometry<double>&, const Tra
 template DistanceResult<float> distanceSphereInsideBox<float>(float, float, float, float, float, float, float);
 template DistanceResult<double> distanceSphereInsideBox<double>(double, double, double, double, double, double, double);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -3,7 +3,8 @@
 #include "distance/distance.h"
 #include "shapes/segment.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 void distanceSphereCapsule(const Vec3<T>& c0, T r0, const CapsuleAxis<T>& capsule1, DistanceResult<T>& out) {
@@ -25,4 +26,4 @@ template void distanceSphereCapsule<double>(const SphereGeometry<double>&, const
 template void distanceSphereCapsule<float>(const Vec3<float>&, float, const CapsuleAxis<float>&, DistanceResult<float>&);
 template void distanceSphereCapsule<double>(const Vec3<double>&, double, const CapsuleAxis<double>&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

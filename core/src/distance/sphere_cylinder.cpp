@@ -6,7 +6,8 @@
 
 #include "distance/distance.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T> DistanceResult<T> distanceSphereInsideCylinder(T cx, T cy, T cz, T r0, T r, T hh) {
   const Vec3<T> c(cx, cy, cz);
@@ -32,4 +33,4 @@ template <class T> DistanceResult<T> distanceSphereInsideCylinder(T cx, T cy, T 
 template DistanceResult<float> distanceSphereInsideCylinder<float>(float, float, float, float, float, float);
 template DistanceResult<double> distanceSphereInsideCylinder<double>(double, double, double, double, double, double);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -2,7 +2,8 @@
 // towards the plane is the plane's -normal.
 #include "distance/distance.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 void distanceSpherePlane(const SphereGeometry<T>& g0, const Transform<T>& pose0, const PlaneGeometry<T>&,
@@ -18,4 +19,4 @@ void distanceSpherePlane(const SphereGeometry<T>& g0, const Transform<T>& pose0,
 template void distanceSpherePlane<float>(const SphereGeometry<float>&, const Transform<float>&, const PlaneGeometry<float>&, const Transform<float>&, DistanceResult<float>&);
 template void distanceSpherePlane<double>(const SphereGeometry<double>&, const Transform<double>&, const PlaneGeometry<double>&, const Transform<double>&, DistanceResult<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

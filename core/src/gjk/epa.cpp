@@ -26,7 +26,8 @@
 #include "gjk/support_map.h"
 #include "gjk/wide.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 // Plain data (no member initializers: arrays of faces are not zeroed per query; makeFace writes every field).
@@ -461,4 +462,4 @@ EpaResult<T> epaPenetration(const ConvexShape<T>& a, const ConvexShape<T>& b, co
 template EpaResult<float> epaPenetration<float>(const ConvexShape<float>&, const ConvexShape<float>&, const GjkSimplex<float>*);
 template EpaResult<double> epaPenetration<double>(const ConvexShape<double>&, const ConvexShape<double>&, const GjkSimplex<double>*);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

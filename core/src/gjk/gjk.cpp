@@ -17,7 +17,8 @@
 #include "gjk/simplex.h"
 #include "gjk/support_map.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 // Rebuilds the cached simplex from its search directions (valid support points whatever the poses now are).
@@ -290,4 +291,4 @@ template bool gjkOverlap<float>(const ConvexShape<float>&, const ConvexShape<flo
 template bool gjkOverlap<double>(const ConvexShape<double>&, const ConvexShape<double>&, GjkOverlapWitness<double>*,
                                  const Vec3<double>*);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

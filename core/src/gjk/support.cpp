@@ -5,7 +5,8 @@
 #include "gjk/gjk.h"
 #include "gjk/support_map.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 // Scaled hull: points are S v with S symmetric, so argmax_v d.(S v) = argmax_v (S d).v.
@@ -104,4 +105,4 @@ template ConvexShape<double> makeConvexShape<double>(const Geometry<double>&, co
 template ConvexShape<float> makeConvexShape<float>(const Geometry<float>&, const Mat3<float>&, const Vec3<float>&);
 template ConvexShape<double> makeConvexShape<double>(const Geometry<double>&, const Mat3<double>&, const Vec3<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -9,7 +9,8 @@
 
 #include "gjk/support_map.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 // Registry of built tables. An entry whose mesh has expired may be replaced (its address was reused); a live one
@@ -172,4 +173,4 @@ template class SupportStartTable<double>;
 template const SupportStartTable<float>* supportStartTable<float>(const std::shared_ptr<const ConvexMesh<float>>&);
 template const SupportStartTable<double>* supportStartTable<double>(const std::shared_ptr<const ConvexMesh<double>>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

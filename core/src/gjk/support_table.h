@@ -25,8 +25,9 @@
 #endif
 
 #include "gq/cooking.h"
+#include "gq/kernels/gjk.h"
 
-namespace gq::detail {
+namespace gq::kernels {
 
 // Hulls with at most this many vertices get no table (they are scanned, or climbed from a few samples).
 inline constexpr std::uint32_t kStartTableMinVertices = 8;
@@ -213,4 +214,8 @@ inline constexpr std::uint32_t kStartTableCells = 32;
 // The pointer stays valid as long as the mesh is alive.
 template <class T> const SupportStartTable<T>* supportStartTable(const std::shared_ptr<const ConvexMesh<T>>& mesh);
 
+}  // namespace gq::kernels
+
+namespace gq::detail {
+using namespace kernels;
 }  // namespace gq::detail

@@ -8,7 +8,8 @@
 #include "mesh/triangle.h"
 #include "common/unit_vector.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T> SurfaceTriangleSupport<T>::SurfaceTriangleSupport(const Triangle<T>& t) {
   centroid_ = (t.verts[0] + t.verts[1] + t.verts[2]) / T(3);
@@ -198,4 +199,4 @@ template class SurfaceTriangleSupport<double>;
 template class TriangleQueryShape<float>;
 template class TriangleQueryShape<double>;
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

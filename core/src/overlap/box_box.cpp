@@ -2,7 +2,8 @@
 #include "overlap/box_box_sat.h"
 #include "overlap/overlap.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 template <class T> bool noSeparatingAxis(const BoxPair<T>& pair) {
@@ -27,4 +28,4 @@ template bool overlapBoxBox<double>(const BoxGeometry<double>&, const Transform<
 template bool overlapBoxBox<float>(const Vec3<float>&, const Vec3<float>&, const Mat3<float>&, const Vec3<float>&);
 template bool overlapBoxBox<double>(const Vec3<double>&, const Vec3<double>&, const Mat3<double>&, const Vec3<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -3,7 +3,8 @@
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapBoxConvex(const BoxGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
@@ -18,4 +19,4 @@ bool overlapBoxConvex(const BoxGeometry<T>& g0, const Transform<T>& p0, const Co
 template bool overlapBoxConvex<float>(const BoxGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);
 template bool overlapBoxConvex<double>(const BoxGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

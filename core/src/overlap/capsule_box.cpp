@@ -4,7 +4,8 @@
 #include "overlap/overlap.h"
 #include "overlap/segment_box.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T> bool overlapCapsuleBox(const Vec3<T>& c, const Vec3<T>& d, T r0, const Vec3<T>& h) {
   const SegmentBoxSat<T> sat = satSegmentBox(c, d, h);
@@ -25,4 +26,4 @@ template bool overlapCapsuleBox<double>(const CapsuleGeometry<double>&, const Tr
 template bool overlapCapsuleBox<float>(const Vec3<float>&, const Vec3<float>&, float, const Vec3<float>&);
 template bool overlapCapsuleBox<double>(const Vec3<double>&, const Vec3<double>&, double, const Vec3<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -2,7 +2,8 @@
 #include "overlap/overlap.h"
 #include "shapes/segment.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& a0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1) {
@@ -22,4 +23,4 @@ template bool overlapCapsuleCapsule<double>(const CapsuleGeometry<double>&, cons
 template bool overlapCapsuleCapsule<float>(const Vec3<float>&, const Vec3<float>&, float, const Vec3<float>&, const Vec3<float>&, float);
 template bool overlapCapsuleCapsule<double>(const Vec3<double>&, const Vec3<double>&, double, const Vec3<double>&, const Vec3<double>&, double);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

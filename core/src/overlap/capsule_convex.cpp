@@ -3,7 +3,8 @@
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapCapsuleConvex(const CapsuleGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
@@ -18,4 +19,4 @@ bool overlapCapsuleConvex(const CapsuleGeometry<T>& g0, const Transform<T>& p0, 
 template bool overlapCapsuleConvex<float>(const CapsuleGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);
 template bool overlapCapsuleConvex<double>(const CapsuleGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

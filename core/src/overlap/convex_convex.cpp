@@ -7,7 +7,8 @@
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 // Scale R diag(s) R^T maps a ball of radius r to an ellipsoid with semi-axes |s_k| r: it contains the ball of
 // radius min |s_k| r and lies in the one of radius max |s_k| r.
@@ -45,4 +46,4 @@ template OverlapCertificate hullBallsCertificate<double>(const HullBalls<double>
 template bool overlapConvexConvex<float>(const ConvexMeshGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);
 template bool overlapConvexConvex<double>(const ConvexMeshGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

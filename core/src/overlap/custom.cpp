@@ -3,7 +3,8 @@
 #include "gjk/gjk.h"
 #include "overlap/overlap.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1) {
@@ -13,4 +14,4 @@ bool overlapCustomAny(const Geometry<T>& g0, const Transform<T>& p0, const Geome
 template bool overlapCustomAny<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&);
 template bool overlapCustomAny<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -13,7 +13,8 @@
 #include "gjk/gjk.h"
 #include "overlap/overlap.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 namespace {
 
 template <class T> struct CylinderInBox {
@@ -89,4 +90,4 @@ template OverlapCertificate cylinderBoxCertificate<float>(const Vec3<float>&, co
 template OverlapCertificate cylinderBoxCertificate<double>(const Vec3<double>&, const Vec3<double>&, double, double,
                                                            const Vec3<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

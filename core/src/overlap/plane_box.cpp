@@ -2,7 +2,8 @@
 #include "overlap/overlap.h"
 #include "shapes/plane.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapPlaneBox(const PlaneGeometry<T>& g0, const Transform<T>& p0, const BoxGeometry<T>& g1, const Transform<T>& p1) {
@@ -15,4 +16,4 @@ bool overlapPlaneBox(const PlaneGeometry<T>& g0, const Transform<T>& p0, const B
 template bool overlapPlaneBox<float>(const PlaneGeometry<float>&, const Transform<float>&, const BoxGeometry<float>&, const Transform<float>&);
 template bool overlapPlaneBox<double>(const PlaneGeometry<double>&, const Transform<double>&, const BoxGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

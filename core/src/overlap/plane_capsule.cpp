@@ -2,7 +2,8 @@
 #include "overlap/overlap.h"
 #include "shapes/plane.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapPlaneCapsule(const PlaneGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1) {
@@ -16,4 +17,4 @@ bool overlapPlaneCapsule(const PlaneGeometry<T>& g0, const Transform<T>& p0, con
 template bool overlapPlaneCapsule<float>(const PlaneGeometry<float>&, const Transform<float>&, const CapsuleGeometry<float>&, const Transform<float>&);
 template bool overlapPlaneCapsule<double>(const PlaneGeometry<double>&, const Transform<double>&, const CapsuleGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

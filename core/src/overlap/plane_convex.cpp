@@ -3,7 +3,8 @@
 #include "shapes/plane.h"
 #include "overlap/polytope.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapPlaneConvex(const PlaneGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
@@ -18,4 +19,4 @@ bool overlapPlaneConvex(const PlaneGeometry<T>& g0, const Transform<T>& p0, cons
 template bool overlapPlaneConvex<float>(const PlaneGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);
 template bool overlapPlaneConvex<double>(const PlaneGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -3,7 +3,8 @@
 #include "shapes/plane.h"
 #include "overlap/overlap.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapPlaneCustom(const PlaneGeometry<T>&, const Transform<T>& p0, const CustomGeometry<T>& g1, const Transform<T>& p1) {
@@ -15,4 +16,4 @@ bool overlapPlaneCustom(const PlaneGeometry<T>&, const Transform<T>& p0, const C
 template bool overlapPlaneCustom<float>(const PlaneGeometry<float>&, const Transform<float>&, const CustomGeometry<float>&, const Transform<float>&);
 template bool overlapPlaneCustom<double>(const PlaneGeometry<double>&, const Transform<double>&, const CustomGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -597,6 +597,12 @@ bool overlapConvexShapesExact(const Geometry<T>& g0, const Transform<T>& p0, con
 
 }  // namespace
 
+}  // namespace gq::detail
+
+// The public GJK overlap kernels (gq/kernels/overlap.h).
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
+
 template <class T> OverlapCertificate overlapByGjk(ConvexShape<T> a, const ConvexShape<T>& b) {
   const T band = kGjkOverlapBand<T> * std::max(a.size, b.size);
   // Separated by more than the band: GJK's separating axis is conclusive (a's own copy grown by the band).
@@ -627,6 +633,15 @@ bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Ge
   return overlapConvexShapesExact(g0, p0, g1, p1);
 }
 
+template OverlapCertificate overlapByGjk<float>(ConvexShape<float>, const ConvexShape<float>&);
+template bool overlapConvexShapes<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&);
+template OverlapCertificate overlapByGjk<double>(ConvexShape<double>, const ConvexShape<double>&);
+template bool overlapConvexShapes<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&);
+
+}  // namespace gq::kernels
+
+namespace gq::detail {
+
 template std::shared_ptr<const PolytopeTopology> hullTopology<float>(const std::shared_ptr<const ConvexMesh<float>>&);
 template Polytope<float>& scratchPolytope<float>(int);
 template void buildPointPolytope<float>(const Vec3<float>&, Polytope<float>&);
@@ -645,8 +660,6 @@ template bool overlapRoundedPolytope<float>(const RoundedCore<float>&, const Pol
 template bool penetrationRoundedPolytope<float>(const RoundedCore<float>&, const Polytope<float>&, Vec3<float>&, float&);
 template bool overlapPolytopes<float>(const Polytope<float>&, const Polytope<float>&);
 template bool penetrationPolytopes<float>(const Polytope<float>&, const Polytope<float>&, Vec3<float>&, float&);
-template OverlapCertificate overlapByGjk<float>(ConvexShape<float>, const ConvexShape<float>&);
-template bool overlapConvexShapes<float>(const Geometry<float>&, const Transform<float>&, const Geometry<float>&, const Transform<float>&);
 template std::shared_ptr<const PolytopeTopology> hullTopology<double>(const std::shared_ptr<const ConvexMesh<double>>&);
 template Polytope<double>& scratchPolytope<double>(int);
 template void buildPointPolytope<double>(const Vec3<double>&, Polytope<double>&);
@@ -665,7 +678,5 @@ template bool overlapRoundedPolytope<double>(const RoundedCore<double>&, const P
 template bool penetrationRoundedPolytope<double>(const RoundedCore<double>&, const Polytope<double>&, Vec3<double>&, double&);
 template bool overlapPolytopes<double>(const Polytope<double>&, const Polytope<double>&);
 template bool penetrationPolytopes<double>(const Polytope<double>&, const Polytope<double>&, Vec3<double>&, double&);
-template OverlapCertificate overlapByGjk<double>(ConvexShape<double>, const ConvexShape<double>&);
-template bool overlapConvexShapes<double>(const Geometry<double>&, const Transform<double>&, const Geometry<double>&, const Transform<double>&);
 
 }  // namespace gq::detail

@@ -111,17 +111,6 @@ template <class T> bool penetrationRoundedPolytope(const RoundedCore<T>& r, cons
 template <class T> bool overlapPolytopes(const Polytope<T>& a, const Polytope<T>& b);
 template <class T> bool penetrationPolytopes(const Polytope<T>& a, const Polytope<T>& b, Vec3<T>& direction, T& depth);
 
-// Half-width of the band of touching, relative to the larger shape's size, inside which GJK's boolean answer is not
-// trusted (it is 50x (float) / 1000x (double) GJK's stopping tolerance, see gjk.h).
-template <class T> inline constexpr T kGjkOverlapBand = std::is_same_v<T, float> ? T(1e-4) : T(1e-9);
-
-// Boolean overlap of two convex shapes (sphere, capsule, box, convex mesh): GJK decides, except within a band of
-// touching (kGjkOverlapBand) where GJK's tolerance could flip the answer;
-// there the exact kernels above decide. Touching counts as overlapping.
-template <class T>
-bool overlapConvexShapes(const Geometry<T>& g0, const Transform<T>& p0, const Geometry<T>& g1, const Transform<T>& p1);
-// Its GJK part on prepared shapes: Apart or Overlapping when GJK decides beyond the band, else Unknown (the exact
-// kernels' turn). `a` is taken by value: the function grows its own copy by the band (a temporary is not copied).
-template <class T> OverlapCertificate overlapByGjk(ConvexShape<T> a, const ConvexShape<T>& b);
+// kGjkOverlapBand, overlapConvexShapes and overlapByGjk: gq/kernels/overlap.h.
 
 }  // namespace gq::detail

@@ -2,7 +2,8 @@
 #include "overlap/overlap.h"
 #include "shapes/segment.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T> bool overlapSphereCapsule(const Vec3<T>& c0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1) {
   const Vec3<T> q = closestPointOnSegment(Vec3<T>(c1 - a1), Vec3<T>(c1 + a1), c0);
@@ -20,4 +21,4 @@ template bool overlapSphereCapsule<double>(const SphereGeometry<double>&, const 
 template bool overlapSphereCapsule<float>(const Vec3<float>&, float, const Vec3<float>&, const Vec3<float>&, float);
 template bool overlapSphereCapsule<double>(const Vec3<double>&, double, const Vec3<double>&, const Vec3<double>&, double);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -3,7 +3,8 @@
 #include "overlap/overlap.h"
 #include "overlap/polytope.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapSphereConvex(const SphereGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1) {
@@ -18,4 +19,4 @@ bool overlapSphereConvex(const SphereGeometry<T>& g0, const Transform<T>& p0, co
 template bool overlapSphereConvex<float>(const SphereGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&);
 template bool overlapSphereConvex<double>(const SphereGeometry<double>&, const Transform<double>&, const ConvexMeshGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -3,7 +3,8 @@
 #include "overlap/overlap.h"
 #include "shapes/plane.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapSpherePlane(const SphereGeometry<T>& g0, const Transform<T>& p0, const PlaneGeometry<T>& g1, const Transform<T>& p1) {
@@ -14,4 +15,4 @@ bool overlapSpherePlane(const SphereGeometry<T>& g0, const Transform<T>& p0, con
 template bool overlapSpherePlane<float>(const SphereGeometry<float>&, const Transform<float>&, const PlaneGeometry<float>&, const Transform<float>&);
 template bool overlapSpherePlane<double>(const SphereGeometry<double>&, const Transform<double>&, const PlaneGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

@@ -1,7 +1,8 @@
 // Sphere/sphere overlap: |c0 - c1| <= r0 + r1.
 #include "overlap/overlap.h"
 
-namespace gq::detail {
+namespace gq::kernels {
+using namespace detail;  // core's internal helpers
 
 template <class T>
 bool overlapSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0, const SphereGeometry<T>& g1, const Transform<T>& p1) {
@@ -11,4 +12,4 @@ bool overlapSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0, co
 template bool overlapSphereSphere<float>(const SphereGeometry<float>&, const Transform<float>&, const SphereGeometry<float>&, const Transform<float>&);
 template bool overlapSphereSphere<double>(const SphereGeometry<double>&, const Transform<double>&, const SphereGeometry<double>&, const Transform<double>&);
 
-}  // namespace gq::detail
+}  // namespace gq::kernels

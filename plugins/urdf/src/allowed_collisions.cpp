@@ -10,7 +10,7 @@
 
 #include "internal.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 namespace {
 
 std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x) {
@@ -109,4 +109,4 @@ template void computeAllowedCollisions<double>(RobotModel<double>&, const SrdfDa
 template void chooseHomeConfiguration<float>(RobotModel<float>&, const SrdfData&);
 template void chooseHomeConfiguration<double>(RobotModel<double>&, const SrdfData&);
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

@@ -10,7 +10,7 @@
 #include "gq/query.h"
 #include "internal.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 namespace {
 
 template <class T> Vec3<T> randomUnitVector(std::uint64_t& rng) {
@@ -106,4 +106,4 @@ template Status measureApproximationError<double>(const MeshData<double>&, const
                                                   const Transform<double>&, const LoadOptions&,
                                                   ApproximationError<double>&);
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

@@ -6,7 +6,7 @@
 #include "gq/custom_shapes.h"
 #include "internal.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 
 template <class T> std::size_t hullBytes(const ConvexMesh<T>& h) {
   return h.vertices.size() * sizeof(Vec3<T>) + h.polygons.size() * sizeof(HullPolygon<T>) +
@@ -37,4 +37,4 @@ template std::size_t hullBytes<double>(const ConvexMesh<double>&);
 template Status cylinderShape<float>(float, float, Shape<float>&, Transform<float>&);
 template Status cylinderShape<double>(double, double, Shape<double>&, Transform<double>&);
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

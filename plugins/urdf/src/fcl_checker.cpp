@@ -18,7 +18,7 @@ namespace gq::urdf {
 
 struct FclSelfCollisionChecker::Impl {
   std::shared_ptr<const RobotModel<double>> model;
-  std::unique_ptr<detail::KinematicChain<double>> chain;        // the same compiled kinematics as gq's checker
+  std::unique_ptr<internal::KinematicChain<double>> chain;        // the same compiled kinematics as gq's checker
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;  // one per shape
   std::vector<std::uint32_t> shapeBody;                         // rigid body carrying each shape
   std::vector<fcl::Transform3d> inBody;                         // FCL geometry frame in its body's frame
@@ -87,7 +87,7 @@ Status FclSelfCollisionChecker::create(std::shared_ptr<const RobotModel<double>>
   if (!model) return Status::invalid("FCL checker needs a model");
   auto impl = std::make_unique<Impl>();
   impl->model = model;
-  impl->chain = std::make_unique<detail::KinematicChain<double>>(*model);
+  impl->chain = std::make_unique<internal::KinematicChain<double>>(*model);
   for (const auto& shape : model->shapes) {
     std::shared_ptr<fcl::CollisionGeometryd> geom;
     fcl::Transform3d offset;
@@ -103,7 +103,7 @@ Status FclSelfCollisionChecker::create(std::shared_ptr<const RobotModel<double>>
       if (!model->isAllowed(a, b) && !model->links[a].shapes.empty() && !model->links[b].shapes.empty())
         impl->checkedPairs.push_back({a, b});
   out.reset(new FclSelfCollisionChecker(std::move(impl)));
-  detail::orderByContactFrequency(
+  internal::orderByContactFrequency(
       *model, out->impl_->checkedPairs, [](const LinkPair& p) { return p; },
       [&](const std::vector<double>& q, CollisionResult& r) { return out->checkSelfCollision(q, r); });
   return {};

@@ -10,7 +10,7 @@
 #include "gq/cooking.h"
 #include "gq/urdf/robot.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 
 // SplitMix64: a small, portable generator, so sampled configurations are identical on every platform.
 inline std::uint64_t nextRandom(std::uint64_t& state) {
@@ -100,4 +100,4 @@ template <class T> Status checkConfiguration(const RobotModel<T>& model, const s
 template <class T> void computeAllowedCollisions(RobotModel<T>& model, const SrdfData& srdf, std::string& warnings);
 template <class T> void chooseHomeConfiguration(RobotModel<T>& model, const SrdfData& srdf);
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

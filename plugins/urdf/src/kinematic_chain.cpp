@@ -8,7 +8,7 @@
 #include "internal.h"
 #include "sincos.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 namespace {
 
 // Entries this close to 0 or +-1 (a few ulps: quarter turns written as 1.5708 rad in text and rounded through
@@ -175,4 +175,4 @@ Status KinematicChain<T>::place(const std::vector<T>& q, std::vector<Mat3<T>>& r
 template class KinematicChain<float>;
 template class KinematicChain<double>;
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

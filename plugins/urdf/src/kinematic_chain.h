@@ -13,7 +13,7 @@
 
 #include "gq/urdf/robot.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 
 template <class T> class KinematicChain {
  public:
@@ -59,4 +59,4 @@ template <class T> class KinematicChain {
   std::vector<T> lowest_, highest_;  // per variable, limits with the rounding slack (continuous: the finite range)
 };
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

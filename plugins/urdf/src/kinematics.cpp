@@ -7,7 +7,7 @@
 #include "internal.h"
 
 namespace gq::urdf {
-namespace detail {
+namespace internal {
 
 template <class T> Status checkConfiguration(const RobotModel<T>& model, const std::vector<T>& q) {
   if (q.size() != model.variables.size())
@@ -27,7 +27,7 @@ template <class T> Status checkConfiguration(const RobotModel<T>& model, const s
 template Status checkConfiguration<float>(const RobotModel<float>&, const std::vector<float>&);
 template Status checkConfiguration<double>(const RobotModel<double>&, const std::vector<double>&);
 
-}  // namespace detail
+}  // namespace internal
 
 namespace {
 
@@ -51,7 +51,7 @@ template <class T> Transform<T> jointTransform(const Joint<T>& j, T value) {
 
 template <class T>
 Status forwardKinematics(const RobotModel<T>& model, const std::vector<T>& q, std::vector<Transform<T>>& linkPoses) {
-  Status s = detail::checkConfiguration(model, q);
+  Status s = internal::checkConfiguration(model, q);
   if (!s.ok()) return s;
   linkPoses.resize(model.links.size());
   linkPoses[0] = Transform<T>();
@@ -69,7 +69,7 @@ template <class T> std::vector<T> randomConfiguration(const RobotModel<T>& model
   for (const auto& j : model.joints)
     if (j.variable >= 0)
       q[std::size_t(j.variable)] =
-          std::clamp(T(j.lower + (j.upper - j.lower) * T(detail::uniform01(rngState))), j.lower, j.upper);
+          std::clamp(T(j.lower + (j.upper - j.lower) * T(internal::uniform01(rngState))), j.lower, j.upper);
   return q;
 }
 

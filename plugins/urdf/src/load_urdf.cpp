@@ -169,10 +169,10 @@ Status meshElement(const ::urdf::Mesh& m, const std::string& baseDir, const Load
   if (!s.ok()) return Status::owned(s.code, "mesh file '" + path + "': " + s.detailedMessage());
   applyScale(m.scale, mesh);
   shape.file = path;
-  s = detail::meshShape(mesh, options.representation, options, shape, fit);
+  s = internal::meshShape(mesh, options.representation, options, shape, fit);
   if (!s.ok()) return Status::owned(s.code, "mesh file '" + path + "': " + s.detailedMessage());
   if (shape.representation != Representation::Mesh) {
-    s = detail::measureApproximationError(mesh, shape.geometry, fit, options, shape.error);
+    s = internal::measureApproximationError(mesh, shape.geometry, fit, options, shape.error);
     if (!s.ok()) return Status::owned(s.code, "measuring the approximation error of '" + path + "': " + s.detailedMessage());
   }
   return {};
@@ -200,7 +200,7 @@ Status collisionElement(const ::urdf::Collision& c, const std::string& linkName,
     }
     case ::urdf::Geometry::CYLINDER: {
       const auto& cyl = static_cast<const ::urdf::Cylinder&>(g);
-      s = detail::cylinderShape(T(cyl.radius), T(cyl.length), shape, fit);
+      s = internal::cylinderShape(T(cyl.radius), T(cyl.length), shape, fit);
       break;
     }
     case ::urdf::Geometry::MESH: s = meshElement(static_cast<const ::urdf::Mesh&>(g), baseDir, options, shape, fit); break;
@@ -318,9 +318,9 @@ Status loadImpl(const std::string& urdfXml, const std::string& srdfXml, const st
   ::urdf::ModelInterfaceSharedPtr um;
   Status s = parseUrdfModel(urdfXml, um);
   if (!s.ok()) return s;
-  detail::SrdfData srdf;
+  internal::SrdfData srdf;
   if (!srdfXml.empty()) {
-    s = detail::parseSrdf(srdfXml, srdf);
+    s = internal::parseSrdf(srdfXml, srdf);
     if (!s.ok()) return s;
   }
   RobotModel<T> model;
@@ -328,8 +328,8 @@ Status loadImpl(const std::string& urdfXml, const std::string& srdfXml, const st
   s = buildTree(*um, baseDir, options, model);
   if (!s.ok()) return s;
   std::string warnings;
-  detail::computeAllowedCollisions(model, srdf, warnings);
-  detail::chooseHomeConfiguration(model, srdf);
+  internal::computeAllowedCollisions(model, srdf, warnings);
+  internal::chooseHomeConfiguration(model, srdf);
   out = std::move(model);
   return warnings.empty() ? Status() : Status::owned(StatusCode::Warning, warnings);
 }

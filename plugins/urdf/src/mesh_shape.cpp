@@ -12,7 +12,7 @@
 #include "gq/tolerances.h"
 #include "internal.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 
 // Principal axes of the vertex cloud as a proper rotation (columns sorted by decreasing variance), and the mean.
 template <class T> Mat3<double> principalAxes(const std::vector<Vec3<T>>& v, Vec3<double>& mean) {
@@ -214,4 +214,4 @@ template Status meshShape<float>(const MeshData<float>&, Representation, const L
 template Status meshShape<double>(const MeshData<double>&, Representation, const LoadOptions&, Shape<double>&,
                                   Transform<double>&);
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

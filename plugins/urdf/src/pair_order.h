@@ -8,7 +8,7 @@
 
 #include "gq/urdf/self_collision.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 
 // Configurations sampled once per checker by default (CheckerOptions::orderingSamples), and the sampler's seed
 // (fixed: the order is a function of the model).
@@ -35,4 +35,4 @@ void orderByContactFrequency(const RobotModel<T>& model, std::vector<Pair>& pair
   });
 }
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

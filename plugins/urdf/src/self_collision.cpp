@@ -13,21 +13,20 @@
 #include <limits>
 #include <type_traits>
 
+#include "gq/kernels/gjk.h"      // hull start tables
+#include "gq/kernels/overlap.h"  // the convex overlap kernel
 #include "gq/urdf/self_collision.h"
 #include "internal.h"
 #include "cull_tests.h"
 #include "kinematic_chain.h"
 #include "pair_order.h"
-// core/src (the plugin's private include path): hull start tables, the convex overlap kernel.
-#include "gjk/support_table.h"
-#include "overlap/polytope.h"
 
 namespace gq::urdf {
 namespace {
 
-using detail::capsulesDisjoint;
-using detail::orientedBoxesDisjoint;
-using detail::spheresOverlap;
+using internal::capsulesDisjoint;
+using internal::orientedBoxesDisjoint;
+using internal::spheresOverlap;
 
 // Culling compares world placements computed in T: spheres and boxes grow by this many ulps of the robot's size so
 // that rounding never culls a touching pair (touching counts as colliding).
@@ -69,7 +68,7 @@ LinkCapsule linkCapsuleOf(const std::vector<std::uint32_t>& shapes, const std::v
     }
   }
   Vec3<double> mean;
-  const detail::EnclosingCapsule c = detail::enclosingCapsule(centres, detail::principalAxes(centres, mean), 0.0, &radii);
+  const internal::EnclosingCapsule c = internal::enclosingCapsule(centres, internal::principalAxes(centres, mean), 0.0, &radii);
   const Vec3<double> span = 2.0 * c.halfHeight * c.axis;
   const double rounding = 8.0 * double(std::numeric_limits<T>::epsilon()) * (c.halfHeight + c.radius + c.centre.norm());
   const T radius = T(c.radius + rounding) + slack;
@@ -92,7 +91,7 @@ template <class T> bool convexKernelPair(const Geometry<T>& a, const Geometry<T>
 }
 
 // A box shape whose culling box is the box itself (local AABB, not grown): the midphase SAT decides the pair.
-template <class T> bool cullBoxIsTheBox(const Geometry<T>& g, const detail::CullVolume<T>& v) {
+template <class T> bool cullBoxIsTheBox(const Geometry<T>& g, const internal::CullVolume<T>& v) {
   const auto* box = g.template getIf<BoxGeometry<T>>();
   return box && v.boxCentre == Vec3<T>::Zero() && v.boxAxes == Mat3<T>::Identity() && v.halfExtents == box->halfExtents;
 }
@@ -153,7 +152,7 @@ template <class T> struct SelfCollisionChecker<T>::Impl {
   Status linkPairCollides(const CheckedPair& pair, bool& hit);
 
   std::shared_ptr<const RobotModel<T>> model_;
-  std::shared_ptr<const detail::KinematicChain<T>> chain_;  // compiled forward kinematics (immutable, shared)
+  std::shared_ptr<const internal::KinematicChain<T>> chain_;  // compiled forward kinematics (immutable, shared)
   std::vector<CheckedPair> checkedPairs_;    // link pairs with shapes that the allowed-collision matrix leaves,
                                              // most often touching first (orderPairsByContactFrequency)
   std::vector<std::uint32_t> shapedLinks_;   // links with at least one shape
@@ -180,7 +179,7 @@ template <class T> struct SelfCollisionChecker<T>::Impl {
 
 template <class T>
 SelfCollisionChecker<T>::Impl::Impl(std::shared_ptr<const RobotModel<T>> model, const CheckerOptions& options)
-    : model_(std::move(model)), chain_(std::make_shared<detail::KinematicChain<T>>(*model_)) {
+    : model_(std::move(model)), chain_(std::make_shared<internal::KinematicChain<T>>(*model_)) {
   const RobotModel<T>& m = *model_;
   const std::size_t links = m.links.size(), shapes = m.shapes.size();
   linkBody_.resize(links);
@@ -190,8 +189,8 @@ SelfCollisionChecker<T>::Impl::Impl(std::shared_ptr<const RobotModel<T>> model, 
   for (std::size_t i = 0; i < shapes; ++i) {
     const Shape<T>& shape = m.shapes[i];
     ShapeBound& b = shapeBounds_[i];
-    detail::CullVolume<T> v;  // invalid geometry keeps a point volume: the narrow phase reports it
-    (void)detail::shapeCullVolume(shape.geometry, v);
+    internal::CullVolume<T> v;  // invalid geometry keeps a point volume: the narrow phase reports it
+    (void)internal::shapeCullVolume(shape.geometry, v);
     b.body = linkBody_[shape.link];
     b.poseInBody = chain_->linkInBody(shape.link) * shape.origin;
     const Mat3<T> r = b.poseInBody.q.toRotationMatrix();
@@ -215,7 +214,7 @@ SelfCollisionChecker<T>::Impl::Impl(std::shared_ptr<const RobotModel<T>> model, 
     // inside the first check.
     for (const Geometry<T>* g : {&shape.geometry, static_cast<const Geometry<T>*>(&b.hull)})
       if (const auto* hull = g->template getIf<ConvexMeshGeometry<T>>(); hull && hull->mesh)
-        (void)gq::detail::supportStartTable(hull->mesh);
+        (void)gq::kernels::supportStartTable(hull->mesh);
     // In double the slack is ~1e-14 of the robot's size, so the SAT's answer is the box kernel's but for gaps
     // below it; in float it is ~1e-5 m on a 1 m arm and gaps that size would read as contact (measured: 6 of
     // 10,000 UR5 configurations against FCL), so float keeps the box kernel.
@@ -274,7 +273,7 @@ SelfCollisionChecker<T>::Impl::Impl(std::shared_ptr<const RobotModel<T>> model, 
 template <class T> void SelfCollisionChecker<T>::Impl::orderPairsByContactFrequency(std::uint32_t samples) {
   CollisionRequest all;
   all.allPairs = true;
-  detail::orderByContactFrequency(
+  internal::orderByContactFrequency(
       *model_, checkedPairs_, [](const CheckedPair& p) { return p.links; },
       [&](const std::vector<T>& q, CollisionResult& r) { return checkSelfCollision(q, r, all); }, samples);
 }
@@ -404,7 +403,7 @@ template <class T>
 Status SelfCollisionChecker<T>::Impl::overlapShapes(const Geometry<T>& ga, const Transform<T>& pa, const Geometry<T>& gb,
                                               const Transform<T>& pb, bool valid, bool& hit) {
   if (valid && convexKernelPair(ga, gb)) {
-    hit = gq::detail::overlapConvexShapes(ga, pa, gb, pb);
+    hit = gq::kernels::overlapConvexShapes(ga, pa, gb, pb);
     return {};
   }
   return overlap(ga, pa, gb, pb, hit);

@@ -11,7 +11,7 @@
 #include "gq/query.h"
 #include "internal.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 namespace {
 
 template <class T> T farthestVertex(const std::vector<Vec3<T>>& vertices, const Vec3<T>& centre) {
@@ -100,4 +100,4 @@ template <class T> Status shapeCullVolume(const Geometry<T>& g, CullVolume<T>& o
 template Status shapeCullVolume<float>(const Geometry<float>&, CullVolume<float>&);
 template Status shapeCullVolume<double>(const Geometry<double>&, CullVolume<double>&);
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

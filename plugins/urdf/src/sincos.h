@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 
 // Beyond this |x| the three-part reduction loses exactness; such angles go to libm.
 constexpr double kFastSinCosLimit = 0x1p19;
@@ -48,4 +48,4 @@ inline void sinCos(double x, double& s, double& c) {
   }
 }
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal

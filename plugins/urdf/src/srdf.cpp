@@ -6,7 +6,7 @@
 
 #include "internal.h"
 
-namespace gq::urdf::detail {
+namespace gq::urdf::internal {
 namespace {
 
 std::string attribute(const tinyxml2::XMLElement& e, const char* name) {
@@ -56,4 +56,4 @@ Status parseSrdf(const std::string& xml, SrdfData& out) {
   return s;
 }
 
-}  // namespace gq::urdf::detail
+}  // namespace gq::urdf::internal
