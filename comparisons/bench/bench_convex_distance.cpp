@@ -199,30 +199,27 @@ ccd_t makeCcd() {
   return overlapping;
 }
 
-[[gnu::noinline]] int runCcdPenetration(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+// libccd's penetration solvers share one signature: GJK+EPA (ccdGJKPenetration) and MPR (ccdMPRPenetration).
+using CcdPenetrationSolver = int (*)(const void*, const void*, const ccd_t*, ccd_real_t*, ccd_vec3_t*, ccd_vec3_t*);
+
+[[gnu::noinline]] int runCcdPenetrationWith(CcdPenetrationSolver solve, const Scene& s, const gq::Geometry<double>& g0,
+                                            const gq::Geometry<double>& g1) {
   const ccd_t ccd = makeCcd();
   int overlapping = 0;
   for (int i = 0; i < kPairs; ++i) {
     const CcdShape a{&g0, s.pose0[i]}, b{&g1, s.pose1[i]};
     ccd_real_t depth;
     ccd_vec3_t dir, pos;
-    overlapping += ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos) == 0;
+    overlapping += solve(&a, &b, &ccd, &depth, &dir, &pos) == 0;
     benchmark::DoNotOptimize(depth);
   }
   return overlapping;
 }
-
-[[gnu::noinline]] int runCcdMprPenetration(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
-  const ccd_t ccd = makeCcd();
-  int overlapping = 0;
-  for (int i = 0; i < kPairs; ++i) {
-    const CcdShape a{&g0, s.pose0[i]}, b{&g1, s.pose1[i]};
-    ccd_real_t depth;
-    ccd_vec3_t dir, pos;
-    overlapping += ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos) == 0;
-    benchmark::DoNotOptimize(depth);
-  }
-  return overlapping;
+int runCcdPenetration(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  return runCcdPenetrationWith(ccdGJKPenetration, s, g0, g1);
+}
+int runCcdMprPenetration(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  return runCcdPenetrationWith(ccdMPRPenetration, s, g0, g1);
 }
 
 // ---- FCL (GST_INDEP) ------------------------------------------------------------------------------------------
