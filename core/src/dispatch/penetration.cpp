@@ -21,6 +21,7 @@
 #include "gq/mesh_query.h"
 #include "gq/query.h"
 #include "penetration/penetration.h"
+#include "penetration/sphere_capsule.h"
 #include "prepared/shape_ref.h"
 
 namespace gq {
@@ -45,10 +46,11 @@ Status framed(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail
 }
 
 // A sphere, capsule or box pair: both positions translated by the smaller shape's, rotations kept (normalised as the
-// frame does).
+// frame does). Flattened: a kernel defined inline (penetration/sphere_capsule.h) is one body with the cell, its
+// helpers included, without the poses' copies (the others are out of line in their own files and stay calls).
 template <class T, class G0, class G1,
           bool (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&, Vec3<T>&, T&)>
-[[gnu::always_inline]] inline Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0,
+[[gnu::always_inline, gnu::flatten]] inline Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0,
                                                 const detail::ShapeRef<T>& b, const Transform<T>& p1,
                                                 PenetrationResult<T>& result) {
   const Vec3<T> origin = detail::pairOrigin(a.radius, p0, b.radius, p1);
@@ -62,7 +64,7 @@ template <class T, class G0, class G1,
 }
 
 template <class T, PenetrationCell<T> Cell>
-Status swappedCell(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+[[gnu::flatten]] Status swappedCell(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
                    const Transform<T>& p1, PenetrationResult<T>& result) {
   const Status s = Cell(b, p1, a, p0, result);
   if (!s.ok()) return s;
@@ -154,7 +156,7 @@ template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   PenetrationTable<T> t{};
   setCell<T, GT::Sphere, GT::Sphere, translated<T, SphereGeometry<T>, SphereGeometry<T>, detail::penetrationSphereSphere<T>>>(t);
   setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::penetrationSpherePlane<T>>>(t);
-  setCell<T, GT::Sphere, GT::Capsule, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::penetrationSphereCapsule<T>>>(t);
+  setCell<T, GT::Sphere, GT::Capsule, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::sphereCapsulePenetration<T>>>(t);
   setCell<T, GT::Sphere, GT::Box, translated<T, SphereGeometry<T>, BoxGeometry<T>, detail::penetrationSphereBox<T>>>(t);
   setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationSphereConvex<T>>>(t);
   setPair<T, GT::Sphere, GT::Custom, customFirst<T, customKernel<T>>>(t);

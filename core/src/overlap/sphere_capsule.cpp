@@ -1,19 +1,17 @@
-// Sphere/capsule overlap: distance from the centre to the capsule segment <= r0 + r1.
+// Sphere/capsule overlap: distance from the centre to the capsule segment <= r0 + r1 (overlap/sphere_capsule.h).
+#include "overlap/sphere_capsule.h"
+
 #include "overlap/overlap.h"
-#include "shapes/segment.h"
 
 namespace gq::kernels {
-using namespace detail;  // core's internal helpers
 
 template <class T> bool overlapSphereCapsule(const Vec3<T>& c0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1) {
-  const Vec3<T> q = closestPointOnSegment(Vec3<T>(c1 - a1), Vec3<T>(c1 + a1), c0);
-  const T r = r0 + r1;
-  return (c0 - q).squaredNorm() <= r * r;
+  return detail::sphereCapsuleOverlaps<T>(c0, r0, c1, a1, r1);
 }
 
 template <class T>
 bool overlapSphereCapsule(const SphereGeometry<T>& g0, const Transform<T>& p0, const CapsuleGeometry<T>& g1, const Transform<T>& p1) {
-  return overlapSphereCapsule<T>(p0.p, g0.radius, p1.p, p1.rotate(Vec3<T>(g1.halfHeight, T(0), T(0))), g1.radius);
+  return detail::sphereCapsuleOverlaps<T>(g0, p0, g1, p1);
 }
 
 template bool overlapSphereCapsule<float>(const SphereGeometry<float>&, const Transform<float>&, const CapsuleGeometry<float>&, const Transform<float>&);
