@@ -43,11 +43,10 @@ Status framed(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail
 }
 
 // A sphere, capsule or box pair: both positions translated by the smaller shape's, rotations kept (normalised as the
-// frame does). Flattened: a kernel defined inline (overlap/sphere_capsule.h) is one body with the cell, its helpers
-// included, without the poses' copies (the others are out of line in their own files and stay calls).
+// frame does).
 template <class T, class G0, class G1,
           bool (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&)>
-[[gnu::flatten]] Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
                   const Transform<T>& p1, bool& overlapping) {
   const Vec3<T> origin = detail::pairOrigin(a.radius, p0, b.radius, p1);
   // A sphere's rotation moves none of its points: its kernel does not read it, so it is not normalised.
@@ -64,6 +63,14 @@ template <class T>
                                                   bool& overlapping) {
   overlapping = detail::overlapSphereSphere<T>(p0.p, a.radius, p1.p, b.radius);
   return Status();
+}
+
+// A cell whose kernel is defined inline (overlap/sphere_capsule.h), flattened: one body with the kernel and its helpers
+// (closestPointOnSegment would be a call), without the poses' copies.
+template <class T, OverlapCell<T> Cell>
+[[gnu::flatten]] Status flattened(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+                                  const Transform<T>& p1, bool& overlapping) {
+  return Cell(a, p0, b, p1, overlapping);
 }
 
 template <class T, OverlapCell<T> Cell>
@@ -147,7 +154,7 @@ template <class T> constexpr OverlapTable<T> makeOverlapTable() {
     for (auto& cell : row) cell = framed<T, notYetImplemented<T>>;  // overwritten below: every pair is registered
   setCell<T, GT::Sphere, GT::Sphere, sphereSphere<T>>(t);
   setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::overlapSpherePlane<T>>>(t);
-  setCell<T, GT::Sphere, GT::Capsule, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::sphereCapsuleOverlaps<T>>>(t);
+  setCell<T, GT::Sphere, GT::Capsule, flattened<T, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::sphereCapsuleOverlaps<T>>>>(t);
   setCell<T, GT::Sphere, GT::Box, translated<T, SphereGeometry<T>, BoxGeometry<T>, detail::overlapSphereBox<T>>>(t);
   setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::overlapSphereConvex<T>>>(t);
   setPair<T, GT::Sphere, GT::Custom, customFirst<T, customKernel<T>>>(t);

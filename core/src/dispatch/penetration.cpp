@@ -46,11 +46,10 @@ Status framed(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail
 }
 
 // A sphere, capsule or box pair: both positions translated by the smaller shape's, rotations kept (normalised as the
-// frame does). Flattened: a kernel defined inline (penetration/sphere_capsule.h) is one body with the cell, its
-// helpers included, without the poses' copies (the others are out of line in their own files and stay calls).
+// frame does).
 template <class T, class G0, class G1,
           bool (*Kernel)(const G0&, const Transform<T>&, const G1&, const Transform<T>&, Vec3<T>&, T&)>
-[[gnu::always_inline, gnu::flatten]] inline Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0,
+[[gnu::always_inline]] inline Status translated(const detail::ShapeRef<T>& a, const Transform<T>& p0,
                                                 const detail::ShapeRef<T>& b, const Transform<T>& p1,
                                                 PenetrationResult<T>& result) {
   const Vec3<T> origin = detail::pairOrigin(a.radius, p0, b.radius, p1);
@@ -63,8 +62,17 @@ template <class T, class G0, class G1,
   return Status();
 }
 
+// A cell whose kernel is defined inline (penetration/sphere_capsule.h), flattened: one body with the kernel and its
+// helpers (closestPointOnSegment would be a call), without the poses' copies. (Flattening every translated cell cost
+// the cells with out-of-line kernels ~5 instructions a query.)
 template <class T, PenetrationCell<T> Cell>
-[[gnu::flatten]] Status swappedCell(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+[[gnu::flatten]] Status flattened(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
+                                  const Transform<T>& p1, PenetrationResult<T>& result) {
+  return Cell(a, p0, b, p1, result);
+}
+
+template <class T, PenetrationCell<T> Cell>
+Status swappedCell(const detail::ShapeRef<T>& a, const Transform<T>& p0, const detail::ShapeRef<T>& b,
                    const Transform<T>& p1, PenetrationResult<T>& result) {
   const Status s = Cell(b, p1, a, p0, result);
   if (!s.ok()) return s;
@@ -156,7 +164,7 @@ template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   PenetrationTable<T> t{};
   setCell<T, GT::Sphere, GT::Sphere, translated<T, SphereGeometry<T>, SphereGeometry<T>, detail::penetrationSphereSphere<T>>>(t);
   setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::penetrationSpherePlane<T>>>(t);
-  setCell<T, GT::Sphere, GT::Capsule, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::sphereCapsulePenetration<T>>>(t);
+  setCell<T, GT::Sphere, GT::Capsule, flattened<T, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::sphereCapsulePenetration<T>>>>(t);
   setCell<T, GT::Sphere, GT::Box, translated<T, SphereGeometry<T>, BoxGeometry<T>, detail::penetrationSphereBox<T>>>(t);
   setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationSphereConvex<T>>>(t);
   setPair<T, GT::Sphere, GT::Custom, customFirst<T, customKernel<T>>>(t);
