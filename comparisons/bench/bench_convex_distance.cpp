@@ -18,6 +18,7 @@
 #include <ccd/ccd.h>
 #include <fcl/fcl.h>
 
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <random>
@@ -446,6 +447,48 @@ void runOncePenetration(int n) {
   runBulletDistance(s, *bulletHull(*s.hull));
 }
 
+// `--once-penetration-shapes N`: a sphere, a capsule and a box (geom0 at pose0) against the N-point hull (at pose1)
+// on the overlapping scene's poses, computePenetration and distance, each through its own runner (each makes its
+// own shape, so that the linker cannot fold them into one).
+[[gnu::noinline]] int runSphereHullPenetration(const Scene& s, const gq::Geometry<double>& hull) {
+  return runGqPenetration(s, gq::SphereGeometry<double>(0.5), hull);
+}
+[[gnu::noinline]] int runSphereHullDistance(const Scene& s, const gq::Geometry<double>& hull) {
+  return runGqDistance(s, gq::SphereGeometry<double>(0.5), hull, nullptr);
+}
+[[gnu::noinline]] int runCapsuleHullPenetration(const Scene& s, const gq::Geometry<double>& hull) {
+  return runGqPenetration(s, gq::CapsuleGeometry<double>(0.3, 0.7), hull);
+}
+[[gnu::noinline]] int runCapsuleHullDistance(const Scene& s, const gq::Geometry<double>& hull) {
+  return runGqDistance(s, gq::CapsuleGeometry<double>(0.3, 0.7), hull, nullptr);
+}
+[[gnu::noinline]] int runBoxHullPenetration(const Scene& s, const gq::Geometry<double>& hull) {
+  return runGqPenetration(s, gq::BoxGeometry<double>(gq::Vec3<double>(0.9, 0.6, 0.4)), hull);
+}
+[[gnu::noinline]] int runBoxHullDistance(const Scene& s, const gq::Geometry<double>& hull) {
+  return runGqDistance(s, gq::BoxGeometry<double>(gq::Vec3<double>(0.9, 0.6, 0.4)), hull, nullptr);
+}
+
+void runOncePenetrationShapes(int n) {
+  const Scene& s = overlappingScene(n);
+  const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
+  // The hull's per-mesh caches (support start table, topology) are built here, outside the counted runners.
+  gq::PenetrationResult<double> pr;
+  gq::DistanceResult<double> dr;
+  (void)gq::computePenetration(pr, gq::Geometry<double>(gq::CapsuleGeometry<double>(0.3, 0.7)), s.pose0[0], hull, s.pose1[0]);
+  (void)gq::computePenetration(pr, hull, s.pose0[0], hull, s.pose1[0]);
+  (void)gq::distance(dr, gq::Geometry<double>(gq::SphereGeometry<double>(0.5)), s.pose0[0], hull, s.pose1[0]);
+  int counts[6];
+  counts[0] = runSphereHullPenetration(s, hull);
+  counts[1] = runSphereHullDistance(s, hull);
+  counts[2] = runCapsuleHullPenetration(s, hull);
+  counts[3] = runCapsuleHullDistance(s, hull);
+  counts[4] = runBoxHullPenetration(s, hull);
+  counts[5] = runBoxHullDistance(s, hull);
+  std::printf("overlapping of %d: sphere %d (distance %d), capsule %d (%d), box %d (%d)\n", kPairs, counts[0],
+              counts[1], counts[2], counts[3], counts[4], counts[5]);
+}
+
 void runOnce(const std::vector<int>& args) {
   for (int arg : args) {
     const Scene& s = sceneFor(arg);
@@ -490,6 +533,10 @@ BENCHMARK(BM_PenBulletGjkEpa)->Arg(30)->Arg(100)->Arg(300);
 int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[1]) == "--once-penetration") {
     runOncePenetration(std::stoi(argv[2]));
+    return 0;
+  }
+  if (argc > 2 && std::string(argv[1]) == "--once-penetration-shapes") {
+    runOncePenetrationShapes(std::stoi(argv[2]));
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--once") {

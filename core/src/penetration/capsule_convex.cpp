@@ -1,8 +1,10 @@
-// Capsule/convex MTD: exact (segment core + radius against the hull, see polytope.h); hulls scaled
-// past T's precision by GJK/EPA (degenerate_hull.h).
+// Capsule/convex MTD, exact: the segment core plus the radius against the hull, in an unscaled hull's own frame
+// (rounded_hull.h), else against the posed hull (polytope.h); hulls scaled past T's precision by GJK/EPA
+// (degenerate_hull.h).
 #include "penetration/penetration.h"
 #include "overlap/polytope.h"
 #include "penetration/degenerate_hull.h"
+#include "penetration/rounded_hull.h"
 
 namespace gq::detail {
 
@@ -12,9 +14,11 @@ bool penetrationCapsuleConvex(const CapsuleGeometry<T>& g0, const Transform<T>& 
   bool penetrating = false;
   if (scaledPastPrecision(g1.scale) && penetrationBySupport(g0, p0, g1, p1, penetrating, direction, depth))
     return penetrating;
+  const RoundedCore<T> core = capsuleCore(g0, p0);
+  if (penetrationRoundedHull(core, g1, p1, penetrating, direction, depth)) return penetrating;
   Polytope<T>& poly = scratchPolytope<T>(0);
   buildConvexPolytope(g1, p1, poly);
-  return penetrationRoundedPolytope(capsuleCore(g0, p0), poly, direction, depth);
+  return penetrationRoundedPolytope(core, poly, direction, depth);
 }
 
 template bool penetrationCapsuleConvex<float>(const CapsuleGeometry<float>&, const Transform<float>&, const ConvexMeshGeometry<float>&, const Transform<float>&,
