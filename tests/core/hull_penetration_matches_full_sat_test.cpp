@@ -25,20 +25,13 @@
 #include "overlap/polytope.h"
 #include "penetration/penetration.h"
 #include "penetration/polytope_mtd.h"
+#include "random_hulls.h"
 #include "test_util.h"
 
 namespace gq::test {
 namespace {
 
 using detail::Polytope;
-
-template <class T> std::shared_ptr<const ConvexMesh<T>> ellipsoidHull(int n, Rng& rng) {
-  std::vector<Vec3<T>> pts;
-  for (int i = 0; i < n; ++i) pts.push_back(rng.unitVector<T>().cwiseProduct(Vec3<T>(T(1), T(0.8), T(0.6))));
-  std::shared_ptr<const ConvexMesh<T>> out;
-  EXPECT_TRUE(cookConvexMesh(pts, out).ok());
-  return out;
-}
 
 enum class Kind { RandomHulls, BoxHull, ParallelFaces, Containment, SizeRatio, Stretched, Count };
 
