@@ -21,6 +21,7 @@
 #include "gq/mesh_query.h"
 #include "gq/query.h"
 #include "penetration/penetration.h"
+#include "penetration/sphere_box.h"
 #include "penetration/sphere_capsule.h"
 #include "prepared/shape_ref.h"
 
@@ -62,7 +63,7 @@ template <class T, class G0, class G1,
   return Status();
 }
 
-// A cell whose kernel is defined inline (penetration/sphere_capsule.h), flattened: one body with the kernel and its
+// A cell whose kernel is defined inline (penetration/sphere_capsule.h, sphere_box.h), flattened: one body with the kernel and its
 // helpers (closestPointOnSegment would be a call), without the poses' copies. (Flattening every translated cell cost
 // the cells with out-of-line kernels ~5 instructions a query.)
 template <class T, PenetrationCell<T> Cell>
@@ -165,7 +166,7 @@ template <class T> constexpr PenetrationTable<T> makePenetrationTable() {
   setCell<T, GT::Sphere, GT::Sphere, translated<T, SphereGeometry<T>, SphereGeometry<T>, detail::penetrationSphereSphere<T>>>(t);
   setPair<T, GT::Sphere, GT::Plane, pairKernel<T, SphereGeometry<T>, PlaneGeometry<T>, detail::penetrationSpherePlane<T>>>(t);
   setCell<T, GT::Sphere, GT::Capsule, flattened<T, translated<T, SphereGeometry<T>, CapsuleGeometry<T>, detail::sphereCapsulePenetration<T>>>>(t);
-  setCell<T, GT::Sphere, GT::Box, translated<T, SphereGeometry<T>, BoxGeometry<T>, detail::penetrationSphereBox<T>>>(t);
+  setCell<T, GT::Sphere, GT::Box, flattened<T, translated<T, SphereGeometry<T>, BoxGeometry<T>, detail::sphereBoxPenetration<T>>>>(t);
   setPair<T, GT::Sphere, GT::ConvexMesh, pairKernel<T, SphereGeometry<T>, ConvexMeshGeometry<T>, detail::penetrationSphereConvex<T>>>(t);
   setPair<T, GT::Sphere, GT::Custom, customFirst<T, customKernel<T>>>(t);
   setPair<T, GT::Plane, GT::Plane, notDefinedBySpec<T>>(t);
