@@ -6,6 +6,7 @@
 // kept as candidates for the scalar test: an edge function that is exactly zero (the scalar test re-evaluates it in
 // double) and any NaN (every comparison fails, so nothing rejects the lane). Accepted lanes get the scalar test,
 // which computes the hit.
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -112,14 +113,24 @@ inline int exactTriangleHits(const TriangleVertices4& p, const WatertightRay4& r
   hits.decided = decided;
   return candidates;
 #else
+  // Scalar build: the scalar test decides every lane it accepts with a finite hit.
   hits.decided = 0;
+  hits.frontMask = 0;
   int mask = 0;
   for (int i = 0; i < 4; ++i) {
     const Vec3<float> v0(p.v[0][0][i], p.v[0][1][i], p.v[0][2][i]);
     const Vec3<float> v1(p.v[1][0][i], p.v[1][1][i], p.v[1][2][i]);
     const Vec3<float> v2(p.v[2][0][i], p.v[2][1][i], p.v[2][2][i]);
     TriangleRayHit<float> hit;
-    if (intersectRayTriangle(r.ray, v0, v1, v2, maxT, cullBackFaces, hit)) mask |= 1 << i;
+    if (!intersectRayTriangle(r.ray, v0, v1, v2, maxT, cullBackFaces, hit)) continue;
+    mask |= 1 << i;
+    if (std::isfinite(hit.t) && std::isfinite(hit.u) && std::isfinite(hit.v)) {
+      hits.decided |= 1 << i;
+      hits.t[i] = hit.t;
+      hits.u[i] = hit.u;
+      hits.v[i] = hit.v;
+      hits.frontMask |= int(hit.frontFace) << i;
+    }
   }
   return mask;
 #endif
