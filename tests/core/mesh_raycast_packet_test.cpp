@@ -48,6 +48,7 @@ template <class T> MeshData<T> randomLeaf(std::mt19937_64& rng, const Vec3<T>& c
 
 struct Counts {
   int exactHits = 0, missed = 0, rejected = 0, tested = 0;
+  int decided = 0;  // float meshes: hits the 4-wide exact test computed itself
 };
 
 // Fires `rays` rays at the leaf from `origin` and checks the pre-test against the exact test for both culling modes.
@@ -74,14 +75,27 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
       }
       const int mask = detail::packetCandidates(packet, packetRay, floatCeil(maxT), cull);
       int exactMask = 0xf;  // float meshes: the 4-wide exact test on the mesh's vertex packet
+      detail::TriangleHits4 laneHits;
       if constexpr (std::is_same_v<T, float>)
-        exactMask = detail::exactTriangleCandidates(mesh.accel->vertexPackets.at(mesh.accel->bvh.rootPacket),
-                                                    detail::makeWatertightRay4(exactRay), maxT, cull);
+        exactMask = detail::exactTriangleHits(mesh.accel->vertexPackets.at(mesh.accel->bvh.rootPacket),
+                                              detail::makeWatertightRay4(exactRay), maxT, cull, laneHits);
       for (std::uint32_t i = 0; i < count; ++i) {
         const Vec3<T>* v = &mesh.triangleVertices[3 * i];
         detail::TriangleRayHit<T> h;
         const bool exact = detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h);
         EXPECT_FALSE(exact && !((exactMask >> i) & 1)) << "the 4-wide exact test dropped a hit";
+        if constexpr (std::is_same_v<T, float>) {
+          if ((laneHits.decided >> i) & 1) {  // a lane decided 4 wide: the scalar test's hit, bit for bit
+            ++counts.decided;
+            EXPECT_TRUE(exact) << "the 4-wide exact test decided a lane the scalar test rejects";
+            if (exact) {
+              EXPECT_EQ(laneHits.t[i], h.t);
+              EXPECT_EQ(laneHits.u[i], h.u);
+              EXPECT_EQ(laneHits.v[i], h.v);
+              EXPECT_EQ(((laneHits.frontMask >> i) & 1) != 0, h.frontFace);
+            }
+          }
+        }
         const bool kept = (mask >> i) & 1;
         ++counts.tested;
         counts.exactHits += exact;
@@ -139,6 +153,7 @@ TYPED_TEST(MeshRaycastPacket, PreTestKeepsEveryTriangleTheExactTestHits) {
   }
   EXPECT_EQ(counts.missed, 0);
   EXPECT_GT(counts.exactHits, counts.tested / 10);  // the rays do hit: the check is not vacuous
+  if constexpr (std::is_same_v<T, float>) EXPECT_GT(counts.decided, counts.exactHits / 2);
 }
 
 TYPED_TEST(MeshRaycastPacket, PreTestRejectsTrianglesTheRayClearlyMisses) {

@@ -27,6 +27,10 @@ struct BvhRay {
   // Per axis, the float offset in a Bvh4Node of the child bounds the ray enters (near) and leaves (far) by: the min
   // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis.
   std::uint32_t nearOffset[3], farOffset[3];
+#ifdef GQ_SSE42
+  // org, invDir and slack broadcast to 4 lanes once per ray, so a node test loads them instead of splatting them.
+  __m128 org4[3], invDir4[3], slack4[3];
+#endif
   // Relative padding on [tNear, tFar] covering the rounding of the slab arithmetic and of the float direction.
   static constexpr float kRelPad = 16.0f * std::numeric_limits<float>::epsilon();
 };
@@ -50,26 +54,37 @@ template <class T> inline BvhRay makeBvhRay(const Vec3<T>& org, const Vec3<T>& d
     const std::uint32_t minPlane = 4u * std::uint32_t(i), maxPlane = 12u + 4u * std::uint32_t(i);
     r.nearOffset[i] = r.invDir[i] >= 0.0f ? minPlane : maxPlane;
     r.farOffset[i] = r.invDir[i] >= 0.0f ? maxPlane : minPlane;
+#ifdef GQ_SSE42
+    r.org4[i] = _mm_set1_ps(r.org[i]);
+    r.invDir4[i] = _mm_set1_ps(r.invDir[i]);
+    r.slack4[i] = _mm_set1_ps(r.slack[i]);
+#endif
   }
   return r;
 }
 
 // Tests the ray against the 4 children of `node` for t in [0, tMax]; returns a 4-bit hit mask (empty lanes never set)
-// and the entry distances of the children in tNear.
+// and the entry distances of the children in tNear. kSlack = false for rays whose origin is exactly the float one
+// (float queries: slack is 0), which skips the padding adds.
+template <bool kSlack = true>
 inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax, float tNear[4]) {
 #ifdef GQ_SSE42
   // With a positive (negative) inverse the min (max) plane gives the smaller slab distance, and rounding keeps that
   // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
   const float* base = node.minX;
-  const __m128 ox = _mm_set1_ps(ray.org[0]), oy = _mm_set1_ps(ray.org[1]), oz = _mm_set1_ps(ray.org[2]);
-  const __m128 ix = _mm_set1_ps(ray.invDir[0]), iy = _mm_set1_ps(ray.invDir[1]), iz = _mm_set1_ps(ray.invDir[2]);
-  const __m128 sx = _mm_set1_ps(ray.slack[0]), sy = _mm_set1_ps(ray.slack[1]), sz = _mm_set1_ps(ray.slack[2]);
-  const __m128 nearX = _mm_sub_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.nearOffset[0]), ox), ix), sx);
-  const __m128 nearY = _mm_sub_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.nearOffset[1]), oy), iy), sy);
-  const __m128 nearZ = _mm_sub_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.nearOffset[2]), oz), iz), sz);
-  const __m128 farX = _mm_add_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.farOffset[0]), ox), ix), sx);
-  const __m128 farY = _mm_add_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.farOffset[1]), oy), iy), sy);
-  const __m128 farZ = _mm_add_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + ray.farOffset[2]), oz), iz), sz);
+  auto slab = [&](std::uint32_t offset, int axis) {
+    return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + offset), ray.org4[axis]), ray.invDir4[axis]);
+  };
+  __m128 nearX = slab(ray.nearOffset[0], 0), nearY = slab(ray.nearOffset[1], 1), nearZ = slab(ray.nearOffset[2], 2);
+  __m128 farX = slab(ray.farOffset[0], 0), farY = slab(ray.farOffset[1], 1), farZ = slab(ray.farOffset[2], 2);
+  if constexpr (kSlack) {
+    nearX = _mm_sub_ps(nearX, ray.slack4[0]);
+    nearY = _mm_sub_ps(nearY, ray.slack4[1]);
+    nearZ = _mm_sub_ps(nearZ, ray.slack4[2]);
+    farX = _mm_add_ps(farX, ray.slack4[0]);
+    farY = _mm_add_ps(farY, ray.slack4[1]);
+    farZ = _mm_add_ps(farZ, ray.slack4[2]);
+  }
   __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
   __m128 tf = _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax)));
   tn = _mm_mul_ps(tn, _mm_set1_ps(1.0f - BvhRay::kRelPad));
@@ -104,7 +119,7 @@ inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax
 // Walks the leaves whose boxes the ray enters within [0, tMax]. Ordered: nearest child first, and entries whose entry
 // distance passed tMax (lowered by the leaf handler since they were pushed) are dropped. Unordered (any hit: the walk
 // stops at the first hit, so the order buys nothing and sorting costs per node): the children are pushed as found.
-template <bool kOrdered, class LeafFn>
+template <bool kOrdered, bool kSlack, class LeafFn>
 inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
   struct Entry { std::uint32_t ref, packet; float tNear; };
   Entry stack[kBvhStackSize];
@@ -119,7 +134,7 @@ inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafF
     while (!Bvh4Node::isLeaf(e.ref)) {
       const Bvh4Node& node = bvh.nodes[e.ref];
       alignas(16) float tn[4];
-      int mask = intersectChildren(node, ray, tMax, tn);  // empty lanes never set
+      int mask = intersectChildren<kSlack>(node, ray, tMax, tn);  // empty lanes never set
       if (mask == 0) { missed = true; break; }
       int i = __builtin_ctz(unsigned(mask));
       mask &= mask - 1;
@@ -168,13 +183,13 @@ inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafF
 // reference owned by the caller) to prune.
 template <class LeafFn>
 inline void traverseRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
-  walkRayLeaves<true>(bvh, ray, tMax, leaf);
+  walkRayLeaves<true, true>(bvh, ray, tMax, leaf);
 }
 
 // As traverseRayLeaves in no particular order, for walks that stop at the first leaf answer (any hit).
 template <class LeafFn>
 inline void traverseRayLeavesAnyOrder(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
-  walkRayLeaves<false>(bvh, ray, tMax, leaf);
+  walkRayLeaves<false, true>(bvh, ray, tMax, leaf);
 }
 
 // As traverseRayLeaves, with `leaf(first, count)` getting the leaf's primitive range.

@@ -55,12 +55,28 @@ template <class T> Status validateRayPose(const Vec3<T>& origin, const Transform
   return Status();
 }
 
-// The one path of both overloads once the ray and the geometry are valid.
+// validateRay and validateRayPose on the success path of a prepared shape, as one predicate of a few compares (the
+// façade's whole per-ray cost): a failing input takes the full checks, which name the problem. A finite origin - p
+// proves both finite (an infinite or NaN coordinate on either side makes the difference infinite or NaN); a NaN or
+// infinite direction fails the squared-norm bounds; maxDist >= 0 admits +inf and rejects NaN and -inf, as
+// checkMaxDist does.
 template <class T>
-Status raycastGeometry(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
-                       T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
-                       std::uint32_t& hitCount) {
-  if (Status s = validateRayPose(origin, pose); !s.ok()) return s;
+[[gnu::always_inline]] inline bool rayInputsAreValid(const Vec3<T>& origin, const Vec3<T>& dir,
+                                                     const Transform<T>& pose, T maxDist, HitFlags flags,
+                                                     std::uint32_t maxHits, const RaycastHit<T>* hits) {
+  const Vec3<T> offset = origin - pose.p;
+  const HitFlags sweepOnly = HitFlag::Mtd | HitFlag::PreciseSweep | HitFlag::AssumeNoInitialOverlap;
+  return (T(0) * offset.x() + T(0) * offset.y() + T(0) * offset.z() == T(0)) &
+         detail::squaredNormIsUnit(double(dir.squaredNorm()), tol::kUnitDirection) & (maxDist >= T(0)) &
+         (maxHits != 0) & (hits != nullptr) & ((flags & sweepOnly).bits() == 0) & detail::isUnitQuaternion(pose.q);
+}
+
+// The kernel call of both overloads once every input is valid.
+template <class T>
+[[gnu::always_inline]] inline std::uint32_t raycastValid(const Vec3<T>& origin, const Vec3<T>& unitDir,
+                                                         const Geometry<T>& geom, const Transform<T>& pose, T maxDist,
+                                                         HitFlags hitFlags, std::uint32_t maxHits,
+                                                         RaycastHit<T>* hits) {
   // Several hits only with MeshMultiple (the spec); solids cap themselves at one.
   const std::uint32_t cap = hitFlags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
   // A hit has a finite distance: an entry parameter that overflows T (a far ray all but parallel to a box face or
@@ -68,7 +84,16 @@ Status raycastGeometry(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geom
   // finite T and every kernel's "t > maxDist" test rejects it.
   const T reach = std::min(maxDist, std::numeric_limits<T>::max());
   const detail::RayQuery<T> ray{origin, unitDir, reach, hitFlags, cap};
-  hitCount = kRaycastTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, ray, hits);
+  return kRaycastTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, ray, hits);
+}
+
+// The one path of both overloads once the ray and the geometry are valid.
+template <class T>
+Status raycastGeometry(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>& geom, const Transform<T>& pose,
+                       T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
+                       std::uint32_t& hitCount) {
+  if (Status s = validateRayPose(origin, pose); !s.ok()) return s;
+  hitCount = raycastValid(origin, unitDir, geom, pose, maxDist, hitFlags, maxHits, hits);
   return Status();
 }
 
@@ -89,6 +114,11 @@ Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& sh
                T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
                std::uint32_t& hitCount) noexcept {
   return detail::guarded([&]() -> Status {
+    if (rayInputsAreValid(origin, unitDir, pose, maxDist, hitFlags, maxHits, hits) &&
+        detail::ShapeAccess<T>::made(shape)) {
+      hitCount = raycastValid(origin, unitDir, shape.geometry(), pose, maxDist, hitFlags, maxHits, hits);
+      return Status();
+    }
     if (Status s = validateRay(origin, unitDir, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
     if (!detail::ShapeAccess<T>::made(shape)) return Status::invalid(detail::emptyShapeText());
     return raycastGeometry(origin, unitDir, shape.geometry(), pose, maxDist, hitFlags, maxHits, hits, hitCount);

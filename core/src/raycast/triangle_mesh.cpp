@@ -61,24 +61,53 @@ template <class T> class MeshRaycaster {
            std::isfinite(hit.u) && std::isfinite(hit.v);
   }
 
+  // As candidates(); for float meshes the lanes the 4-wide test decides come with their hit in `hits`
+  // (hits.decided), bit-identical to the scalar test's, so only the other candidates need testTriangle.
+  int candidates(std::uint32_t leafRef, std::uint32_t packet, float tMax, T maxT, TriangleHits4& hits) const {
+    if constexpr (kFloat) {
+      const int lanes = (1 << Bvh4Node::leafCount(leafRef)) - 1;
+      (void)tMax;
+      return exactTriangleHits(mesh_.accel->vertexPackets[packet], ray4_, maxT, cull_, hits) & lanes;
+    } else {
+      hits.decided = 0;
+      return candidates(leafRef, packet, tMax, maxT);
+    }
+  }
+
+  // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the 4-wide test when it decided the
+  // lane, else from the scalar test.
+  bool laneHit(const TriangleHits4& hits, int lane, std::uint32_t cooked, T maxT, TriangleRayHit<T>& h) const {
+    if ((hits.decided >> lane) & 1) {
+      h.t = T(hits.t[lane]);
+      h.u = T(hits.u[lane]);
+      h.v = T(hits.v[lane]);
+      h.frontFace = ((hits.frontMask >> lane) & 1) != 0;
+      return true;
+    }
+    return testTriangle(cooked, maxT, h);
+  }
+
   // Closest hit within maxDist: leaves nearest first, each hit lowering the walk's bound.
   bool closest(T maxDist, RawHit<T>& best) const {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
-    traverseRayLeaves(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
       bool lowered = false;
-      for (int mask = candidates(ref, packet, tMax, bestT); mask; mask &= mask - 1) {
-        const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
+      TriangleHits4 laneHits;
+      for (int mask = candidates(ref, packet, tMax, bestT, laneHits); mask; mask &= mask - 1) {
+        const int lane = __builtin_ctz(unsigned(mask));
+        const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
-        if (!testTriangle(c, bestT, h)) continue;
+        if (!laneHit(laneHits, lane, c, bestT, h)) continue;
         // Equal distances (shared edges) keep the lower input index, so the answer does not depend on the tree.
         if (found && h.t == bestT && mesh_.inputIndex[c] > mesh_.inputIndex[best.cooked]) continue;
         best = RawHit<T>{c, h};
         bestT = h.t;
         found = true;
         lowered = true;
+        laneHits.decided = 0;  // decided against the old bound: the rest of the leaf takes the scalar test
       }
       if (lowered) tMax = floatCeil(bestT);
       return false;
@@ -90,12 +119,14 @@ template <class T> class MeshRaycaster {
   bool any(T maxDist, RawHit<T>& best) const {
     float tMax = floatCeil(maxDist);
     bool found = false;
-    traverseRayLeavesAnyOrder(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    walkRayLeaves<false, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
-      for (int mask = candidates(ref, packet, tMax, maxDist); mask; mask &= mask - 1) {
-        const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
+      TriangleHits4 laneHits;
+      for (int mask = candidates(ref, packet, tMax, maxDist, laneHits); mask; mask &= mask - 1) {
+        const int lane = __builtin_ctz(unsigned(mask));
+        const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
-        if (!testTriangle(c, maxDist, h)) continue;
+        if (!laneHit(laneHits, lane, c, maxDist, h)) continue;
         best = RawHit<T>{c, h};
         found = true;
         return true;
@@ -110,12 +141,14 @@ template <class T> class MeshRaycaster {
     auto farther = [](const RawHit<T>& a, const RawHit<T>& b) { return a.tri.t < b.tri.t; };  // max-heap on t
     T limit = maxDist;
     float tMax = floatCeil(maxDist);
-    traverseRayLeaves(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
-      for (int mask = candidates(ref, packet, tMax, limit); mask; mask &= mask - 1) {
-        const std::uint32_t c = first + std::uint32_t(__builtin_ctz(unsigned(mask)));
+      TriangleHits4 laneHits;
+      for (int mask = candidates(ref, packet, tMax, limit, laneHits); mask; mask &= mask - 1) {
+        const int lane = __builtin_ctz(unsigned(mask));
+        const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
-        if (!testTriangle(c, limit, h)) continue;
+        if (!laneHit(laneHits, lane, c, limit, h)) continue;
         if (hits.size() == cap) {
           std::pop_heap(hits.begin(), hits.end(), farther);
           hits.pop_back();
@@ -126,6 +159,7 @@ template <class T> class MeshRaycaster {
         if (hits.size() == cap) {
           limit = hits.front().tri.t;
           tMax = floatCeil(limit);
+          laneHits.decided = 0;  // decided against the old limit: the rest of the leaf takes the scalar test
         }
       }
       return false;
@@ -146,11 +180,16 @@ template <class T> class MeshRaycaster {
 
 // Mesh-space frame of the instance: S^-1 and the mirror flag; the identity scale (the common case) skips the
 // matrix products of MeshInstance.
+// An identity pose rotation (a mesh placed in the world as cooked, the common case for static meshes) skips the
+// quaternion products, whose result would be the same vectors.
 template <class T> struct MeshRayFrame {
   bool scaled;
   Mat3<T> invScale;
   bool flips;
-  explicit MeshRayFrame(const TriangleMeshGeometry<T>& g) : scaled(!g.scale.isIdentity()), flips(false) {
+  bool rotated;
+  MeshRayFrame(const TriangleMeshGeometry<T>& g, const Transform<T>& pose)
+      : scaled(!g.scale.isIdentity()), flips(false),
+        rotated(!(pose.q.w() == T(1) && pose.q.x() == T(0) && pose.q.y() == T(0) && pose.q.z() == T(0))) {
     if (!scaled) return;
     const MeshInstance<T> inst(g, Transform<T>());
     invScale = inst.invScale;
@@ -175,7 +214,8 @@ RaycastHit<T> makeHit(const TriangleMesh<T>& mesh, const Transform<T>& pose, con
   if (ray.flags.has(HitFlag::Normal)) {
     const Vec3<T>* v = &mesh.triangleVertices[3 * std::size_t(raw.cooked)];
     const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
-    Vec3<T> n = pose.rotate(frame.toMesh(meshNormal));  // S^-1 = S^-T is also the normal transform
+    Vec3<T> n = frame.toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
+    if (frame.rotated) n = pose.rotate(n);
     n = unitOr(n, Vec3<T>(-ray.dir));
     if (doubleSided && !raw.tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
     hit.normal = n;
@@ -197,9 +237,9 @@ std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transf
                                   RaycastHit<T>* hits) {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
   const TriangleMesh<T>& mesh = *g.mesh;
-  const MeshRayFrame<T> frame(g);
-  const Vec3<T> org = frame.toMesh(pose.transformInv(ray.origin));
-  const Vec3<T> dir = frame.toMesh(pose.rotateInv(ray.dir));
+  const MeshRayFrame<T> frame(g, pose);
+  const Vec3<T> org = frame.toMesh(frame.rotated ? pose.transformInv(ray.origin) : Vec3<T>(ray.origin - pose.p));
+  const Vec3<T> dir = frame.toMesh(frame.rotated ? pose.rotateInv(ray.dir) : ray.dir);
   const bool cull = !(g.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
   const MeshRaycaster<T> caster(mesh, org, dir, cull);
   if (ray.maxHits > 1) {
