@@ -1,5 +1,7 @@
 // Batches answer bitwise what the loop of single queries answers, for every thread count and grain; a bad item gets
 // its own Status and leaves the others answered; bad arrays are rejected before anything is written.
+#include "gq/batch.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include <limits>
 #include <numeric>
 
-#include "gq/batch.h"
 #include "scene_test_support.h"
 
 namespace gq {
@@ -37,8 +38,17 @@ template <class T> std::vector<RayRecord<T>> randomRays(Rng& rng, std::size_t n,
     if (i % 2 == 0) rays[i].dir = (rng.inBox<T>(half * 0.2) - rays[i].origin).normalized();
   }
   rays[3].origin.x() = std::numeric_limits<T>::quiet_NaN();  // one bad item
-  rays[5].dir *= T(2);                                        // and a non-unit direction
+  rays[5].dir *= T(2);                                       // and a non-unit direction
   return rays;
+}
+
+// The two fields of the records, read in place.
+template <class T> RayBatch<T> rayBatch(const std::vector<RayRecord<T>>& rays, T maxDist) {
+  RayBatch<T> b;
+  b.origins = StridedArray<Vec3<T>>(&rays[0].origin, rays.size(), sizeof(RayRecord<T>));
+  b.unitDirs = StridedArray<Vec3<T>>(&rays[0].dir, rays.size(), sizeof(RayRecord<T>));
+  b.maxDist = maxDist;
+  return b;
 }
 
 template <class T> void expectSameHit(const RaycastHit<T>& a, const RaycastHit<T>& b) {
@@ -56,14 +66,12 @@ TYPED_TEST(Batch, RaysAgainstOneMeshEqualSingleRaycastsForAnyThreadCount) {
   const Geometry<T> mesh = TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles), MeshScale<T>(T(2)));
   const Transform<T> pose = rng.pose<T>(1);
   const auto rays = randomRays<T>(rng, 700, 4);
-  const StridedArray<Vec3<T>> origins(&rays[0].origin, rays.size(), sizeof(RayRecord<T>));
-  const StridedArray<Vec3<T>> dirs(&rays[0].dir, rays.size(), sizeof(RayRecord<T>));
+  const RayBatch<T> batch = rayBatch(rays, T(10));
   for (const BatchSettings& settings : kSettings) {
     std::vector<RaycastHit<T>> hits(rays.size());
     std::vector<std::uint8_t> has(rays.size(), 7);
     std::vector<Status> statuses(rays.size());
-    const Status s =
-        raycastBatch(origins, dirs, T(10), mesh, pose, kDefaultHitFlags, hits.data(), has.data(), statuses.data(), settings);
+    const Status s = raycastBatch(batch, mesh, pose, hits.data(), has.data(), statuses.data(), settings);
     EXPECT_EQ(s.code, StatusCode::Warning);
     EXPECT_EQ(s.index(), 2u);
     std::size_t hitCount = 0;
@@ -93,15 +101,15 @@ TYPED_TEST(Batch, RaysIntoASceneEqualSceneRaycastsAndAllHitsCountThenFill) {
   World<T> w;
   scenetest::populate(w, rng, lib, 150);
   const auto rays = randomRays<T>(rng, 500, 15);
-  const StridedArray<Vec3<T>> origins(&rays[0].origin, rays.size(), sizeof(RayRecord<T>));
-  const StridedArray<Vec3<T>> dirs(&rays[0].dir, rays.size(), sizeof(RayRecord<T>));
+  const RayBatch<T> batch = rayBatch(rays, T(40));
   const HitFlags flags = kDefaultHitFlags | HitFlag::MeshMultiple;
+  RayBatch<T> multi = batch;
+  multi.hitFlags = flags;
   for (const BatchSettings& settings : kSettings) {
     std::vector<SceneRaycastHit<T>> hits(rays.size());
     std::vector<std::uint8_t> has(rays.size(), 0);
     std::vector<Status> statuses(rays.size());
-    const Status s = raycastBatch(origins, dirs, T(40), w.scene, kDefaultHitFlags, hits.data(), has.data(),
-                                  statuses.data(), settings);
+    const Status s = raycastBatch(batch, w.scene, hits.data(), has.data(), statuses.data(), settings);
     EXPECT_EQ(s.index(), 2u);
     for (std::size_t i = 0; i < rays.size(); ++i) {
       SceneRaycastHit<T> ref;
@@ -118,10 +126,9 @@ TYPED_TEST(Batch, RaysIntoASceneEqualSceneRaycastsAndAllHitsCountThenFill) {
 
     // All hits, up to 4 a ray: counts first, then the fill at the offsets.
     std::vector<std::uint32_t> counts(rays.size(), 0);
-    ASSERT_EQ(raycastAllBatch(origins, dirs, T(40), w.scene, flags, 4u, counts.data(), nullptr,
-                              static_cast<SceneRaycastHit<T>*>(nullptr), statuses.data(), settings)
-                  .index(),
-              2u);
+    SceneHitsOutput<T> countPass;
+    countPass.counts = counts.data();
+    ASSERT_EQ(raycastAllBatch(multi, w.scene, 4u, countPass, statuses.data(), settings).index(), 2u);
     std::vector<std::uint64_t> offsets(rays.size(), 0);
     std::uint64_t total = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -130,9 +137,11 @@ TYPED_TEST(Batch, RaysIntoASceneEqualSceneRaycastsAndAllHitsCountThenFill) {
     }
     std::vector<SceneRaycastHit<T>> all(total);
     std::vector<std::uint32_t> counts2(rays.size(), 0);
-    ASSERT_TRUE(raycastAllBatch(origins, dirs, T(40), w.scene, flags, 4u, counts2.data(), offsets.data(), all.data(),
-                                statuses.data(), settings)
-                    .ok());
+    SceneHitsOutput<T> fillPass;
+    fillPass.counts = counts2.data();
+    fillPass.offsets = offsets.data();
+    fillPass.hits = all.data();
+    ASSERT_TRUE(raycastAllBatch(multi, w.scene, 4u, fillPass, statuses.data(), settings).ok());
     EXPECT_EQ(counts2, counts);
     for (std::size_t i = 0; i < rays.size(); ++i) {
       SceneRaycastHit<T> ref[4];
@@ -234,13 +243,12 @@ TYPED_TEST(Batch, ResultsAreTheSameBytesForEveryThreadCount) {
   World<T> w;
   scenetest::populate(w, rng, lib, 100);
   const auto rays = randomRays<T>(rng, 2000, 15);
-  const StridedArray<Vec3<T>> origins(&rays[0].origin, rays.size(), sizeof(RayRecord<T>));
-  const StridedArray<Vec3<T>> dirs(&rays[0].dir, rays.size(), sizeof(RayRecord<T>));
+  const RayBatch<T> batch = rayBatch(rays, T(40));
   std::vector<SceneRaycastHit<T>> first;
   for (const BatchSettings& settings : kSettings) {
     std::vector<SceneRaycastHit<T>> hits(rays.size());
     std::vector<std::uint8_t> has(rays.size(), 0);
-    (void)raycastBatch(origins, dirs, T(40), w.scene, kDefaultHitFlags, hits.data(), has.data(), nullptr, settings);
+    (void)raycastBatch(batch, w.scene, hits.data(), has.data(), nullptr, settings);
     if (first.empty()) {
       first = hits;
       continue;
@@ -269,9 +277,9 @@ TYPED_TEST(Batch, BadArraysAreRejectedAndNothingIsWritten) {
                 "a batch input stride is smaller than the element size");
   expectInvalid(pointDistanceBatch(StridedArray<Vec3<T>>(nullptr, 4), ball, Transform<T>(), out.data()),
                 "a batch input array is null but its count is not 0");
-  expectInvalid(pointDistanceBatch(StridedArray<Vec3<T>>::fromBytes(reinterpret_cast<const char*>(pts.data()) + 1, 3,
-                                                                    sizeof(Vec3<T>)),
-                                   ball, Transform<T>(), out.data()),
+  expectInvalid(pointDistanceBatch(
+                    StridedArray<Vec3<T>>::fromBytes(reinterpret_cast<const char*>(pts.data()) + 1, 3, sizeof(Vec3<T>)),
+                    ball, Transform<T>(), out.data()),
                 "a batch input array or stride is not aligned for its element type");
   expectInvalid(pointDistanceBatch(StridedArray<Vec3<T>>(pts.data(), 4), ball, Transform<T>(),
                                    static_cast<PointDistanceResult<T>*>(nullptr)),
@@ -280,19 +288,23 @@ TYPED_TEST(Batch, BadArraysAreRejectedAndNothingIsWritten) {
                 "the shape is empty (not made by Shape::make)");
   std::vector<RaycastHit<T>> hits(4);
   std::vector<std::uint8_t> has(4, 0);
-  const Status s = raycastBatch(StridedArray<Vec3<T>>(pts.data(), 4), StridedArray<Vec3<T>>(pts.data(), 3), T(1), ball,
-                                Transform<T>(), kDefaultHitFlags, hits.data(), has.data());
+  RayBatch<T> mismatched;
+  mismatched.origins = StridedArray<Vec3<T>>(pts.data(), 4);
+  mismatched.unitDirs = StridedArray<Vec3<T>>(pts.data(), 3);
+  mismatched.maxDist = T(1);
+  const Status s = raycastBatch(mismatched, ball, Transform<T>(), hits.data(), has.data());
   EXPECT_EQ(s.code, StatusCode::InvalidArgument);
   EXPECT_STREQ(s.message(), "batch input arrays have different counts");
   // An empty batch is fine with null arrays.
-  EXPECT_EQ(pointDistanceBatch(StridedArray<Vec3<T>>(), ball, Transform<T>(), static_cast<PointDistanceResult<T>*>(nullptr))
-                .code,
-            StatusCode::Ok);
+  EXPECT_EQ(
+      pointDistanceBatch(StridedArray<Vec3<T>>(), ball, Transform<T>(), static_cast<PointDistanceResult<T>*>(nullptr))
+          .code,
+      StatusCode::Ok);
   // Every other element: a stride of two elements.
   pts[2] = Vec3<T>(T(0), T(3), T(0));
-  ASSERT_TRUE(pointDistanceBatch(StridedArray<Vec3<T>>(pts.data(), 2, 2 * sizeof(Vec3<T>)), ball, Transform<T>(),
-                                 out.data())
-                  .ok());
+  ASSERT_TRUE(
+      pointDistanceBatch(StridedArray<Vec3<T>>(pts.data(), 2, 2 * sizeof(Vec3<T>)), ball, Transform<T>(), out.data())
+          .ok());
   EXPECT_EQ(out[0].distance, T(1));
   EXPECT_EQ(out[1].distance, T(2));
 }

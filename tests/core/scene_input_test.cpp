@@ -107,8 +107,7 @@ TYPED_TEST(SceneInput, QueriesRejectBadInputAndWriteNothing) {
   const Transform<T> nanPose(Vec3<T>(T(0), T(0), nan<T>()));
   std::vector<InstanceId> ids{42};
   EXPECT_EQ(s.overlapAll(ball, nanPose, ids).code, StatusCode::InvalidArgument);
-  EXPECT_EQ(s.overlapAll(Geometry<T>(SphereGeometry<T>(T(-1))), Transform<T>(), ids).code,
-            StatusCode::InvalidArgument);
+  EXPECT_EQ(s.overlapAll(Geometry<T>(SphereGeometry<T>(T(-1))), Transform<T>(), ids).code, StatusCode::InvalidArgument);
   EXPECT_EQ(ids, std::vector<InstanceId>{42});
   SceneDistanceResult<T> near;
   near.id = 777;
@@ -166,13 +165,13 @@ TYPED_TEST(SceneInput, RaycastAllSortsHitsAcrossInstances) {
   using T = TypeParam;
   Scene<T> s;
   for (int i = 0; i < 5; ++i) {
-    ASSERT_TRUE(s.add(InstanceId(100 - i), SphereGeometry<T>(T(0.25)),
-                      Transform<T>(Vec3<T>(T(2 * i), T(0), T(0))))
-                    .ok());
+    ASSERT_TRUE(
+        s.add(InstanceId(100 - i), SphereGeometry<T>(T(0.25)), Transform<T>(Vec3<T>(T(2 * i), T(0), T(0)))).ok());
   }
   SceneRaycastHit<T> hits[3];
   std::uint32_t count = 0;
-  ASSERT_TRUE(s.raycastAll(Vec3<T>(T(-1), T(0), T(0)), Vec3<T>::UnitX(), T(100), kDefaultHitFlags, 3u, hits, count).ok());
+  ASSERT_TRUE(
+      s.raycastAll(Vec3<T>(T(-1), T(0), T(0)), Vec3<T>::UnitX(), T(100), kDefaultHitFlags, 3u, hits, count).ok());
   ASSERT_EQ(count, 3u);
   EXPECT_EQ(hits[0].id, 100u);
   EXPECT_EQ(hits[1].id, 99u);
@@ -188,6 +187,36 @@ TYPED_TEST(SceneInput, ClearEmptiesAndTheSceneIsReusable) {
   EXPECT_TRUE(s.add(10, SphereGeometry<T>(T(1)), Transform<T>()).ok());
   Scene<T> moved = std::move(s);
   EXPECT_TRUE(moved.contains(10));
+}
+
+// The example of docs/core.md, "Scenes".
+TEST(SceneDocs, ExampleAnswersAsDocumented) {
+  Scene<double> scene;
+  Status s = scene.add(7, SphereGeometry<double>(0.5), Transform<double>(Vec3<double>(2, 0, 0)));
+  ASSERT_TRUE(s.ok());
+  s = scene.add(8, BoxGeometry<double>(1, 1, 1), Transform<double>(Vec3<double>(6, 0, 0)), 0x2);
+  ASSERT_TRUE(s.ok());
+  s = scene.setPose(8, Transform<double>(Vec3<double>(5, 0, 0)));
+  ASSERT_TRUE(s.ok());
+  SceneRaycastHit<double> hit;
+  bool hasHit = false;
+  s = scene.raycastClosest(Vec3<double>::Zero(), Vec3<double>::UnitX(), 100.0, hit, hasHit);
+  ASSERT_TRUE(s.ok());
+  ASSERT_TRUE(hasHit);
+  EXPECT_EQ(hit.id, 7u);
+  EXPECT_EQ(hit.hit.distance, 1.5);
+  SceneFilter onlyMask2;
+  onlyMask2.mask = 0x2;
+  std::vector<InstanceId> ids;
+  s = scene.overlapAll(SphereGeometry<double>(1.0), Transform<double>(Vec3<double>(4.5, 0, 0)), ids, onlyMask2);
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ(ids, std::vector<InstanceId>{8});
+  // The mask hides the box from a query with mask 0x1; the sphere (mask all ones) still shows.
+  SceneFilter onlyMask1;
+  onlyMask1.mask = 0x1;
+  s = scene.overlapAll(SphereGeometry<double>(3.0), Transform<double>(Vec3<double>(3.5, 0, 0)), ids, onlyMask1);
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ(ids, std::vector<InstanceId>{7});
 }
 
 }  // namespace

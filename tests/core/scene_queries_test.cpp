@@ -236,14 +236,16 @@ TYPED_TEST(SceneQueries, PlanesAreTestedByEveryQuery) {
   World<T> w;
   scenetest::populate(w, rng, lib, 50);
   w.add(1000, PlaneGeometry<T>(), Transform<T>(Vec3<T>(T(-5), T(0), T(0))));
-  w.add(1001, PlaneGeometry<T>(), Transform<T>(Vec3<T>(T(0), T(-6), T(0)), Quat<T>(Eigen::AngleAxis<T>(
-                                                                                T(1.5707963267948966), Vec3<T>::UnitZ()))));
+  w.add(
+      1001, PlaneGeometry<T>(),
+      Transform<T>(Vec3<T>(T(0), T(-6), T(0)), Quat<T>(Eigen::AngleAxis<T>(T(1.5707963267948966), Vec3<T>::UnitZ()))));
   expectRaysMatch(w, rng, 100);
   // A box crossing the first plane overlaps it.
   std::vector<InstanceId> ids;
-  ASSERT_TRUE(w.scene.overlapAll(Geometry<T>(BoxGeometry<T>(T(1), T(1), T(1))),
-                                 Transform<T>(Vec3<T>(T(-5.5), T(30), T(30))), ids)
-                  .ok());
+  ASSERT_TRUE(
+      w.scene
+          .overlapAll(Geometry<T>(BoxGeometry<T>(T(1), T(1), T(1))), Transform<T>(Vec3<T>(T(-5.5), T(30), T(30))), ids)
+          .ok());
   EXPECT_EQ(ids, std::vector<InstanceId>{1000});
   // Plane against mesh is not answered by overlap(): those pairs are left out with a Warning naming how many.
   std::vector<ScenePair> pairs;
@@ -288,7 +290,7 @@ TYPED_TEST(SceneQueries, ConcurrentQueriesAnswerAsOneThread) {
   };
   std::vector<T> serial;
   castAll(serial);
-  std::vector<std::vector<T>> results(4);
+  std::vector<std::vector<T>> results(8);  // eight threads over one scene (the TSan build checks them too)
   std::vector<std::thread> threads;
   for (auto& r : results) threads.emplace_back([&castAll, &r] { castAll(r); });
   for (auto& t : threads) t.join();

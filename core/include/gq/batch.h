@@ -64,33 +64,42 @@ struct BatchSettings {
 
 // ---- rays ---------------------------------------------------------------------------------------------------------
 
-// Closest hit of each ray (origins[i], unitDirs[i]) against one shape: raycast(..., maxHits 1). hasHit[i] says whether
-// hits[i] was written.
+// Ray i starts at origins[i] along unitDirs[i]; every ray shares maxDist and hitFlags.
+template <class T> struct RayBatch {
+  StridedArray<Vec3<T>> origins;
+  StridedArray<Vec3<T>> unitDirs;
+  T maxDist = T(0);
+  HitFlags hitFlags = kDefaultHitFlags;
+};
+
+// Closest hit of each ray against one shape: raycast(..., maxHits 1). hasHit[i] says whether hits[i] was written.
 template <class T>
-Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist, const Shape<T>& shape,
-                    const Transform<T>& pose, HitFlags hitFlags, RaycastHit<T>* hits, std::uint8_t* hasHit,
-                    Status* statuses = nullptr, const BatchSettings& settings = {}) noexcept;
+Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, RaycastHit<T>* hits,
+                    std::uint8_t* hasHit, Status* statuses = nullptr, const BatchSettings& settings = {}) noexcept;
 template <class T>
-Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist,
-                    const Geometry<T>& geometry, const Transform<T>& pose, HitFlags hitFlags, RaycastHit<T>* hits,
+Status raycastBatch(const RayBatch<T>& rays, const Geometry<T>& geometry, const Transform<T>& pose, RaycastHit<T>* hits,
                     std::uint8_t* hasHit, Status* statuses = nullptr, const BatchSettings& settings = {}) noexcept;
 
 // Closest hit of each ray in a scene: Scene::raycastClosest per ray (a Warning of one ray is its Status).
 template <class T>
-Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist, const Scene<T>& scene,
-                    HitFlags hitFlags, SceneRaycastHit<T>* hits, std::uint8_t* hasHit, Status* statuses = nullptr,
-                    const BatchSettings& settings = {}, const SceneFilter& filter = {}) noexcept;
+Status raycastBatch(const RayBatch<T>& rays, const Scene<T>& scene, SceneRaycastHit<T>* hits, std::uint8_t* hasHit,
+                    Status* statuses = nullptr, const BatchSettings& settings = {},
+                    const SceneFilter& filter = {}) noexcept;
 
-// Up to maxHitsPerRay hits of each ray in a scene (Scene::raycastAll), in two calls:
-//  - offsets == nullptr: counts[i] receives ray i's hit count; hits is not read;
-//  - offsets != nullptr: ray i's hits are written at hits[offsets[i]] ... hits[offsets[i] + its count - 1]; the
-//    caller sizes `hits` (e.g. offsets = exclusive prefix sums of the first call's counts), and counts[i] receives
-//    the count again.
+// Where raycastAllBatch writes: counts[i] receives ray i's hit count. With offsets == nullptr only the counts are
+// written (hits is not read); with offsets, ray i's hits go to hits[offsets[i]] ... hits[offsets[i] + count - 1]
+// (offsets = exclusive prefix sums of the counts of a first call, `hits` sized to their sum).
+template <class T> struct SceneHitsOutput {
+  std::uint32_t* counts = nullptr;
+  const std::uint64_t* offsets = nullptr;
+  SceneRaycastHit<T>* hits = nullptr;
+};
+
+// Up to maxHitsPerRay hits of each ray in a scene (Scene::raycastAll), sorted per ray: count, then fill.
 template <class T>
-Status raycastAllBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist,
-                       const Scene<T>& scene, HitFlags hitFlags, std::uint32_t maxHitsPerRay, std::uint32_t* counts,
-                       const std::uint64_t* offsets, SceneRaycastHit<T>* hits, Status* statuses = nullptr,
-                       const BatchSettings& settings = {}, const SceneFilter& filter = {}) noexcept;
+Status raycastAllBatch(const RayBatch<T>& rays, const Scene<T>& scene, std::uint32_t maxHitsPerRay,
+                       const SceneHitsOutput<T>& out, Status* statuses = nullptr, const BatchSettings& settings = {},
+                       const SceneFilter& filter = {}) noexcept;
 
 // ---- pose pairs -------------------------------------------------------------------------------------------------
 
@@ -105,8 +114,8 @@ Status distanceBatch(const Shape<T>& shape0, StridedArray<Transform<T>> poses0, 
                      const BatchSettings& settings = {}) noexcept;
 template <class T>
 Status penetrationBatch(const Shape<T>& shape0, StridedArray<Transform<T>> poses0, const Shape<T>& shape1,
-                        StridedArray<Transform<T>> poses1, PenetrationResult<T>* results,
-                        Status* statuses = nullptr, const BatchSettings& settings = {}) noexcept;
+                        StridedArray<Transform<T>> poses1, PenetrationResult<T>* results, Status* statuses = nullptr,
+                        const BatchSettings& settings = {}) noexcept;
 
 // ---- points -----------------------------------------------------------------------------------------------------
 

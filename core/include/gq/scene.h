@@ -119,16 +119,16 @@ template <class T> class Scene {
 
   // ---- queries (const, thread-safe) ----
   // The nearest hit within maxDist; hasHit says whether `hit` was written. Each instance is cast with maxHits 1.
-  Status raycastClosest(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, SceneRaycastHit<T>& hit,
-                        bool& hasHit, HitFlags hitFlags = kDefaultHitFlags, const SceneFilter& filter = {}) const noexcept;
+  Status raycastClosest(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, SceneRaycastHit<T>& hit, bool& hasHit,
+                        HitFlags hitFlags = kDefaultHitFlags, const SceneFilter& filter = {}) const noexcept;
   // Some hit within maxDist (the first the traversal finds), or none: hasHit is the same as raycastClosest's.
   Status raycastAny(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, SceneRaycastHit<T>& hit, bool& hasHit,
                     HitFlags hitFlags = kDefaultHitFlags, const SceneFilter& filter = {}) const noexcept;
   // The maxHits nearest hits, sorted by distance then id. Each instance is cast with maxHits (a mesh reports several
-  // hits with HitFlag::MeshMultiple in hitFlags). `hits` holds maxHits entries; hitCount receives how many were written.
-  Status raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, HitFlags hitFlags,
-                    std::uint32_t maxHits, SceneRaycastHit<T>* hits, std::uint32_t& hitCount,
-                    const SceneFilter& filter = {}) const noexcept;
+  // hits with HitFlag::MeshMultiple in hitFlags). `hits` holds maxHits entries; hitCount receives how many were
+  // written.
+  Status raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
+                    SceneRaycastHit<T>* hits, std::uint32_t& hitCount, const SceneFilter& filter = {}) const noexcept;
   // The first instance `shape` at `pose` touches when moved along unitDir up to maxDist (sweep() per instance).
   Status sweepClosest(const Vec3<T>& unitDir, T maxDist, const Shape<T>& shape, const Transform<T>& pose,
                       SceneSweepHit<T>& hit, bool& hasHit, HitFlags hitFlags = kDefaultHitFlags, T inflation = T(0),
@@ -154,8 +154,8 @@ template <class T> class Scene {
                       const SceneFilter& filter = {}) const noexcept;
   Status overlapAll(const Geometry<T>& geometry, const Transform<T>& pose, std::vector<InstanceId>& ids,
                     const SceneFilter& filter = {}) const noexcept;
-  Status nearest(const Geometry<T>& geometry, const Transform<T>& pose, T maxDistance,
-                 SceneDistanceResult<T>& result, bool& found, const SceneFilter& filter = {}) const noexcept;
+  Status nearest(const Geometry<T>& geometry, const Transform<T>& pose, T maxDistance, SceneDistanceResult<T>& result,
+                 bool& found, const SceneFilter& filter = {}) const noexcept;
 
  private:
   struct Impl;

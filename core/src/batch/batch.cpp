@@ -2,16 +2,16 @@
 // loop for one thread). Items write only their own output entries, so any schedule gives the same bytes.
 #include "gq/batch.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
 #include <atomic>
 #include <cstdint>
 #include <exception>
 #include <new>
 #include <vector>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
 
 namespace gq {
 
@@ -82,17 +82,16 @@ inline bool record(Status* statuses, std::size_t i, Status&& s) {
 }  // namespace
 
 template <class T>
-Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist, const Shape<T>& shape,
-                    const Transform<T>& pose, HitFlags hitFlags, RaycastHit<T>* hits, std::uint8_t* hasHit,
-                    Status* statuses, const BatchSettings& settings) noexcept {
-  if (Status s = checkArrays(origins, unitDirs); !s.ok()) return s;
+Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, RaycastHit<T>* hits,
+                    std::uint8_t* hasHit, Status* statuses, const BatchSettings& settings) noexcept {
+  if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
   if (shape.empty()) return emptyShape();
-  const std::size_t n = origins.count;
+  const std::size_t n = rays.origins.count;
   if (n > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
   return batchResult(runItems(n, settings, [&](std::size_t i) {
     RaycastHit<T> h;
     std::uint32_t count = 0;
-    Status s = raycast(origins[i], unitDirs[i], shape, pose, maxDist, hitFlags, 1u, &h, count);
+    Status s = raycast(rays.origins[i], rays.unitDirs[i], shape, pose, rays.maxDist, rays.hitFlags, 1u, &h, count);
     if (s.ok()) {
       hasHit[i] = count > 0 ? 1 : 0;
       if (count > 0) hits[i] = h;
@@ -102,25 +101,23 @@ Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDir
 }
 
 template <class T>
-Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist,
-                    const Geometry<T>& geometry, const Transform<T>& pose, HitFlags hitFlags, RaycastHit<T>* hits,
+Status raycastBatch(const RayBatch<T>& rays, const Geometry<T>& geometry, const Transform<T>& pose, RaycastHit<T>* hits,
                     std::uint8_t* hasHit, Status* statuses, const BatchSettings& settings) noexcept {
   Shape<T> shape;
   if (Status s = Shape<T>::make(geometry, shape); !s.ok()) return s;
-  return raycastBatch(origins, unitDirs, maxDist, shape, pose, hitFlags, hits, hasHit, statuses, settings);
+  return raycastBatch(rays, shape, pose, hits, hasHit, statuses, settings);
 }
 
 template <class T>
-Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist, const Scene<T>& scene,
-                    HitFlags hitFlags, SceneRaycastHit<T>* hits, std::uint8_t* hasHit, Status* statuses,
-                    const BatchSettings& settings, const SceneFilter& filter) noexcept {
-  if (Status s = checkArrays(origins, unitDirs); !s.ok()) return s;
-  const std::size_t n = origins.count;
+Status raycastBatch(const RayBatch<T>& rays, const Scene<T>& scene, SceneRaycastHit<T>* hits, std::uint8_t* hasHit,
+                    Status* statuses, const BatchSettings& settings, const SceneFilter& filter) noexcept {
+  if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
+  const std::size_t n = rays.origins.count;
   if (n > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
   return batchResult(runItems(n, settings, [&](std::size_t i) {
     SceneRaycastHit<T> h;
     bool has = false;
-    Status s = scene.raycastClosest(origins[i], unitDirs[i], maxDist, h, has, hitFlags, filter);
+    Status s = scene.raycastClosest(rays.origins[i], rays.unitDirs[i], rays.maxDist, h, has, rays.hitFlags, filter);
     if (s.ok()) {
       hasHit[i] = has ? 1 : 0;
       if (has) hits[i] = h;
@@ -130,32 +127,37 @@ Status raycastBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDir
 }
 
 template <class T>
-Status raycastAllBatch(StridedArray<Vec3<T>> origins, StridedArray<Vec3<T>> unitDirs, T maxDist,
-                       const Scene<T>& scene, HitFlags hitFlags, std::uint32_t maxHitsPerRay, std::uint32_t* counts,
-                       const std::uint64_t* offsets, SceneRaycastHit<T>* hits, Status* statuses,
-                       const BatchSettings& settings, const SceneFilter& filter) noexcept {
-  if (Status s = checkArrays(origins, unitDirs); !s.ok()) return s;
+Status raycastAllBatch(const RayBatch<T>& rays, const Scene<T>& scene, std::uint32_t maxHitsPerRay,
+                       const SceneHitsOutput<T>& out, Status* statuses, const BatchSettings& settings,
+                       const SceneFilter& filter) noexcept {
+  if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
   if (maxHitsPerRay == 0) return Status::invalid("maxHitsPerRay is 0");
-  const std::size_t n = origins.count;
-  if (n > 0 && counts == nullptr) return nullOutput();
-  if (n > 0 && offsets != nullptr && hits == nullptr) return nullOutput();
+  const std::size_t n = rays.origins.count;
+  if (n > 0 && out.counts == nullptr) return nullOutput();
+  if (n > 0 && out.offsets != nullptr && out.hits == nullptr) return nullOutput();
+  constexpr std::uint32_t kLocal = 8;
   return batchResult(runItems(n, settings, [&](std::size_t i) {
-    // The hits go straight to the caller's array in the fill pass; the count pass uses a small local buffer.
-    SceneRaycastHit<T> local[8];
-    SceneRaycastHit<T>* out = offsets ? hits + offsets[i] : local;
+    // The fill pass writes straight into the caller's array; the count pass into a local buffer.
     std::uint32_t count = 0;
     Status s;
-    if (offsets == nullptr && maxHitsPerRay > 8) {
+    auto cast = [&](SceneRaycastHit<T>* dst) {
+      return scene.raycastAll(rays.origins[i], rays.unitDirs[i], rays.maxDist, rays.hitFlags, maxHitsPerRay, dst, count,
+                              filter);
+    };
+    if (out.offsets != nullptr) {
+      s = cast(out.hits + out.offsets[i]);
+    } else if (maxHitsPerRay <= kLocal) {
+      SceneRaycastHit<T> local[kLocal];
+      s = cast(local);
+    } else {
       try {
         std::vector<SceneRaycastHit<T>> buffer(maxHitsPerRay);
-        s = scene.raycastAll(origins[i], unitDirs[i], maxDist, hitFlags, maxHitsPerRay, buffer.data(), count, filter);
+        s = cast(buffer.data());
       } catch (const std::bad_alloc&) {
         s = Status::internal("out of memory");
       }
-    } else {
-      s = scene.raycastAll(origins[i], unitDirs[i], maxDist, hitFlags, maxHitsPerRay, out, count, filter);
     }
-    if (s.ok()) counts[i] = count;
+    if (s.ok()) out.counts[i] = count;
     return record(statuses, i, std::move(s));
   }));
 }
@@ -214,31 +216,43 @@ Status pointDistanceBatch(StridedArray<Vec3<T>> points, const Shape<T>& shape, c
   }));
 }
 
-#define GQ_INSTANTIATE_BATCH(T)                                                                                      \
-  template Status raycastBatch<T>(StridedArray<Vec3<T>>, StridedArray<Vec3<T>>, T, const Shape<T>&,                  \
-                                  const Transform<T>&, HitFlags, RaycastHit<T>*, std::uint8_t*, Status*,             \
-                                  const BatchSettings&) noexcept;                                                    \
-  template Status raycastBatch<T>(StridedArray<Vec3<T>>, StridedArray<Vec3<T>>, T, const Geometry<T>&,               \
-                                  const Transform<T>&, HitFlags, RaycastHit<T>*, std::uint8_t*, Status*,             \
-                                  const BatchSettings&) noexcept;                                                    \
-  template Status raycastBatch<T>(StridedArray<Vec3<T>>, StridedArray<Vec3<T>>, T, const Scene<T>&, HitFlags,        \
-                                  SceneRaycastHit<T>*, std::uint8_t*, Status*, const BatchSettings&,                 \
-                                  const SceneFilter&) noexcept;                                                      \
-  template Status raycastAllBatch<T>(StridedArray<Vec3<T>>, StridedArray<Vec3<T>>, T, const Scene<T>&, HitFlags,     \
-                                     std::uint32_t, std::uint32_t*, const std::uint64_t*, SceneRaycastHit<T>*,       \
-                                     Status*, const BatchSettings&, const SceneFilter&) noexcept;                    \
-  template Status overlapBatch<T>(const Shape<T>&, StridedArray<Transform<T>>, const Shape<T>&,                      \
-                                  StridedArray<Transform<T>>, std::uint8_t*, Status*, const BatchSettings&) noexcept; \
-  template Status distanceBatch<T>(const Shape<T>&, StridedArray<Transform<T>>, const Shape<T>&,                     \
-                                   StridedArray<Transform<T>>, DistanceResult<T>*, Status*,                          \
-                                   const BatchSettings&) noexcept;                                                   \
-  template Status penetrationBatch<T>(const Shape<T>&, StridedArray<Transform<T>>, const Shape<T>&,                  \
-                                      StridedArray<Transform<T>>, PenetrationResult<T>*, Status*,                    \
-                                      const BatchSettings&) noexcept;                                                \
-  template Status pointDistanceBatch<T>(StridedArray<Vec3<T>>, const Shape<T>&, const Transform<T>&,                 \
-                                        PointDistanceResult<T>*, Status*, const BatchSettings&) noexcept;
-
-GQ_INSTANTIATE_BATCH(float)
-GQ_INSTANTIATE_BATCH(double)
+template Status raycastBatch(const RayBatch<float>&, const Shape<float>&, const Transform<float>&, RaycastHit<float>*,
+                             std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<float>&, const Geometry<float>&, const Transform<float>&,
+                             RaycastHit<float>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<float>&, const Scene<float>&, SceneRaycastHit<float>*, std::uint8_t*,
+                             Status*, const BatchSettings&, const SceneFilter&) noexcept;
+template Status raycastAllBatch(const RayBatch<float>&, const Scene<float>&, std::uint32_t,
+                                const SceneHitsOutput<float>&, Status*, const BatchSettings&,
+                                const SceneFilter&) noexcept;
+template Status overlapBatch(const Shape<float>&, StridedArray<Transform<float>>, const Shape<float>&,
+                             StridedArray<Transform<float>>, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status distanceBatch(const Shape<float>&, StridedArray<Transform<float>>, const Shape<float>&,
+                              StridedArray<Transform<float>>, DistanceResult<float>*, Status*,
+                              const BatchSettings&) noexcept;
+template Status penetrationBatch(const Shape<float>&, StridedArray<Transform<float>>, const Shape<float>&,
+                                 StridedArray<Transform<float>>, PenetrationResult<float>*, Status*,
+                                 const BatchSettings&) noexcept;
+template Status pointDistanceBatch(StridedArray<Vec3<float>>, const Shape<float>&, const Transform<float>&,
+                                   PointDistanceResult<float>*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<double>&, const Shape<double>&, const Transform<double>&,
+                             RaycastHit<double>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<double>&, const Geometry<double>&, const Transform<double>&,
+                             RaycastHit<double>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<double>&, const Scene<double>&, SceneRaycastHit<double>*, std::uint8_t*,
+                             Status*, const BatchSettings&, const SceneFilter&) noexcept;
+template Status raycastAllBatch(const RayBatch<double>&, const Scene<double>&, std::uint32_t,
+                                const SceneHitsOutput<double>&, Status*, const BatchSettings&,
+                                const SceneFilter&) noexcept;
+template Status overlapBatch(const Shape<double>&, StridedArray<Transform<double>>, const Shape<double>&,
+                             StridedArray<Transform<double>>, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status distanceBatch(const Shape<double>&, StridedArray<Transform<double>>, const Shape<double>&,
+                              StridedArray<Transform<double>>, DistanceResult<double>*, Status*,
+                              const BatchSettings&) noexcept;
+template Status penetrationBatch(const Shape<double>&, StridedArray<Transform<double>>, const Shape<double>&,
+                                 StridedArray<Transform<double>>, PenetrationResult<double>*, Status*,
+                                 const BatchSettings&) noexcept;
+template Status pointDistanceBatch(StridedArray<Vec3<double>>, const Shape<double>&, const Transform<double>&,
+                                   PointDistanceResult<double>*, Status*, const BatchSettings&) noexcept;
 
 }  // namespace gq

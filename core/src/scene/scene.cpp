@@ -84,8 +84,9 @@ bool isInputError(const Status& s) { return s.code == StatusCode::InvalidArgumen
 
 Status skippedWarning(std::uint32_t skipped) {
   if (skipped == 0) return {};
-  return Status::warning("some instances were left out: their single query does not answer this pair (unsupported "
-                         "or not converged); index = how many")
+  return Status::warning(
+             "some instances were left out: their single query does not answer this pair (unsupported "
+             "or not converged); index = how many")
       .withIndex(skipped);
 }
 
@@ -116,11 +117,8 @@ template <class T> struct Scene<T>::Impl {
     return it == indexOf.end() ? nullptr : &instances[it->second];
   }
 
-  void removeUnbounded(std::uint32_t index) {
-    unbounded.erase(std::find(unbounded.begin(), unbounded.end(), index));
-  }
+  void removeUnbounded(std::uint32_t index) { unbounded.erase(std::find(unbounded.begin(), unbounded.end(), index)); }
 
-  // Calls visit(instanceIndex) for every instance whose box passes `boxTest` (and every unbounded one).
   // The walkers below return false when memory ran out (a tree deeper than the inline stack, or a visitor's own
   // allocation): the caller reports it and writes nothing.
   template <class BoxTest, class Visit> bool forBoxes(const BoxTest& boxTest, const Visit& visit) const noexcept {
@@ -407,26 +405,26 @@ Status Scene<T>::raycastClosest(const Vec3<T>& origin, const Vec3<T>& unitDir, T
   if (impl_) {
     const Impl& m = *impl_;
     if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
-      const auto& inst = m.instances[i];
-      if (!passes(filter, inst.mask, inst.id)) return maxDist;
-      RaycastHit<T> h;
-      std::uint32_t n = 0;
-      const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, 1u, &h, n);
-      if (!s.ok()) {
-        if (isInputError(s)) {
-          failure = s;
-          return T(-1);
-        }
-        ++skipped;
-        return maxDist;
-      }
-      if (n > 0 && (!found || hitBefore(h.distance, inst.id, best.hit.distance, best.id))) {
-        best.id = inst.id;
-        best.hit = h;
-        found = true;
-      }
-      return found ? best.hit.distance : maxDist;
-    })) {
+          const auto& inst = m.instances[i];
+          if (!passes(filter, inst.mask, inst.id)) return maxDist;
+          RaycastHit<T> h;
+          std::uint32_t n = 0;
+          const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, 1u, &h, n);
+          if (!s.ok()) {
+            if (isInputError(s)) {
+              failure = s;
+              return T(-1);
+            }
+            ++skipped;
+            return maxDist;
+          }
+          if (n > 0 && (!found || hitBefore(h.distance, inst.id, best.hit.distance, best.id))) {
+            best.id = inst.id;
+            best.hit = h;
+            found = true;
+          }
+          return found ? best.hit.distance : maxDist;
+        })) {
       return outOfMemory();
     }
   }
@@ -447,25 +445,25 @@ Status Scene<T>::raycastAny(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
   if (impl_) {
     const Impl& m = *impl_;
     if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
-      const auto& inst = m.instances[i];
-      if (!passes(filter, inst.mask, inst.id)) return maxDist;
-      RaycastHit<T> h;
-      std::uint32_t n = 0;
-      const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, 1u, &h, n);
-      if (!s.ok()) {
-        if (isInputError(s)) {
-          failure = s;
+          const auto& inst = m.instances[i];
+          if (!passes(filter, inst.mask, inst.id)) return maxDist;
+          RaycastHit<T> h;
+          std::uint32_t n = 0;
+          const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, 1u, &h, n);
+          if (!s.ok()) {
+            if (isInputError(s)) {
+              failure = s;
+              return T(-1);
+            }
+            ++skipped;
+            return maxDist;
+          }
+          if (n == 0) return maxDist;
+          any.id = inst.id;
+          any.hit = h;
+          found = true;
           return T(-1);
-        }
-        ++skipped;
-        return maxDist;
-      }
-      if (n == 0) return maxDist;
-      any.id = inst.id;
-      any.hit = h;
-      found = true;
-      return T(-1);
-    })) {
+        })) {
       return outOfMemory();
     }
   }
@@ -494,32 +492,33 @@ Status Scene<T>::raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
     if (impl_) {
       const Impl& m = *impl_;
       if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
-        const auto& inst = m.instances[i];
-        auto cutoff = [&] { return best.size() == maxHits ? best.back().hit.distance : maxDist; };
-        if (!passes(filter, inst.mask, inst.id)) return cutoff();
-        std::uint32_t n = 0;
-        const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, maxHits, local.data(), n);
-        if (!s.ok()) {
-          if (isInputError(s)) {
-            failure = s;
-            return T(-1);
-          }
-          ++skipped;
-          return cutoff();
-        }
-        for (std::uint32_t k = 0; k < n; ++k) {
-          const SceneRaycastHit<T> h{inst.id, local[k]};
-          const auto pos = std::upper_bound(best.begin(), best.end(), h, [](const auto& a, const auto& b) {
-            return hitBefore(a.hit.distance, a.id, b.hit.distance, b.id);
-          });
-          if (best.size() == maxHits) {
-            if (pos == best.end()) continue;
-            best.pop_back();
-          }
-          best.insert(pos, h);
-        }
-        return cutoff();
-      })) {
+            const auto& inst = m.instances[i];
+            auto cutoff = [&] { return best.size() == maxHits ? best.back().hit.distance : maxDist; };
+            if (!passes(filter, inst.mask, inst.id)) return cutoff();
+            std::uint32_t n = 0;
+            const Status s =
+                raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, maxHits, local.data(), n);
+            if (!s.ok()) {
+              if (isInputError(s)) {
+                failure = s;
+                return T(-1);
+              }
+              ++skipped;
+              return cutoff();
+            }
+            for (std::uint32_t k = 0; k < n; ++k) {
+              const SceneRaycastHit<T> h{inst.id, local[k]};
+              const auto pos = std::upper_bound(best.begin(), best.end(), h, [](const auto& a, const auto& b) {
+                return hitBefore(a.hit.distance, a.id, b.hit.distance, b.id);
+              });
+              if (best.size() == maxHits) {
+                if (pos == best.end()) continue;
+                best.pop_back();
+              }
+              best.insert(pos, h);
+            }
+            return cutoff();
+          })) {
         return outOfMemory();
       }
     }
@@ -553,27 +552,27 @@ Status Scene<T>::sweepClosest(const Vec3<T>& unitDir, T maxDist, const Shape<T>&
     const Impl& m = *impl_;
     const T travel = std::min(maxDist, T(tol::kMaxSweepDistance));
     if (!m.forRay(qb.center(), unitDir, travel, qb.extents(), [&](std::uint32_t i) -> T {
-      const auto& inst = m.instances[i];
-      if (!passes(filter, inst.mask, inst.id)) return travel;
-      SweepHit<T> h;
-      bool has = false;
-      const Status s = sweep(unitDir, maxDist, shape, pose, inst.shape, inst.pose, h, has, hitFlags, inflation);
-      if (!s.ok()) {
-        if (isInputError(s)) {
-          failure = s;
-          return T(-1);
-        }
-        ++skipped;
-        return travel;
-      }
-      if (has && (!found || hitBefore(h.distance, inst.id, best.hit.distance, best.id))) {
-        best.id = inst.id;
-        best.hit = h;
-        found = true;
-      }
-      // A hit with initial overlap (distance 0 or -depth) ends the search only at its own distance.
-      return found ? std::max(best.hit.distance, T(0)) : travel;
-    })) {
+          const auto& inst = m.instances[i];
+          if (!passes(filter, inst.mask, inst.id)) return travel;
+          SweepHit<T> h;
+          bool has = false;
+          const Status s = sweep(unitDir, maxDist, shape, pose, inst.shape, inst.pose, h, has, hitFlags, inflation);
+          if (!s.ok()) {
+            if (isInputError(s)) {
+              failure = s;
+              return T(-1);
+            }
+            ++skipped;
+            return travel;
+          }
+          if (has && (!found || hitBefore(h.distance, inst.id, best.hit.distance, best.id))) {
+            best.id = inst.id;
+            best.hit = h;
+            found = true;
+          }
+          // A hit with initial overlap (distance 0 or -depth) ends the search only at its own distance.
+          return found ? std::max(best.hit.distance, T(0)) : travel;
+        })) {
       return outOfMemory();
     }
   } else if (impl_ && !impl_->instances.empty()) {
@@ -599,19 +598,21 @@ Status Scene<T>::overlapAll(const Shape<T>& shape, const Transform<T>& pose, std
     if (impl_) {
       const Impl& m = *impl_;
       if (!m.forBoxes([&](const Bounds3<T>& b) { return failure.ok() && b.overlaps(qb); },
-                 [&](std::uint32_t i) {
-                   if (!failure.ok()) return;
-                   const auto& inst = m.instances[i];
-                   if (!passes(filter, inst.mask, inst.id)) return;
-                   bool hitting = false;
-                   const Status s = overlap(shape, pose, inst.shape, inst.pose, hitting);
-                   if (!s.ok()) {
-                     if (isInputError(s)) failure = s;
-                     else ++skipped;
-                     return;
-                   }
-                   if (hitting) out.push_back(inst.id);
-                 })) {
+                      [&](std::uint32_t i) {
+                        if (!failure.ok()) return;
+                        const auto& inst = m.instances[i];
+                        if (!passes(filter, inst.mask, inst.id)) return;
+                        bool hitting = false;
+                        const Status s = overlap(shape, pose, inst.shape, inst.pose, hitting);
+                        if (!s.ok()) {
+                          if (isInputError(s))
+                            failure = s;
+                          else
+                            ++skipped;
+                          return;
+                        }
+                        if (hitting) out.push_back(inst.id);
+                      })) {
         return outOfMemory();
       }
     }
@@ -625,8 +626,8 @@ Status Scene<T>::overlapAll(const Shape<T>& shape, const Transform<T>& pose, std
 }
 
 template <class T>
-Status Scene<T>::nearest(const Shape<T>& shape, const Transform<T>& pose, T maxDistance,
-                         SceneDistanceResult<T>& result, bool& found, const SceneFilter& filter) const noexcept {
+Status Scene<T>::nearest(const Shape<T>& shape, const Transform<T>& pose, T maxDistance, SceneDistanceResult<T>& result,
+                         bool& found, const SceneFilter& filter) const noexcept {
   if (shape.empty()) return Status::invalid("the shape is empty (not made by Shape::make)");
   if (Status s = detail::checkPose(pose, detail::kPoseField); !s.ok()) return s;
   if (std::isnan(maxDistance)) return Status::invalid("maxDistance is NaN");
@@ -641,38 +642,40 @@ Status Scene<T>::nearest(const Shape<T>& shape, const Transform<T>& pose, T maxD
     const Impl& m = *impl_;
     // Boxes farther than the bound cannot hold a nearer instance; while the bound is <= 0 (penetration), every box
     // touching the query's may hold a deeper one.
-    if (!m.forBoxes(
-        [&](const Bounds3<T>& b) { return failure.ok() && !(boxDistance(b, qb) > std::max(bound, T(0))); },
-        [&](std::uint32_t i) {
-          if (!failure.ok()) return;
-          const auto& inst = m.instances[i];
-          if (!passes(filter, inst.mask, inst.id)) return;
-          DistanceResult<T> r;
-          bool beyond = false;
-          // distanceWithin proves most far pairs beyond the best so far cheaply; one step above it keeps a pair at
-          // exactly that distance (a tie the smaller id may win).
-          const T within = std::isfinite(bound) ? std::nextafter(bound, std::numeric_limits<T>::infinity()) : bound;
-          const Status s = distanceWithin(r, beyond, within, shape, pose, inst.shape, inst.pose);
-          if (!s.ok()) {
-            if (isInputError(s)) failure = s;
-            else ++skipped;
-            return;
-          }
-          if (beyond || r.distance > bound) return;
-          // A candidate: its answer is distance()'s (distanceWithin's may differ in the last bits where its search
-          // stopped early), so the nearest is the same whichever instances were asked before it.
-          if (Status e = distance(r, shape, pose, inst.shape, inst.pose); !e.ok()) {
-            ++skipped;
-            return;
-          }
-          if (r.distance > bound) return;
-          if (!any || hitBefore(r.distance, inst.id, best.result.distance, best.id)) {
-            best.id = inst.id;
-            best.result = r;
-            any = true;
-            bound = r.distance;
-          }
-        })) {
+    if (!m.forBoxes([&](const Bounds3<T>& b) { return failure.ok() && !(boxDistance(b, qb) > std::max(bound, T(0))); },
+                    [&](std::uint32_t i) {
+                      if (!failure.ok()) return;
+                      const auto& inst = m.instances[i];
+                      if (!passes(filter, inst.mask, inst.id)) return;
+                      DistanceResult<T> r;
+                      bool beyond = false;
+                      // distanceWithin proves most far pairs beyond the best so far cheaply; one step above it keeps a
+                      // pair at exactly that distance (a tie the smaller id may win).
+                      const T within =
+                          std::isfinite(bound) ? std::nextafter(bound, std::numeric_limits<T>::infinity()) : bound;
+                      const Status s = distanceWithin(r, beyond, within, shape, pose, inst.shape, inst.pose);
+                      if (!s.ok()) {
+                        if (isInputError(s))
+                          failure = s;
+                        else
+                          ++skipped;
+                        return;
+                      }
+                      if (beyond || r.distance > bound) return;
+                      // A candidate: its answer is distance()'s (distanceWithin's may differ in the last bits where its
+                      // search stopped early), so the nearest is the same whichever instances were asked before it.
+                      if (Status e = distance(r, shape, pose, inst.shape, inst.pose); !e.ok()) {
+                        ++skipped;
+                        return;
+                      }
+                      if (r.distance > bound) return;
+                      if (!any || hitBefore(r.distance, inst.id, best.result.distance, best.id)) {
+                        best.id = inst.id;
+                        best.result = r;
+                        any = true;
+                        bound = r.distance;
+                      }
+                    })) {
       return outOfMemory();
     }
   }
@@ -683,9 +686,9 @@ Status Scene<T>::nearest(const Shape<T>& shape, const Transform<T>& pose, T maxD
 }
 
 template <class T>
-Status Scene<T>::sweepClosest(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geometry,
-                              const Transform<T>& pose, SceneSweepHit<T>& hit, bool& hasHit, HitFlags hitFlags,
-                              T inflation, const SceneFilter& filter) const noexcept {
+Status Scene<T>::sweepClosest(const Vec3<T>& unitDir, T maxDist, const Geometry<T>& geometry, const Transform<T>& pose,
+                              SceneSweepHit<T>& hit, bool& hasHit, HitFlags hitFlags, T inflation,
+                              const SceneFilter& filter) const noexcept {
   Shape<T> shape;
   if (Status s = Shape<T>::make(geometry, shape); !s.ok()) return s;
   return sweepClosest(unitDir, maxDist, shape, pose, hit, hasHit, hitFlags, inflation, filter);
@@ -715,8 +718,8 @@ namespace {
 // each unordered pair once.
 template <class T, class Inst>
 void candidatePairs(const AabbTree<T>& ta, const std::vector<std::uint32_t>& ua, const std::vector<Inst>& ia,
-                    const AabbTree<T>& tb, const std::vector<std::uint32_t>& ub, const std::vector<Inst>& ib,
-                    bool self, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
+                    const AabbTree<T>& tb, const std::vector<std::uint32_t>& ub, const std::vector<Inst>& ib, bool self,
+                    std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
   using Tree = AabbTree<T>;
   // Unbounded instances against everything.
   for (std::uint32_t u : ua) {
@@ -787,8 +790,9 @@ Status Scene<T>::overlappingPairs(std::vector<ScenePair>& pairs, const ScenePair
         if (hitting) out.push_back({a->id, b->id});
       }
     }
-    std::sort(out.begin(), out.end(),
-              [](const ScenePair& x, const ScenePair& y) { return x.id0 < y.id0 || (x.id0 == y.id0 && x.id1 < y.id1); });
+    std::sort(out.begin(), out.end(), [](const ScenePair& x, const ScenePair& y) {
+      return x.id0 < y.id0 || (x.id0 == y.id0 && x.id1 < y.id1);
+    });
   } catch (const std::bad_alloc&) {
     return outOfMemory();
   }
@@ -821,8 +825,9 @@ Status Scene<T>::overlappingPairs(const Scene& other, std::vector<ScenePair>& pa
         if (hitting) out.push_back({a.id, b.id});
       }
     }
-    std::sort(out.begin(), out.end(),
-              [](const ScenePair& x, const ScenePair& y) { return x.id0 < y.id0 || (x.id0 == y.id0 && x.id1 < y.id1); });
+    std::sort(out.begin(), out.end(), [](const ScenePair& x, const ScenePair& y) {
+      return x.id0 < y.id0 || (x.id0 == y.id0 && x.id1 < y.id1);
+    });
   } catch (const std::bad_alloc&) {
     return outOfMemory();
   }
