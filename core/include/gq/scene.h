@@ -3,9 +3,9 @@
 // tree, with the spec's queries over all of them at once (raycast, sweep, overlap, distance, overlapping pairs).
 //
 // Every instance is a prepared shape (gq/shape.h): add() validates a Geometry<T> once (validateGeometry's rules and
-// Status) or takes a Shape<T> as made. Its tree box is computeGeomBounds at its pose (default inflation), so the
-// tree never prunes an instance a query touches. Instances whose box is unbounded (planes) are kept beside the
-// tree and tested by every query.
+// Status) or takes a Shape<T> as made. Its tree box is computeGeomBounds at its pose (default inflation) padded by a
+// few ulps, so the tree never prunes an instance a query touches. Instances whose box is unbounded (planes) are kept
+// beside the tree and tested by every query.
 //
 // Each scene query answers what the loop over all instances through the single queries of gq/shape.h answers, with
 // the same per-instance calls and arguments: the tree only skips instances whose boxes prove they cannot change the
@@ -109,6 +109,7 @@ template <class T> class Scene {
   std::size_t size() const noexcept;
   bool contains(InstanceId id) const noexcept;
   Status pose(InstanceId id, Transform<T>& out) const noexcept;
+  // The instance's tree box (see above).
   Status bounds(InstanceId id, Bounds3<T>& out) const noexcept;
   // Every id, ascending.
   Status ids(std::vector<InstanceId>& out) const noexcept;

@@ -48,24 +48,37 @@ template <class E> class SmallStack {
   std::vector<E> heap_;
 };
 
-// Entry parameter of the ray o + t d (t in [0, tMax]) into box b; false when it misses.
-template <class T> bool rayEntersBox(const Vec3<T>& o, const Vec3<T>& d, const Bounds3<T>& b, T tMax, T& tEnter) {
+// A ray prepared for slab tests: its origin and the reciprocals of its direction (infinite for a zero component).
+template <class T> struct RaySlabs {
+  Vec3<T> origin;
+  Vec3<T> inverse;
+  RaySlabs(const Vec3<T>& o, const Vec3<T>& d) : origin(o), inverse(d.cwiseInverse()) {}
+};
+
+// Entry parameter of the ray into the box [lo, hi] within [0, tMax]; false when it misses. A zero direction
+// component gives infinite slab parameters (the origin outside that slab misses, inside it passes) or NaN for an
+// origin exactly on a slab plane, which the comparisons ignore (the origin is inside that slab).
+template <class T>
+inline bool rayEntersBox(const RaySlabs<T>& r, const Vec3<T>& lo, const Vec3<T>& hi, T tMax, T& tEnter) {
   T t0 = T(0), t1 = tMax;
   for (int a = 0; a < 3; ++a) {
-    if (d[a] == T(0)) {
-      if (o[a] < b.min[a] || o[a] > b.max[a]) return false;
-      continue;
-    }
-    const T inv = T(1) / d[a];
-    T tn = (b.min[a] - o[a]) * inv;
-    T tf = (b.max[a] - o[a]) * inv;
-    if (tn > tf) std::swap(tn, tf);
-    t0 = std::max(t0, tn);
-    t1 = std::min(t1, tf);
-    if (t0 > t1) return false;
+    const T ta = (lo[a] - r.origin[a]) * r.inverse[a];
+    const T tb = (hi[a] - r.origin[a]) * r.inverse[a];
+    const T tn = ta < tb ? ta : tb;
+    const T tf = ta < tb ? tb : ta;
+    if (tn > t0) t0 = tn;
+    if (tf < t1) t1 = tf;
   }
   tEnter = t0;
-  return true;
+  return t0 <= t1;
+}
+
+// A leaf's box: computeGeomBounds' box padded by a few ulps of its coordinates, so that the rounding of a slab test
+// never loses a touch (a flat mesh has a box of zero thickness, which the bounds' inflation does not widen).
+template <class T> Bounds3<T> paddedBox(const Bounds3<T>& b) {
+  const T scale = std::max(b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff());
+  const T pad = scale * T(8) * std::numeric_limits<T>::epsilon() + std::numeric_limits<T>::min();
+  return Bounds3<T>{b.min.array() - pad, b.max.array() + pad};
 }
 
 template <class T> T boxDistance(const Bounds3<T>& a, const Bounds3<T>& b) {
@@ -172,8 +185,12 @@ template <class T> struct Scene<T>::Impl {
     };
     SmallStack<Entry> stack;
     T t0;
-    auto grown = [&](const Bounds3<T>& b) { return Bounds3<T>{b.min - grow, b.max + grow}; };
-    if (!rayEntersBox(o, d, grown(tree.node(tree.root()).box), limit, t0)) return;
+    const RaySlabs<T> ray(o, d);
+    auto enters = [&](std::int32_t node, T& t) {
+      const Bounds3<T>& b = tree.node(node).box;
+      return rayEntersBox(ray, Vec3<T>(b.min - grow), Vec3<T>(b.max + grow), limit, t);
+    };
+    if (!enters(tree.root(), t0)) return;
     stack.push({tree.root(), t0});
     while (!stack.empty()) {
       const Entry e = stack.pop();
@@ -185,8 +202,8 @@ template <class T> struct Scene<T>::Impl {
         continue;
       }
       T tl, tr;
-      const bool hl = rayEntersBox(o, d, grown(tree.node(n.left).box), limit, tl);
-      const bool hr = rayEntersBox(o, d, grown(tree.node(n.right).box), limit, tr);
+      const bool hl = enters(n.left, tl);
+      const bool hr = enters(n.right, tr);
       if (hl && hr) {  // the nearer one on top
         if (tl <= tr) {
           stack.push({n.right, tr});
@@ -235,6 +252,7 @@ Status Scene<T>::add(InstanceId id, const Shape<T>& shape, const Transform<T>& p
   if (impl_->indexOf.count(id)) return Status::invalid("an instance with this id is already in the scene");
   Bounds3<T> box;
   if (Status s = computeGeomBounds(box, shape, pose); !s.ok()) return s;
+  box = paddedBox(box);
   Impl& m = *impl_;
   try {
     // Everything that allocates happens before the scene changes.
@@ -298,6 +316,7 @@ template <class T> Status Scene<T>::setPose(InstanceId id, const Transform<T>& p
   auto& inst = m.instances[it->second];
   Bounds3<T> box;
   if (Status s = computeGeomBounds(box, inst.shape, pose); !s.ok()) return s;
+  box = paddedBox(box);
   // A shape's boundedness does not depend on its pose (planes are unbounded everywhere); a box that overflows
   // at a far pose stays where it is and the move is refused.
   if (Impl::isBounded(box) != (inst.leaf != AabbTree<T>::kNull)) {
@@ -544,6 +563,7 @@ Status Scene<T>::sweepClosest(const Vec3<T>& unitDir, T maxDist, const Shape<T>&
   if (!std::isfinite(inflation) || inflation < T(0)) return Status::invalid("inflation is negative or not finite");
   Bounds3<T> qb;
   if (Status s = computeGeomBounds(qb, shape, pose, inflation); !s.ok()) return s;
+  qb = paddedBox(qb);
   SceneSweepHit<T> best;
   bool found = false;
   Status failure;
@@ -591,6 +611,7 @@ Status Scene<T>::overlapAll(const Shape<T>& shape, const Transform<T>& pose, std
   if (Status s = detail::checkPose(pose, detail::kPoseField); !s.ok()) return s;
   Bounds3<T> qb;
   if (Status s = computeGeomBounds(qb, shape, pose); !s.ok()) return s;
+  qb = paddedBox(qb);
   Status failure;
   std::uint32_t skipped = 0;
   std::vector<InstanceId> out;
@@ -633,6 +654,7 @@ Status Scene<T>::nearest(const Shape<T>& shape, const Transform<T>& pose, T maxD
   if (std::isnan(maxDistance)) return Status::invalid("maxDistance is NaN");
   Bounds3<T> qb;
   if (Status s = computeGeomBounds(qb, shape, pose); !s.ok()) return s;
+  qb = paddedBox(qb);
   SceneDistanceResult<T> best;
   bool any = false;
   T bound = maxDistance;  // the best distance so far, or the caller's bound
