@@ -84,6 +84,7 @@ const Fixture& fixture() {
       out->geometries.push_back(g);
       out->poses.push_back(pose);
     }
+    out->scene.rebuild();  // top down, as a user does after adding many instances
     for (int i = 0; i < kRays; ++i) {
       const T x = u(gen), y = u(gen), z = u(gen);
       const T dx = n(gen), dy = n(gen), dz = n(gen);

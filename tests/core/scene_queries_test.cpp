@@ -126,6 +126,8 @@ template <class T> void runStages(std::uint64_t seed, bool masks, const SceneFil
   expectRaysMatch(w, rng, 150, filter);
   expectShapeQueriesMatch(w, rng, lib, 60, filter);
   expectPairsMatch(w);
+  w.scene.rebuild();  // the moves below refit a tree built top down
+  EXPECT_GE(w.scene.rebuildCount(), 1u);
 
   std::vector<InstanceId> ids;
   for (const auto& [id, it] : w.items) ids.push_back(id);

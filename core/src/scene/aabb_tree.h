@@ -5,9 +5,10 @@
 // refits its ancestors. The summed surface area of the inner boxes measures the tree's quality: insertions and
 // removals move a baseline along with it, refits do not, so the ratio says how much moves alone degraded the tree.
 // rebuild() keeps every leaf's index (items keep their leaf) and builds new inner nodes top down, splitting the
-// longest axis of the leaves' centres at the median.
+// longest axis of the leaves' centres where a binned surface-area heuristic is lowest.
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "gq/math.h"
@@ -215,6 +216,71 @@ template <class T> class AabbTree {
     }
   }
 
+  // Splits leaves[begin, end) along `axis` where the surface-area heuristic is lowest over kBins bins of the
+  // centres (the count-weighted areas of the two sides); the median when the centres coincide or no split beats it.
+  // Ties are broken by leaf index, so the same leaves always give the same tree.
+  std::size_t splitBySah(std::vector<std::int32_t>& leaves, std::size_t begin, std::size_t end, int axis, T lo,
+                         T spread) {
+    constexpr int kBins = 16;
+    const std::size_t n = end - begin;
+    const auto centre = [&](std::int32_t leaf) { return nodes_[std::size_t(leaf)].box.center()[axis]; };
+    auto median = [&] {
+      const std::size_t mid = begin + n / 2;
+      std::nth_element(leaves.begin() + std::ptrdiff_t(begin), leaves.begin() + std::ptrdiff_t(mid),
+                       leaves.begin() + std::ptrdiff_t(end), [&](std::int32_t a, std::int32_t b) {
+                         const T ca = centre(a), cb = centre(b);
+                         return ca < cb || (ca == cb && a < b);
+                       });
+      return mid;
+    };
+    if (n <= 2 || !(spread > T(0))) return median();
+    const T scale = T(kBins) / spread;
+    auto binOf = [&](std::int32_t leaf) {
+      const int b = int((centre(leaf) - lo) * scale);
+      return b < 0 ? 0 : (b >= kBins ? kBins - 1 : b);
+    };
+    Bounds3<T> binBox[kBins];
+    std::size_t binCount[kBins] = {};
+    for (std::size_t i = begin; i < end; ++i) {
+      const int b = binOf(leaves[i]);
+      binBox[b].include(nodes_[std::size_t(leaves[i])].box);
+      ++binCount[b];
+    }
+    // Areas and counts left of each boundary k (bins < k) and right of it (bins >= k).
+    T leftArea[kBins] = {}, rightArea[kBins] = {};
+    std::size_t leftCount[kBins] = {}, rightCount[kBins] = {};
+    Bounds3<T> acc;
+    std::size_t count = 0;
+    for (int k = 1; k < kBins; ++k) {
+      if (binCount[k - 1]) acc.include(binBox[k - 1]);
+      count += binCount[k - 1];
+      leftArea[k] = count ? boxArea(acc) : T(0);
+      leftCount[k] = count;
+    }
+    acc = Bounds3<T>();
+    count = 0;
+    for (int k = kBins - 1; k >= 1; --k) {
+      if (binCount[k]) acc.include(binBox[k]);
+      count += binCount[k];
+      rightArea[k] = count ? boxArea(acc) : T(0);
+      rightCount[k] = count;
+    }
+    int best = 0;
+    T bestCost = std::numeric_limits<T>::infinity();
+    for (int k = 1; k < kBins; ++k) {
+      if (leftCount[k] == 0 || rightCount[k] == 0) continue;
+      const T cost = leftArea[k] * T(leftCount[k]) + rightArea[k] * T(rightCount[k]);
+      if (cost < bestCost) {
+        bestCost = cost;
+        best = k;
+      }
+    }
+    if (best == 0) return median();
+    const auto middle = std::partition(leaves.begin() + std::ptrdiff_t(begin), leaves.begin() + std::ptrdiff_t(end),
+                                       [&](std::int32_t leaf) { return binOf(leaf) < best; });
+    return std::size_t(middle - leaves.begin());
+  }
+
   std::int32_t build(std::vector<std::int32_t>& leaves, std::size_t begin, std::size_t end, std::int32_t parent) {
     if (end - begin == 1) {
       const std::int32_t leaf = leaves[begin];
@@ -227,14 +293,7 @@ template <class T> class AabbTree {
     int axis = 0;
     if (spread.y() > spread[axis]) axis = 1;
     if (spread.z() > spread[axis]) axis = 2;
-    const std::size_t mid = begin + (end - begin) / 2;
-    // Ties broken by leaf index: the same leaves always give the same tree.
-    std::nth_element(leaves.begin() + std::ptrdiff_t(begin), leaves.begin() + std::ptrdiff_t(mid),
-                     leaves.begin() + std::ptrdiff_t(end), [&](std::int32_t a, std::int32_t b) {
-                       const T ca = nodes_[std::size_t(a)].box.center()[axis];
-                       const T cb = nodes_[std::size_t(b)].box.center()[axis];
-                       return ca < cb || (ca == cb && a < b);
-                     });
+    const std::size_t mid = splitBySah(leaves, begin, end, axis, centres.min[axis], spread[axis]);
     const std::int32_t inner = allocate();
     nodes_[std::size_t(inner)].parent = parent;
     nodes_[std::size_t(inner)].box = Bounds3<T>{Vec3<T>::Zero(), Vec3<T>::Zero()};
