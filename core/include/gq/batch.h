@@ -58,7 +58,9 @@ template <class E> struct StridedArray {
 };
 
 struct BatchSettings {
-  std::uint32_t threads = 0;  // 0: every hardware thread; 1: the calling thread only (no thread is created)
+  // 0: every hardware thread; 1: the calling thread only (no thread is created); more than the hardware's threads
+  // runs the hardware's count.
+  std::uint32_t threads = 0;
   std::size_t grain = 64;     // items per task (at least 1)
 };
 

@@ -3,6 +3,7 @@
 #include "gq/batch.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
@@ -45,7 +46,11 @@ template <class Item> std::size_t runItems(std::size_t n, const BatchSettings& s
   if (settings.threads == 1 || n <= grain) return serial(0, n);
   std::atomic<std::size_t> failed{0};
   try {
-    tbb::task_arena arena(settings.threads == 0 ? int(tbb::task_arena::automatic) : int(settings.threads));
+    // oneTBB runs at most the hardware's threads (more would only wait for a core, and it warns on stderr).
+    const int hardware = tbb::info::default_concurrency();
+    const int threads = settings.threads == 0 || settings.threads > std::uint32_t(hardware) ? hardware
+                                                                                           : int(settings.threads);
+    tbb::task_arena arena(threads);
     arena.execute([&] {
       tbb::parallel_for(
           tbb::blocked_range<std::size_t>(0, n, grain),
