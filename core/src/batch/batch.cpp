@@ -1,0 +1,263 @@
+// gq/batch.h: each batch checks its arrays once, then runs the single query per item on oneTBB's pool (or the plain
+// loop for one thread). Items write only their own output entries, so any schedule gives the same bytes.
+#include "gq/batch.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <new>
+#include <vector>
+
+namespace gq {
+
+namespace {
+
+template <class E> Status checkArray(const StridedArray<E>& a) {
+  if (a.count == 0) return {};
+  if (a.data == nullptr) return Status::invalid("a batch input array is null but its count is not 0");
+  if (a.stride < sizeof(E)) return Status::invalid("a batch input stride is smaller than the element size");
+  if (reinterpret_cast<std::uintptr_t>(a.data) % alignof(E) != 0 || a.stride % alignof(E) != 0) {
+    return Status::invalid("a batch input array or stride is not aligned for its element type");
+  }
+  return {};
+}
+
+template <class E0, class E1> Status checkArrays(const StridedArray<E0>& a, const StridedArray<E1>& b) {
+  if (Status s = checkArray(a); !s.ok()) return s;
+  if (Status s = checkArray(b); !s.ok()) return s;
+  if (a.count != b.count) return Status::invalid("batch input arrays have different counts");
+  return {};
+}
+
+// Runs item(i) for i in [0, n); item returns true when item i succeeded. Returns the number of failed items.
+template <class Item> std::size_t runItems(std::size_t n, const BatchSettings& settings, const Item& item) {
+  const std::size_t grain = settings.grain == 0 ? 1 : settings.grain;
+  auto serial = [&](std::size_t begin, std::size_t end) {
+    std::size_t failed = 0;
+    for (std::size_t i = begin; i < end; ++i) failed += item(i) ? 0 : 1;
+    return failed;
+  };
+  if (settings.threads == 1 || n <= grain) return serial(0, n);
+  std::atomic<std::size_t> failed{0};
+  try {
+    // oneTBB runs at most the hardware's threads (more would only wait for a core, and it warns on stderr).
+    const int hardware = tbb::info::default_concurrency();
+    const int threads = settings.threads == 0 || settings.threads > std::uint32_t(hardware) ? hardware
+                                                                                           : int(settings.threads);
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, n, grain),
+          [&](const tbb::blocked_range<std::size_t>& r) {
+            const std::size_t f = serial(r.begin(), r.end());
+            if (f) failed.fetch_add(f, std::memory_order_relaxed);
+          },
+          tbb::simple_partitioner());
+    });
+  } catch (...) {
+    // The pool could not start (out of memory or threads): the loop on this thread gives the same answers. Items
+    // are pure functions of their input, so recomputing those already done rewrites the same bytes.
+    return serial(0, n);
+  }
+  return failed.load();
+}
+
+Status batchResult(std::size_t failed) {
+  if (failed == 0) return {};
+  return Status::warning("some batch items failed: their per-item Status says why; index = how many")
+      .withIndex(failed > 0xffffffffu ? 0xffffffffu : std::uint32_t(failed));
+}
+
+Status emptyShape() { return Status::invalid("the shape is empty (not made by Shape::make)"); }
+Status nullOutput() { return Status::invalid("a batch output array is null"); }
+
+// Stores the item's Status when asked to; true when it succeeded.
+inline bool record(Status* statuses, std::size_t i, Status&& s) {
+  const bool ok = s.ok();
+  if (statuses) statuses[i] = std::move(s);
+  return ok;
+}
+
+}  // namespace
+
+template <class T>
+Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, RaycastHit<T>* hits,
+                    std::uint8_t* hasHit, Status* statuses, const BatchSettings& settings) noexcept {
+  if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
+  if (shape.empty()) return emptyShape();
+  const std::size_t n = rays.origins.count;
+  if (n > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
+  return batchResult(runItems(n, settings, [&](std::size_t i) {
+    RaycastHit<T> h;
+    std::uint32_t count = 0;
+    Status s = raycast(rays.origins[i], rays.unitDirs[i], shape, pose, rays.maxDist, rays.hitFlags, 1u, &h, count);
+    if (s.ok()) {
+      hasHit[i] = count > 0 ? 1 : 0;
+      if (count > 0) hits[i] = h;
+    }
+    return record(statuses, i, std::move(s));
+  }));
+}
+
+template <class T>
+Status raycastBatch(const RayBatch<T>& rays, const Geometry<T>& geometry, const Transform<T>& pose, RaycastHit<T>* hits,
+                    std::uint8_t* hasHit, Status* statuses, const BatchSettings& settings) noexcept {
+  Shape<T> shape;
+  if (Status s = Shape<T>::make(geometry, shape); !s.ok()) return s;
+  return raycastBatch(rays, shape, pose, hits, hasHit, statuses, settings);
+}
+
+template <class T>
+Status raycastBatch(const RayBatch<T>& rays, const Scene<T>& scene, SceneRaycastHit<T>* hits, std::uint8_t* hasHit,
+                    Status* statuses, const BatchSettings& settings, const SceneFilter& filter) noexcept {
+  if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
+  const std::size_t n = rays.origins.count;
+  if (n > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
+  return batchResult(runItems(n, settings, [&](std::size_t i) {
+    SceneRaycastHit<T> h;
+    bool has = false;
+    Status s = scene.raycastClosest(rays.origins[i], rays.unitDirs[i], rays.maxDist, h, has, rays.hitFlags, filter);
+    if (s.ok()) {
+      hasHit[i] = has ? 1 : 0;
+      if (has) hits[i] = h;
+    }
+    return record(statuses, i, std::move(s));
+  }));
+}
+
+template <class T>
+Status raycastAllBatch(const RayBatch<T>& rays, const Scene<T>& scene, std::uint32_t maxHitsPerRay,
+                       const SceneHitsOutput<T>& out, Status* statuses, const BatchSettings& settings,
+                       const SceneFilter& filter) noexcept {
+  if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
+  if (maxHitsPerRay == 0) return Status::invalid("maxHitsPerRay is 0");
+  const std::size_t n = rays.origins.count;
+  if (n > 0 && out.counts == nullptr) return nullOutput();
+  if (n > 0 && out.offsets != nullptr && out.hits == nullptr) return nullOutput();
+  constexpr std::uint32_t kLocal = 8;
+  return batchResult(runItems(n, settings, [&](std::size_t i) {
+    // The fill pass writes straight into the caller's array; the count pass into a local buffer.
+    std::uint32_t count = 0;
+    Status s;
+    auto cast = [&](SceneRaycastHit<T>* dst) {
+      return scene.raycastAll(rays.origins[i], rays.unitDirs[i], rays.maxDist, rays.hitFlags, maxHitsPerRay, dst, count,
+                              filter);
+    };
+    if (out.offsets != nullptr) {
+      s = cast(out.hits + out.offsets[i]);
+    } else if (maxHitsPerRay <= kLocal) {
+      SceneRaycastHit<T> local[kLocal];
+      s = cast(local);
+    } else {
+      try {
+        std::vector<SceneRaycastHit<T>> buffer(maxHitsPerRay);
+        s = cast(buffer.data());
+      } catch (const std::bad_alloc&) {
+        s = Status::internal("out of memory");
+      }
+    }
+    if (s.ok()) out.counts[i] = count;
+    return record(statuses, i, std::move(s));
+  }));
+}
+
+template <class T>
+Status overlapBatch(const Shape<T>& shape0, StridedArray<Transform<T>> poses0, const Shape<T>& shape1,
+                    StridedArray<Transform<T>> poses1, std::uint8_t* overlapping, Status* statuses,
+                    const BatchSettings& settings) noexcept {
+  if (Status s = checkArrays(poses0, poses1); !s.ok()) return s;
+  if (shape0.empty() || shape1.empty()) return emptyShape();
+  const std::size_t n = poses0.count;
+  if (n > 0 && overlapping == nullptr) return nullOutput();
+  return batchResult(runItems(n, settings, [&](std::size_t i) {
+    bool hit = false;
+    Status s = overlap(shape0, poses0[i], shape1, poses1[i], hit);
+    if (s.ok()) overlapping[i] = hit ? 1 : 0;
+    return record(statuses, i, std::move(s));
+  }));
+}
+
+template <class T>
+Status distanceBatch(const Shape<T>& shape0, StridedArray<Transform<T>> poses0, const Shape<T>& shape1,
+                     StridedArray<Transform<T>> poses1, DistanceResult<T>* results, Status* statuses,
+                     const BatchSettings& settings) noexcept {
+  if (Status s = checkArrays(poses0, poses1); !s.ok()) return s;
+  if (shape0.empty() || shape1.empty()) return emptyShape();
+  const std::size_t n = poses0.count;
+  if (n > 0 && results == nullptr) return nullOutput();
+  return batchResult(runItems(n, settings, [&](std::size_t i) {
+    return record(statuses, i, distance(results[i], shape0, poses0[i], shape1, poses1[i]));
+  }));
+}
+
+template <class T>
+Status penetrationBatch(const Shape<T>& shape0, StridedArray<Transform<T>> poses0, const Shape<T>& shape1,
+                        StridedArray<Transform<T>> poses1, PenetrationResult<T>* results, Status* statuses,
+                        const BatchSettings& settings) noexcept {
+  if (Status s = checkArrays(poses0, poses1); !s.ok()) return s;
+  if (shape0.empty() || shape1.empty()) return emptyShape();
+  const std::size_t n = poses0.count;
+  if (n > 0 && results == nullptr) return nullOutput();
+  return batchResult(runItems(n, settings, [&](std::size_t i) {
+    return record(statuses, i, computePenetration(results[i], shape0, poses0[i], shape1, poses1[i]));
+  }));
+}
+
+template <class T>
+Status pointDistanceBatch(StridedArray<Vec3<T>> points, const Shape<T>& shape, const Transform<T>& pose,
+                          PointDistanceResult<T>* results, Status* statuses, const BatchSettings& settings) noexcept {
+  if (Status s = checkArray(points); !s.ok()) return s;
+  if (shape.empty()) return emptyShape();
+  const std::size_t n = points.count;
+  if (n > 0 && results == nullptr) return nullOutput();
+  return batchResult(runItems(n, settings, [&](std::size_t i) {
+    return record(statuses, i, pointDistance(points[i], shape, pose, results[i]));
+  }));
+}
+
+template Status raycastBatch(const RayBatch<float>&, const Shape<float>&, const Transform<float>&, RaycastHit<float>*,
+                             std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<float>&, const Geometry<float>&, const Transform<float>&,
+                             RaycastHit<float>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<float>&, const Scene<float>&, SceneRaycastHit<float>*, std::uint8_t*,
+                             Status*, const BatchSettings&, const SceneFilter&) noexcept;
+template Status raycastAllBatch(const RayBatch<float>&, const Scene<float>&, std::uint32_t,
+                                const SceneHitsOutput<float>&, Status*, const BatchSettings&,
+                                const SceneFilter&) noexcept;
+template Status overlapBatch(const Shape<float>&, StridedArray<Transform<float>>, const Shape<float>&,
+                             StridedArray<Transform<float>>, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status distanceBatch(const Shape<float>&, StridedArray<Transform<float>>, const Shape<float>&,
+                              StridedArray<Transform<float>>, DistanceResult<float>*, Status*,
+                              const BatchSettings&) noexcept;
+template Status penetrationBatch(const Shape<float>&, StridedArray<Transform<float>>, const Shape<float>&,
+                                 StridedArray<Transform<float>>, PenetrationResult<float>*, Status*,
+                                 const BatchSettings&) noexcept;
+template Status pointDistanceBatch(StridedArray<Vec3<float>>, const Shape<float>&, const Transform<float>&,
+                                   PointDistanceResult<float>*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<double>&, const Shape<double>&, const Transform<double>&,
+                             RaycastHit<double>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<double>&, const Geometry<double>&, const Transform<double>&,
+                             RaycastHit<double>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<double>&, const Scene<double>&, SceneRaycastHit<double>*, std::uint8_t*,
+                             Status*, const BatchSettings&, const SceneFilter&) noexcept;
+template Status raycastAllBatch(const RayBatch<double>&, const Scene<double>&, std::uint32_t,
+                                const SceneHitsOutput<double>&, Status*, const BatchSettings&,
+                                const SceneFilter&) noexcept;
+template Status overlapBatch(const Shape<double>&, StridedArray<Transform<double>>, const Shape<double>&,
+                             StridedArray<Transform<double>>, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status distanceBatch(const Shape<double>&, StridedArray<Transform<double>>, const Shape<double>&,
+                              StridedArray<Transform<double>>, DistanceResult<double>*, Status*,
+                              const BatchSettings&) noexcept;
+template Status penetrationBatch(const Shape<double>&, StridedArray<Transform<double>>, const Shape<double>&,
+                                 StridedArray<Transform<double>>, PenetrationResult<double>*, Status*,
+                                 const BatchSettings&) noexcept;
+template Status pointDistanceBatch(StridedArray<Vec3<double>>, const Shape<double>&, const Transform<double>&,
+                                   PointDistanceResult<double>*, Status*, const BatchSettings&) noexcept;
+
+}  // namespace gq
