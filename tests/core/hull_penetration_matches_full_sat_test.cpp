@@ -150,10 +150,13 @@ template <class T> void checkHullSize(int points, int pairs) {
   EXPECT_GT(penetrating, pairs / 2) << points << " points";
   const detail::PolytopeMtdCounts& after = detail::polytopeMtdCounts();
   const std::uint64_t searches = after.searches - before.searches, fullSat = after.fullSat - before.fullSat;
-  std::printf("%d points: %llu searches, %llu answered by the full SAT\n", points, (unsigned long long)searches,
-              (unsigned long long)fullSat);
+  const std::uint64_t inFrame = after.inFrame - before.inFrame;
+  std::printf("%d points: %llu searches, %llu in geom0's frame, %llu answered by the full SAT\n", points,
+              (unsigned long long)searches, (unsigned long long)inFrame, (unsigned long long)fullSat);
   EXPECT_EQ(searches, std::uint64_t(pairs)) << points << " points";
   EXPECT_LE(fullSat, searches / 100) << points << " points";
+  // Every kind but the stretched hulls (scaled non-uniformly: posed) is searched in geom0's frame.
+  EXPECT_EQ(inFrame, searches - searches / std::uint64_t(Kind::Count)) << points << " points";
 }
 
 template <class T> class HullPenetrationMatchesFullSat : public ::testing::Test {};
