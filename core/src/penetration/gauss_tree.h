@@ -25,7 +25,7 @@
 
 namespace gq::detail {
 
-inline constexpr std::uint32_t kGaussLeafFaces = 4;
+inline constexpr std::uint32_t kGaussLeafFaces = 16;
 
 template <class T> struct GaussTree {
   struct Node {

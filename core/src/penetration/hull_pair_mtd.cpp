@@ -151,6 +151,7 @@ template <class T> class PairSearch {
     return node.radius * own.scale - reach;
   }
 
+  // A node queued under its own bound (one support call), unless that bound is not below the best push-out.
   void enqueue(std::uint32_t k, std::uint32_t index) {
     const typename GaussTree<T>::Node& node = sides_[k]->tree->nodes[index];
     Vec3<T> w = Vec3<T>::Zero();
@@ -168,6 +169,11 @@ template <class T> class PairSearch {
     const typename GaussTree<T>::Node& node = tree.nodes[index];
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
       const Vec3<T>& n = tree.faceNormal[f];
+      // The leaf's support point bounds the face's push-out from below: no support call when that is enough.
+      if (node.bounded && !(-tree.faceOffset[f] * own.scale - n.dot(leafSupport) - margin_ < best_.depth)) {
+        s_.faceSupport[k][f] = leafSupport;
+        continue;
+      }
       const Vec3<T> w = otherSupport(own, other, Vec3<T>(-n));
       s_.faceSupport[k][f] = w;
       const T push = -tree.faceOffset[f] * own.scale - n.dot(w);
