@@ -435,16 +435,70 @@ void BM_BulletGjkEpaDistance(benchmark::State& state) {
 
 // One pass of every runner for one shape pair (`--once ARG`) or all of them (`--once`), for
 // `valgrind --tool=callgrind` instruction counts (inclusive cost of each run* function / 64 = per query).
-// `--once-penetration N`: the penetration rows' runners once on the overlapping scene of N-point hulls.
+// The overlapping scene in float: the same hull points cooked in float, the same poses.
+struct FloatScene {
+  std::shared_ptr<const gq::ConvexMesh<float>> hull;
+  std::vector<gq::Transform<float>> pose0, pose1;
+};
+
+FloatScene floatScene(const Scene& s) {
+  FloatScene f;
+  std::vector<gq::Vec3<float>> pts;
+  for (const gq::Vec3<double>& v : s.hull->vertices) pts.push_back(v.cast<float>());
+  if (!gq::cookConvexMesh(pts, f.hull).ok()) f.hull = nullptr;
+  const auto cast = [](const gq::Transform<double>& p) {
+    return gq::Transform<float>(p.p.cast<float>(), p.q.cast<float>().normalized());
+  };
+  for (const gq::Transform<double>& p : s.pose0) f.pose0.push_back(cast(p));
+  for (const gq::Transform<double>& p : s.pose1) f.pose1.push_back(cast(p));
+  return f;
+}
+
+[[gnu::noinline]] int runGqPenetrationFloat(const FloatScene& s, const gq::Geometry<float>& g0,
+                                            const gq::Geometry<float>& g1) {
+  int overlapping = 0;
+  for (std::size_t i = 0; i < s.pose0.size(); ++i) {
+    gq::PenetrationResult<float> r;
+    (void)gq::computePenetration(r, g0, s.pose0[i], g1, s.pose1[i]);  // valid input: timed
+    overlapping += r.penetrating;
+    benchmark::DoNotOptimize(r);
+  }
+  return overlapping;
+}
+
+[[gnu::noinline]] int runGqDistanceFloat(const FloatScene& s, const gq::Geometry<float>& g0,
+                                         const gq::Geometry<float>& g1) {
+  int overlapping = 0;
+  for (std::size_t i = 0; i < s.pose0.size(); ++i) {
+    gq::DistanceResult<float> r;
+    (void)gq::distance(r, g0, s.pose0[i], g1, s.pose1[i]);  // valid input: timed
+    overlapping += r.distance <= 0;
+    benchmark::DoNotOptimize(r);
+  }
+  return overlapping;
+}
+
+// `--once-penetration N`: the penetration rows' runners once on the overlapping scene of N-point hulls, then gq's
+// computePenetration and distance on the same scene in float (the hull's per-mesh caches built first).
 void runOncePenetration(int n) {
   const Scene& s = overlappingScene(n);
   const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
+  gq::PenetrationResult<double> warm;
+  (void)gq::computePenetration(warm, hull, s.pose0[0], hull, s.pose1[0]);
   runGqPenetration(s, hull, hull);
   runGqDistance(s, hull, hull, nullptr);
   runCcdPenetration(s, hull, hull);
   runCcdMprPenetration(s, hull, hull);
   runFclPenetration(fclScene(s));
   runBulletDistance(s, *bulletHull(*s.hull));
+  const FloatScene f = floatScene(s);
+  if (!f.hull) return;
+  const gq::Geometry<float> hullF = gq::ConvexMeshGeometry<float>(f.hull);
+  gq::PenetrationResult<float> warmF;
+  (void)gq::computePenetration(warmF, hullF, f.pose0[0], hullF, f.pose1[0]);
+  const int penetratingF = runGqPenetrationFloat(f, hullF, hullF);
+  const int overlappingF = runGqDistanceFloat(f, hullF, hullF);
+  std::printf("float: %d of %d penetrating (distance: %d)\n", penetratingF, kPairs, overlappingF);
 }
 
 // `--once-penetration-shapes N`: a sphere, a capsule and a box (geom0 at pose0) against the N-point hull (at pose1)

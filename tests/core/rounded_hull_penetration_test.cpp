@@ -2,7 +2,7 @@
 // closest-point search over the posed polytope (penetrationRoundedPolytope): the same penetrating/apart answer, the
 // depth within 1e-9 (double) / 1e-4 (float) relative plus 8 ulps of the pair's size, and the direction realising
 // that depth (the rounded core pushed along it, from all hull vertices, by exactly the depth). 1002 seeded pairs per
-// hull size (30 and 100 points on an ellipsoid) and scalar, a sixth of each kind:
+// hull size (30 and 100 points on an ellipsoid, and 300 in double) and scalar, a sixth of each kind:
 //  - a sphere, and a capsule, about the hull in a random pose (inside, crossing the surface, outside);
 //  - a sphere centre, and a capsule core, deep inside the hull;
 //  - a capsule lying along a face, just above or below it (a segment parallel to a face);
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "gq/cooking.h"
@@ -128,6 +129,9 @@ TYPED_TEST_SUITE(RoundedHullPenetration, Scalars);
 TYPED_TEST(RoundedHullPenetration, MatchesThePosedPolytopeOnSeededPairs) {
   checkHullSize<TypeParam>(30, 1002);
   checkHullSize<TypeParam>(100, 1002);
+  // Float hulls of 300 points have sliver faces whose cooked float normals are good to ~1e-4 rad: the push-out along
+  // such a face's normal (the answer, in either path) is off by ~2e-4 relative, beyond float's 1e-4.
+  if (std::is_same<TypeParam, double>::value) checkHullSize<TypeParam>(300, 1002);
 }
 
 // A scaled hull is not taken in the hull's frame (its distances are not the mesh's): the posed path answers.

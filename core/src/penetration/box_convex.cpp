@@ -1,6 +1,8 @@
 // Box/convex MTD: the exact SAT over the facets of the Minkowski difference, the axes a certificate proves irrelevant
-// skipped (penetration/polytope_mtd.h).
+// skipped: by branch and bound over the shapes' Gauss-map trees in the box's frame (penetration/hull_pair_mtd.h), else
+// (a hull scaled non-uniformly, non-manifold input) over the posed shapes (penetration/polytope_mtd.h).
 #include "penetration/penetration.h"
+#include "penetration/hull_pair_mtd.h"
 #include "penetration/polytope_mtd.h"
 
 namespace gq::detail {
@@ -8,6 +10,8 @@ namespace gq::detail {
 template <class T>
 bool penetrationBoxConvex(const BoxGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1, const Transform<T>& p1,
                           Vec3<T>& direction, T& depth) {
+  bool penetrating = false;
+  if (penetrationBoxHullInFrame(g0, p0, g1, p1, penetrating, direction, depth)) return penetrating;
   Polytope<T>& a = scratchPolytope<T>(0);
   Polytope<T>& b = scratchPolytope<T>(1);
   buildBoxPolytope(g0, p0, a);

@@ -43,9 +43,10 @@ template <class T>
 bool penetrationPolytopesCertified(const Polytope<T>& a, const InnerEllipsoid<T>& innerA, const Polytope<T>& b,
                                    const InnerEllipsoid<T>& innerB, Vec3<T>& direction, T& depth);
 
-// Per-thread counts of the searches above and of those the full SAT answered (for measurement and tests).
+// Per-thread counts of the exact polytope MTD searches (for measurement and tests): all of them, those answered in
+// geom0's frame over the Gauss-map trees (hull_pair_mtd.h), and those the full SAT answered.
 struct PolytopeMtdCounts {
-  std::uint64_t searches = 0, fullSat = 0;
+  std::uint64_t searches = 0, inFrame = 0, fullSat = 0;
 };
 PolytopeMtdCounts& polytopeMtdCounts();
 

@@ -1,0 +1,368 @@
+// Branch and bound over two Gauss-map trees for the exact MTD of two polytopes (see hull_pair_mtd.h).
+#include "penetration/hull_pair_mtd.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "gjk/support_map.h"
+#include "gjk/support_table.h"
+#include "gq/tolerances.h"
+#include "penetration/gauss_tree.h"
+#include "penetration/polytope_mtd.h"
+
+namespace gq::detail {
+namespace {
+
+// One shape in its own frame: its tree, vertices (times a uniform scale) and support map, and the map from its frame
+// to the other shape's.
+template <class T> struct Side {
+  const GaussTree<T>* tree = nullptr;
+  const ConvexMesh<T>* mesh = nullptr;  // null for a box
+  const SupportStartTable<T>* table = nullptr;
+  bool climb = false;
+  std::uint32_t hint = 0;
+  bool cold = true;
+  Vec3<T> halfExtents = Vec3<T>::Zero();
+  T scale = T(1);
+  Mat3<T> rot;    // own frame -> other frame: x_other = rot * x_own + trans
+  Vec3<T> trans;
+  bool first = true;  // geom0 (its frame is the search's)
+
+  Vec3<T> vertex(std::uint32_t i) const {
+    if (mesh) return mesh->vertices[i] * scale;
+    return Vec3<T>((i & 1) ? halfExtents.x() : -halfExtents.x(), (i & 2) ? halfExtents.y() : -halfExtents.y(),
+                   (i & 4) ? halfExtents.z() : -halfExtents.z());
+  }
+  // The point of the shape extreme along d (own frame).
+  Vec3<T> support(const Vec3<T>& d) {
+    if (!mesh) return supportBox(halfExtents, d);
+    return mesh->vertices[hullVertex(*mesh, table, climb, d, hint, cold)] * scale;
+  }
+  // An own-frame vector in geom0's frame.
+  Vec3<T> vectorToFirst(const Vec3<T>& v) const { return first ? v : Vec3<T>(rot * v); }
+  Vec3<T> pointToFirst(const Vec3<T>& p) const { return first ? p : Vec3<T>(rot * p + trans); }
+};
+
+// The point of `other` extreme along the own-frame direction d, in own's frame.
+template <class T> Vec3<T> otherSupport(const Side<T>& own, Side<T>& other, const Vec3<T>& d) {
+  const Vec3<T> w = other.support(Vec3<T>(own.rot * d));
+  return own.rot.transpose() * (w - own.trans);
+}
+
+// h(d) of a side, d in geom0's frame.
+template <class T> T supportValue(Side<T>& side, const Vec3<T>& d) {
+  if (side.first) return d.dot(side.support(d));
+  const Vec3<T> local = side.rot.transpose() * d;
+  return local.dot(side.support(local)) + d.dot(side.trans);
+}
+
+// A lower bound of u.z over the arc from n1 to n2, from e1 = n1.z, e2 = n2.z (polytope_mtd.h); -max for nearly
+// opposite normals.
+template <class T> T arcMinimum(T e1, T e2, T halfCos) {
+  const T low = std::min(e1, e2);
+  if (low > T(0)) return low;
+  return halfCos > T(1e-3) ? low / halfCos : -std::numeric_limits<T>::max();
+}
+
+// A node waiting in the search: its bound, and the other side's support point it was computed from (own frame).
+template <class T> struct HeapEntry {
+  T bound;
+  std::uint32_t side, node;
+  Vec3<T> support;
+  bool operator>(const HeapEntry& o) const { return bound > o.bound; }
+};
+
+// An edge arc in geom0's frame (negated for the second shape, so that arcs cross at facet normals of A - B).
+template <class T> struct Arc {
+  Vec3<T> n1, n2, plane, mid;  // plane = n2 x n1; mid = normalised n1 + n2
+  Vec3<T> vertex, direction;   // a vertex of the edge; the edge's unit direction
+  T halfCos;
+  bool flat;
+};
+
+template <class T> struct PairScratch {
+  std::vector<HeapEntry<T>> heap;
+  std::vector<Vec3<T>> faceSupport[2];  // per tree face: the other side's support point against it (own frame)
+  struct Leaf {
+    std::uint32_t side, node;
+    Vec3<T> support;  // the other side's support point against the leaf's cap axis (own frame)
+  };
+  std::vector<Leaf> leaves;
+  std::vector<Arc<T>> arcs[2];
+  GaussTree<T> box;
+};
+template <class T> PairScratch<T>& pairScratch() {
+  thread_local PairScratch<T> s;
+  return s;
+}
+
+template <class T> bool isFlat(const Vec3<T>& plane) {
+  const T flatSine = std::sqrt(T(tol::Rel<T>::kEpsilon));
+  return !(plane.squaredNorm() > flatSine * flatSine);
+}
+
+template <class T> struct Best {
+  T depth = std::numeric_limits<T>::max();
+  Vec3<T> direction = Vec3<T>::UnitX();  // geom0's frame
+  void consider(T push, const Vec3<T>& d) {
+    if (push < depth) depth = push, direction = d;
+  }
+};
+
+template <class T> class PairSearch {
+ public:
+  PairSearch(Side<T>& a, Side<T>& b, T margin) : sides_{&a, &b}, margin_(margin), s_(pairScratch<T>()) {}
+
+  // The minimum push-out; `best.depth` < 0 when a separating axis was found (the search then stops).
+  Best<T> run() {
+    s_.heap.clear();
+    s_.leaves.clear();
+    for (int k = 0; k < 2; ++k) s_.faceSupport[k].resize(sides_[k]->tree->faceNormal.size());
+    for (std::uint32_t k = 0; k < 2; ++k) enqueue(k, 0);
+    while (!s_.heap.empty() && best_.depth >= T(0)) {
+      std::pop_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
+      const HeapEntry<T> e = s_.heap.back();
+      s_.heap.pop_back();
+      if (!(e.bound - margin_ < best_.depth)) break;
+      const typename GaussTree<T>::Node& node = sides_[e.side]->tree->nodes[e.node];
+      if (node.leaf()) {
+        evaluateLeaf(e.side, e.node, e.support);
+      } else {
+        enqueue(e.side, node.child[0]);
+        enqueue(e.side, node.child[1]);
+      }
+    }
+    if (best_.depth >= T(0)) edgePairs();
+    return best_;
+  }
+
+ private:
+  // The node's bound against the other side's support point along -axis (written to w, own frame).
+  T nodeBound(std::uint32_t k, const typename GaussTree<T>::Node& node, Vec3<T>& w) {
+    Side<T>& own = *sides_[k];
+    w = otherSupport(own, *sides_[1 - k], Vec3<T>(-node.axis));
+    const Vec3<T> z = w - node.centre * own.scale;
+    const T zc = node.axis.dot(z), z2 = z.squaredNorm();
+    const T zp = std::sqrt(std::max(z2 - zc * zc, T(0)));
+    const T reach = (zc > T(0) && zp * node.cosAngle <= zc * node.sinAngle) ? std::sqrt(z2)
+                                                                            : zc * node.cosAngle + zp * node.sinAngle;
+    return node.radius * own.scale - reach;
+  }
+
+  // A node queued under its own bound (one support call), unless that bound is not below the best push-out.
+  void enqueue(std::uint32_t k, std::uint32_t index) {
+    const typename GaussTree<T>::Node& node = sides_[k]->tree->nodes[index];
+    Vec3<T> w = Vec3<T>::Zero();
+    const T bound = node.bounded ? nodeBound(k, node, w) : -std::numeric_limits<T>::max();
+    if (!(bound - margin_ < best_.depth)) return;
+    s_.heap.push_back({bound, k, index, w});
+    std::push_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
+  }
+
+  // Faces exactly; the leaf kept for its edges.
+  void evaluateLeaf(std::uint32_t k, std::uint32_t index, const Vec3<T>& leafSupport) {
+    Side<T>& own = *sides_[k];
+    Side<T>& other = *sides_[1 - k];
+    const GaussTree<T>& tree = *own.tree;
+    const typename GaussTree<T>::Node& node = tree.nodes[index];
+    for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
+      const Vec3<T>& n = tree.faceNormal[f];
+      // The leaf's support point bounds the face's push-out from below: no support call when that is enough.
+      if (node.bounded && !(-tree.faceOffset[f] * own.scale - n.dot(leafSupport) - margin_ < best_.depth)) {
+        s_.faceSupport[k][f] = leafSupport;
+        continue;
+      }
+      const Vec3<T> w = otherSupport(own, other, Vec3<T>(-n));
+      s_.faceSupport[k][f] = w;
+      const T push = -tree.faceOffset[f] * own.scale - n.dot(w);
+      if (push < best_.depth) best_.consider(push, own.first ? Vec3<T>(-n) : own.vectorToFirst(n));
+    }
+    s_.leaves.push_back({k, index, leafSupport});
+  }
+
+  // Edges of evaluated leaves whose bound is below the best push-out, as arcs in geom0's frame.
+  void collectArcs() {
+    for (int k = 0; k < 2; ++k) s_.arcs[k].clear();
+    for (const auto& leaf : s_.leaves) {
+      Side<T>& own = *sides_[leaf.side];
+      const GaussTree<T>& tree = *own.tree;
+      const typename GaussTree<T>::Node& node = tree.nodes[leaf.node];
+      const T sign = own.first ? T(1) : T(-1);
+      for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
+        const typename GaussTree<T>::Edge& edge = tree.edges[e];
+        const Vec3<T>& n1 = tree.faceNormal[edge.face1];
+        const Vec3<T>& n2 = tree.faceNormal[edge.face2];
+        const Vec3<T> v = own.vertex(edge.vertex0);
+        const Vec3<T> z1 = v - s_.faceSupport[leaf.side][edge.face1];
+        T bound = arcMinimum(n1.dot(z1), n2.dot(z1), edge.halfCos);
+        if (edge.face2 >= node.faceBegin && edge.face2 < node.faceEnd && !(bound - margin_ >= best_.depth)) {
+          const Vec3<T> z = v - s_.faceSupport[leaf.side][edge.face2];
+          bound = std::max(bound, arcMinimum(n1.dot(z), n2.dot(z), edge.halfCos));
+        }
+        if (node.bounded && !(bound - margin_ >= best_.depth)) {
+          const Vec3<T> z2 = v - leaf.support;
+          bound = std::max(bound, arcMinimum(n1.dot(z2), n2.dot(z2), edge.halfCos));
+        }
+        if (!(bound - margin_ < best_.depth)) continue;
+        Arc<T> arc;
+        arc.n1 = own.vectorToFirst(n1) * sign;
+        arc.n2 = own.vectorToFirst(n2) * sign;
+        arc.plane = arc.n2.cross(arc.n1);
+        arc.mid = (arc.n1 + arc.n2).stableNormalized();
+        arc.vertex = own.pointToFirst(v);
+        arc.halfCos = edge.halfCos;
+        arc.flat = isFlat(arc.plane);
+        arc.direction = arc.flat ? Vec3<T>(own.vectorToFirst(Vec3<T>(own.vertex(edge.vertex1) - v)).stableNormalized())
+                                 : Vec3<T>::Zero();
+        s_.arcs[leaf.side].push_back(arc);
+      }
+    }
+  }
+
+  // Push-outs along both signs of a unit axis (geom0's frame), from support calls.
+  void axisBothSigns(const Vec3<T>& axis) {
+    Side<T>& a = *sides_[0];
+    Side<T>& b = *sides_[1];
+    const T positive = supportValue(b, axis) + supportValue(a, Vec3<T>(-axis));
+    const T negative = supportValue(a, axis) + supportValue(b, Vec3<T>(-axis));
+    best_.consider(positive, axis);
+    best_.consider(negative, Vec3<T>(-axis));
+  }
+
+  // The facets of the collected arcs' crossing pairs, as the full SAT's testArcPairs decides them.
+  void edgePairs() {
+    collectArcs();
+    const T eps = T(tol::Rel<T>::kEpsilon);
+    // Arcs whose caps (about mid, half-angle acos(halfCos)) are apart by more than this cannot cross.
+    const T capSlack = T(64) * std::numeric_limits<T>::epsilon();
+    for (const Arc<T>& ea : s_.arcs[0]) {
+      const T sinA = std::sqrt(std::max(T(1) - ea.halfCos * ea.halfCos, T(0)));
+      for (const Arc<T>& eb : s_.arcs[1]) {
+        if (ea.flat || eb.flat) {
+          const Vec3<T> da = ea.flat ? ea.direction : Vec3<T>(ea.plane.normalized());
+          const Vec3<T> db = eb.flat ? eb.direction : Vec3<T>(eb.plane.normalized());
+          const Vec3<T> c = da.cross(db);
+          const T len2 = c.squaredNorm();
+          if (len2 > eps * eps) axisBothSigns(Vec3<T>(c / std::sqrt(len2)));
+          continue;
+        }
+        const T sinB = std::sqrt(std::max(T(1) - eb.halfCos * eb.halfCos, T(0)));
+        if (ea.mid.dot(eb.mid) < ea.halfCos * eb.halfCos - sinA * sinB - capSlack) continue;
+        const T cba = eb.n1.dot(ea.plane), dba = eb.n2.dot(ea.plane);
+        const T adc = ea.n1.dot(eb.plane), bdc = ea.n2.dot(eb.plane);
+        const bool undecided =
+            std::abs(cba) <= eps || std::abs(dba) <= eps || std::abs(adc) <= eps || std::abs(bdc) <= eps;
+        if (!undecided && !(cba * dba < T(0) && adc * bdc < T(0) && cba * bdc > T(0))) continue;
+        const Vec3<T> c = ea.plane.cross(eb.plane);
+        const T len2 = c.squaredNorm();
+        if (len2 <= eps * eps) continue;  // parallel edges: no facet of their own
+        Vec3<T> p = c / std::sqrt(len2);
+        if (undecided) {
+          axisBothSigns(p);
+        } else {
+          if (p.dot(ea.n1 + ea.n2) < T(0)) p = -p;
+          best_.consider(p.dot(ea.vertex - eb.vertex), Vec3<T>(-p));
+        }
+      }
+    }
+  }
+
+  Side<T>* sides_[2];
+  T margin_;
+  PairScratch<T>& s_;
+  Best<T> best_;
+};
+
+// A uniform positive scale factor of a hull's MeshScale, or 0.
+template <class T> T uniformScale(const MeshScale<T>& s) {
+  if (s.isIdentity()) return T(1);
+  const T f = s.scale.x();
+  return (f > T(0) && s.scale.y() == f && s.scale.z() == f && std::isfinite(f)) ? f : T(0);
+}
+
+template <class T> bool setHull(Side<T>& side, const ConvexMeshGeometry<T>& g) {
+  if (!g.mesh) return false;
+  side.scale = uniformScale(g.scale);
+  if (!(side.scale > T(0))) return false;
+  side.tree = hullGaussTree(g.mesh);
+  if (!side.tree || !side.tree->usable) return false;
+  side.mesh = g.mesh.get();
+  side.table = supportStartTable(g.mesh);
+  side.climb = side.mesh->vertices.size() > kHillClimbMinVertices && hasAdjacency(*side.mesh);
+  return true;
+}
+
+template <class T> T extent(const Side<T>& side) {
+  if (!side.mesh) return side.halfExtents.cwiseAbs().maxCoeff();
+  const Bounds3<T>& b = side.mesh->localBounds;
+  return std::max(b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()) * side.scale;
+}
+
+// Both sides set up: the relative pose, the search, the answer in world space.
+template <class T>
+bool searchPair(Side<T>& a, const Transform<T>& p0, Side<T>& b, const Transform<T>& p1, bool& penetrating,
+                Vec3<T>& direction, T& depth) {
+  const Mat3<T> r0 = p0.q.toRotationMatrix();
+  const Mat3<T> r = r0.transpose() * p1.q.toRotationMatrix();  // b's frame -> a's frame
+  const Vec3<T> t = r0.transpose() * (p1.p - p0.p);
+  if (!r.allFinite() || !t.allFinite()) return false;
+  a.first = true;
+  a.rot = r.transpose();
+  a.trans = -(a.rot * t);
+  b.first = false;
+  b.rot = r;
+  b.trans = t;
+  PolytopeMtdCounts& counts = polytopeMtdCounts();
+  ++counts.searches;
+  ++counts.inFrame;
+  // Rounding of the bounds and push-outs: a few ulps of the pair's coordinates, and the cooking's plane tolerance
+  // (a merged polygon's vertices lie within it of the plane through its first vertex).
+  const T magnitude = extent(a) + extent(b) + t.cwiseAbs().maxCoeff();
+  const T margin = magnitude * (T(128) * std::numeric_limits<T>::epsilon() + T(4e-9));
+  const Best<T> best = PairSearch<T>(a, b, margin).run();
+  penetrating = best.depth >= T(0);
+  if (penetrating) {
+    direction = r0 * best.direction;
+    depth = best.depth;
+  }
+  return true;
+}
+
+}  // namespace
+
+template <class T>
+bool penetrationHullPairInFrame(const ConvexMeshGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1,
+                                const Transform<T>& p1, bool& penetrating, Vec3<T>& direction, T& depth) {
+  Side<T> a, b;
+  if (!setHull(a, g0) || !setHull(b, g1)) return false;
+  return searchPair(a, p0, b, p1, penetrating, direction, depth);
+}
+
+template <class T>
+bool penetrationBoxHullInFrame(const BoxGeometry<T>& g0, const Transform<T>& p0, const ConvexMeshGeometry<T>& g1,
+                               const Transform<T>& p1, bool& penetrating, Vec3<T>& direction, T& depth) {
+  Side<T> a, b;
+  if (!setHull(b, g1)) return false;
+  GaussTree<T>& box = pairScratch<T>().box;
+  boxGaussTree(g0.halfExtents, box);
+  a.tree = &box;
+  a.halfExtents = g0.halfExtents;
+  return searchPair(a, p0, b, p1, penetrating, direction, depth);
+}
+
+template bool penetrationHullPairInFrame<float>(const ConvexMeshGeometry<float>&, const Transform<float>&,
+                                                const ConvexMeshGeometry<float>&, const Transform<float>&, bool&,
+                                                Vec3<float>&, float&);
+template bool penetrationHullPairInFrame<double>(const ConvexMeshGeometry<double>&, const Transform<double>&,
+                                                 const ConvexMeshGeometry<double>&, const Transform<double>&, bool&,
+                                                 Vec3<double>&, double&);
+template bool penetrationBoxHullInFrame<float>(const BoxGeometry<float>&, const Transform<float>&,
+                                               const ConvexMeshGeometry<float>&, const Transform<float>&, bool&,
+                                               Vec3<float>&, float&);
+template bool penetrationBoxHullInFrame<double>(const BoxGeometry<double>&, const Transform<double>&,
+                                                const ConvexMeshGeometry<double>&, const Transform<double>&, bool&,
+                                                Vec3<double>&, double&);
+
+}  // namespace gq::detail
