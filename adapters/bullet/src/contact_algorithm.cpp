@@ -140,19 +140,22 @@ ContactAlgorithm::~ContactAlgorithm() {
 
 void ContactAlgorithm::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                         const btDispatcherInfo&, btManifoldResult* result) {
-  ShapeView frameA, frameB;  // views built for this frame only (no pair state)
-  const ShapeView* va = &frameA;
-  const ShapeView* vb = &frameB;
-  bool answerable = isFinite(body0->getWorldTransform()) && isFinite(body1->getWorldTransform());
-  if (answerable && state_) {
-    answerable = state_->side[0].refresh(body0->getCollisionShape()) == Support::Gq &&
-                 state_->side[1].refresh(body1->getCollisionShape()) == Support::Gq;
-    va = &state_->side[0].view;
-    vb = &state_->side[1].view;
-  } else if (answerable) {
-    answerable = viewShape(body0->getCollisionShape(), frameA) == Support::Gq &&
-                 viewShape(body1->getCollisionShape(), frameB) == Support::Gq;
+  const bool finite = isFinite(body0->getWorldTransform()) && isFinite(body1->getWorldTransform());
+  if (state_) {
+    const bool answerable = finite && state_->side[0].refresh(body0->getCollisionShape()) == Support::Gq &&
+                            state_->side[1].refresh(body1->getCollisionShape()) == Support::Gq;
+    collide(answerable, state_->side[0].view, state_->side[1].view, body0, body1, result);
+    return;
   }
+  ShapeView va, vb;  // views of this frame only
+  const bool answerable = finite && viewShape(body0->getCollisionShape(), va) == Support::Gq &&
+                          viewShape(body1->getCollisionShape(), vb) == Support::Gq;
+  collide(answerable, va, vb, body0, body1, result);
+}
+
+void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const ShapeView& vb,
+                               const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                               btManifoldResult* result) {
   if (!answerable) {
     // Bad input (or a shape edited into one gq does not model): no contact, and none kept from earlier frames.
     if (manifold_ && ownManifold_) manifold_->clearManifold();
@@ -163,8 +166,8 @@ void ContactAlgorithm::processCollision(const btCollisionObjectWrapper* body0, c
     ownManifold_ = true;
   }
   result->setPersistentManifold(manifold_);
-  const PlacedShape a{va, toGq(body0->getWorldTransform()) * va->localPose};
-  const PlacedShape b{vb, toGq(body1->getWorldTransform()) * vb->localPose};
+  const PlacedShape a{&va, toGq(body0->getWorldTransform()) * va.localPose};
+  const PlacedShape b{&vb, toGq(body1->getWorldTransform()) * vb.localPose};
   // Bullet's algorithms report points up to the breaking threshold; contactTest widens it by its own threshold.
   const Real threshold = manifold_->getContactBreakingThreshold() + result->m_closestPointDistanceThreshold;
   ManifoldSink sink(*result);

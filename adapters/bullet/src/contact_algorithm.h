@@ -9,6 +9,7 @@ namespace gq::bullet {
 
 class CollisionConfiguration;
 struct PairState;
+struct ShapeView;
 
 // Owns (or shares) a Bullet persistent manifold and refills it from gq's contacts every frame. It also keeps what
 // it learned about its pair (the two shapes' views, prepared once and re-checked each frame against the shapes'
@@ -30,6 +31,9 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
   void getAllContactManifolds(btManifoldArray& manifolds) override;
 
  private:
+  void collide(bool answerable, const ShapeView& va, const ShapeView& vb, const btCollisionObjectWrapper* body0,
+               const btCollisionObjectWrapper* body1, btManifoldResult* result);
+
   btPersistentManifold* manifold_;
   bool ownManifold_;
   std::unique_ptr<PairState> state_;  // null if it could not be allocated: views are then built per frame

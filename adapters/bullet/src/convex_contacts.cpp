@@ -40,8 +40,43 @@ class BufferedSink final : public ContactSink {
   int count_ = 0;
 };
 
-// The incident points clipped to the reference face, as contacts; `referenceIsB` says which shape owns the face.
-// Returns the smallest depth reported (or +max when none).
+// A manifold keeps at most this many points (Bullet's persistent manifold holds 4).
+constexpr int kManifoldPoints = 4;
+
+// Picks kManifoldPoints of `count` points (normal n) spanning the largest area: the deepest, the farthest from it,
+// the farthest from their line, and the farthest from that line on the other side. Sending Bullet's manifold more
+// than it holds makes it sort its cache once per extra point.
+int reduceToManifold(const std::array<V3, kMaxFeaturePoints>& p, const std::array<Real, kMaxFeaturePoints>& depth,
+                     int count, const V3& n, std::array<int, kManifoldPoints>& keep) {
+  if (count <= kManifoldPoints) {
+    for (int i = 0; i < count; ++i) keep[i] = i;
+    return count;
+  }
+  int first = 0;
+  for (int i = 1; i < count; ++i)
+    if (depth[i] < depth[first]) first = i;
+  int second = first == 0 ? 1 : 0;
+  for (int i = 0; i < count; ++i)
+    if ((p[i] - p[first]).squaredNorm() > (p[second] - p[first]).squaredNorm()) second = i;
+  const V3 edge = p[second] - p[first];
+  const auto side = [&](int i) { return edge.cross(p[i] - p[first]).dot(n); };  // signed area x 2
+  int third = -1, fourth = -1;
+  Real most = 0, least = 0;
+  for (int i = 0; i < count; ++i) {
+    const Real a = side(i);
+    if (a > most) most = a, third = i;
+    if (a < least) least = a, fourth = i;
+  }
+  int k = 0;
+  keep[k++] = first;
+  keep[k++] = second;
+  if (third >= 0) keep[k++] = third;
+  if (fourth >= 0) keep[k++] = fourth;
+  return k;
+}
+
+// The incident points clipped to the reference face, as contacts (at most kManifoldPoints); `referenceIsB` says
+// which shape owns the face. Returns the smallest depth reported (or +max when none).
 Real clippedContacts(const PlacedShape& a, const PlacedShape& b, const V3& normalOnB, Real threshold, Clamp clamp,
                      ContactSink& sink) {
   Real deepest = std::numeric_limits<Real>::max();
@@ -54,13 +89,21 @@ Real clippedContacts(const PlacedShape& a, const PlacedShape& b, const V3& norma
   clipToFace(reference, incident);
   const Real ma = a.view->margin, mb = b.view->margin;
   const V3 n = referenceIsB ? reference.normal : V3(-reference.normal);
+  std::array<V3, kMaxFeaturePoints> points;
+  std::array<Real, kMaxFeaturePoints> depths;
+  int count = 0;
   for (int i = 0; i < incident.count; ++i) {
     const V3& p = incident.points[i];
     const Real depth = std::max((p - reference.origin).dot(reference.normal) - ma - mb, clamp.exactDepth);
     if (depth > threshold) continue;
-    const V3 pointOnB = referenceIsB ? V3(p - n * ma - n * depth) : V3(p + n * mb);
-    sink.add(n, pointOnB, depth, TriangleIds(), true);
-    deepest = std::min(deepest, depth);
+    points[count] = referenceIsB ? V3(p - n * ma - n * depth) : V3(p + n * mb);
+    depths[count++] = depth;
+  }
+  std::array<int, kManifoldPoints> keep;
+  const int kept = reduceToManifold(points, depths, count, n, keep);
+  for (int k = 0; k < kept; ++k) {
+    sink.add(n, points[keep[k]], depths[keep[k]], TriangleIds(), true);
+    deepest = std::min(deepest, depths[keep[k]]);
   }
   return deepest;
 }
