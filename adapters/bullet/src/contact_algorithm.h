@@ -3,12 +3,18 @@
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCollisionCreateFunc.h>
 
+#include <memory>
+
 namespace gq::bullet {
 
 class CollisionConfiguration;
+struct PairState;
+struct ShapeView;
 
-// Owns (or shares) a Bullet persistent manifold and refills it from gq's contacts every frame. It holds no other
-// state, so pairs can run on any thread (btCollisionDispatcherMt).
+// Owns (or shares) a Bullet persistent manifold and refills it from gq's contacts every frame. It also keeps what
+// it learned about its pair (the two shapes' views, prepared once and re-checked each frame against the shapes'
+// parameters; the last separating direction). A pair runs on one thread per frame (btCollisionDispatcherMt
+// dispatches each pair once), so the state needs no lock.
 class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
  public:
   ContactAlgorithm(btPersistentManifold* sharedManifold, const btCollisionAlgorithmConstructionInfo& ci,
@@ -25,8 +31,12 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
   void getAllContactManifolds(btManifoldArray& manifolds) override;
 
  private:
+  void collide(bool answerable, const ShapeView& va, const ShapeView& vb, const btCollisionObjectWrapper* body0,
+               const btCollisionObjectWrapper* body1, btManifoldResult* result);
+
   btPersistentManifold* manifold_;
   bool ownManifold_;
+  std::unique_ptr<PairState> state_;  // null if it could not be allocated: views are then built per frame
 };
 
 // Creates a ContactAlgorithm when both shapes convert to gq or either is bad input (which gets no contact),

@@ -20,6 +20,12 @@ void boxFace(const V3& h, const Mat3<Real>& r, const V3& p, int k, Real sign, Fe
   for (int c = 0; c < 4; ++c) f.points[c] = corners[sign > 0 ? c : 3 - c];
   f.normal = r.col(k) * sign;
   f.origin = f.points[0];
+  f.rectangle = true;
+  f.centre = centre;
+  f.u = r.col(i);
+  f.w = r.col(j);
+  f.hu = h[i];
+  f.hw = h[j];
 }
 
 // Box face most aligned with `dir`; returns its alignment (cosine).
@@ -56,6 +62,7 @@ Real alignedHullFace(const ConvexMeshGeometry<Real>& hull, const Pose& pose, con
   }
   f.normal = pose.rotate(bestNormal);
   f.origin = f.points[0];
+  f.rectangle = false;
   return best;
 }
 
@@ -111,6 +118,7 @@ bool referenceFace(const PlacedShape& s, const V3& dir, Feature& face) {
     face.normal = s.pose.rotate(V3::UnitX());
     face.origin = s.pose.p;
     face.unbounded = true;
+    face.rectangle = false;
     face.count = 0;
     return face.normal.dot(dir) >= kFaceAlignmentCos;
   }
@@ -128,8 +136,54 @@ bool incidentFeature(const PlacedShape& s, const V3& dir, Feature& feature) {
   return false;
 }
 
+namespace {
+
+// Clipping to a rectangle in its own frame: each point as (x, y, height over the face), four axis-aligned half
+// planes (a quarter of the work of the general polygon's cross products and dot products per edge).
+int clipToRectangle(const Feature& reference, Feature& incident) {
+  struct P {
+    Real c[3];
+  };
+  std::array<P, kMaxFeaturePoints> bufferA, bufferB;
+  int count = incident.count;
+  for (int i = 0; i < count; ++i) {
+    const V3 d = incident.points[i] - reference.centre;
+    bufferA[i] = P{{d.dot(reference.u), d.dot(reference.w), d.dot(reference.normal)}};
+  }
+  P* in = bufferA.data();
+  P* out = bufferB.data();
+  const Real limits[2] = {reference.hu, reference.hw};
+  for (int e = 0; e < 4 && count > 0; ++e) {
+    const int axis = e >> 1;
+    const Real sign = (e & 1) ? Real(-1) : Real(1), limit = limits[axis];
+    int n = 0;
+    for (int i = 0; i < count; ++i) {
+      const int next = i + 1 == count ? 0 : i + 1;
+      const Real da = sign * in[i].c[axis] - limit, db = sign * in[next].c[axis] - limit;
+      if (da <= 0 && n < kMaxFeaturePoints) out[n++] = in[i];
+      const bool crosses = (da < 0 && db > 0) || (da > 0 && db < 0);
+      if (crosses && n < kMaxFeaturePoints && (count > 2 || i == 0)) {
+        const Real t = da / (da - db);
+        P q;
+        for (int k = 0; k < 3; ++k) q.c[k] = in[i].c[k] + (in[next].c[k] - in[i].c[k]) * t;
+        out[n++] = q;
+      }
+    }
+    std::swap(in, out);
+    count = n;
+  }
+  for (int i = 0; i < count; ++i)
+    incident.points[i] = reference.centre + reference.u * in[i].c[0] + reference.w * in[i].c[1] +
+                         reference.normal * in[i].c[2];
+  incident.count = count;
+  return count;
+}
+
+}  // namespace
+
 int clipToFace(const Feature& reference, Feature& incident) {
   if (reference.unbounded) return incident.count;
+  if (reference.rectangle) return clipToRectangle(reference, incident);
   V3 centroid = V3::Zero();
   for (int i = 0; i < reference.count; ++i) centroid += reference.points[i];
   centroid /= Real(reference.count);

@@ -20,6 +20,10 @@ struct Feature {
   V3 normal = V3::Zero();  // reference faces: outward unit normal
   V3 origin = V3::Zero();  // reference faces: a point of the face plane
   bool unbounded = false;  // a plane: nothing to clip against
+  // A box face: the rectangle centre + x u + y w with |x| <= hu, |y| <= hw (clipped in its own 2D frame).
+  bool rectangle = false;
+  V3 centre = V3::Zero(), u = V3::Zero(), w = V3::Zero();
+  Real hu = Real(0), hw = Real(0);
 };
 
 // The face of a box, convex hull or plane whose outward normal is within kFaceAlignmentCos of `dir` (unit).

@@ -1,6 +1,7 @@
 #pragma once
 // Contact generation between two Bullet shapes seen through gq, in Bullet's conventions: normalOnB points from
 // shape B to shape A, the point lies on B, and depth < 0 is penetration (pointOnA = pointOnB + normalOnB * depth).
+#include "gq/query.h"
 #include "shape_view.h"
 
 namespace gq::bullet {
@@ -34,10 +35,21 @@ class SwappedSink final : public ContactSink {
 // Contacts closer than `threshold` (depth <= threshold), for:
 //  - a convex shape A against a convex shape or plane B (signed distance, then face clipping for flat contacts);
 //  - a convex shape A against a triangle mesh or heightfield B (per-triangle contacts).
-void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
+// What a pair learned in earlier frames: GJK's warm start, whether the pair was in contact range, and the last axis
+// that separated it beyond the threshold (in A's frame; zero when none), re-checked first each frame.
+struct PairMemory {
+  GjkCache<Real> gjk;
+  V3 separatingAxis = V3::Zero();
+  bool touching = false;
+};
+
+// `memory` (optional) carries what the pair learned from one frame to the next.
+void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
+                    PairMemory* memory = nullptr);
 void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
 
 // Any supported pair in either order (the surface or plane may be A or B); false if the pair has no gq path.
-bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
+                  PairMemory* memory = nullptr);
 
 }  // namespace gq::bullet

@@ -4,10 +4,11 @@
 
 namespace gq::bullet {
 
-bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
+                  PairMemory* memory) {
   const ShapeKind ka = a.view->kind, kb = b.view->kind;
   if (ka == ShapeKind::Convex && (kb == ShapeKind::Convex || kb == ShapeKind::Plane)) {
-    convexContacts(a, b, threshold, sink);
+    convexContacts(a, b, threshold, sink, memory);
     return true;
   }
   if (ka == ShapeKind::Convex) {
@@ -17,7 +18,7 @@ bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Co
   if (kb != ShapeKind::Convex) return false;
   SwappedSink swapped(sink);
   if (ka == ShapeKind::Plane)
-    convexContacts(b, a, threshold, swapped);
+    convexContacts(b, a, threshold, swapped, memory);
   else
     surfaceContacts(b, a, threshold, swapped);
   return true;

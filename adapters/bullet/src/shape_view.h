@@ -10,6 +10,7 @@
 
 #include "bt_convert.h"
 #include "gq/geometry.h"
+#include "gq/shape.h"
 #include "support.h"
 
 namespace gq::bullet {
@@ -33,6 +34,8 @@ struct ShapeView {
   std::shared_ptr<const std::vector<std::uint32_t>> partStarts;
   std::uint32_t heightFieldColumns = 0;
   bool heightFieldRowsAreX = true;
+  // The geometry prepared once (validated, derived data kept) by the owner of a long-lived view; null otherwise.
+  const Shape<Real>* prepared = nullptr;
 
   TriangleIds triangleIds(std::uint32_t gqTriangle) const;
   bool isPolytope() const {
