@@ -80,9 +80,12 @@ TEST(FclRequestIndependence, NearestPointsOfSeparatedPairsAreFcls) {
   for (Kind ka : kinds) {
     for (Kind kb : kinds) {
       const gq::fcltest::TestShape a = gq::fcltest::makeShape(ka, rng), b = gq::fcltest::makeShape(kb, rng);
-      // FCL's closed forms: sphere against sphere, box, capsule and cylinder; capsule-capsule. The rest is GJK.
-      const bool closedForm = (ka == Kind::Sphere || kb == Kind::Sphere) || (ka == Kind::Capsule && kb == Kind::Capsule);
-      const double tolerance = closedForm ? 1e-6 : 5e-3;
+      // FCL's closed forms: sphere against sphere, box, capsule and cylinder; capsule-capsule. The rest is libccd's
+      // GJK, which stops short of the exact pair (points up to a few 1e-2 off on curved shapes; its distance is an
+      // upper bound of gq's exact one).
+      const bool sphere = ka == Kind::Sphere || kb == Kind::Sphere, convex = ka == Kind::Convex || kb == Kind::Convex;
+      const bool closedForm = (sphere && !convex) || (ka == Kind::Capsule && kb == Kind::Capsule);
+      const double tolerance = closedForm ? 1e-6 : 5e-2;
       for (int i = 0; i < 40; ++i) {
         const ::fcl::Transform3d pa = gq::fcltest::randomPose(rng, 3), pb = gq::fcltest::randomPose(rng, 3);
         const ::fcl::DistanceRequestd request(false);
@@ -92,6 +95,7 @@ TEST(FclRequestIndependence, NearestPointsOfSeparatedPairsAreFcls) {
         if (!(gq.min_distance > 0.05) || !(fcl.min_distance > 0.05)) continue;
         SCOPED_TRACE(testing::Message() << gq::fcltest::name(ka) << "-" << gq::fcltest::name(kb) << " pose " << i);
         EXPECT_NEAR(gq.min_distance, fcl.min_distance, tolerance);
+        EXPECT_LE(gq.min_distance, fcl.min_distance + 1e-9);
         EXPECT_NEAR((gq.nearest_points[0] - fcl.nearest_points[0]).norm(), 0, tolerance);
         EXPECT_NEAR((gq.nearest_points[1] - fcl.nearest_points[1]).norm(), 0, tolerance);
         ++compared;
