@@ -195,7 +195,14 @@ template <typename S> struct DynamicAABBTreeCollisionManager<S>::Impl {
 };
 
 template <typename S>
-DynamicAABBTreeCollisionManager<S>::DynamicAABBTreeCollisionManager() : impl_(new Impl()) {}
+DynamicAABBTreeCollisionManager<S>::DynamicAABBTreeCollisionManager()
+    : fclTree_(),
+      tree_topdown_balance_threshold(fclTree_.bu_threshold),
+      tree_topdown_level(fclTree_.topdown_level),
+      impl_(new Impl()) {
+  tree_topdown_balance_threshold = 2;  // FCL's defaults
+  tree_topdown_level = 0;
+}
 template <typename S> DynamicAABBTreeCollisionManager<S>::~DynamicAABBTreeCollisionManager() = default;
 
 template <typename S> void DynamicAABBTreeCollisionManager<S>::registerObjects(const std::vector<Object*>& objs) {
@@ -336,6 +343,24 @@ void DynamicAABBTreeCollisionManager<S>::distance(::fcl::BroadPhaseCollisionMana
 
 template <typename S> bool DynamicAABBTreeCollisionManager<S>::empty() const { return impl_->objects.empty(); }
 template <typename S> size_t DynamicAABBTreeCollisionManager<S>::size() const { return impl_->objects.size(); }
+template <typename S>
+const ::fcl::detail::HierarchyTree<::fcl::AABB<S>>& DynamicAABBTreeCollisionManager<S>::getTree() const {
+  fclTree_.clear();
+  const Impl& m = *impl_;
+  if (m.objects.empty()) return fclTree_;
+  std::vector<DynamicAABBNode*> leaves(m.objects.size());
+  for (std::size_t i = 0; i < m.objects.size(); ++i) {
+    auto* node = new DynamicAABBNode();  // owned by fclTree_ once init() runs
+    node->bv = ::fcl::AABB<S>(m.bounds[i].min, m.bounds[i].max);
+    node->parent = nullptr;
+    node->children[0] = node->children[1] = nullptr;
+    node->data = m.objects[i];
+    leaves[i] = node;
+  }
+  fclTree_.init(leaves, tree_init_level);
+  return fclTree_;
+}
+
 template <typename S> std::size_t DynamicAABBTreeCollisionManager<S>::lastBoxTests() const { return impl_->boxTests; }
 
 template class DynamicAABBTreeCollisionManager<float>;

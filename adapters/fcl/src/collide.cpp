@@ -124,6 +124,21 @@ std::size_t collide(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionO
                      o2->getTransform(), request, result, Options());
 }
 
+template <typename S>
+std::size_t collide(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                    const Options& options) {
+  if (!o1 || !o2) return 0;  // bad input: nothing written
+  return collidePair(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
+                     o2->getTransform(), request, result, options);
+}
+
+template std::size_t collide<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,
+                                    const ::fcl::CollisionRequest<float>&, ::fcl::CollisionResult<float>&,
+                                    const Options&);
+template std::size_t collide<double>(const ::fcl::CollisionObject<double>*, const ::fcl::CollisionObject<double>*,
+                                     const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&,
+                                     const Options&);
 template std::size_t collide<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,
                                     const ::fcl::CollisionRequest<float>&, ::fcl::CollisionResult<float>&);
 template std::size_t collide<double>(const ::fcl::CollisionObject<double>*, const ::fcl::CollisionObject<double>*,

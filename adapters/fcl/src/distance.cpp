@@ -39,6 +39,12 @@ Status deepestContact(const internal::Converted<S>& a, const Transform<S>& pa, c
   return s;
 }
 
+// One side a BVHModel, the other a closed solid (not a plane, half-space or BVHModel).
+template <class S> bool meshAgainstSolid(const internal::Converted<S>& a, const internal::Converted<S>& b) {
+  const auto solid = [](const internal::Converted<S>& c) { return c.isSolid() && !c.isPlaneLike(); };
+  return (a.isMesh() && solid(b)) || (solid(a) && b.isMesh());
+}
+
 // FCL's DistanceRequest::isSatisfied, on the result's public field as FCL 0.7 defines it (the library's out-of-line
 // copy costs a call on the fast path).
 template <class S> bool satisfied(const ::fcl::DistanceResult<S>& result) { return result.min_distance <= S(0); }
@@ -67,6 +73,12 @@ template <class S>
   // FCL 0.7 crashes on these (libccd's GJK calls a null support function for Halfspace/Plane): nothing written.
   if (!s.ok() && (a.isPlaneLike() || b.isPlaneLike())) return kNothing;
   if (!s.ok()) return internal::fclDistance(o1, tf1, o2, tf2, request, result);
+  // A BVHModel reaching a solid shape without enable_signed_distance: FCL's -1 with its GJK's points at the origin
+  // (FCL's mesh-shape traversal runs GJK per triangle), so the answer does not depend on which path gave it.
+  if (!request.enable_signed_distance && d.distance <= S(0) && meshAgainstSolid(a, b)) {
+    d.distance = S(-1);
+    d.point1 = d.point2 = ::fcl::Vector3<S>::Zero();
+  }
   internal::countGq();
   result.update(d.distance, o1, o2, d.b1, d.b2, d.point1, d.point2);
   return result.min_distance;
@@ -116,6 +128,31 @@ S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>*
                       o2->getTransform(), request, result);
 }
 
+template <typename S>
+S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options&) {
+  return distance(o1, o2, request, result);
+}
+
+template <typename S>
+S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+           const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options&) {
+  return distancePair(o1, tf1, o2, tf2, request, result);
+}
+
+template float distance<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,
+                               const ::fcl::DistanceRequest<float>&, ::fcl::DistanceResult<float>&, const Options&);
+template double distance<double>(const ::fcl::CollisionObject<double>*, const ::fcl::CollisionObject<double>*,
+                                 const ::fcl::DistanceRequest<double>&, ::fcl::DistanceResult<double>&,
+                                 const Options&);
+template float distance<float>(const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                               const ::fcl::CollisionGeometry<float>*, const ::fcl::Transform3<float>&,
+                               const ::fcl::DistanceRequest<float>&, ::fcl::DistanceResult<float>&, const Options&);
+template double distance<double>(const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                 const ::fcl::CollisionGeometry<double>*, const ::fcl::Transform3<double>&,
+                                 const ::fcl::DistanceRequest<double>&, ::fcl::DistanceResult<double>&,
+                                 const Options&);
 template float distance<float>(const ::fcl::CollisionObject<float>*, const ::fcl::CollisionObject<float>*,
                                const ::fcl::DistanceRequest<float>&, ::fcl::DistanceResult<float>&);
 template double distance<double>(const ::fcl::CollisionObject<double>*, const ::fcl::CollisionObject<double>*,

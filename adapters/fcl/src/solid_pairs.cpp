@@ -5,13 +5,16 @@
 
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/cone.h>
 #include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/halfspace.h>
 #include <fcl/geometry/shape/sphere.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -823,15 +826,16 @@ S fclDistanceEntry(const FclGeometry<S>* ga, const Isometry<S>* ta, const FclGeo
                    const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
   const Solid<S> a{ga, ta}, b{gb, tb};
   DistanceResult<S> d;
-  const bool withPoints = request.enable_nearest_points;
-  const DistanceAsk ask{withPoints, request.enable_signed_distance, double(request.distance_tolerance),
+  // Nearest points are written whatever enable_nearest_points says, as FCL 0.7's shape traversal always passes its
+  // solver's points to DistanceResult::update (a host reading them must not see stale values).
+  const DistanceAsk ask{true, request.enable_signed_distance, double(request.distance_tolerance),
                        double(result.min_distance)};
   switch (distanceEntry<S, A, B>(a, b, ask, d)) {
     case Answer::Done: break;
     case Answer::Invalid: return std::numeric_limits<S>::max();  // bad input: nothing written
     case Answer::Unanswered: return unansweredDistance<S, A, B>(a, b, request, result);
   }
-  keepSmaller(d.distance, a.geometry, b.geometry, withPoints ? &d : nullptr, result);
+  keepSmaller(d.distance, a.geometry, b.geometry, &d, result);
   countGq();  // after the result is written: nothing of the answer stays live across the call
   return result.min_distance;
 }
@@ -843,6 +847,100 @@ struct Collided {
   bool added;
 };
 
+// ---- contact positions by FCL's rules ----
+// gq's depth and normal are exact; the position is a choice. By default it is midway between the two deepest points;
+// the pairs below place it where FCL 0.7's closed forms do, so a host sees FCL's point with the same depth.
+
+// FCL's tolerance for "a face or axis parallel to the half-space" (fcl::detail::halfspaceIntersectTolerance).
+template <class S> constexpr S fclParallelTolerance() { return std::is_same_v<S, float> ? S(1e-4) : S(1e-7); }
+
+template <FS A, FS B> constexpr bool fclPositionRule() {
+  constexpr auto halfspaceRule = [](FS x) {
+    return x == FS::Sphere || x == FS::Box || x == FS::Capsule || x == FS::Cylinder || x == FS::Cone;
+  };
+  return (A == FS::Sphere && B == FS::Sphere) || (B == FS::Halfspace && halfspaceRule(A)) ||
+         (A == FS::Halfspace && halfspaceRule(B));
+}
+
+// A shape reaching a half-space whose outward world normal is n, `depth` deep: FCL's contact position. FCL picks the
+// deepest point (the centre of a deepest face, or of a capsule's or cylinder's deepest side line, when it is parallel
+// to the boundary within fclParallelTolerance) and reports it moved half the depth back along n.
+template <class S, FS A> Vec3<S> halfspaceContactPosition(Solid<S> shape, const Vec3<S>& n, S depth) {
+  const Mat3<S> r = shape.tf->linear();
+  const Vec3<S> t = shape.tf->translation();
+  const S tol = fclParallelTolerance<S>();
+  Vec3<S> deepest = t;
+  if constexpr (A == FS::Sphere) {
+    deepest = t - n * sphereRadius(shape);
+  } else if constexpr (A == FS::Box) {
+    const Vec3<S> side = static_cast<const ::fcl::Box<S>*>(shape.geometry)->side;
+    const Vec3<S> q = r.transpose() * n;
+    const auto towards = [&](int i) { return r.col(i) * (S(0.5) * side[i] * (q[i] * side[i] > S(0) ? S(-1) : S(1))); };
+    int face = -1;
+    for (int i = 0; i < 3 && face < 0; ++i)
+      if (std::abs(q[i] - S(1)) < tol || std::abs(q[i] + S(1)) < tol) face = i;
+    if (face >= 0) deepest += towards(face);
+    else deepest += towards(0) + towards(1) + towards(2);
+  } else if constexpr (A == FS::Capsule) {
+    const auto* c = static_cast<const ::fcl::Capsule<S>*>(shape.geometry);
+    const Vec3<S> z = r.col(2);
+    const S cosa = z.dot(n);
+    if (!(std::abs(cosa) < tol)) deepest += z * (c->lz * S(0.5) * (cosa > S(0) ? S(-1) : S(1)));
+    deepest -= n * c->radius;
+  } else if constexpr (A == FS::Cylinder) {
+    const auto* c = static_cast<const ::fcl::Cylinder<S>*>(shape.geometry);
+    const Vec3<S> z = r.col(2);
+    const S cosa = z.dot(n);
+    if (std::abs(cosa) < tol) {
+      deepest -= n * c->radius;
+    } else {
+      // The deepest rim point; the disc's centre when the axis is parallel to n.
+      Vec3<S> rim = z * cosa - n;
+      const S len = rim.norm();
+      rim = std::abs(cosa + S(1)) < tol || std::abs(cosa - S(1)) < tol || !(len > S(0)) ? Vec3<S>::Zero()
+                                                                                        : Vec3<S>(rim * (c->radius / len));
+      deepest += z * (c->lz * S(0.5) * (cosa > S(0) ? S(-1) : S(1))) + rim;
+    }
+  } else if constexpr (A == FS::Cone) {
+    const auto* c = static_cast<const ::fcl::Cone<S>*>(shape.geometry);
+    const Vec3<S> z = r.col(2);
+    const S cosa = z.dot(n);
+    if (std::abs(cosa) < tol) {
+      deepest += -z * (c->lz * S(0.5)) - n * c->radius;
+    } else {
+      // FCL takes the base rim for every cosa < tol, also when the apex points into the half-space and is deeper
+      // (its depth is then wrong too): the deeper of the two here.
+      Vec3<S> rim = z * cosa - n;
+      const S len = rim.norm();
+      rim = std::abs(cosa + S(1)) < tol || std::abs(cosa - S(1)) < tol || !(len > S(0))
+                ? Vec3<S>::Zero()
+                : Vec3<S>(rim * (c->radius / len));
+      const Vec3<S> apex = t + z * (c->lz * S(0.5)), base = t - z * (c->lz * S(0.5)) + rim;
+      deepest = apex.dot(n) < base.dot(n) ? apex : base;  // the deeper; the base on a tie, as FCL
+    }
+  }
+  return deepest + n * (S(0.5) * depth);
+}
+
+template <class S> Vec3<S> halfspaceNormal(Solid<S> halfspace) {
+  return halfspace.tf->linear() * static_cast<const ::fcl::Halfspace<S>*>(halfspace.geometry)->n;
+}
+
+template <class S, FS A, FS B> Vec3<S> fclContactPosition(Solid<S> a, Solid<S> b, S depth, const Vec3<S>& midway) {
+  if constexpr (A == FS::Sphere && B == FS::Sphere) {
+    // FCL: c1 + (c2 - c1) r1 / (r1 + r2).
+    const S ra = sphereRadius(a), rb = sphereRadius(b);
+    const Vec3<S> ca = a.tf->translation(), cb = b.tf->translation();
+    return ca + (cb - ca) * (ra / (ra + rb));
+  } else if constexpr (B == FS::Halfspace) {
+    return halfspaceContactPosition<S, A>(a, halfspaceNormal(b), depth);
+  } else if constexpr (A == FS::Halfspace) {
+    return halfspaceContactPosition<S, B>(b, halfspaceNormal(a), depth);
+  } else {
+    return midway;
+  }
+}
+
 // Collide's contact from the signed distance (enable_contact). Out of line: inline, its frame cost the boolean
 // path of the heavier pairs (box-box collide 56 -> 70 ns).
 template <class S, FS A, FS B>
@@ -851,9 +949,12 @@ template <class S, FS A, FS B>
   DistanceResult<S> d;
   const Answer answer = distanceEntry<S, A, B>(Solid<S>{ga, ta}, Solid<S>{gb, tb}, DistanceAsk{true, true}, d);
   const bool added = answer == Answer::Done && d.distance <= S(0);
-  if (added)
-    result.addContact(::fcl::Contact<S>(ga, gb, kNoPrimitive, kNoPrimitive, (d.point0 + d.point1) * S(0.5), d.normal,
-                                        -d.distance));
+  if (added) {
+    Vec3<S> position = (d.point0 + d.point1) * S(0.5);
+    if constexpr (fclPositionRule<A, B>())
+      position = fclContactPosition<S, A, B>(Solid<S>{ga, ta}, Solid<S>{gb, tb}, -d.distance, position);
+    result.addContact(::fcl::Contact<S>(ga, gb, kNoPrimitive, kNoPrimitive, position, d.normal, -d.distance));
+  }
   return {answer, added};
 }
 
@@ -862,6 +963,27 @@ template <class S, FS A, FS B>
 // pairs' cost 36-42 instructions more).
 template <class S, FS A, FS B> [[gnu::noinline]] Answer overlapCall(Solid<S> a, Solid<S> b, bool checkMiss, bool& hit) {
   return overlapEntry<S, A, B>(a, b, checkMiss, hit);
+}
+
+// A contact FCL computes (its MPR or box-box routine) under gq's boolean, so that the boolean does not depend on the
+// request's flags: a pair gq finds apart writes nothing; a pair gq finds touching or overlapping gets FCL's contact,
+// or gq's exact one where FCL misses it (libccd's MPR reports no contact for shapes that touch without overlapping).
+template <class S, FS A, FS B>
+[[gnu::noinline]] std::size_t collideWithFclContact(Solid<S> a, Solid<S> b, const ::fcl::CollisionRequest<S>& request,
+                                                    ::fcl::CollisionResult<S>& result, std::size_t before) {
+  bool hit = false;
+  switch (overlapCall<S, A, B>(a, b, true, hit)) {
+    case Answer::Invalid: return 0;  // bad input: nothing written
+    case Answer::Unanswered: return collideOthers(a.geometry, *a.tf, b.geometry, *b.tf, request, result, true);
+    case Answer::Done: break;
+  }
+  if (!hit) {
+    countGq();
+    return before;
+  }
+  collideOthers(a.geometry, *a.tf, b.geometry, *b.tf, request, result, true);
+  if (result.numContacts() == before) collideWithContact<S, A, B>(a.geometry, a.tf, b.geometry, b.tf, result);
+  return result.numContacts();
 }
 
 // Two closed solids under collide: at most one contact, no buffer; contact geometry only when asked for.
@@ -889,6 +1011,7 @@ std::size_t fclCollideEntry(const FclGeometry<S>* ga, const Isometry<S>* ta, con
   const std::size_t before = result.numContacts();
   if (satisfiedBy(request, before)) return before;
   const bool fclContact = request.enable_contact && contactFromFcl(A, B, options);
+  if (!request.enable_cost && fclContact) return collideWithFclContact<S, A, B>(a, b, request, result, before);
   if (!request.enable_cost && !fclContact) {
     const Collided c = collideSolids<S, A, B>(a, b, request.enable_contact, before > 0, result);
     switch (c.answer) {

@@ -10,10 +10,12 @@
 //    gq::fcl::collide / distance on ::fcl::DefaultCollisionData / DefaultDistanceData.
 #include <cstddef>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include <fcl/broadphase/broadphase_collision_manager.h>
 #include <fcl/broadphase/default_broadphase_callbacks.h>
+#include <fcl/broadphase/detail/hierarchy_tree.h>
 
 #include "gq/fcl/collision.h"
 
@@ -21,7 +23,27 @@ namespace gq::fcl {
 
 template <typename S>
 class DynamicAABBTreeCollisionManager : public ::fcl::BroadPhaseCollisionManager<S> {
+  // FCL's tree type, filled by getTree() from gq's tree (declared first: the public references below bind to it).
+  mutable ::fcl::detail::HierarchyTree<::fcl::AABB<S>> fclTree_;
+
  public:
+  // FCL's public typedefs and tuning members, with FCL's defaults. gq's own tree does not use FCL's balancing:
+  // tree_init_level, tree_topdown_balance_threshold and tree_topdown_level shape the FCL tree getTree() returns;
+  // max_tree_nonbalanced_level and tree_incremental_balance_pass are accepted and have no effect (gq rebuilds its
+  // tree when a refit grows the root's area by more than 2x); octree_as_geometry_collide / _distance are accepted and
+  // an octree object is always queried as one geometry (FCL's answer with the flag true; with it false FCL calls the
+  // callback once per occupied cell with a temporary box object, the same pairs and the same minimum distance).
+  using DynamicAABBNode = ::fcl::detail::NodeBase<::fcl::AABB<S>>;
+  using DynamicAABBTable = std::unordered_map<::fcl::CollisionObject<S>*, DynamicAABBNode*>;
+
+  int max_tree_nonbalanced_level = 10;
+  int tree_incremental_balance_pass = 10;
+  int& tree_topdown_balance_threshold;
+  int& tree_topdown_level;
+  int tree_init_level = 0;
+  bool octree_as_geometry_collide = true;
+  bool octree_as_geometry_distance = false;
+
   using Object = ::fcl::CollisionObject<S>;
   using CollisionCallBack = ::fcl::CollisionCallBack<S>;
   using DistanceCallBack = ::fcl::DistanceCallBack<S>;
@@ -46,6 +68,11 @@ class DynamicAABBTreeCollisionManager : public ::fcl::BroadPhaseCollisionManager
   void distance(::fcl::BroadPhaseCollisionManager<S>* other, void* cdata, DistanceCallBack callback) const override;
   bool empty() const override;
   size_t size() const override;
+
+  // FCL's HierarchyTree over the registered objects (node data = the CollisionObject*), built on each call from gq's
+  // world boxes with FCL's init(leaves, tree_init_level); valid until the next getTree() call or the manager's end.
+  // gq's queries do not use it.
+  const ::fcl::detail::HierarchyTree<::fcl::AABB<S>>& getTree() const;
 
   // Number of AABB tests the last query ran (diagnostics).
   std::size_t lastBoxTests() const;

@@ -47,12 +47,26 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
                     const Options& options);
 
 template <typename S>
+std::size_t collide(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
+                    const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
+                    const Options& options);
+
+template <typename S>
 S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
            const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result);
 template <typename S>
 S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
            const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
            const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result);
+// Options are accepted by distance for symmetry with collide; distances and nearest points are the same in every
+// mode (gq's own in every mode), so they change nothing there.
+template <typename S>
+S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options& options);
+template <typename S>
+S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+           const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options& options);
 
 // How calls were answered on this thread since the last reset (diagnostics and tests).
 struct AdapterCounters {
