@@ -117,7 +117,11 @@ struct PairSide {
     }
     support = viewShape(shape, view);
     view.prepared = nullptr;
-    if (support == Support::Gq && Shape<Real>::make(view.geom, prepared).ok()) view.prepared = &prepared;
+    // Only convex pairs read the prepared shape; a mesh or heightfield is not prepared (making a Shape bounds every
+    // vertex, which cost a pair with a large ground more than its contacts).
+    const GeometryType type = view.geom.type();
+    const bool surface = type == GeometryType::TriangleMesh || type == GeometryType::HeightField;
+    if (support == Support::Gq && !surface && Shape<Real>::make(view.geom, prepared).ok()) view.prepared = &prepared;
     return support;
   }
 };
