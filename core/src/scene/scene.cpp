@@ -411,32 +411,50 @@ template <class T> Status checkRay(const Vec3<T>& origin, const Vec3<T>& unitDir
 template <class T> bool hitBefore(T d0, InstanceId id0, T d1, InstanceId id1) {
   return d0 < d1 || (d0 == d1 && id0 < id1);
 }
+
+// One ray through the scene's instances: the filter, then each instance's own raycast. An input error stops the walk
+// and is returned; an instance that cannot answer (unsupported) is counted and left out.
+template <class T> struct SceneRayWalk {
+  SceneRayWalk(const Vec3<T>& o, const Vec3<T>& d, T m, HitFlags f, const SceneFilter& fl)
+      : origin(o), unitDir(d), maxDist(m), hitFlags(f), filter(fl) {}
+  const Vec3<T>& origin;
+  const Vec3<T>& unitDir;
+  T maxDist;
+  HitFlags hitFlags;
+  const SceneFilter& filter;
+  Status failure;
+  std::uint32_t skipped = 0;
+
+  // The hits written to `hits` (at most maxHits; 0 when filtered out or left out), or -1 when the walk must stop.
+  template <class Instance> int cast(const Instance& inst, std::uint32_t maxHits, RaycastHit<T>* hits) {
+    if (!passes(filter, inst.mask, inst.id)) return 0;
+    std::uint32_t n = 0;
+    const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, maxHits, hits, n);
+    if (s.ok()) return int(n);
+    if (isInputError(s)) {
+      failure = s;
+      return -1;
+    }
+    ++skipped;
+    return 0;
+  }
+};
 }  // namespace
 
 template <class T>
 Status Scene<T>::raycastClosest(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, SceneRaycastHit<T>& hit,
                                 bool& hasHit, HitFlags hitFlags, const SceneFilter& filter) const noexcept {
   if (Status s = checkRay(origin, unitDir, maxDist); !s.ok()) return s;
+  SceneRayWalk<T> walk(origin, unitDir, maxDist, hitFlags, filter);
   SceneRaycastHit<T> best;
   bool found = false;
-  Status failure;
-  std::uint32_t skipped = 0;
   if (impl_) {
     const Impl& m = *impl_;
     if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
           const auto& inst = m.instances[i];
-          if (!passes(filter, inst.mask, inst.id)) return maxDist;
           RaycastHit<T> h;
-          std::uint32_t n = 0;
-          const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, 1u, &h, n);
-          if (!s.ok()) {
-            if (isInputError(s)) {
-              failure = s;
-              return T(-1);
-            }
-            ++skipped;
-            return maxDist;
-          }
+          const int n = walk.cast(inst, 1u, &h);
+          if (n < 0) return T(-1);
           if (n > 0 && (!found || hitBefore(h.distance, inst.id, best.hit.distance, best.id))) {
             best.id = inst.id;
             best.hit = h;
@@ -447,36 +465,26 @@ Status Scene<T>::raycastClosest(const Vec3<T>& origin, const Vec3<T>& unitDir, T
       return outOfMemory();
     }
   }
-  if (!failure.ok()) return failure;
+  if (!walk.failure.ok()) return walk.failure;
   hasHit = found;
   if (found) hit = best;
-  return skippedWarning(skipped);
+  return skippedWarning(walk.skipped);
 }
 
 template <class T>
 Status Scene<T>::raycastAny(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist, SceneRaycastHit<T>& hit,
                             bool& hasHit, HitFlags hitFlags, const SceneFilter& filter) const noexcept {
   if (Status s = checkRay(origin, unitDir, maxDist); !s.ok()) return s;
+  SceneRayWalk<T> walk(origin, unitDir, maxDist, hitFlags, filter);
   SceneRaycastHit<T> any;
   bool found = false;
-  Status failure;
-  std::uint32_t skipped = 0;
   if (impl_) {
     const Impl& m = *impl_;
     if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
           const auto& inst = m.instances[i];
-          if (!passes(filter, inst.mask, inst.id)) return maxDist;
           RaycastHit<T> h;
-          std::uint32_t n = 0;
-          const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, 1u, &h, n);
-          if (!s.ok()) {
-            if (isInputError(s)) {
-              failure = s;
-              return T(-1);
-            }
-            ++skipped;
-            return maxDist;
-          }
+          const int n = walk.cast(inst, 1u, &h);
+          if (n < 0) return T(-1);
           if (n == 0) return maxDist;
           any.id = inst.id;
           any.hit = h;
@@ -486,13 +494,13 @@ Status Scene<T>::raycastAny(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
       return outOfMemory();
     }
   }
-  if (!failure.ok()) return failure;
+  if (!walk.failure.ok()) return walk.failure;
   hasHit = found;
   if (found) {
     hit = any;
     return {};  // instances left out before the hit do not change that there is one
   }
-  return skippedWarning(skipped);
+  return skippedWarning(walk.skipped);
 }
 
 template <class T>
@@ -502,8 +510,7 @@ Status Scene<T>::raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
   if (Status s = checkRay(origin, unitDir, maxDist); !s.ok()) return s;
   if (maxHits == 0) return Status::invalid("maxHits is 0");
   if (hits == nullptr) return Status::invalid("hits is null");
-  Status failure;
-  std::uint32_t skipped = 0;
+  SceneRayWalk<T> walk(origin, unitDir, maxDist, hitFlags, filter);
   std::vector<SceneRaycastHit<T>> best;  // sorted by (distance, id), at most maxHits
   try {
     std::vector<RaycastHit<T>> local(maxHits);
@@ -512,20 +519,9 @@ Status Scene<T>::raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
       const Impl& m = *impl_;
       if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
             const auto& inst = m.instances[i];
-            auto cutoff = [&] { return best.size() == maxHits ? best.back().hit.distance : maxDist; };
-            if (!passes(filter, inst.mask, inst.id)) return cutoff();
-            std::uint32_t n = 0;
-            const Status s =
-                raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, maxHits, local.data(), n);
-            if (!s.ok()) {
-              if (isInputError(s)) {
-                failure = s;
-                return T(-1);
-              }
-              ++skipped;
-              return cutoff();
-            }
-            for (std::uint32_t k = 0; k < n; ++k) {
+            const int n = walk.cast(inst, maxHits, local.data());
+            if (n < 0) return T(-1);
+            for (int k = 0; k < n; ++k) {
               const SceneRaycastHit<T> h{inst.id, local[k]};
               const auto pos = std::upper_bound(best.begin(), best.end(), h, [](const auto& a, const auto& b) {
                 return hitBefore(a.hit.distance, a.id, b.hit.distance, b.id);
@@ -536,7 +532,7 @@ Status Scene<T>::raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
               }
               best.insert(pos, h);
             }
-            return cutoff();
+            return best.size() == maxHits ? best.back().hit.distance : maxDist;
           })) {
         return outOfMemory();
       }
@@ -544,10 +540,10 @@ Status Scene<T>::raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
   } catch (const std::bad_alloc&) {
     return outOfMemory();
   }
-  if (!failure.ok()) return failure;
+  if (!walk.failure.ok()) return walk.failure;
   std::copy(best.begin(), best.end(), hits);
   hitCount = std::uint32_t(best.size());
-  return skippedWarning(skipped);
+  return skippedWarning(walk.skipped);
 }
 
 // ---- sweep, overlap, nearest ------------------------------------------------------------------------------------
