@@ -1,6 +1,7 @@
 #pragma once
 // Shared pieces of the geomquery extension: the geometry object (a prepared shape in float or double), poses,
 // Status -> Python exception, and numpy array checks.
+#include <pybind11/eigen.h>  // in every file: one type_caster for Eigen types across the module
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 

@@ -1,6 +1,5 @@
 // Single queries: raycast, sweep, overlap, penetration, distance, point distance, bounds, the mesh and heightfield
 // queries and triangle contacts. The scalar type is the geometries' (mixing float32 and float64 is a TypeError).
-#include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include <limits>

@@ -1,5 +1,4 @@
 // Scenes (gq/scene.h): many geometry instances in a dynamic AABB tree, queried at once; float32 or float64 per scene.
-#include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include <limits>

@@ -1,5 +1,4 @@
 // geomquery.urdf: a robot's self-collision model (plugins/urdf) with check, check_batch and self_distance.
-#include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
