@@ -151,7 +151,7 @@ class RayMeshIntersector:
             locations = position[index_ray]
         else:
             index_ray, _, _, locations, index_tri = cooked.scene.raycast_all_batch(
-                origins, directions, float("inf"), int(max_hits)
+                origins, directions, float("inf"), int(max_hits), True
             )
         if return_locations:
             return index_tri, index_ray, locations

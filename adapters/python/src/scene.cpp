@@ -249,7 +249,7 @@ void bindScene(py::module_& m) {
            "Closest hit of each ray: (hit, id (-1: none), distance, position, normal, face_index).")
       .def("raycast_all_batch",
            [](PyScene& s, const py::handle& origins, const py::handle& dirs, double maxDistance, std::uint32_t maxHits,
-              std::uint32_t mask, std::uint32_t threads) {
+              bool bothSides, std::uint32_t mask, std::uint32_t threads) {
              if (maxHits == 0) throw py::value_error("Scene.raycast_all_batch: max_hits must be >= 1");
              return s.with([&](auto& sc) {
                using T = ST<decltype(sc)>;
@@ -262,6 +262,7 @@ void bindScene(py::module_& m) {
                rays.unitDirs = strided(d);
                rays.maxDist = T(maxDistance);
                rays.hitFlags = gq::kDefaultHitFlags | gq::HitFlag::MeshMultiple;
+               if (bothSides) rays.hitFlags |= gq::HitFlag::MeshBothSides;
                const gq::SceneFilter filter = maskFilter(mask);
                std::vector<std::uint32_t> counts(n, 0);
                gq::SceneHitsOutput<T> out;
@@ -296,7 +297,7 @@ void bindScene(py::module_& m) {
              });
            },
            py::arg("origins"), py::arg("directions"), py::arg("max_distance") = kInf, py::arg("max_hits") = 16,
-           py::arg("mask") = 0xffffffffu, py::arg("threads") = 0,
+           py::arg("both_sides") = false, py::arg("mask") = 0xffffffffu, py::arg("threads") = 0,
            "Up to max_hits hits of each ray, sorted per ray: (ray_index, id, distance, position, face_index), flat.");
 }
 
