@@ -190,3 +190,22 @@ def test_errors_raise_with_messages():
         gq.ConvexMesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]], dtype=np.float64))
     with pytest.raises(ValueError, match="NaN|finite"):
         gq.TriangleMesh(np.where(np.arange(24).reshape(8, 3) == 5, np.nan, v), f)
+
+
+def test_overlap_fast_and_general_paths_agree():
+    s, b = gq.Sphere(1.0), gq.Box((1.0, 1.0, 1.0))
+    for x in (1.5, 2.5):
+        pose = gq.Pose((x, 0.0, 0.0))
+        answers = {
+            gq.overlap(s, pose, b, None),
+            gq.overlap(s, (x, 0, 0, 0, 0, 0, 1), b, gq.Pose()),
+            gq.overlap(geometry0=s, pose0=pose, geometry1=b, pose1=None),
+            gq.overlap(s, np.array([x, 0, 0, 0, 0, 0, 1.0]), b, None),
+        }
+        assert answers == {x < 2.0}
+    with pytest.raises(ValueError, match="pose1.*unit"):
+        gq.overlap(s, None, b, gq.Pose(None, (0.0, 0.0, 0.0, 2.0)))
+    with pytest.raises(TypeError):
+        gq.overlap(s, None, "box", None)
+    with pytest.raises(TypeError):
+        gq.overlap(s, None, b)

@@ -1,5 +1,6 @@
 // Batched forms over gq/batch.h: (N, 3) rays and points, (N, 7) poses. Each runs without the GIL on gq's thread pool
 // and answers bitwise what the loop of single queries answers. Outputs keep the geometry's dtype.
+#include <chrono>
 #include <limits>
 #include <vector>
 
@@ -104,6 +105,43 @@ template <class T> gq::StridedArray<gq::Transform<T>> stridedPoses(const std::ve
 }  // namespace
 
 void bindBatches(py::module_& m) {
+  // Benchmark support (comparisons/bench_python.py): the seconds the C++ calls alone take, timed in C++, as the
+  // reference the Python entries are measured against.
+  m.def("_time_raycast_batch_faces",
+        [](const py::handle& origins, const py::handle& dirs, const GeometryObject& g, std::uint32_t threads) {
+          if (g.f32) throw py::type_error("_time_raycast_batch_faces: float64 geometry expected");
+          const auto o = rowsArray<double>(origins, 3, "origins");
+          const auto d = rowsArray<double>(dirs, 3, "directions");
+          const std::size_t n = std::size_t(o.shape(0));
+          gq::RayBatch<double> rays;
+          rays.origins = strided(o);
+          rays.unitDirs = strided(d);
+          rays.maxDist = std::numeric_limits<double>::infinity();
+          rays.hitFlags = gq::HitFlag::FaceIndex | gq::HitFlag::MeshBothSides;
+          std::vector<gq::RaycastHit<double>> hits(n);
+          std::vector<std::uint8_t> has(n, 0);
+          py::gil_scoped_release release;
+          const auto t0 = std::chrono::steady_clock::now();
+          const gq::Status s = gq::raycastBatch(rays, g.shape<double>(), gq::Transform<double>(), hits.data(), has.data(),
+                                                nullptr, batchSettings(threads));
+          const auto t1 = std::chrono::steady_clock::now();
+          if (!s.ok()) throw std::runtime_error(s.toString());
+          return std::chrono::duration<double>(t1 - t0).count();
+        });
+  m.def("_time_overlap_loop",
+        [](const GeometryObject& g0, const Pose& p0, const GeometryObject& g1, const Pose& p1, std::size_t calls) {
+          if (g0.f32 || g1.f32) throw py::type_error("_time_overlap_loop: float64 geometries expected");
+          std::size_t hits = 0;
+          const auto t0 = std::chrono::steady_clock::now();
+          for (std::size_t i = 0; i < calls; ++i) {
+            bool out = false;
+            const gq::Transform<double>* volatile pose0 = &p0.d;  // one call per iteration, not hoisted
+            if (gq::overlap(g0.d, *pose0, g1.d, p1.d, out).ok() && out) ++hits;
+          }
+          const auto t1 = std::chrono::steady_clock::now();
+          return py::make_tuple(std::chrono::duration<double>(t1 - t0).count(), hits);
+        });
+
   m.def("raycast_batch",
         [](const py::handle& origins, const py::handle& dirs, const GeometryObject& g, const py::handle& p,
            double maxDistance, bool bothSides, std::uint32_t threads) {

@@ -56,6 +56,52 @@ template <class T> py::array_t<T> triangleArray(const gq::Triangle<T>& t) {
   return a;
 }
 
+
+PyObject* gSlowOverlap = nullptr;
+PyTypeObject* gGeometryType = nullptr;
+PyTypeObject* gPoseType = nullptr;
+
+// The C++ object of a pybind11 instance of a simple layout (one registered type in its hierarchy), or null.
+template <class C> const C* directValue(PyObject* o, PyTypeObject* type) {
+  if (!PyObject_TypeCheck(o, type)) return nullptr;
+  auto* inst = reinterpret_cast<py::detail::instance*>(o);
+  if (!inst->simple_layout) return nullptr;
+  return static_cast<const C*>(inst->simple_value_holder[0]);
+}
+
+template <class T> bool directPose(PyObject* o, gq::Transform<T>& out) {
+  if (o == Py_None) {
+    out = gq::Transform<T>();
+    return true;
+  }
+  const Pose* p = directValue<Pose>(o, gPoseType);
+  if (!p) return false;
+  out = p->get<T>();
+  return true;
+}
+
+template <class T> bool directOverlap(const GeometryObject& g0, PyObject* p0, const GeometryObject& g1, PyObject* p1,
+                                      bool& out) {
+  gq::Transform<T> t0, t1;
+  if (!directPose(p0, t0) || !directPose(p1, t1)) return false;
+  return gq::overlap(g0.shape<T>(), t0, g1.shape<T>(), t1, out).ok();
+}
+
+PyObject* fastOverlap(PyObject*, PyObject* const* args, Py_ssize_t nargsf, PyObject* kwnames) {
+  const Py_ssize_t nargs = PyVectorcall_NARGS(nargsf);
+  if (kwnames == nullptr && nargs == 4) {
+    const GeometryObject* g0 = directValue<GeometryObject>(args[0], gGeometryType);
+    const GeometryObject* g1 = directValue<GeometryObject>(args[2], gGeometryType);
+    if (g0 && g1 && g0->f32 == g1->f32 && !g0->callbackErrors && !g1->callbackErrors) {
+      bool out = false;
+      const bool done = g0->f32 ? directOverlap<float>(*g0, args[1], *g1, args[3], out)
+                                : directOverlap<double>(*g0, args[1], *g1, args[3], out);
+      if (done) return PyBool_FromLong(out);
+    }
+  }
+  return PyObject_Vectorcall(gSlowOverlap, args, nargsf, kwnames);
+}
+
 }  // namespace
 
 void bindQueries(py::module_& m) {
@@ -95,7 +141,7 @@ void bindQueries(py::module_& m) {
       .def_readonly("separation", &PyContact::separation)
       .def_readonly("triangle_index", &PyContact::triangleIndex);
 
-  m.def("overlap",
+  m.def("_overlap",
         [](const GeometryObject& g0, const py::handle& p0, const GeometryObject& g1, const py::handle& p1) {
           requireSameDtype(g0, g1, "overlap");
           bool out = false;
@@ -107,6 +153,18 @@ void bindQueries(py::module_& m) {
         },
         py::arg("geometry0"), py::arg("pose0"), py::arg("geometry1"), py::arg("pose1"),
         "Whether the two geometries overlap (touching counts).");
+
+  // overlap() is the call hosts make millions of times: a METH_FASTCALL function that reads the geometry and pose
+  // objects directly (pybind11's argument dispatch costs more than the query) for the positional form; keywords,
+  // other argument types and every failure go through _overlap above, which converts and raises.
+  gSlowOverlap = m.attr("_overlap").ptr();
+  gGeometryType = reinterpret_cast<PyTypeObject*>(py::type::of<GeometryObject>().ptr());
+  gPoseType = reinterpret_cast<PyTypeObject*>(py::type::of<Pose>().ptr());
+  static PyMethodDef overlapDef = {"overlap", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&fastOverlap)),
+                                   METH_FASTCALL | METH_KEYWORDS,
+                                   "overlap(geometry0, pose0, geometry1, pose1) -> bool: whether the two geometries "
+                                   "overlap (touching counts)."};
+  m.add_object("overlap", py::reinterpret_steal<py::object>(PyCFunction_NewEx(&overlapDef, nullptr, m.attr("__name__").ptr())));
 
   m.def("penetration",
         [](const GeometryObject& g0, const py::handle& p0, const GeometryObject& g1, const py::handle& p1) {
