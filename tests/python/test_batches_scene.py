@@ -147,3 +147,11 @@ def test_scene_multi_hits_sorted_per_ray():
     assert set(ray.tolist()) == {0} and ids[0] == 1 and ids[-1] == 2  # the second ray misses
     assert np.all(np.diff(dist) >= 0) and dist[0] == pytest.approx(4.0) and dist[-1] == pytest.approx(10.0 - np.sqrt(0.23))
     assert np.allclose(pos[0], [-1.0, 0.1, 0.1]) and face[-1] == -1
+
+
+def test_batches_call_python_custom_shapes_from_worker_threads():
+    ball = gq.CustomShape(lambda d: np.asarray(d) / np.linalg.norm(d) * 0.5, ((-0.5,) * 3, (0.5,) * 3))
+    poses = random_poses(np.random.default_rng(2), 64, np.float64)
+    over = gq.overlap_batch(ball, poses, gq.Sphere(0.5), None)
+    expected = np.linalg.norm(poses[:, :3], axis=1) <= 1.0
+    assert np.array_equal(over, expected)
