@@ -1,5 +1,6 @@
 #include "collision_object.h"
 
+#include <dart/dynamics/Shape.hpp>
 #include <dart/dynamics/ShapeFrame.hpp>
 
 namespace gq {
@@ -14,6 +15,8 @@ CollisionObject::CollisionObject(::dart::collision::CollisionDetector* detector,
 void CollisionObject::refresh() {
   ++generation_;
   const auto shape = mShapeFrame->getShape();
+  shapeSeen_ = shape.get();
+  versionSeen_ = shape ? shape->getVersion() : 0;
   if (!shape) {
     status_ = Status(StatusCode::InvalidArgument, "the shape frame has no shape");
     converted_ = ConvertedShape();
@@ -26,6 +29,11 @@ void CollisionObject::refresh() {
 }
 
 void CollisionObject::updateEngineData() {
+  const auto& shape = mShapeFrame->getShape();
+  if (shape.get() != shapeSeen_ || (shape && shape->getVersion() != versionSeen_)) {
+    refresh();
+    return;
+  }
   const Eigen::Isometry3d& world = mShapeFrame->getWorldTransform();
   Transform<double> frame(world.translation(), Quat<double>(world.linear()).normalized());
   pose_ = frame * converted_.offset;

@@ -13,7 +13,9 @@ class CollisionObject final : public ::dart::collision::CollisionObject {
  public:
   CollisionObject(::dart::collision::CollisionDetector* detector, const ::dart::dynamics::ShapeFrame* frame);
 
-  // Converts the frame's shape again (its version changed); generation() counts the conversions.
+  // Converts the frame's shape again; generation() counts the conversions. updateEngineData() calls it when the
+  // frame's shape or its version changed (DART's groups notice that only for shapes of subscribed skeletons and
+  // body nodes).
   void refresh();
   std::uint64_t generation() const { return generation_; }
   // Whether gq models the shape (conversionStatus() says why not); an object gq does not model takes part in no
@@ -31,6 +33,8 @@ class CollisionObject final : public ::dart::collision::CollisionObject {
   Status status_;
   Transform<double> pose_;
   std::uint64_t generation_ = 0;
+  const void* shapeSeen_ = nullptr;
+  std::size_t versionSeen_ = 0;
 };
 
 }  // namespace dart

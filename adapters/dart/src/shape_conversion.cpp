@@ -217,10 +217,12 @@ Status convertShape(const dd::Shape& shape, ConvertedShape& out) {
   if (type == dd::SoftMeshShape::getStaticType()) {
     return softMesh(static_cast<const dd::SoftMeshShape&>(shape).getAssimpMesh(), out);
   }
+  // The heightmap's type string names its scalar type.
   if (type == dd::HeightmapShape<float>::getStaticType()) {
-    if (const auto* f = dynamic_cast<const dd::HeightmapShape<float>*>(&shape)) return heightmap(*f, out);
-    if (const auto* d = dynamic_cast<const dd::HeightmapShape<double>*>(&shape)) return heightmap(*d, out);
-    return Status(StatusCode::Unsupported, "a heightmap of a scalar type other than float and double");
+    return heightmap(static_cast<const dd::HeightmapShape<float>&>(shape), out);
+  }
+  if (type == dd::HeightmapShape<double>::getStaticType()) {
+    return heightmap(static_cast<const dd::HeightmapShape<double>&>(shape), out);
   }
   if (type == dd::MultiSphereConvexHullShape::getStaticType()) {
     return multiSphereHull(static_cast<const dd::MultiSphereConvexHullShape&>(shape), out);
