@@ -5,5 +5,6 @@ if(TARGET gq::dart AND TARGET dart-collision-bullet)
   # The detectors are asked for by name only: --no-as-needed keeps DART's Bullet detector linked.
   target_link_libraries(bench_dart PRIVATE gq::dart "-Wl,--no-as-needed" dart-collision-bullet "-Wl,--as-needed"
                         benchmark::benchmark)
+  target_include_directories(bench_dart PRIVATE ${PROJECT_SOURCE_DIR}/tests/dart)
   target_compile_options(bench_dart PRIVATE -Wall -Wextra)
 endif()

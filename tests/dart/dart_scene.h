@@ -82,11 +82,11 @@ inline std::shared_ptr<dd::MeshShape> groundMesh(double half, int n, const Eigen
   return std::make_shared<dd::MeshShape>(scale, std::shared_ptr<const aiScene>(meshScene(v, t), [](const aiScene*) {}).get());
 }
 
-// A flat heightmap of n x n samples at height h, `spacing` apart.
-inline std::shared_ptr<dd::HeightmapShaped> flatHeightmap(std::size_t n, double spacing, double h) {
-  auto shape = std::make_shared<dd::HeightmapShaped>();
-  shape->setHeightField(n, n, std::vector<double>(n * n, h));
-  shape->setScale(Eigen::Vector3d(spacing, spacing, 1.0));
+// A flat heightmap of n x n samples at height h, `spacing` apart (float: DART's Bullet detector takes only those).
+inline std::shared_ptr<dd::HeightmapShapef> flatHeightmap(std::size_t n, float spacing, float h) {
+  auto shape = std::make_shared<dd::HeightmapShapef>();
+  shape->setHeightField(n, n, std::vector<float>(n * n, h));
+  shape->setScale(Eigen::Vector3f(spacing, spacing, 1.0f));
   return shape;
 }
 

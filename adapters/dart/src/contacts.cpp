@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <dart/collision/Contact.hpp>
@@ -230,6 +231,37 @@ void trianglesUnder(const CollisionObject& solid, const SurfaceGeometry& surface
   }
 }
 
+// The point of a sphere or convex custom shape farthest along `dir` (world).
+Vec supportPoint(const Geometry<double>& geom, const Transform<double>& pose, const Vec& dir) {
+  if (const auto* sphere = geom.getIf<SphereGeometry<double>>()) return pose.p + sphere->radius * dir.normalized();
+  const auto& custom = geom.get<CustomGeometry<double>>();
+  return pose.transform(custom.callbacks->support(pose.rotateInv(dir)));
+}
+
+// A sphere or convex custom shape against one triangle of a surface: when they overlap (gq::overlap with the solid
+// triangle), one contact along the triangle's face normal (turned towards the shape's centre), as deep as the shape
+// reaches below the triangle's plane. Along the face normal, not the solid triangle's MTD: a surface is pushed out of
+// through its face, never sideways through a triangle's edge.
+std::optional<PairContact> faceContact(const Geometry<double>& geom, const Transform<double>& pose,
+                                       const Triangle<double>& tri, std::uint32_t index) {
+  CustomGeometry<double> triangleShape;
+  if (!makeTriangle(tri.verts[0], tri.verts[1], tri.verts[2], triangleShape).ok()) return std::nullopt;
+  bool overlapping = false;
+  if (!overlap(geom, pose, Geometry<double>(triangleShape), Transform<double>(), overlapping).ok() || !overlapping) {
+    return std::nullopt;
+  }
+  Vec n = tri.normal();
+  if (n.dot(pose.p - tri.verts[0]) < 0.0) n = -n;
+  const Vec deepest = supportPoint(geom, pose, -n);
+  const double separation = n.dot(deepest - tri.verts[0]);
+  PairContact c;
+  c.normal = n;  // from the triangle towards the shape
+  c.depth = std::max(0.0, -separation);
+  c.point = deepest + 0.5 * c.depth * n;
+  c.tri1 = int(index);
+  return c;
+}
+
 bool usesTriangleContacts(GeometryType t) {
   return t == GeometryType::Capsule || t == GeometryType::Box || t == GeometryType::ConvexMesh;
 }
@@ -272,17 +304,8 @@ bool surfaceContacts(const CollisionObject& solid, const CollisionObject& surfac
       }
       continue;
     }
-    CustomGeometry<double> triangleShape;
-    if (!makeTriangle(tri.verts[0], tri.verts[1], tri.verts[2], triangleShape).ok()) continue;
-    DistanceResult<double> d;
-    if (!distance(d, geom, solid.pose(), Geometry<double>(triangleShape), Transform<double>()).ok()) continue;
-    if (d.distance > 0.0) continue;
-    PairContact c;
-    c.normal = -d.normal;  // from the triangle towards the solid
-    c.depth = -d.distance;
-    c.point = 0.5 * (d.point0 + d.point1);
-    c.tri1 = int(index);
-    found.push_back(c);
+    const auto contact = faceContact(geom, solid.pose(), tri, index);
+    if (contact) found.push_back(*contact);
   }
   reduce(found);
   for (PairContact& c : found) {
