@@ -16,10 +16,11 @@ class CollisionObject;
 //  - box on box, box on plane, capsule on plane: up to 4 points, the incident face (edge) clipped to the reference
 //    face, all sharing one normal;
 //  - a solid against a mesh or heightmap: the triangles under the solid's bounds, each through
-//    gq::generateTriangleContacts (capsule, box, convex mesh) or the signed distance to the triangle (others),
-//    reduced to at most 4 points a pair (the deepest kept);
-//  - mesh against mesh: one contact per intersecting triangle pair (between their centroids, along the second
-//    triangle's normal, depth 0);
+//    gq::generateTriangleContacts (capsule, box, convex mesh) or, for spheres and custom shapes overlapping the
+//    triangle, the deepest point below the triangle's plane along its face normal; at most 4 points a pair (the
+//    deepest kept);
+//  - mesh against mesh: the intersecting triangle pairs (between their centroids, along the second triangle's
+//    normal, depth 0), at most 4;
 //  - other solid pairs: one contact at the signed distance's witness points.
 std::size_t fillContacts(const CollisionObject& object1, const CollisionObject& object2, std::size_t room,
                          ::dart::collision::CollisionResult& result);
