@@ -47,9 +47,8 @@ bool collidePairs(const CollisionGroup& first, const CollisionGroup& second, con
 bool CollisionDetector::collide(dc::CollisionGroup* group, const dc::CollisionOption& option,
                                 dc::CollisionResult* result) {
   if (result != nullptr) result->clear();
-  CollisionGroup* g = gqGroup(group);
-  if (g == nullptr || option.maxNumContacts == 0) return false;
-  g->synchronize();
+  CollisionGroup *g = nullptr, *same = nullptr;
+  if (option.maxNumContacts == 0 || !synchronizedGroups(group, group, g, same)) return false;
   std::vector<ScenePair> pairs;
   if (!g->scene().overlappingPairs(pairs).ok()) return false;
   return collidePairs(*g, *g, pairs, option, result);
@@ -58,11 +57,8 @@ bool CollisionDetector::collide(dc::CollisionGroup* group, const dc::CollisionOp
 bool CollisionDetector::collide(dc::CollisionGroup* group1, dc::CollisionGroup* group2,
                                 const dc::CollisionOption& option, dc::CollisionResult* result) {
   if (result != nullptr) result->clear();
-  CollisionGroup* g1 = gqGroup(group1);
-  CollisionGroup* g2 = gqGroup(group2);
-  if (g1 == nullptr || g2 == nullptr || option.maxNumContacts == 0) return false;
-  g1->synchronize();
-  if (g2 != g1) g2->synchronize();
+  CollisionGroup *g1 = nullptr, *g2 = nullptr;
+  if (option.maxNumContacts == 0 || !synchronizedGroups(group1, group2, g1, g2)) return false;
   std::vector<ScenePair> pairs;
   if (!g1->scene().overlappingPairs(g2->scene(), pairs).ok()) return false;
   return collidePairs(*g1, *g2, pairs, option, result);

@@ -81,20 +81,16 @@ double nearestPair(const CollisionGroup& first, const CollisionGroup& second, bo
 double CollisionDetector::distance(dc::CollisionGroup* group, const dc::DistanceOption& option,
                                    dc::DistanceResult* result) {
   if (result != nullptr) result->clear();
-  CollisionGroup* g = gqGroup(group);
-  if (g == nullptr) return 0.0;
-  g->synchronize();
+  CollisionGroup *g = nullptr, *same = nullptr;
+  if (!synchronizedGroups(group, group, g, same)) return 0.0;
   return nearestPair(*g, *g, true, option, result);
 }
 
 double CollisionDetector::distance(dc::CollisionGroup* group1, dc::CollisionGroup* group2,
                                    const dc::DistanceOption& option, dc::DistanceResult* result) {
   if (result != nullptr) result->clear();
-  CollisionGroup* g1 = gqGroup(group1);
-  CollisionGroup* g2 = gqGroup(group2);
-  if (g1 == nullptr || g2 == nullptr) return 0.0;
-  g1->synchronize();
-  if (g2 != g1) g2->synchronize();
+  CollisionGroup *g1 = nullptr, *g2 = nullptr;
+  if (!synchronizedGroups(group1, group2, g1, g2)) return 0.0;
   return nearestPair(*g1, *g2, false, option, result);
 }
 
