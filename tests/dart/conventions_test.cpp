@@ -1,0 +1,179 @@
+// DART's conventions through the gq detector: contact sets, normal from object 2 towards object 1, positive depth,
+// signed distance, sorted ray hits, filters, contact limits, group-vs-group queries, triangle ids.
+#include <gtest/gtest.h>
+
+#include <dart/collision/CollisionFilter.hpp>
+#include <dart/collision/CollisionObject.hpp>
+#include <dart/collision/CollisionResult.hpp>
+#include <dart/collision/DistanceResult.hpp>
+#include <dart/collision/RaycastResult.hpp>
+
+#include "dart_scene.h"
+
+namespace {
+
+using namespace gqtest;
+
+TEST(DartConventions, BoxRestingOnBoxFaceGivesFourContacts) {
+  auto d = detector("gq");
+  auto ground = frame(std::make_shared<dd::BoxShape>(Eigen::Vector3d(4, 4, 1)), at(Eigen::Vector3d(0, 0, -0.5)));
+  auto box = frame(std::make_shared<dd::BoxShape>(Eigen::Vector3d(1, 1, 1)), at(Eigen::Vector3d(0.2, 0.1, 0.49)));
+  auto group = d->createCollisionGroup(box.get(), ground.get());
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 100), &result));
+  ASSERT_EQ(result.getNumContacts(), 4u);
+  for (const dc::Contact& c : result.getContacts()) {
+    const bool boxIsFirst = c.collisionObject1->getShapeFrame() == box.get();
+    // From object 2 towards object 1.
+    EXPECT_NEAR(c.normal.z(), boxIsFirst ? 1.0 : -1.0, 1e-9);
+    EXPECT_NEAR(c.penetrationDepth, 0.01, 1e-9);
+    EXPECT_NEAR(std::abs(c.point.x() - 0.2), 0.5, 1e-9);
+    EXPECT_NEAR(std::abs(c.point.y() - 0.1), 0.5, 1e-9);
+  }
+}
+
+TEST(DartConventions, SphereNormalPointsFromObjectTwoToObjectOne) {
+  auto d = detector("gq");
+  auto a = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(0, 0, 0)), "a");
+  auto b = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(1.5, 0, 0)), "b");
+  auto group = d->createCollisionGroup(a.get(), b.get());
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 10), &result));
+  ASSERT_EQ(result.getNumContacts(), 1u);
+  const dc::Contact& c = result.getContact(0);
+  const Eigen::Vector3d p1 = c.collisionObject1->getTransform().translation();
+  const Eigen::Vector3d p2 = c.collisionObject2->getTransform().translation();
+  EXPECT_GT(c.normal.dot(p1 - p2), 0.99 * (p1 - p2).norm());
+  EXPECT_NEAR(c.penetrationDepth, 0.5, 1e-9);
+  EXPECT_NEAR(c.point.x(), 0.75, 1e-9);
+}
+
+TEST(DartConventions, BooleanQueryWithoutResult) {
+  auto d = detector("gq");
+  auto a = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(0, 0, 0)), "a");
+  auto b = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(2.5, 0, 0)), "b");
+  auto group = d->createCollisionGroup(a.get(), b.get());
+  EXPECT_FALSE(d->collide(group.get()));
+  b->setTranslation(Eigen::Vector3d(1.9, 0, 0));
+  EXPECT_TRUE(d->collide(group.get()));
+}
+
+TEST(DartConventions, MaxNumContactsBoundsTheQuery) {
+  auto d = detector("gq");
+  auto ground = frame(std::make_shared<dd::BoxShape>(Eigen::Vector3d(4, 4, 1)), at(Eigen::Vector3d(0, 0, -0.5)));
+  auto box = frame(std::make_shared<dd::BoxShape>(Eigen::Vector3d(1, 1, 1)), at(Eigen::Vector3d(0, 0, 0.49)));
+  auto group = d->createCollisionGroup(box.get(), ground.get());
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 2), &result));
+  EXPECT_EQ(result.getNumContacts(), 2u);
+}
+
+struct IgnoreAll : dc::CollisionFilter {
+  bool ignoresCollision(const dc::CollisionObject*, const dc::CollisionObject*) const override { return true; }
+};
+
+TEST(DartConventions, CollisionFilterIsAsked) {
+  auto d = detector("gq");
+  auto a = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(0, 0, 0)), "a");
+  auto b = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(1.5, 0, 0)), "b");
+  auto group = d->createCollisionGroup(a.get(), b.get());
+  dc::CollisionResult result;
+  EXPECT_FALSE(d->collide(group.get(), dc::CollisionOption(true, 10, std::make_shared<IgnoreAll>()), &result));
+  EXPECT_EQ(result.getNumContacts(), 0u);
+}
+
+TEST(DartConventions, GroupAgainstGroup) {
+  auto d = detector("gq");
+  auto a = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(0, 0, 0)), "a");
+  auto b = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(1.5, 0, 0)), "b");
+  auto c = frame(std::make_shared<dd::SphereShape>(1.0), at(Eigen::Vector3d(10, 0, 0)), "c");
+  auto g1 = d->createCollisionGroup(a.get(), b.get());
+  auto g2 = d->createCollisionGroup(c.get());
+  EXPECT_FALSE(d->collide(g1.get(), g2.get()));
+  c->setTranslation(Eigen::Vector3d(3.0, 0, 0));
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(g1.get(), g2.get(), dc::CollisionOption(true, 10), &result));
+  ASSERT_EQ(result.getNumContacts(), 1u);
+  EXPECT_EQ(result.getContact(0).collisionObject1->getShapeFrame(), b.get());
+  EXPECT_EQ(result.getContact(0).collisionObject2->getShapeFrame(), c.get());
+  // Distance between the groups: b to c, 0.5 apart.
+  dc::DistanceResult dist;
+  c->setTranslation(Eigen::Vector3d(4.0, 0, 0));
+  EXPECT_NEAR(d->distance(g1.get(), g2.get(), dc::DistanceOption(true, -1e9), &dist), 0.5, 1e-9);
+  EXPECT_EQ(dist.shapeFrame1, b.get());
+  EXPECT_NEAR(dist.nearestPoint1.x(), 2.5, 1e-9);
+  EXPECT_NEAR(dist.nearestPoint2.x(), 3.0, 1e-9);
+}
+
+TEST(DartConventions, DistanceIsSignedAndClampedByTheLowerBound) {
+  auto d = detector("gq");
+  auto a = frame(std::make_shared<dd::BoxShape>(Eigen::Vector3d(1, 1, 1)), at(Eigen::Vector3d(0, 0, 0)), "a");
+  auto b = frame(std::make_shared<dd::SphereShape>(0.5), at(Eigen::Vector3d(1.2, 0, 0)), "b");
+  auto group = d->createCollisionGroup(a.get(), b.get());
+  dc::DistanceResult result;
+  // Penetrating by 0.5 - 0.7 + ... : sphere centre 0.7 from the face, radius 0.5: 0.2 apart.
+  EXPECT_NEAR(d->distance(group.get(), dc::DistanceOption(true, -1e9), &result), 0.2, 1e-9);
+  b->setTranslation(Eigen::Vector3d(0.8, 0, 0));  // 0.2 deep
+  EXPECT_NEAR(d->distance(group.get(), dc::DistanceOption(true, -1e9), &result), -0.2, 1e-9);
+  EXPECT_NEAR(result.unclampedMinDistance, -0.2, 1e-9);
+  // The default lower bound 0 clamps it (DART's convention), unclampedMinDistance keeps it.
+  EXPECT_NEAR(d->distance(group.get(), dc::DistanceOption(false, 0.0), &result), 0.0, 1e-12);
+  EXPECT_NEAR(result.unclampedMinDistance, -0.2, 1e-9);
+  EXPECT_TRUE(result.found());
+}
+
+TEST(DartConventions, RayHitsAreSortedAndClosestIsFirst) {
+  auto d = detector("gq");
+  auto near = frame(std::make_shared<dd::SphereShape>(0.5), at(Eigen::Vector3d(2, 0, 0)), "near");
+  auto far = frame(std::make_shared<dd::BoxShape>(Eigen::Vector3d(1, 1, 1)), at(Eigen::Vector3d(5, 0, 0)), "far");
+  auto group = d->createCollisionGroup(far.get(), near.get());
+  dc::RaycastResult result;
+  ASSERT_TRUE(d->raycast(group.get(), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 0, 0), dc::RaycastOption(true, true),
+                         &result));
+  ASSERT_EQ(result.mRayHits.size(), 2u);
+  EXPECT_NEAR(result.mRayHits[0].mFraction, 0.15, 1e-9);
+  EXPECT_NEAR(result.mRayHits[1].mFraction, 0.45, 1e-9);
+  EXPECT_NEAR(result.mRayHits[0].mNormal.x(), -1.0, 1e-9);
+  EXPECT_EQ(result.mRayHits[1].mCollisionObject->getShapeFrame(), far.get());
+  ASSERT_TRUE(d->raycast(group.get(), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 0, 0), dc::RaycastOption(),
+                         &result));
+  ASSERT_EQ(result.mRayHits.size(), 1u);
+  EXPECT_EQ(result.mRayHits[0].mCollisionObject->getShapeFrame(), near.get());
+  EXPECT_FALSE(d->raycast(group.get(), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), dc::RaycastOption(),
+                          &result));
+}
+
+TEST(DartConventions, MeshContactsCarryTriangleIds) {
+  auto d = detector("gq");
+  auto ground = frame(groundMesh(2.0, 4), at(Eigen::Vector3d::Zero()), "ground");
+  auto box = frame(std::make_shared<dd::BoxShape>(Eigen::Vector3d(0.4, 0.4, 0.4)), at(Eigen::Vector3d(0.3, 0.3, 0.19)),
+                   "box");
+  auto group = d->createCollisionGroup(ground.get(), box.get());
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 100), &result));
+  ASSERT_EQ(result.getNumContacts(), 4u);
+  for (const dc::Contact& c : result.getContacts()) {
+    const bool meshIsFirst = c.collisionObject1->getShapeFrame() == ground.get();
+    const int tri = meshIsFirst ? c.triID1 : c.triID2;
+    EXPECT_GE(tri, 0);
+    EXPECT_LT(tri, 32);
+    EXPECT_NEAR(c.normal.z(), meshIsFirst ? -1.0 : 1.0, 1e-9);
+    EXPECT_NEAR(c.penetrationDepth, 0.01, 1e-9);
+  }
+}
+
+TEST(DartConventions, SphereOnHeightmap) {
+  auto d = detector("gq");
+  auto ground = frame(flatHeightmap(9, 0.5, 0.0), at(Eigen::Vector3d::Zero()), "ground");
+  auto ball = frame(std::make_shared<dd::SphereShape>(0.3), at(Eigen::Vector3d(0.1, 0.2, 0.25)), "ball");
+  auto group = d->createCollisionGroup(ball.get(), ground.get());
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 100), &result));
+  ASSERT_GE(result.getNumContacts(), 1u);
+  const dc::Contact& c = result.getContact(0);
+  const bool ballIsFirst = c.collisionObject1->getShapeFrame() == ball.get();
+  EXPECT_NEAR(c.normal.z(), ballIsFirst ? 1.0 : -1.0, 1e-6);
+  EXPECT_NEAR(c.penetrationDepth, 0.05, 1e-6);
+}
+
+}  // namespace
