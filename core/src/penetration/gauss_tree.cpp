@@ -44,6 +44,7 @@ template <class T> class TreeBuilder {
 
   void build(GaussTree<T>& out) {
     const std::uint32_t n = std::uint32_t(faces_.size());
+    leafFaces_ = n < kGaussSmallHullFaces ? kGaussSmallLeafFaces : kGaussLeafFaces;
     order_.resize(n);
     std::iota(order_.begin(), order_.end(), 0u);
     out.nodes.clear();
@@ -94,7 +95,7 @@ template <class T> class TreeBuilder {
     out.nodes[index].faceBegin = begin;
     out.nodes[index].faceEnd = end;
     out.nodes[index].child[0] = out.nodes[index].child[1] = 0;
-    if (end - begin <= kGaussLeafFaces) return;
+    if (end - begin <= leafFaces_) return;
     // The widest spread of the normals (the covariance's principal axis), split at its median.
     Vec3d mean = Vec3d::Zero();
     for (std::uint32_t i = begin; i < end; ++i) mean += faces_[order_[i]].normal;
@@ -236,6 +237,7 @@ template <class T> class TreeBuilder {
   std::vector<BuildFace> faces_;
   const std::vector<BuildEdge>& edgesIn_;
   std::vector<std::uint32_t> order_;
+  std::uint32_t leafFaces_ = kGaussLeafFaces;
 };
 
 template <class T> std::shared_ptr<const GaussTree<T>> makeHullGaussTree(const std::shared_ptr<const ConvexMesh<T>>& mesh) {

@@ -3,8 +3,8 @@
 // edges at once (penetration/hull_pair_mtd.h).
 //
 // Faces are split recursively by normal direction (at the median along the normals' widest spread) into leaves of at
-// most kGaussLeafFaces faces; every edge belongs to the leaf of its first face. A node covers the faces and edges of
-// its subtree, and keeps
+// most kGaussLeafFaces (small hulls: kGaussSmallLeafFaces) faces; every edge belongs to the leaf of its first face. A
+// node covers the faces and edges of its subtree, and keeps
 //  - a cap (unit `axis`, half-angle below 90 degrees) holding every normal of its faces and every Gauss-map arc of
 //    its edges (a cap under a hemisphere holds the arc between two of its points);
 //  - a ball (`centre`, `radius` >= 0) under the support function there: for every normal n of its faces and arcs,
@@ -25,7 +25,11 @@
 
 namespace gq::detail {
 
+// Leaves hold at most kGaussLeafFaces faces, or kGaussSmallLeafFaces on a hull of fewer than kGaussSmallHullFaces
+// faces (whose 16-face leaves would span caps too wide to bound, so that every face of them took a support call).
 inline constexpr std::uint32_t kGaussLeafFaces = 16;
+inline constexpr std::uint32_t kGaussSmallLeafFaces = 8;
+inline constexpr std::uint32_t kGaussSmallHullFaces = 128;
 
 template <class T> struct GaussTree {
   struct Node {

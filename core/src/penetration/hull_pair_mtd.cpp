@@ -40,6 +40,13 @@ template <class T> struct Side {
     if (!mesh) return supportBox(halfExtents, d);
     return mesh->vertices[hullVertex(*mesh, table, climb, d, hint, cold)] * scale;
   }
+  // A vertex of the shape near the extreme along d (own frame): the support start table's vertex for d, without the
+  // climb (a point of the shape is all a lower bound needs).
+  Vec3<T> nearSupport(const Vec3<T>& d) {
+    if (!mesh) return supportBox(halfExtents, d);
+    if (!climb || !table || !table->hasClimbGraph()) return support(d);
+    return mesh->vertices[table->lookup(d)] * scale;
+  }
   // An own-frame vector in geom0's frame.
   Vec3<T> vectorToFirst(const Vec3<T>& v) const { return first ? v : Vec3<T>(rot * v); }
   Vec3<T> pointToFirst(const Vec3<T>& p) const { return first ? p : Vec3<T>(rot * p + trans); }
@@ -48,6 +55,12 @@ template <class T> struct Side {
 // The point of `other` extreme along the own-frame direction d, in own's frame.
 template <class T> Vec3<T> otherSupport(const Side<T>& own, Side<T>& other, const Vec3<T>& d) {
   const Vec3<T> w = other.support(Vec3<T>(own.rot * d));
+  return own.rot.transpose() * (w - own.trans);
+}
+
+// A point of `other` near its extreme along the own-frame direction d, in own's frame.
+template <class T> Vec3<T> otherNearSupport(const Side<T>& own, Side<T>& other, const Vec3<T>& d) {
+  const Vec3<T> w = other.nearSupport(Vec3<T>(own.rot * d));
   return own.rot.transpose() * (w - own.trans);
 }
 
@@ -66,11 +79,12 @@ template <class T> T arcMinimum(T e1, T e2, T halfCos) {
   return halfCos > T(1e-3) ? low / halfCos : -std::numeric_limits<T>::max();
 }
 
-// A node waiting in the search: its bound, and the other side's support point it was computed from (own frame).
+// A node waiting in the search: its bound, and where the other side's support point it was computed from is kept
+// (PairScratch::support, own frame).
 template <class T> struct HeapEntry {
   T bound;
-  std::uint32_t side, node;
-  Vec3<T> support;
+  std::uint32_t side : 1, node : 31;
+  std::uint32_t support;
   bool operator>(const HeapEntry& o) const { return bound > o.bound; }
 };
 
@@ -84,9 +98,13 @@ template <class T> struct Arc {
 
 template <class T> struct PairScratch {
   std::vector<HeapEntry<T>> heap;
+  std::vector<Vec3<T>> support;         // the queued nodes' support points
+  std::vector<std::uint32_t> cut;        // the first nodes of a tree
   std::vector<Vec3<T>> faceSupport[2];  // per tree face: the other side's support point against it (own frame)
+  std::vector<T> faceLow[2];  // per face of an evaluated bounded leaf: its push-out bound from the leaf's support point
   struct Leaf {
     std::uint32_t side, node;
+    bool supported;   // false: no support point (the box's leaf)
     Vec3<T> support;  // the other side's support point against the leaf's cap axis (own frame)
   };
   std::vector<Leaf> leaves;
@@ -111,6 +129,9 @@ template <class T> struct Best {
   }
 };
 
+// The search's first cut of each tree has at most this many nodes.
+inline constexpr std::size_t kStartNodes = 32;
+
 template <class T> class PairSearch {
  public:
   PairSearch(Side<T>& a, Side<T>& b, T margin) : sides_{&a, &b}, margin_(margin), s_(pairScratch<T>()) {}
@@ -118,9 +139,13 @@ template <class T> class PairSearch {
   // The minimum push-out; `best.depth` < 0 when a separating axis was found (the search then stops).
   Best<T> run() {
     s_.heap.clear();
+    s_.support.clear();
     s_.leaves.clear();
-    for (int k = 0; k < 2; ++k) s_.faceSupport[k].resize(sides_[k]->tree->faceNormal.size());
-    for (std::uint32_t k = 0; k < 2; ++k) enqueue(k, 0);
+    for (int k = 0; k < 2; ++k) {
+      s_.faceSupport[k].resize(sides_[k]->tree->faceNormal.size());
+      s_.faceLow[k].resize(sides_[k]->tree->faceNormal.size());
+    }
+    for (std::uint32_t k = 0; k < 2; ++k) start(k);
     while (!s_.heap.empty() && best_.depth >= T(0)) {
       std::pop_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
       const HeapEntry<T> e = s_.heap.back();
@@ -128,10 +153,10 @@ template <class T> class PairSearch {
       if (!(e.bound - margin_ < best_.depth)) break;
       const typename GaussTree<T>::Node& node = sides_[e.side]->tree->nodes[e.node];
       if (node.leaf()) {
-        evaluateLeaf(e.side, e.node, e.support);
+        evaluateLeaf(e.side, e.node, s_.support[e.support]);
       } else {
-        enqueue(e.side, node.child[0]);
-        enqueue(e.side, node.child[1]);
+        enqueue(e.side, node.child[0], e.bound);
+        enqueue(e.side, node.child[1], e.bound);
       }
     }
     if (best_.depth >= T(0)) edgePairs();
@@ -142,7 +167,7 @@ template <class T> class PairSearch {
   // The node's bound against the other side's support point along -axis (written to w, own frame).
   T nodeBound(std::uint32_t k, const typename GaussTree<T>::Node& node, Vec3<T>& w) {
     Side<T>& own = *sides_[k];
-    w = otherSupport(own, *sides_[1 - k], Vec3<T>(-node.axis));
+    w = otherNearSupport(own, *sides_[1 - k], Vec3<T>(-node.axis));
     const Vec3<T> z = w - node.centre * own.scale;
     const T zc = node.axis.dot(z), z2 = z.squaredNorm();
     const T zp = std::sqrt(std::max(z2 - zc * zc, T(0)));
@@ -151,13 +176,66 @@ template <class T> class PairSearch {
     return node.radius * own.scale - reach;
   }
 
-  // A node queued under its own bound (one support call), unless that bound is not below the best push-out.
-  void enqueue(std::uint32_t k, std::uint32_t index) {
+  // An unbounded leaf of a hull (its cap too wide for a ball bound) bounded over its faces and edges from one point
+  // w of the other shape (written, own frame), near the extreme along minus the faces' mean normal: the faces'
+  // -offset - n.w, and each edge's arc minimum of n.(v - w) from its faces' values (v lies on both planes).
+  T leafBound(std::uint32_t k, const typename GaussTree<T>::Node& node, Vec3<T>& w) {
+    Side<T>& own = *sides_[k];
+    const GaussTree<T>& tree = *own.tree;
+    Vec3<T> mean = Vec3<T>::Zero();
+    for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) mean += tree.faceNormal[f];
+    if (!(mean.squaredNorm() > T(1e-6))) mean = tree.faceNormal[node.faceBegin];
+    w = otherNearSupport(own, *sides_[1 - k], Vec3<T>(-mean));
+    T bound = std::numeric_limits<T>::max();
+    for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
+      const T low = -tree.faceOffset[f] * own.scale - tree.faceNormal[f].dot(w);
+      s_.faceLow[k][f] = low;
+      bound = std::min(bound, low);
+    }
+    for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
+      const typename GaussTree<T>::Edge& edge = tree.edges[e];
+      const T low2 = edge.face2 >= node.faceBegin && edge.face2 < node.faceEnd
+                         ? s_.faceLow[k][edge.face2]
+                         : -tree.faceOffset[edge.face2] * own.scale - tree.faceNormal[edge.face2].dot(w);
+      bound = std::min(bound, arcMinimum(s_.faceLow[k][edge.face1], low2, edge.halfCos));
+    }
+    return bound;
+  }
+
+  // The search starts from the tree's top levels cut at up to kStartNodes nodes (the caps there are too wide to
+  // prune: bounding them costs support calls and saves none).
+  void start(std::uint32_t k) {
+    const GaussTree<T>& tree = *sides_[k]->tree;
+    std::vector<std::uint32_t>& cut = s_.cut;
+    cut.assign(1, 0);
+    for (bool split = true; split;) {
+      split = false;
+      std::size_t inner = 0;
+      for (const std::uint32_t i : cut) inner += !tree.nodes[i].leaf();
+      if (inner == 0 || cut.size() + inner > kStartNodes) break;
+      const std::size_t n = cut.size();
+      for (std::size_t j = 0; j < n; ++j) {
+        const typename GaussTree<T>::Node& node = tree.nodes[cut[j]];
+        if (node.leaf()) continue;
+        cut[j] = node.child[0];
+        cut.push_back(node.child[1]);
+        split = true;
+      }
+    }
+    for (const std::uint32_t i : cut) enqueue(k, i, -std::numeric_limits<T>::max());
+  }
+
+  // A node queued under its own bound (one support call; at least `floor`, its parent's, which bounds every facet
+  // of the parent), unless that bound is not below the best push-out.
+  void enqueue(std::uint32_t k, std::uint32_t index, T floor) {
     const typename GaussTree<T>::Node& node = sides_[k]->tree->nodes[index];
     Vec3<T> w = Vec3<T>::Zero();
-    const T bound = node.bounded ? nodeBound(k, node, w) : -std::numeric_limits<T>::max();
+    T bound = floor;
+    if (node.bounded) bound = std::max(floor, nodeBound(k, node, w));
+    else if (node.leaf() && sides_[k]->mesh) bound = std::max(floor, leafBound(k, node, w));
     if (!(bound - margin_ < best_.depth)) return;
-    s_.heap.push_back({bound, k, index, w});
+    s_.heap.push_back({bound, k, index, std::uint32_t(s_.support.size())});
+    s_.support.push_back(w);
     std::push_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
   }
 
@@ -167,43 +245,55 @@ template <class T> class PairSearch {
     Side<T>& other = *sides_[1 - k];
     const GaussTree<T>& tree = *own.tree;
     const typename GaussTree<T>::Node& node = tree.nodes[index];
+    const bool supported = node.bounded || own.mesh;  // a hull's leaf was queued with a point of the other shape
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
       const Vec3<T>& n = tree.faceNormal[f];
       // The leaf's support point bounds the face's push-out from below: no support call when that is enough.
-      if (node.bounded && !(-tree.faceOffset[f] * own.scale - n.dot(leafSupport) - margin_ < best_.depth)) {
-        s_.faceSupport[k][f] = leafSupport;
-        continue;
+      if (supported) {
+        const T low = -tree.faceOffset[f] * own.scale - n.dot(leafSupport);
+        s_.faceLow[k][f] = low;
+        if (!(low - margin_ < best_.depth)) {
+          s_.faceSupport[k][f] = leafSupport;
+          continue;
+        }
       }
       const Vec3<T> w = otherSupport(own, other, Vec3<T>(-n));
       s_.faceSupport[k][f] = w;
       const T push = -tree.faceOffset[f] * own.scale - n.dot(w);
       if (push < best_.depth) best_.consider(push, own.first ? Vec3<T>(-n) : own.vectorToFirst(n));
     }
-    s_.leaves.push_back({k, index, leafSupport});
+    s_.leaves.push_back({k, index, supported, leafSupport});
   }
 
   // Edges of evaluated leaves whose bound is below the best push-out, as arcs in geom0's frame.
   void collectArcs() {
     for (int k = 0; k < 2; ++k) s_.arcs[k].clear();
+    // Positive (edges are paired only while the best push-out is not negative): an arc whose push-out bound
+    // (arcMinimum) is at least this has both end values at least this.
+    const T cut = best_.depth + margin_;
     for (const auto& leaf : s_.leaves) {
       Side<T>& own = *sides_[leaf.side];
       const GaussTree<T>& tree = *own.tree;
       const typename GaussTree<T>::Node& node = tree.nodes[leaf.node];
       const T sign = own.first ? T(1) : T(-1);
+      const T* low = s_.faceLow[leaf.side].data();
       for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
         const typename GaussTree<T>::Edge& edge = tree.edges[e];
-        const Vec3<T>& n1 = tree.faceNormal[edge.face1];
+        const bool face2Here = edge.face2 >= node.faceBegin && edge.face2 < node.faceEnd;
         const Vec3<T>& n2 = tree.faceNormal[edge.face2];
+        // First from the leaf's support point w alone, with the faces' bounds from it: the edge's vertex lies on
+        // both faces' planes (within the cooking's plane tolerance, inside the margin), so n.(v - w) at either end is
+        // that face's bound.
+        if (leaf.supported && low[edge.face1] >= cut &&
+            (face2Here ? low[edge.face2] : -tree.faceOffset[edge.face2] * own.scale - n2.dot(leaf.support)) >= cut)
+          continue;
+        const Vec3<T>& n1 = tree.faceNormal[edge.face1];
         const Vec3<T> v = own.vertex(edge.vertex0);
         const Vec3<T> z1 = v - s_.faceSupport[leaf.side][edge.face1];
         T bound = arcMinimum(n1.dot(z1), n2.dot(z1), edge.halfCos);
-        if (edge.face2 >= node.faceBegin && edge.face2 < node.faceEnd && !(bound - margin_ >= best_.depth)) {
+        if (face2Here && !(bound - margin_ >= best_.depth)) {
           const Vec3<T> z = v - s_.faceSupport[leaf.side][edge.face2];
           bound = std::max(bound, arcMinimum(n1.dot(z), n2.dot(z), edge.halfCos));
-        }
-        if (node.bounded && !(bound - margin_ >= best_.depth)) {
-          const Vec3<T> z2 = v - leaf.support;
-          bound = std::max(bound, arcMinimum(n1.dot(z2), n2.dot(z2), edge.halfCos));
         }
         if (!(bound - margin_ < best_.depth)) continue;
         Arc<T> arc;

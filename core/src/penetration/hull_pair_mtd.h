@@ -6,14 +6,18 @@
 //
 // Every facet normal n of A - B is a face normal of A, a face normal of -B, or the crossing of an edge arc of A with
 // an edge arc of -B, and its push-out is h_A(n) + h_B(-n). A tree node of either side bounds that from below for
-// every facet normal from its faces and arcs, with one support call on the other side (gauss_tree.h). Nodes are
-// refined in order of their bounds: a leaf's faces are evaluated exactly (h of the own face from its plane, of the
-// other side by a hill-climbing support call), and its edges get their own bound (the linear n.(v - w) over the arc,
-// for the other side's support points w at the leaf's cap and at the edge's first face). The search ends when the
-// smallest bound left is not below the best push-out found; then only the edges of evaluated leaves whose bound is
-// below it are paired, each pair of crossing arcs giving its push-out in O(1) (or, when the crossing is undecided
-// within the arcs' rounding, the push-outs along both signs of its axis from support calls), pairs whose arcs' caps
-// are apart skipped. What is skipped is proven not smaller, less a margin for the rounding of bounds and planes.
+// every facet normal from its faces and arcs, from one point of the other side (gauss_tree.h): the vertex the
+// other side's support start table gives for minus the node's axis, without the climb (any point of it bounds from
+// below). A leaf whose cap is too wide for its ball is bounded over its own faces and edge arcs from such a point.
+// The search starts from a cut of each tree's top levels (at most kStartNodes nodes: caps that wide prune nothing)
+// and refines nodes in order of their bounds: a leaf's faces are evaluated exactly (h of the own face from its
+// plane, of the other side by a hill-climbing support call), and its edges get their own bound (the linear
+// n.(v - w) over the arc, for the other side's points w at the leaf's cap and at the edge's faces). The search ends
+// when the smallest bound left is not below the best push-out found; then only the edges of evaluated leaves whose
+// bound is below it (first from the leaf's point alone, by its faces' bounds, which the edge's vertex shares) are
+// paired, each pair of crossing arcs giving its push-out in O(1) (or, when the crossing is undecided within the
+// arcs' rounding, the push-outs along both signs of its axis from support calls), pairs whose arcs' caps are apart
+// skipped. What is skipped is proven not smaller, less a margin for the rounding of bounds and planes.
 //
 // Other vertices and normals are transformed only when touched. A hull scaled non-uniformly, a non-manifold hull or
 // one not cooked here is not taken (the posed search of polytope_mtd.h answers it).
