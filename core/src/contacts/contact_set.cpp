@@ -103,7 +103,6 @@ template <class T> T clippedContacts(const Pair<T>& pair, const Vec3<T>& normal,
   }
   detail::clipToFace(reference, incident);
   const Vec3<T> n = referenceIsB ? reference.normal : Vec3<T>(-reference.normal);
-  out.normal = n;
   for (int i = 0; i < incident.count; ++i) {
     const Vec3<T>& p = incident.points[i];
     const T s = std::max((p - reference.origin).dot(reference.normal) - pair.ma - pair.mb, exactSeparation);
@@ -112,6 +111,7 @@ template <class T> T clippedContacts(const Pair<T>& pair, const Vec3<T>& normal,
     out.separations[out.count++] = s;
     deepest = std::min(deepest, s);
   }
+  if (deepest < std::numeric_limits<T>::max()) out.normal = n;  // the set's normal is the face's once it has points
   return deepest;
 }
 
