@@ -7,7 +7,6 @@
 #include <BulletCollision/CollisionShapes/btConvexPointCloudShape.h>
 
 #include "bullet_test_scene.h"
-#include "contact_features.h"
 
 namespace gq::bullet::test {
 namespace {
@@ -300,52 +299,6 @@ TEST(BulletContacts, MultiSphereIsTheHullOfItsSpheres) {
   ASSERT_TRUE(ray.hasHit());
   EXPECT_NEAR(5 - 10 * ray.m_closestHitFraction, 0.5, kTol * 10);
   EXPECT_NEAR(ray.m_hitNormalWorld.y(), 1, kTol * 10);
-}
-
-// The incident points are clipped to the prism over the reference face, one side plane per edge
-// (Sutherland-Hodgman): a rectangle over a triangle keeps the triangle's part of it. Three edges, so the clip's
-// last pass leaves its polygon in the scratch buffer and copies it back; a square face (four passes) does not.
-TEST(ContactFeatures, ClippingKeepsTheIncidentPolygonOverTheReferenceFace) {
-  Feature triangle;
-  triangle.count = 3;
-  triangle.points[0] = V3(0, 0, 0);
-  triangle.points[1] = V3(2, 0, 0);
-  triangle.points[2] = V3(0, 2, 0);
-  triangle.normal = V3(0, 0, 1);
-  triangle.origin = triangle.points[0];
-  const auto rectangle = [](Real xlo, Real ylo, Real hi) {
-    Feature f;
-    f.count = 4;
-    f.points[0] = V3(xlo, ylo, Real(0.1));
-    f.points[1] = V3(hi, ylo, Real(0.1));
-    f.points[2] = V3(hi, hi, Real(0.1));
-    f.points[3] = V3(xlo, hi, Real(0.1));
-    return f;
-  };
-  const auto square = [&](Real lo, Real hi) { return rectangle(lo, lo, hi); };
-  // x >= 0 (the last edge clips too), y >= 0.5 and x + y <= 2: the triangle (0, 0.5), (1.5, 0.5), (0, 2).
-  Feature incident = rectangle(Real(-1), Real(0.5), Real(3));
-  ASSERT_EQ(clipToFace(triangle, incident), 3);
-  ASSERT_EQ(incident.count, 3);
-  for (const V3& expected : {V3(0, 0.5, 0.1), V3(1.5, 0.5, 0.1), V3(0, 2, 0.1)}) {
-    bool found = false;
-    for (int i = 0; i < incident.count; ++i) found = found || (incident.points[i] - expected).norm() < kTol;
-    EXPECT_TRUE(found) << expected.transpose();
-  }
-  // A square reference face over a larger square keeps its own outline.
-  Feature reference = square(Real(0), Real(1));
-  reference.normal = V3(0, 0, 1);
-  reference.origin = reference.points[0];
-  Feature big = square(Real(-1), Real(2));
-  ASSERT_EQ(clipToFace(reference, big), 4);
-  for (int i = 0; i < big.count; ++i) {
-    EXPECT_NEAR(std::min(std::abs(big.points[i].x()), std::abs(big.points[i].x() - 1)), 0, kTol);
-    EXPECT_NEAR(std::min(std::abs(big.points[i].y()), std::abs(big.points[i].y() - 1)), 0, kTol);
-  }
-  // Entirely outside: nothing left.
-  Feature away = square(Real(5), Real(6));
-  EXPECT_EQ(clipToFace(triangle, away), 0);
-  EXPECT_EQ(away.count, 0);
 }
 
 }  // namespace

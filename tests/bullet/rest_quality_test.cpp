@@ -1,7 +1,6 @@
 // How well stepped scenes come to rest with gq's contacts: the 10-box stack against stock Bullet stepping the same
-// world, Bullet's BasicDemo box grid and a 200-body mixed pile on a triangle-mesh ground. And the pieces of
-// the box-face contacts: a box face clipped in its own 2D frame gives the general polygon clip's points, and a box
-// resting on a box face gets 4 contacts at its corners.
+// world, Bullet's BasicDemo box grid and a 200-body mixed pile on a triangle-mesh ground, and a box resting on a box
+// face gets 4 contacts at its corners (the clipping itself: tests/core/contact_set_clipping_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,52 +8,10 @@
 #include <limits>
 #include <random>
 
-#include "contact_features.h"
 #include "pile_scenes.h"
 
 namespace gq::bullet::test {
 namespace {
-
-const btScalar kRoundOff = sizeof(btScalar) == 4 ? btScalar(2e-5) : btScalar(1e-12);
-
-TEST(BulletContactFeatures, BoxFaceClippedInItsFrameMatchesThePolygonClip) {
-  ShapeView box;
-  box.geom = BoxGeometry<Real>(V3(Real(0.5), Real(0.3), Real(0.7)));
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (int trial = 0; trial < 200; ++trial) {
-    const Quat<Real> q = Quat<Real>(Real(u(rng)), Real(u(rng)), Real(u(rng)), Real(u(rng))).normalized();
-    const PlacedShape placed{&box, Pose(V3(Real(u(rng)), Real(u(rng)), Real(u(rng))), q)};
-    const V3 dir = q * V3(0, 1, 0);
-    Feature face;
-    ASSERT_TRUE(referenceFace(placed, dir, face));
-    ASSERT_TRUE(face.rectangle);
-    Feature polygon = face;
-    polygon.rectangle = false;
-    // An incident quad (or segment) around the face, on a plane tilted a little off it (a real incident face is
-    // planar; the clipped corners of a warped quad depend on the order the edges are clipped in).
-    const Real tiltU = Real(0.05 * u(rng)), tiltW = Real(0.05 * u(rng));
-    Feature a;
-    a.count = trial % 3 == 0 ? 2 : 4;
-    const V3 c = face.centre + face.u * Real(0.4 * u(rng)) + face.w * Real(0.4 * u(rng));
-    const Real angle = Real(3 * u(rng));
-    for (int k = 0; k < a.count; ++k) {
-      const Real t = angle + Real(k) * Real(EIGEN_PI / 2);
-      const Real x = std::cos(t) * Real(0.6), y = std::sin(t) * Real(0.6);
-      a.points[k] = c + face.u * x + face.w * y + face.normal * (tiltU * x + tiltW * y);
-    }
-    Feature b = a;
-    clipToFace(face, a);
-    clipToFace(polygon, b);
-    ASSERT_EQ(a.count, b.count) << "trial " << trial;
-    // The same points (the two clips visit the edges in different orders, so the polygons start elsewhere).
-    for (int k = 0; k < a.count; ++k) {
-      Real nearest = std::numeric_limits<Real>::max();
-      for (int m = 0; m < b.count; ++m) nearest = std::min(nearest, (a.points[k] - b.points[m]).norm());
-      EXPECT_LT(nearest, kRoundOff * 10) << "trial " << trial << " point " << k;
-    }
-  }
-}
 
 // The contacts a pair's manifold holds after a step.
 int manifoldContacts(btDiscreteDynamicsWorld& world, const btCollisionObject* a, const btCollisionObject* b,

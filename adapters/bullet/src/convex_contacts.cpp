@@ -1,155 +1,16 @@
-// Convex shape against convex shape or plane: gq's signed distance gives the normal and deepest point; when a flat
-// face supports the contact (box or hull on a face, cylinder cap, capsule lying down) the incident feature is
-// clipped to that face so the manifold gets its full support polygon in one frame, as Bullet's box-box does.
+// Convex shape against convex shape or plane: gq's contact set (generateContacts: the exact deepest point, and for
+// flat contacts the incident feature clipped to the supporting face, so the manifold gets its full support polygon in
+// one frame, as Bullet's box-box does), at most the 4 points Bullet's persistent manifold holds.
 #include <algorithm>
-#include <array>
 #include <limits>
 
-#include "contact_features.h"
 #include "contacts.h"
+#include "gq/contacts.h"
 #include "gq/cooking.h"
 #include "gq/query.h"
 
 namespace gq::bullet {
 namespace {
-
-// A manifold point is never deeper than the exact signed distance (the MTD when penetrating): clipped points on a
-// face tilted from the contact normal would otherwise overstate their depth.
-struct Clamp {
-  Real exactDepth;
-};
-
-// Holds contacts until the caller decides to keep them.
-class BufferedSink final : public ContactSink {
- public:
-  void add(const V3& normalOnB, const V3& pointOnB, Real depth, TriangleIds ids, bool surfaceIsB) override {
-    if (count_ < kMaxFeaturePoints) points_[count_++] = {normalOnB, pointOnB, depth, ids, surfaceIsB};
-  }
-  void flush(ContactSink& sink) const {
-    for (int i = 0; i < count_; ++i) sink.add(points_[i].n, points_[i].p, points_[i].depth, points_[i].ids, points_[i].surfaceIsB);
-  }
-
- private:
-  struct Held {
-    V3 n, p;
-    Real depth;
-    TriangleIds ids;
-    bool surfaceIsB;
-  };
-  std::array<Held, kMaxFeaturePoints> points_;
-  int count_ = 0;
-};
-
-// A manifold keeps at most this many points (Bullet's persistent manifold holds 4).
-constexpr int kManifoldPoints = 4;
-
-// Picks kManifoldPoints of `count` points (normal n) spanning the largest area: the deepest, the farthest from it,
-// the farthest from their line, and the farthest from that line on the other side. Sending Bullet's manifold more
-// than it holds makes it sort its cache once per extra point.
-int reduceToManifold(const std::array<V3, kMaxFeaturePoints>& p, const std::array<Real, kMaxFeaturePoints>& depth,
-                     int count, const V3& n, std::array<int, kManifoldPoints>& keep) {
-  if (count <= kManifoldPoints) {
-    for (int i = 0; i < count; ++i) keep[i] = i;
-    return count;
-  }
-  int first = 0;
-  for (int i = 1; i < count; ++i)
-    if (depth[i] < depth[first]) first = i;
-  int second = first == 0 ? 1 : 0;
-  for (int i = 0; i < count; ++i)
-    if ((p[i] - p[first]).squaredNorm() > (p[second] - p[first]).squaredNorm()) second = i;
-  const V3 edge = p[second] - p[first];
-  const auto side = [&](int i) { return edge.cross(p[i] - p[first]).dot(n); };  // signed area x 2
-  int third = -1, fourth = -1;
-  Real most = 0, least = 0;
-  for (int i = 0; i < count; ++i) {
-    const Real a = side(i);
-    if (a > most) most = a, third = i;
-    if (a < least) least = a, fourth = i;
-  }
-  int k = 0;
-  keep[k++] = first;
-  keep[k++] = second;
-  if (third >= 0) keep[k++] = third;
-  if (fourth >= 0) keep[k++] = fourth;
-  return k;
-}
-
-// The incident points clipped to the reference face, as contacts (at most kManifoldPoints); `referenceIsB` says
-// which shape owns the face. Returns the smallest depth reported (or +max when none).
-Real clippedContacts(const PlacedShape& a, const PlacedShape& b, const V3& normalOnB, Real threshold, Clamp clamp,
-                     ContactSink& sink) {
-  Real deepest = std::numeric_limits<Real>::max();
-  Feature reference, incident;
-  bool referenceIsB = true;
-  if (!(referenceFace(b, normalOnB, reference) && incidentFeature(a, -normalOnB, incident))) {
-    referenceIsB = false;
-    if (!(referenceFace(a, -normalOnB, reference) && incidentFeature(b, normalOnB, incident))) return deepest;
-  }
-  clipToFace(reference, incident);
-  const Real ma = a.view->margin, mb = b.view->margin;
-  const V3 n = referenceIsB ? reference.normal : V3(-reference.normal);
-  std::array<V3, kMaxFeaturePoints> points;
-  std::array<Real, kMaxFeaturePoints> depths;
-  int count = 0;
-  for (int i = 0; i < incident.count; ++i) {
-    const V3& p = incident.points[i];
-    const Real depth = std::max((p - reference.origin).dot(reference.normal) - ma - mb, clamp.exactDepth);
-    if (depth > threshold) continue;
-    points[count] = referenceIsB ? V3(p - n * ma - n * depth) : V3(p + n * mb);
-    depths[count++] = depth;
-  }
-  std::array<int, kManifoldPoints> keep;
-  const int kept = reduceToManifold(points, depths, count, n, keep);
-  for (int k = 0; k < kept; ++k) {
-    sink.add(n, points[keep[k]], depths[keep[k]], TriangleIds(), true);
-    deepest = std::min(deepest, depths[keep[k]]);
-  }
-  return deepest;
-}
-
-}  // namespace
-
-namespace {
-
-// Polytope pairs (box, hull, plane) have an exact and cheaper penetration query (SAT) than the signed distance's
-// EPA: resting contacts, which penetrate slightly, take that path.
-bool hasSatPenetration(const PlacedShape& a, const PlacedShape& b) {
-  const auto flat = [](const PlacedShape& s) { return s.view->isPolytope() || s.view->kind == ShapeKind::Plane; };
-  return flat(a) && flat(b) && (a.view->isPolytope() || b.view->isPolytope());
-}
-
-Real toleranceOf(const PlacedShape& a, const PlacedShape& b) {
-  return Real(tol::Rel<Real>::kEpsilon) * std::max(a.view->size, b.view->size);
-}
-
-// The queries on the prepared shapes when the views carry them (validated once, derived data kept).
-Status penetration(PenetrationResult<Real>& mtd, const PlacedShape& a, const PlacedShape& b) {
-  if (a.view->prepared && b.view->prepared)
-    return computePenetration(mtd, *a.view->prepared, a.pose, *b.view->prepared, b.pose);
-  return computePenetration(mtd, a.view->geom, a.pose, b.view->geom, b.pose);
-}
-
-Status distanceUpTo(DistanceResult<Real>& d, bool& beyond, Real within, const PlacedShape& a, const PlacedShape& b,
-                    GjkCache<Real>* gjk) {
-  if (a.view->prepared && b.view->prepared)
-    return distanceWithin(d, beyond, within, *a.view->prepared, a.pose, *b.view->prepared, b.pose, gjk);
-  return distanceWithin(d, beyond, within, a.view->geom, a.pose, b.view->geom, b.pose, gjk);
-}
-
-// Penetrating polytopes: the SAT normal and depth, then the clipped face contacts. False when the cores do not
-// penetrate or no clipped point carries the exact depth (the signed-distance path then answers).
-bool penetratingPolytopeContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
-  PenetrationResult<Real> mtd;
-  if (!penetration(mtd, a, b).ok() || !mtd.penetrating) return false;
-  const Real depth = -mtd.depth - a.view->margin - b.view->margin;
-  const V3 normalOnB = mtd.direction;  // moving A along it separates: it points from B to A
-  if (!isFinite(normalOnB) || normalOnB.squaredNorm() < Real(0.5)) return false;
-  BufferedSink buffered;
-  if (clippedContacts(a, b, normalOnB, threshold, Clamp{depth}, buffered) > depth + toleranceOf(a, b)) return false;
-  buffered.flush(sink);
-  return true;
-}
 
 // The largest extent of `s` along unit `n` (n . x over the shape, margin included); false when unbounded or not
 // modelled here (planes, custom shapes).
@@ -210,51 +71,28 @@ bool culledBySeparatingAxis(const PlacedShape& a, const PlacedShape& b, Real thr
   return false;
 }
 
-// The signed-distance path: contacts of a pair whose distance `d` (cores) is known.
-void distanceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const DistanceResult<Real>& d,
-                      ContactSink& sink) {
-  const Real depth = d.distance - a.view->margin - b.view->margin;
-  const V3 normalOnB = -d.normal;  // gq's normal runs from A to B
-  if (!(depth <= threshold) || !isFinite(normalOnB) || normalOnB.squaredNorm() < Real(0.5)) return;
-  // The exact closest point joins the clipped ones unless one of them already carries the exact depth.
-  const Real clippedDeepest = clippedContacts(a, b, normalOnB, threshold, Clamp{depth}, sink);
-  if (clippedDeepest > depth + toleranceOf(a, b))
-    sink.add(normalOnB, d.point1 + normalOnB * b.view->margin, depth, TriangleIds(), true);
-}
+// Bullet's manifold holds 4 points: sending it more makes it sort its cache once per extra point.
+constexpr std::uint32_t kManifoldPoints = 4;
 
-// Passes contacts on and notes whether there was any.
-class TouchSink final : public ContactSink {
- public:
-  explicit TouchSink(ContactSink& inner) : inner_(inner) {}
-  void add(const V3& normalOnB, const V3& pointOnB, Real depth, TriangleIds ids, bool surfaceIsB) override {
-    any = true;
-    inner_.add(normalOnB, pointOnB, depth, ids, surfaceIsB);
-  }
-  bool any = false;
-
- private:
-  ContactSink& inner_;
-};
-
-void convexContactsExact(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
+// The pair's contact set on the prepared shapes when both views carry them (validated once, derived data kept).
+bool convexContactsExact(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
                          GjkCache<Real>* gjk) {
-  const bool sat = hasSatPenetration(a, b);
-  const Real margins = a.view->margin + b.view->margin;
-  // Only a pair within the contact threshold makes contacts: GJK may stop once it proves the pair farther.
-  DistanceResult<Real> d;
-  bool beyond = false;
-  const Real within = threshold + margins;
-  // Rounded polytopes (hulls with a margin) rest with their cores apart: the distance answers first, and the SAT
-  // penetration runs only when the cores touch. Exact polytopes (boxes) rest penetrating: the SAT runs first.
-  if (sat && margins > Real(0)) {
-    if (!distanceUpTo(d, beyond, within, a, b, gjk).ok() || beyond) return;
-    if (d.distance > toleranceOf(a, b) || !penetratingPolytopeContacts(a, b, threshold, sink))
-      distanceContacts(a, b, threshold, d, sink);
-    return;
-  }
-  if (sat && penetratingPolytopeContacts(a, b, threshold, sink)) return;
-  if (!distanceUpTo(d, beyond, within, a, b, gjk).ok() || beyond) return;
-  distanceContacts(a, b, threshold, d, sink);
+  ContactSetSettings<Real> settings;
+  settings.contactDistance = std::max(threshold, Real(0));
+  settings.maxContacts = kManifoldPoints;
+  settings.margin0 = a.view->margin;
+  settings.margin1 = b.view->margin;
+  settings.toleranceLength = std::max(a.view->size, b.view->size);
+  settings.cache = gjk;
+  ContactSet<Real> set;
+  const Status s = a.view->prepared && b.view->prepared
+                       ? generateContacts(*a.view->prepared, a.pose, *b.view->prepared, b.pose, set, settings)
+                       : generateContacts(a.view->geom, a.pose, b.view->geom, b.pose, set, settings);
+  if (!s.ok()) return false;
+  for (std::uint32_t i = 0; i < set.count; ++i)
+    if (set.points[i].separation <= threshold)
+      sink.add(set.normal, set.points[i].position, set.points[i].separation, TriangleIds(), true);
+  return set.count > 0;
 }
 
 }  // namespace
@@ -263,10 +101,8 @@ void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, 
                     PairMemory* memory) {
   // A pair in contact range last frame most likely still is: the cull is tried on the others only.
   if (!(memory && memory->touching) && culledBySeparatingAxis(a, b, threshold, memory)) return;
-  if (!memory) return convexContactsExact(a, b, threshold, sink, nullptr);
-  TouchSink touch(sink);
-  convexContactsExact(a, b, threshold, touch, &memory->gjk);
-  memory->touching = touch.any;
+  const bool touching = convexContactsExact(a, b, threshold, sink, memory ? &memory->gjk : nullptr);
+  if (memory) memory->touching = touching;
 }
 
 }  // namespace gq::bullet

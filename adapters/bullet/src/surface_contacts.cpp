@@ -1,13 +1,11 @@
 // Convex shape against a triangle mesh or heightfield: the triangles under the shape's bounds (gq's midphase),
-// then contacts per triangle (gq's generateTriangleContacts; GJK against the triangle for cylinders and cones).
+// then contacts per triangle (gq's generateTriangleContacts, which clips a cylinder's cap or side to the triangle).
 // Triangles are two-sided, as Bullet's convex-triangle contacts are.
 #include <array>
 #include <cmath>
 
-#include "contact_features.h"
 #include "contacts.h"
 #include "gq/contacts.h"
-#include "gq/custom.h"
 #include "gq/mesh_query.h"
 #include "gq/query.h"
 
@@ -20,45 +18,8 @@ constexpr std::uint32_t kTrianglePage = 64;
 // closest-feature separation (flat resting contacts stay flat).
 constexpr Real kMeshContactMarginFactor = Real(0.05);
 
-// A world-space triangle as a convex custom shape, for GJK against shapes generateTriangleContacts does not take.
-class TriangleShape final : public CustomGeometryCallbacks<Real> {
- public:
-  explicit TriangleShape(const Triangle<Real>& t) : t_(t) {}
-  const char* name() const override { return "bullet-adapter-triangle"; }
-  Bounds3<Real> localBounds() const override {
-    Bounds3<Real> b;
-    for (const V3& v : t_.verts) b.include(v);
-    return b;
-  }
-  V3 support(const V3& dir) const override {
-    int best = 0;
-    for (int i = 1; i < 3; ++i)
-      if (t_.verts[i].dot(dir) > t_.verts[best].dot(dir)) best = i;
-    return t_.verts[best];
-  }
-  // Two-sided ray-triangle test (Moller-Trumbore); not used by the contact path but part of the contract.
-  bool raycast(const V3& origin, const V3& dir, Real maxDist, HitFlags, RaycastHit<Real>& hit) const override {
-    const V3 e1 = t_.verts[1] - t_.verts[0], e2 = t_.verts[2] - t_.verts[0];
-    const V3 p = dir.cross(e2);
-    const Real det = e1.dot(p);
-    if (det == Real(0)) return false;
-    const V3 s = origin - t_.verts[0];
-    const Real u = s.dot(p) / det;
-    const V3 q = s.cross(e1);
-    const Real v = dir.dot(q) / det;
-    const Real t = e2.dot(q) / det;
-    if (u < 0 || v < 0 || u + v > 1 || t < 0 || t > maxDist) return false;
-    hit.distance = t;
-    hit.position = origin + dir * t;
-    hit.normal = e1.cross(e2).normalized();
-    if (hit.normal.dot(dir) > 0) hit.normal = -hit.normal;
-    hit.flags = HitFlag::Position | HitFlag::Normal;
-    return true;
-  }
-
- private:
-  Triangle<Real> t_;
-};
+// A contact normal within this cosine of a triangle's face normal (~8 degrees) is a face contact.
+constexpr Real kFaceAlignmentCos = Real(0.99);
 
 // Internal edges: a shape resting on one triangle also reaches the edges of its neighbours, whose closest-feature
 // normals tilt away from the surface and push the shape sideways (Bullet's "internal edge" artefact). Contacts are
@@ -131,45 +92,20 @@ void report(const SurfaceQuery& q, const V3& pointOnConvex, const V3& normal, Re
   q.sink.add(normal, pointOnA - normal * depth, depth, q.surface.view->triangleIds(index), onFace);
 }
 
-// A flat cap or side resting on the triangle's face: the incident feature clipped to the triangle (GJK alone
-// would give one point per frame and let a standing cylinder rock).
-int faceContacts(const SurfaceQuery& q, const Triangle<Real>& tri, const V3& normal, std::uint32_t index) {
-  Feature face, incident;
-  face.count = 3;
-  for (int i = 0; i < 3; ++i) face.points[i] = tri.verts[i];
-  face.normal = tri.normal();
-  if (face.normal.dot(normal) < 0) face.normal = -face.normal;  // two-sided: the side facing the shape
-  face.origin = tri.verts[0];
-  if (face.normal.dot(normal) < kFaceAlignmentCos || !incidentFeature(q.convex, -face.normal, incident)) return 0;
-  clipToFace(face, incident);
-  for (int i = 0; i < incident.count; ++i)
-    report(q, incident.points[i], face.normal, (incident.points[i] - face.origin).dot(face.normal), index, true);
-  return incident.count;
-}
-
 void triangleContacts(const SurfaceQuery& q, std::uint32_t index, const Geometry<Real>& contactGeom) {
   Triangle<Real> tri;
   if (!getSurfaceTriangle(q.surface, index, tri)) return;
   const Real reach = q.threshold + q.convex.view->margin + q.surface.view->margin;
   const Real size = q.convex.view->size;
-  if (contactGeom.type() != GeometryType::Custom) {
-    ContactBuffer<Real> buffer;
-    TriangleContactSettings<Real> settings;
-    settings.contactDistance = std::max(reach, Real(0));
-    settings.meshContactMargin = kMeshContactMarginFactor * size;
-    settings.toleranceLength = size;
-    if (!generateTriangleContacts(contactGeom, q.convex.pose, tri, index, buffer, settings).ok()) return;
-    for (std::uint32_t i = 0; i < buffer.count; ++i)
-      report(q, buffer.contacts[i].position, buffer.contacts[i].normal, buffer.contacts[i].separation, index,
-             alongFace(buffer.contacts[i].normal, tri));
-    return;
-  }
-  const Geometry<Real> triangle = CustomGeometry<Real>(std::make_shared<TriangleShape>(tri));
-  DistanceResult<Real> d;
-  if (!distance(d, contactGeom, q.convex.pose, triangle, Pose(), static_cast<GjkCache<Real>*>(nullptr)).ok()) return;
-  const V3 normal = -d.normal;
-  if (!isFinite(normal) || normal.squaredNorm() < Real(0.5)) return;
-  if (faceContacts(q, tri, normal, index) == 0) report(q, d.point0, normal, d.distance, index, alongFace(normal, tri));
+  ContactBuffer<Real> buffer;
+  TriangleContactSettings<Real> settings;
+  settings.contactDistance = std::max(reach, Real(0));
+  settings.meshContactMargin = kMeshContactMarginFactor * size;
+  settings.toleranceLength = size;
+  if (!generateTriangleContacts(contactGeom, q.convex.pose, tri, index, buffer, settings).ok()) return;
+  for (std::uint32_t i = 0; i < buffer.count; ++i)
+    report(q, buffer.contacts[i].position, buffer.contacts[i].normal, buffer.contacts[i].separation, index,
+           alongFace(buffer.contacts[i].normal, tri));
 }
 
 // generateTriangleContacts takes capsules, boxes and hulls: a sphere is a capsule of zero length.

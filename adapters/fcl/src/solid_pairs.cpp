@@ -24,6 +24,7 @@
 
 #include "fallback.h"
 #include "geometry_cache.h"
+#include "gq/contacts.h"
 #include "gq/kernels.h"
 #include "pair_kernels.h"
 
@@ -986,6 +987,45 @@ template <class S, FS A, FS B>
   return result.numContacts();
 }
 
+// Two boxes under collide with contacts: gq's contact set (generateContacts, at most 4 points as FCL's box routine
+// keeps) in FCL's placement: the normal from o1 to o2, each point midway between the incident point and the
+// reference face with its own depth; when num_max_contacts leaves less room than the set, the deepest first (FCL
+// sorts them so). A pair gq finds apart writes nothing; a touching pair whose set is empty gets the exact contact.
+template <class S>
+[[gnu::noinline]] std::size_t collideBoxBoxContacts(Solid<S> a, Solid<S> b, const ::fcl::CollisionRequest<S>& request,
+                                                    ::fcl::CollisionResult<S>& result, std::size_t before) {
+  bool hit = false;
+  switch (overlapCall<S, FS::Box, FS::Box>(a, b, true, hit)) {
+    case Answer::Invalid: return 0;  // bad input: nothing written
+    case Answer::Unanswered: return collideOthers(a.geometry, *a.tf, b.geometry, *b.tf, request, result, true);
+    case Answer::Done: break;
+  }
+  countGq();
+  if (!hit) return before;
+  const Geometry<S> ga = BoxGeometry<S>(boxHalf(a)), gb = BoxGeometry<S>(boxHalf(b));
+  const Transform<S> pa(a.tf->translation(), Quat<S>(a.tf->linear()).normalized());
+  const Transform<S> pb(b.tf->translation(), Quat<S>(b.tf->linear()).normalized());
+  ContactSet<S> set;
+  if (!generateContacts(ga, pa, gb, pb, set).ok() || set.count == 0) {
+    collideWithContact<S, FS::Box, FS::Box>(a.geometry, a.tf, b.geometry, b.tf, result);
+    return result.numContacts();
+  }
+  std::array<std::uint32_t, kMaxContactSetPoints> order;
+  for (std::uint32_t i = 0; i < set.count; ++i) order[i] = i;
+  const std::size_t room = request.num_max_contacts - std::min(request.num_max_contacts, before);
+  if (room < set.count)
+    std::stable_sort(order.begin(), order.begin() + set.count, [&](std::uint32_t i, std::uint32_t j) {
+      return set.points[i].separation < set.points[j].separation;
+    });
+  for (std::uint32_t k = 0; k < set.count && k < room; ++k) {
+    const ContactSetPoint<S>& c = set.points[order[k]];
+    result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, kNoPrimitive, kNoPrimitive,
+                                        Vec3<S>(c.position + set.normal * (c.separation / S(2))), Vec3<S>(-set.normal),
+                                        -c.separation));
+  }
+  return result.numContacts();
+}
+
 // Two closed solids under collide: at most one contact, no buffer; contact geometry only when asked for.
 template <class S, FS A, FS B>
 [[gnu::always_inline]] inline Collided collideSolids(Solid<S> a, Solid<S> b, bool withContact, bool resultHeldContacts,
@@ -1011,6 +1051,8 @@ std::size_t fclCollideEntry(const FclGeometry<S>* ga, const Isometry<S>* ta, con
   const std::size_t before = result.numContacts();
   if (satisfiedBy(request, before)) return before;
   const bool fclContact = request.enable_contact && contactFromFcl(A, B, options);
+  if constexpr (A == FS::Box && B == FS::Box)
+    if (!request.enable_cost && fclContact) return collideBoxBoxContacts<S>(a, b, request, result, before);
   if (!request.enable_cost && fclContact) return collideWithFclContact<S, A, B>(a, b, request, result, before);
   if (!request.enable_cost && !fclContact) {
     const Collided c = collideSolids<S, A, B>(a, b, request.enable_contact, before > 0, result);

@@ -1,4 +1,4 @@
-// Contacts between a capsule, box or convex mesh and one triangle (gq/contacts.h).
+// Contacts between a capsule, box, convex mesh or convex custom shape and one triangle (gq/contacts.h).
 //
 // 1. Closest features by GJK (separated) or EPA (overlapping): separation s and normal N from the triangle towards
 //    the shape. Nothing is reported when s > contactDistance.
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/validate.h"
+#include "contacts/contact_features.h"
 #include "gjk/gjk.h"
 #include "gq/contacts.h"
 #include "gq/query.h"
@@ -137,6 +138,33 @@ template <class T> ContactScratch<T>& contactScratch() {
   return scratch;
 }
 
+// A custom shape's surface has no vertices or edges to test: when its closest-feature normal is along the triangle's
+// face and a flat feature of it (a cylinder's cap or side) rests there, that feature clipped to the triangle, along the
+// face normal (a standing cylinder would otherwise get one point per call and rock); otherwise the closest point.
+template <class T>
+void customShapeContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& triangle,
+                         std::uint32_t triangleIndex, T separation, const Vec3<T>& normal, const Vec3<T>& closest,
+                         T contactDistance, ContactBuffer<T>& contacts) {
+  contacts = ContactBuffer<T>();
+  const auto add = [&](const Vec3<T>& p, const Vec3<T>& n, T s) {
+    if (s > contactDistance || contacts.count == kMaxTriangleContacts) return;
+    contacts.contacts[contacts.count++] = ContactPoint<T>{p, n, s, triangleIndex};
+  };
+  Vec3<T> n = triangle.normal();
+  if (n.dot(normal) < T(0)) n = -n;  // two-sided: the side facing the shape
+  detail::Feature<T> reference, incident;
+  if (n.dot(normal) >= T(detail::kFaceAlignmentCos) && detail::incidentFeature(geom, pose, Vec3<T>(-n), incident)) {
+    reference.count = 3;
+    for (int i = 0; i < 3; ++i) reference.points[i] = triangle.verts[i];
+    reference.normal = n;
+    reference.origin = triangle.verts[0];
+    detail::clipToFace(reference, incident);
+    for (int i = 0; i < incident.count; ++i) add(incident.points[i], n, n.dot(incident.points[i] - triangle.verts[0]));
+    if (incident.count > 0) return;
+  }
+  add(closest, normal, separation);
+}
+
 template <class T>
 Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const Triangle<T>& tri, T contactDistance,
                         T meshContactMargin, T toleranceLength) {
@@ -145,8 +173,11 @@ Status validateContacts(const Geometry<T>& geom, const Transform<T>& pose, const
   if (const detail::Problem p = detail::pairGeometryProblem(geom)) return p.status();
   if (Status s = detail::checkPose(pose, detail::kPoseField); !s.ok()) return s;
   const GeometryType t = geom.type();
-  if (t != GeometryType::Capsule && t != GeometryType::Box && t != GeometryType::ConvexMesh)
-    return Status::unsupported("generateTriangleContacts takes a capsule, box or convex mesh").withType(t);
+  const auto* custom = geom.template getIf<CustomGeometry<T>>();
+  if (t != GeometryType::Capsule && t != GeometryType::Box && t != GeometryType::ConvexMesh &&
+      !(custom && custom->callbacks->isConvex()))
+    return Status::unsupported("generateTriangleContacts takes a capsule, box, convex mesh or convex custom shape")
+        .withType(t);
   if (const char* problem = detail::rawTriangleProblem(tri, pose)) return Status::invalid(problem);
   if (!(std::isfinite(contactDistance) && contactDistance >= T(0))) return Status::invalid("contactDistance must be finite and >= 0");
   if (!(std::isfinite(meshContactMargin) && meshContactMargin >= T(0))) return Status::invalid("meshContactMargin must be finite and >= 0");
@@ -186,6 +217,10 @@ Status generateTriangleContacts(const Geometry<T>& geom, const Transform<T>& pos
       separation = -e.depth;
       normal = -e.normal;
       closest = e.point0;
+    }
+    if (geom.type() == GeometryType::Custom) {
+      customShapeContacts(geom, pose, triangle, triangleIndex, separation, normal, closest, contactDistance, contacts);
+      return Status();
     }
     ContactScratch<T>& scratch = contactScratch<T>();
     std::vector<Candidate<T>>& candidates = scratch.candidates;

@@ -1,0 +1,127 @@
+// Box-box contact sets answered by gq against FCL 0.7's own box routine, float and double, on seeded poses of a box
+// resting on another box's face (both orders, ground turned at random): the same count for each num_max_contacts,
+// and each contact one of FCL's full set with the same depth, normal and position.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include "gq/fcl/fcl.h"
+
+namespace {
+
+template <class S> using V3 = ::fcl::Vector3<S>;
+template <class S> using Tf = ::fcl::Transform3<S>;
+
+template <class S> struct FclBoxContactSets : ::testing::Test {
+  static constexpr double kTol = std::is_same_v<S, double> ? 1e-9 : 2e-4;
+};
+using Scalars = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(FclBoxContactSets, Scalars);
+
+template <class S> Tf<S> turned(const Eigen::Quaterniond& q, const Eigen::Vector3d& t) {
+  Tf<S> tf = Tf<S>::Identity();
+  tf.linear() = q.toRotationMatrix().cast<S>();
+  tf.translation() = t.cast<S>();
+  return tf;
+}
+
+// Each of FCL's contacts has a gq contact with the same depth, normal and position (the sets as sets). `fcl` may be
+// a larger set than `gq` (FCL's full set, when num_max_contacts keeps only some of equally deep points: which ones
+// FCL keeps then depends on its sort's order among equals), then each of gq's contacts is one of FCL's.
+template <class S>
+void expectSameContacts(const ::fcl::CollisionResult<S>& fcl, const ::fcl::CollisionResult<S>& gq, double tol,
+                        int trial) {
+  if (gq.numContacts() < fcl.numContacts()) {
+    ::fcl::CollisionResult<S> some;
+    for (std::size_t j = 0; j < gq.numContacts(); ++j) some.addContact(gq.getContact(j));
+    ::fcl::CollisionResult<S> chosen;
+    for (std::size_t j = 0; j < gq.numContacts(); ++j)
+      for (std::size_t i = 0; i < fcl.numContacts(); ++i)
+        if ((fcl.getContact(i).pos - gq.getContact(j).pos).template cast<double>().norm() < tol) {
+          chosen.addContact(fcl.getContact(i));
+          break;
+        }
+    expectSameContacts(chosen, some, tol, trial);
+    return;
+  }
+  ASSERT_EQ(gq.numContacts(), fcl.numContacts()) << "trial " << trial;
+  std::vector<bool> used(gq.numContacts(), false);
+  for (std::size_t i = 0; i < fcl.numContacts(); ++i) {
+    const ::fcl::Contact<S>& f = fcl.getContact(i);
+    bool found = false;
+    for (std::size_t j = 0; j < gq.numContacts() && !found; ++j) {
+      const ::fcl::Contact<S>& g = gq.getContact(j);
+      if (used[j]) continue;
+      if (std::abs(double(f.penetration_depth - g.penetration_depth)) < tol &&
+          (f.normal - g.normal).template cast<double>().norm() < tol &&
+          (f.pos - g.pos).template cast<double>().norm() < tol)
+        used[j] = found = true;
+    }
+    if (!found) {
+      std::ostringstream gqContacts;
+      for (std::size_t j = 0; j < gq.numContacts(); ++j)
+        gqContacts << "\n  gq depth " << gq.getContact(j).penetration_depth << " normal "
+                   << gq.getContact(j).normal.transpose() << " pos " << gq.getContact(j).pos.transpose();
+      ADD_FAILURE() << "trial " << trial << " FCL contact " << i << " depth " << f.penetration_depth << " normal "
+                    << f.normal.transpose() << " pos " << f.pos.transpose() << gqContacts.str();
+    }
+  }
+}
+
+TYPED_TEST(FclBoxContactSets, RestingBoxMatchesFclsFaceSet) {
+  using S = TypeParam;
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> u(-1, 1), size(0.3, 1.2), depth(0.001, 0.05);
+  int compared = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Eigen::Quaterniond groundTurn =
+        Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized();
+    const Eigen::Vector3d groundAt(u(rng), u(rng), u(rng));
+    const double hx = size(rng), hy = size(rng), hz = size(rng);
+    auto ground = std::make_shared<::fcl::Box<S>>(S(6), S(6), S(1));
+    auto top = std::make_shared<::fcl::Box<S>>(S(2 * hx), S(2 * hy), S(2 * hz));
+    // Resting on the ground's +z face, well inside it (the footprint stays within the face), turned about z.
+    const double yaw = 3 * u(rng), d = depth(rng);
+    const Eigen::Vector3d local(1.2 * u(rng), 1.2 * u(rng), 0.5 + hz - d);
+    const Eigen::Quaterniond topTurn = groundTurn * Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
+    const Tf<S> pg = turned<S>(groundTurn, groundAt), pt = turned<S>(topTurn, groundAt + groundTurn * local);
+    for (std::size_t maxContacts : {std::size_t(1), std::size_t(2), std::size_t(4), std::size_t(8)}) {
+      const ::fcl::CollisionRequest<S> request(maxContacts, true);
+      for (bool topFirst : {true, false}) {
+        ::fcl::CollisionResult<S> fcl, fullFcl, gq;
+        const ::fcl::CollisionRequest<S> full(4, true);
+        if (topFirst) {
+          ::fcl::collide(top.get(), pt, ground.get(), pg, request, fcl);
+          ::fcl::collide(top.get(), pt, ground.get(), pg, full, fullFcl);
+          gq::fcl::collide(top.get(), pt, ground.get(), pg, request, gq);
+        } else {
+          ::fcl::collide(ground.get(), pg, top.get(), pt, request, fcl);
+          ::fcl::collide(ground.get(), pg, top.get(), pt, full, fullFcl);
+          gq::fcl::collide(ground.get(), pg, top.get(), pt, request, gq);
+        }
+        ASSERT_EQ(fcl.numContacts(), std::min<std::size_t>(maxContacts, 4)) << "trial " << trial;
+        ASSERT_EQ(gq.numContacts(), fcl.numContacts()) << "trial " << trial;
+        expectSameContacts(fullFcl, gq, this->kTol, trial);
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 300 * 4 * 2);
+}
+
+// Separated boxes: no contact, as FCL.
+TYPED_TEST(FclBoxContactSets, SeparatedBoxesHaveNone) {
+  using S = TypeParam;
+  ::fcl::Box<S> a(S(1), S(1), S(1)), b(S(1), S(1), S(1));
+  Tf<S> pb = Tf<S>::Identity();
+  pb.translation() = V3<S>(S(0), S(0), S(1.01));
+  ::fcl::CollisionResult<S> gq;
+  EXPECT_EQ(gq::fcl::collide(&a, Tf<S>::Identity(), &b, pb, ::fcl::CollisionRequest<S>(4, true), gq), 0u);
+}
+
+}  // namespace
