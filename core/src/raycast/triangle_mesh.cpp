@@ -96,11 +96,12 @@ template <class T> class MeshRaycaster {
     return found;
   }
 
-  // The first hit found within maxDist (any hit): the walk stops there.
+  // The first hit found within maxDist (any hit): the walk stops there. Nearest child first: a ray entering a closed
+  // mesh meets a hit sooner that way than in lane order (fewer nodes and leaves per ray on the bench's rays).
   bool any(T maxDist, RawHit<T>& best) const {
     float tMax = floatCeil(maxDist);
     bool found = false;
-    walkRayLeaves<false, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
+    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
       TriangleHits4<T> laneHits;
       for (int mask = candidates(ref, maxDist, laneHits); mask; mask &= mask - 1) {
