@@ -1,7 +1,8 @@
-// The float SIMD pre-test of a leaf's 4 triangles (bvh/triangle_packet.h) must never drop a triangle that the exact
-// watertight test in T hits (otherwise mesh raycasts would leak or lose the closest hit), and it must drop triangles
-// the ray clearly misses (otherwise it saves nothing). Checked on 4-triangle meshes (one leaf, one packet) of many
-// sizes and offsets, with rays aimed at vertices, edge points and interiors, grazing rays and tight maxT.
+// The wide watertight test of a leaf's 4 triangles (bvh/triangle_exact4.h) must never drop a triangle that the scalar
+// watertight test in T hits (otherwise mesh raycasts would leak or lose the closest hit), the hits it decides alone
+// must be the scalar test's bit for bit, and it must drop triangles the ray misses. Checked on 4-triangle meshes (one
+// leaf) of many sizes and offsets, with rays aimed at vertices, edge points and interiors, grazing rays and tight maxT,
+// in float (4 lanes per register) and double (2).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +12,6 @@
 
 #include "bvh/build.h"
 #include "bvh/triangle_exact4.h"
-#include "bvh/triangle_packet.h"
 #include "mesh/triangle.h"
 #include "mesh_test_helpers.h"
 
@@ -22,12 +22,6 @@ using meshtest::Scalars;
 
 template <class T> class MeshRaycastPacket : public ::testing::Test {};
 TYPED_TEST_SUITE(MeshRaycastPacket, Scalars);
-
-// Smallest float >= t (the traversal passes the closest distance so far rounded up to float).
-template <class T> float floatCeil(T t) {
-  const float f = static_cast<float>(t);
-  return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
 
 // Three draws of n in order, one per declarator: argument evaluation order is unspecified (GCC and clang differ).
 Eigen::Vector3d normal3(std::normal_distribution<double>& n, std::mt19937_64& rng) {
@@ -48,22 +42,28 @@ template <class T> MeshData<T> randomLeaf(std::mt19937_64& rng, const Vec3<T>& c
 
 struct Counts {
   int exactHits = 0, missed = 0, rejected = 0, tested = 0;
-  int decided = 0;  // float meshes: hits the 4-wide exact test computed itself
+  int decided = 0;  // hits the wide test computed itself
 };
 
-// Fires `rays` rays at the leaf from `origin` and checks the pre-test against the exact test for both culling modes.
+// The leaf's triangles as the raycast loads them: from the mesh's vertex copies, 4 readable or zero-padded.
+template <class T> detail::TriangleVertices4<T> leafTriangles(const TriangleMesh<T>& mesh, bool fourReadable) {
+  detail::TriangleVertices4<T> tris;
+  detail::loadTriangles4(mesh.triangleVertices.data(), Bvh4Node::leafCount(mesh.accel->bvh.rootChild), fourReadable,
+                         tris);
+  return tris;
+}
+
+// Fires the rays at the leaf and checks the wide test against the scalar test for both culling modes.
 template <class T>
 void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins, const std::vector<Vec3<T>>& targets,
                bool tightMaxT, Counts& counts) {
   ASSERT_TRUE(Bvh4Node::isLeaf(mesh.accel->bvh.rootChild));
   const std::uint32_t count = Bvh4Node::leafCount(mesh.accel->bvh.rootChild);
-  // Float meshes keep exact vertex packets instead; the pre-test is checked on packets built here for both.
-  const std::vector<TrianglePacket4> packets = detail::buildTrianglePackets(mesh.accel->bvh, mesh.triangleVertices);
-  const TrianglePacket4& packet = packets.at(mesh.accel->bvh.rootPacket);
+  const detail::TriangleVertices4<T> tris = leafTriangles(mesh, count == 4);
   for (std::size_t r = 0; r < origins.size(); ++r) {
     const Vec3<T> dir = (targets[r] - origins[r]).normalized();
     const detail::WatertightRay<T> exactRay = detail::makeWatertightRay(origins[r], dir);
-    const detail::PacketRay packetRay = detail::makePacketRay(origins[r], dir);
+    const detail::WatertightRay4<T> wideRay = detail::makeWatertightRay4(exactRay);
     for (bool cull : {false, true}) {
       T maxT = std::numeric_limits<T>::max() / T(4);
       if (tightMaxT) {  // the exact distance of the first triangle hit, so t == maxT must still be kept
@@ -73,27 +73,20 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
           if (detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h)) { maxT = h.t; break; }
         }
       }
-      const int mask = detail::packetCandidates(packet, packetRay, floatCeil(maxT), cull);
-      int exactMask = 0xf;  // float meshes: the 4-wide exact test on the mesh's vertex packet
-      detail::TriangleHits4 laneHits;
-      if constexpr (std::is_same_v<T, float>)
-        exactMask = detail::exactTriangleHits(mesh.accel->vertexPackets.at(mesh.accel->bvh.rootPacket),
-                                              detail::makeWatertightRay4(exactRay), maxT, cull, laneHits);
+      detail::TriangleHits4<T> laneHits;
+      const int mask = detail::exactTriangleHits(tris, wideRay, maxT, cull, laneHits);
       for (std::uint32_t i = 0; i < count; ++i) {
         const Vec3<T>* v = &mesh.triangleVertices[3 * i];
         detail::TriangleRayHit<T> h;
         const bool exact = detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h);
-        EXPECT_FALSE(exact && !((exactMask >> i) & 1)) << "the 4-wide exact test dropped a hit";
-        if constexpr (std::is_same_v<T, float>) {
-          if ((laneHits.decided >> i) & 1) {  // a lane decided 4 wide: the scalar test's hit, bit for bit
-            ++counts.decided;
-            EXPECT_TRUE(exact) << "the 4-wide exact test decided a lane the scalar test rejects";
-            if (exact) {
-              EXPECT_EQ(laneHits.t[i], h.t);
-              EXPECT_EQ(laneHits.u[i], h.u);
-              EXPECT_EQ(laneHits.v[i], h.v);
-              EXPECT_EQ(((laneHits.frontMask >> i) & 1) != 0, h.frontFace);
-            }
+        if ((laneHits.decided >> i) & 1) {  // a lane decided wide: the scalar test's hit, bit for bit
+          ++counts.decided;
+          EXPECT_TRUE(exact) << "the wide test decided a lane the scalar test rejects";
+          if (exact) {
+            EXPECT_EQ(laneHits.t[i], h.t);
+            EXPECT_EQ(laneHits.u[i], h.u);
+            EXPECT_EQ(laneHits.v[i], h.v);
+            EXPECT_EQ(((laneHits.frontMask >> i) & 1) != 0, h.frontFace);
           }
         }
         const bool kept = (mask >> i) & 1;
@@ -106,7 +99,7 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
   }
 }
 
-TYPED_TEST(MeshRaycastPacket, PreTestKeepsEveryTriangleTheExactTestHits) {
+TYPED_TEST(MeshRaycastPacket, WideTestKeepsEveryTriangleTheScalarTestHitsAndDecidesItsHitsBitForBit) {
   using T = TypeParam;
   std::mt19937_64 rng(77);
   std::uniform_real_distribution<double> u(0, 1);
@@ -153,10 +146,10 @@ TYPED_TEST(MeshRaycastPacket, PreTestKeepsEveryTriangleTheExactTestHits) {
   }
   EXPECT_EQ(counts.missed, 0);
   EXPECT_GT(counts.exactHits, counts.tested / 10);  // the rays do hit: the check is not vacuous
-  if constexpr (std::is_same_v<T, float>) EXPECT_GT(counts.decided, counts.exactHits / 2);
+  EXPECT_GT(counts.decided, counts.exactHits / 2);
 }
 
-TYPED_TEST(MeshRaycastPacket, PreTestRejectsTrianglesTheRayClearlyMisses) {
+TYPED_TEST(MeshRaycastPacket, WideTestRejectsTrianglesTheRayMisses) {
   using T = TypeParam;
   // Four unit triangles side by side in z = 0 (x in [0,1], [2,3], [4,5], [6,7]), seen from far above: a ray at the
   // interior of one of them must keep only that one.
@@ -172,22 +165,47 @@ TYPED_TEST(MeshRaycastPacket, PreTestRejectsTrianglesTheRayClearlyMisses) {
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   ASSERT_NE(mesh, nullptr);
   ASSERT_TRUE(Bvh4Node::isLeaf(mesh->accel->bvh.rootChild));
-  const std::vector<TrianglePacket4> packets = detail::buildTrianglePackets(mesh->accel->bvh, mesh->triangleVertices);
-  const TrianglePacket4& packet = packets.at(mesh->accel->bvh.rootPacket);
+  const detail::TriangleVertices4<T> tris = leafTriangles(*mesh, true);
+  auto candidates = [&](const Vec3<T>& origin, const Vec3<T>& dir, T maxT, bool cull) {
+    detail::TriangleHits4<T> hits;
+    return detail::exactTriangleHits(tris, detail::makeWatertightRay4(detail::makeWatertightRay(origin, dir)), maxT,
+                                     cull, hits);
+  };
   for (int i = 0; i < 4; ++i) {
     const Vec3<T> target(T(2 * i) + T(0.25), T(0.25), T(0));
     const Vec3<T> origin = target + Vec3<T>(T(0.3), T(-0.2), T(100));
     const Vec3<T> dir = (target - origin).normalized();
-    const int mask = detail::packetCandidates(packet, detail::makePacketRay(origin, dir), 1e6f, false);
+    const int mask = candidates(origin, dir, T(1e6), false);
     // The cooked order may differ from the input order: map the kept lane back to the input triangle.
     ASSERT_EQ(__builtin_popcount(unsigned(mask)), 1);
     EXPECT_EQ(mesh->inputIndex[std::uint32_t(__builtin_ctz(unsigned(mask)))], std::uint32_t(i));
     // The triangles face +z: a ray going up (-dir from below) sees back faces only, so culling drops them all.
     const Vec3<T> below = target - Vec3<T>(T(0.3), T(-0.2), T(100));
-    EXPECT_EQ(detail::packetCandidates(packet, detail::makePacketRay(below, Vec3<T>(-dir)), 1e6f, true), 0);
+    EXPECT_EQ(candidates(below, Vec3<T>(-dir), T(1e6), true), 0);
     // maxT short of the plane drops the triangle too.
-    EXPECT_EQ(detail::packetCandidates(packet, detail::makePacketRay(origin, dir), 50.0f, false), 0);
+    EXPECT_EQ(candidates(origin, dir, T(50), false), 0);
   }
+}
+
+TYPED_TEST(MeshRaycastPacket, LeafTrianglesLoadTheSameFromRegistersAndLaneByLane) {
+  using T = TypeParam;
+  std::mt19937_64 rng(5);
+  const MeshData<T> m = randomLeaf<T>(rng, Vec3<T>(T(1), T(-2), T(3)), 0.5);
+  const auto mesh = meshtest::cook(m.vertices, m.triangles);
+  ASSERT_NE(mesh, nullptr);
+  ASSERT_EQ(Bvh4Node::leafCount(mesh->accel->bvh.rootChild), 4u);
+  const detail::TriangleVertices4<T> wide = leafTriangles(*mesh, true), lanes = leafTriangles(*mesh, false);
+  for (int k = 0; k < 3; ++k)
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(wide.v[k][a][i], lanes.v[k][a][i]);
+        EXPECT_EQ(wide.v[k][a][i], mesh->triangleVertices[3 * std::size_t(i) + std::size_t(k)][a]);
+      }
+  // Fewer than 4 triangles stored: the missing lanes are zero.
+  detail::TriangleVertices4<T> three;
+  detail::loadTriangles4(mesh->triangleVertices.data(), 3, false, three);
+  for (int k = 0; k < 3; ++k)
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(three.v[k][a][3], T(0));
 }
 
 }  // namespace

@@ -61,8 +61,8 @@ template <class T> struct TriangleMesh {
   std::vector<TriangleIndices> triangles;  // cooked order (BVH leaf order), degenerate triangles removed
   std::vector<std::uint32_t> inputIndex;   // cooked -> input triangle index (reported as faceIndex)
   std::vector<std::uint32_t> cookedIndex;  // input -> cooked index, kRemovedTriangle if removed
-  // The BVH and its leaf triangle packets (a private layout, built by cookTriangleMesh; null in a mesh not made by
-  // it, which validation rejects), and their size in bytes.
+  // The BVH over the cooked triangles (a private layout, built by cookTriangleMesh; null in a mesh not made by
+  // it, which validation rejects), and its size in bytes.
   std::shared_ptr<const detail::MeshAccel> accel;
   std::size_t bvhBytes = 0;
   Bounds3<T> localBounds;

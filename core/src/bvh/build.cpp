@@ -38,7 +38,7 @@ class Builder {
     Bounds3<float> all;
     for (const auto& b : prims_) all.include(b);
     const Range root{0, std::uint32_t(order_.size()), all};
-    bvh_.rootChild = buildRef(root, 0, bvh_.rootPacket);
+    bvh_.rootChild = buildRef(root, 0);
     return std::move(bvh_);
   }
 
@@ -115,12 +115,9 @@ class Builder {
     return t >= float(kBins - 1) ? kBins - 1 : int(t);
   }
 
-  // Reference to the subtree over r; `packet` receives the leaf's packet number when r becomes a leaf.
-  std::uint32_t buildRef(const Range& r, int depth, std::uint32_t& packet) {
-    if (r.count() <= Bvh4Node::kMaxLeafSize) {
-      packet = bvh_.leafCount++;
-      return Bvh4Node::makeLeaf(r.begin, r.count());
-    }
+  // Reference to the subtree over r.
+  std::uint32_t buildRef(const Range& r, int depth) {
+    if (r.count() <= Bvh4Node::kMaxLeafSize) return Bvh4Node::makeLeaf(r.begin, r.count());
     std::array<Range, 4> kids;
     int n = 1;
     kids[0] = r;
@@ -141,14 +138,13 @@ class Builder {
     }
     const auto nodeIndex = std::uint32_t(bvh_.nodes.size());
     bvh_.nodes.emplace_back();
-    std::array<std::uint32_t, 4> refs, packets{};
+    std::array<std::uint32_t, 4> refs;
     refs.fill(Bvh4Node::kEmpty);
-    for (int i = 0; i < n; ++i) refs[i] = buildRef(kids[i], depth + 1, packets[i]);
+    for (int i = 0; i < n; ++i) refs[i] = buildRef(kids[i], depth + 1);
     Bvh4Node& node = bvh_.nodes[nodeIndex];
     const float inf = std::numeric_limits<float>::infinity();
     for (int i = 0; i < 4; ++i) {
       node.child[i] = refs[i];
-      node.leafPacket[i] = packets[i];
       // Empty lanes get an all-+inf box, which every slab test rejects.
       const Bounds3<float> b = i < n ? kids[i].bounds : Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf),
                                                                                   Vec3<float>::Constant(inf));
@@ -180,49 +176,6 @@ Bvh4 buildBvh4(const std::vector<Bounds3<float>>& primBounds, std::vector<std::u
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   if (primBounds.empty()) return Bvh4();
   return Builder(primBounds, order).run();
-}
-
-namespace {
-template <class T>
-void fillPacket(TrianglePacket4& p, std::uint32_t leafRef, const std::vector<Vec3<T>>& triangleVertices) {
-  const std::uint32_t first = Bvh4Node::leafFirst(leafRef), count = Bvh4Node::leafCount(leafRef);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const Vec3<T>* v = &triangleVertices[3 * std::size_t(first + i)];
-    // Edges are formed in T and then rounded: one rounding per component.
-    const Vec3<T> e1 = v[1] - v[0], e2 = v[2] - v[0];
-    p.v0x[i] = float(v[0].x()); p.v0y[i] = float(v[0].y()); p.v0z[i] = float(v[0].z());
-    p.e1x[i] = float(e1.x()); p.e1y[i] = float(e1.y()); p.e1z[i] = float(e1.z());
-    p.e2x[i] = float(e2.x()); p.e2y[i] = float(e2.y()); p.e2z[i] = float(e2.z());
-  }
-}
-}  // namespace
-
-template <class T>
-std::vector<TrianglePacket4> buildTrianglePackets(const Bvh4& bvh, const std::vector<Vec3<T>>& triangleVertices) {
-  std::vector<TrianglePacket4> packets(bvh.leafCount, TrianglePacket4{});
-  if (Bvh4Node::isLeaf(bvh.rootChild)) fillPacket(packets[bvh.rootPacket], bvh.rootChild, triangleVertices);
-  for (const Bvh4Node& node : bvh.nodes)
-    for (int i = 0; i < 4; ++i)
-      if (Bvh4Node::isLeaf(node.child[i])) fillPacket(packets[node.leafPacket[i]], node.child[i], triangleVertices);
-  return packets;
-}
-
-template std::vector<TrianglePacket4> buildTrianglePackets<float>(const Bvh4&, const std::vector<Vec3<float>>&);
-template std::vector<TrianglePacket4> buildTrianglePackets<double>(const Bvh4&, const std::vector<Vec3<double>>&);
-
-std::vector<TriangleVertices4> buildVertexPackets(const Bvh4& bvh, const std::vector<Vec3<float>>& triangleVertices) {
-  std::vector<TriangleVertices4> packets(bvh.leafCount, TriangleVertices4{});
-  auto fill = [&](TriangleVertices4& p, std::uint32_t leafRef) {
-    const std::uint32_t first = Bvh4Node::leafFirst(leafRef), count = Bvh4Node::leafCount(leafRef);
-    for (std::uint32_t i = 0; i < count; ++i)
-      for (int k = 0; k < 3; ++k)
-        for (int a = 0; a < 3; ++a) p.v[k][a][i] = triangleVertices[3 * std::size_t(first + i) + std::size_t(k)][a];
-  };
-  if (Bvh4Node::isLeaf(bvh.rootChild)) fill(packets[bvh.rootPacket], bvh.rootChild);
-  for (const Bvh4Node& node : bvh.nodes)
-    for (int i = 0; i < 4; ++i)
-      if (Bvh4Node::isLeaf(node.child[i])) fill(packets[node.leafPacket[i]], node.child[i]);
-  return packets;
 }
 
 template <class T> Bounds3<float> roundOutward(const Vec3<T>& lo, const Vec3<T>& hi) {

@@ -12,14 +12,6 @@ namespace gq::detail {
 // primitive permutation: leaf ranges [first, first + count) index into `order` (cooked position -> input primitive).
 Bvh4 buildBvh4(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order);
 
-// Float SoA copies of every leaf's triangles, indexed by leaf packet number (Bvh4Node::leafPacket, Bvh4::rootPacket).
-// triangleVertices holds 3 vertices per cooked triangle in leaf order.
-template <class T>
-std::vector<TrianglePacket4> buildTrianglePackets(const Bvh4& bvh, const std::vector<Vec3<T>>& triangleVertices);
-
-// Exact SoA copies of every leaf's triangles of a float mesh, indexed like buildTrianglePackets.
-std::vector<TriangleVertices4> buildVertexPackets(const Bvh4& bvh, const std::vector<Vec3<float>>& triangleVertices);
-
 // Float box that contains the exact box [lo, hi] of type T (rounded outward with nextafter).
 template <class T> Bounds3<float> roundOutward(const Vec3<T>& lo, const Vec3<T>& hi);
 

@@ -117,15 +117,15 @@ inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax
 }
 
 // Walks the leaves whose boxes the ray enters within [0, tMax]. Ordered: nearest child first, and entries whose entry
-// distance passed tMax (lowered by the leaf handler since they were pushed) are dropped. Unordered (any hit: the walk
-// stops at the first hit, so the order buys nothing and sorting costs per node): the children are pushed as found.
+// distance passed tMax (lowered by the leaf handler since they were pushed) are dropped. Unordered: the children are
+// pushed as found (no compare per node, but on closed meshes the nearest child is likelier to hold a first hit).
 template <bool kOrdered, bool kSlack, class LeafFn>
 inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
-  struct Entry { std::uint32_t ref, packet; float tNear; };
+  struct Entry { std::uint32_t ref; float tNear; };
   Entry stack[kBvhStackSize];
   int top = 0;
   if (bvh.rootChild == Bvh4Node::kEmpty) return;
-  stack[top++] = {bvh.rootChild, bvh.rootPacket, 0.0f};
+  stack[top++] = {bvh.rootChild, 0.0f};
   while (top > 0) {
     Entry e = stack[--top];
     if (kOrdered && e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
@@ -139,33 +139,33 @@ inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafF
       int i = __builtin_ctz(unsigned(mask));
       mask &= mask - 1;
       if (mask == 0) {  // one child entered: no stack traffic
-        e = Entry{node.child[i], node.leafPacket[i], tn[i]};
+        e = Entry{node.child[i], tn[i]};
         continue;
       }
       if (!kOrdered) {
-        e = Entry{node.child[i], node.leafPacket[i], tn[i]};
+        e = Entry{node.child[i], tn[i]};
         do {
           i = __builtin_ctz(unsigned(mask));
           mask &= mask - 1;
-          stack[top++] = Entry{node.child[i], node.leafPacket[i], tn[i]};
+          stack[top++] = Entry{node.child[i], tn[i]};
         } while (mask);
         continue;
       }
       const int j = __builtin_ctz(unsigned(mask));
       if ((mask & (mask - 1)) == 0) {  // two children entered (the common case): push the farther one
         const int nearLane = tn[j] < tn[i] ? j : i, farLane = i + j - nearLane;
-        stack[top++] = Entry{node.child[farLane], node.leafPacket[farLane], tn[farLane]};
-        e = Entry{node.child[nearLane], node.leafPacket[nearLane], tn[nearLane]};
+        stack[top++] = Entry{node.child[farLane], tn[farLane]};
+        e = Entry{node.child[nearLane], tn[nearLane]};
         continue;
       }
       // Collect hit children sorted by entry distance (insertion sort of at most 4).
       Entry hit[4];
-      hit[0] = Entry{node.child[i], node.leafPacket[i], tn[i]};
+      hit[0] = Entry{node.child[i], tn[i]};
       int n = 1;
       while (mask) {
         i = __builtin_ctz(unsigned(mask));
         mask &= mask - 1;
-        Entry c{node.child[i], node.leafPacket[i], tn[i]};
+        Entry c{node.child[i], tn[i]};
         int j = n++;
         while (j > 0 && hit[j - 1].tNear < c.tNear) { hit[j] = hit[j - 1]; --j; }
         hit[j] = c;  // descending: nearest last
@@ -174,29 +174,8 @@ inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafF
       e = hit[n - 1];
     }
     if (missed) continue;
-    if (leaf(e.ref, e.packet)) return;
+    if (leaf(e.ref)) return;
   }
-}
-
-// Visits leaves whose boxes the ray enters within [0, tMax], nearest child first. `leaf(ref, packet)` gets the leaf
-// reference and its packet number (Bvh4Node::leafPacket) and returns true to stop; it may lower tMax (a float
-// reference owned by the caller) to prune.
-template <class LeafFn>
-inline void traverseRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
-  walkRayLeaves<true, true>(bvh, ray, tMax, leaf);
-}
-
-// As traverseRayLeaves in no particular order, for walks that stop at the first leaf answer (any hit).
-template <class LeafFn>
-inline void traverseRayLeavesAnyOrder(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
-  walkRayLeaves<false, true>(bvh, ray, tMax, leaf);
-}
-
-// As traverseRayLeaves, with `leaf(first, count)` getting the leaf's primitive range.
-template <class LeafFn> inline void traverseRay(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
-  traverseRayLeaves(bvh, ray, tMax, [&](std::uint32_t ref, std::uint32_t) {
-    return leaf(Bvh4Node::leafFirst(ref), Bvh4Node::leafCount(ref));
-  });
 }
 
 // Best-first traversal for nearest-primitive queries. `childLowerBound(node, lane)` returns a lower bound of the

@@ -1,16 +1,16 @@
 #pragma once
-// The float watertight ray/triangle test (mesh/triangle.h, intersectRayTriangle<float>) on the 4 triangles of a leaf
-// at once (bvh/bvh.h TriangleVertices4). Every lane performs the scalar test's IEEE operations in the same order on
-// the same float inputs, so a lane it rejects is one the scalar test rejects: no margin is needed, unlike the
-// conservative pre-test of double meshes (bvh/triangle_packet.h). Lanes it cannot decide exactly the same way are
-// kept as candidates for the scalar test: an edge function that is exactly zero (the scalar test re-evaluates it in
-// double) and any NaN (every comparison fails, so nothing rejects the lane). Accepted lanes get the scalar test,
-// which computes the hit.
+// The watertight ray/triangle test (mesh/triangle.h, intersectRayTriangle<T>) on the (up to) 4 triangles of a leaf at
+// once, in the mesh's own precision: float 4 lanes per SSE register, double 2. Every lane performs the scalar test's
+// IEEE operations in the same order on the same inputs, so a lane it rejects is one the scalar test rejects: no
+// margin and no pre-test copy of the triangles are needed. Lanes it cannot decide exactly the same way are kept as
+// candidates for the scalar test: an edge function that is exactly zero (the scalar test re-evaluates it in a wider
+// type) and any NaN (every comparison fails, so nothing rejects the lane). The triangles are read from the mesh's
+// per-triangle vertex copies (TriangleMesh::triangleVertices, contiguous per leaf) and transposed in registers.
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
-#include "bvh/bvh.h"
+#include "gq/math.h"
 #include "mesh/triangle.h"
 
 #ifdef GQ_SSE42
@@ -19,109 +19,230 @@
 
 namespace gq::detail {
 
-// Per-ray constants: the scalar test's WatertightRay<float> (permuted axes, shear, origin), and its origin and shear on
-// the permuted axes broadcast to 4 lanes once per ray.
-struct WatertightRay4 {
-  WatertightRay<float> ray;
+// The 4 triangles of a leaf in structure-of-arrays form: v[vertex][axis][lane].
+template <class T> struct alignas(16) TriangleVertices4 {
+  T v[3][3][4];
+};
+
+// Loads `count` (1..4) triangles starting at `tv` (3 vertices each, as TriangleMesh::triangleVertices stores them).
+// With `fourReadable` (4 triangles are stored from tv on) the lanes past count hold the following triangles and the
+// caller ignores them; otherwise they are zero.
+inline void loadTriangles4(const Vec3<float>* tv, std::uint32_t count, bool fourReadable, TriangleVertices4<float>& out) {
 #ifdef GQ_SSE42
-  __m128 ox, oy, oz, sx, sy, sz;
+  if (fourReadable) {
+    // Triangle i is 9 floats: components 0-3, 4-7 and 8, each group transposed to 4 lanes.
+    const float* f = tv->data();
+    __m128 a0 = _mm_loadu_ps(f), a1 = _mm_loadu_ps(f + 9), a2 = _mm_loadu_ps(f + 18), a3 = _mm_loadu_ps(f + 27);
+    __m128 b0 = _mm_loadu_ps(f + 4), b1 = _mm_loadu_ps(f + 13), b2 = _mm_loadu_ps(f + 22), b3 = _mm_loadu_ps(f + 31);
+    _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+    _MM_TRANSPOSE4_PS(b0, b1, b2, b3);
+    const __m128 c01 = _mm_unpacklo_ps(_mm_load_ss(f + 8), _mm_load_ss(f + 17));
+    const __m128 c23 = _mm_unpacklo_ps(_mm_load_ss(f + 26), _mm_load_ss(f + 35));
+    float* o = &out.v[0][0][0];
+    _mm_store_ps(o, a0); _mm_store_ps(o + 4, a1); _mm_store_ps(o + 8, a2); _mm_store_ps(o + 12, a3);
+    _mm_store_ps(o + 16, b0); _mm_store_ps(o + 20, b1); _mm_store_ps(o + 24, b2); _mm_store_ps(o + 28, b3);
+    _mm_store_ps(o + 32, _mm_movelh_ps(c01, c23));
+    return;
+  }
+#else
+  (void)fourReadable;
+#endif
+  out = TriangleVertices4<float>{};
+  for (std::uint32_t i = 0; i < count; ++i)
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a) out.v[k][a][i] = tv[3 * i + std::uint32_t(k)][a];
+}
+
+inline void loadTriangles4(const Vec3<double>* tv, std::uint32_t count, bool fourReadable,
+                           TriangleVertices4<double>& out) {
+#ifdef GQ_SSE42
+  if (fourReadable) {
+    // Triangle i is 9 doubles; two triangles at a time, two components per load.
+    const double* d = tv->data();
+    double* o = &out.v[0][0][0];
+    for (int pair = 0; pair < 2; ++pair) {
+      const double* p = d + 18 * pair;
+      double* q = o + 2 * pair;
+      for (int k = 0; k < 8; k += 2) {
+        const __m128d x = _mm_loadu_pd(p + k), y = _mm_loadu_pd(p + 9 + k);
+        _mm_store_pd(q + 4 * k, _mm_unpacklo_pd(x, y));
+        _mm_store_pd(q + 4 * (k + 1), _mm_unpackhi_pd(x, y));
+      }
+      _mm_store_pd(q + 32, _mm_loadh_pd(_mm_load_sd(p + 8), p + 17));
+    }
+    return;
+  }
+#else
+  (void)fourReadable;
+#endif
+  out = TriangleVertices4<double>{};
+  for (std::uint32_t i = 0; i < count; ++i)
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a) out.v[k][a][i] = tv[3 * i + std::uint32_t(k)][a];
+}
+
+#ifdef GQ_SSE42
+// The same SSE operation on float (4 lanes) and double (2 lanes) registers, so one kernel serves both.
+namespace lanes {
+template <class T> struct Reg;
+template <> struct Reg<float> {
+  using type = __m128;
+  static constexpr int kWidth = 4;
+  static __m128 load(const float* p) { return _mm_load_ps(p); }
+  static __m128 set1(float x) { return _mm_set1_ps(x); }
+  static void store(float* p, __m128 x) { _mm_store_ps(p, x); }
+  static int mask(__m128 x) { return _mm_movemask_ps(x); }
+  static __m128 signBit() { return _mm_set1_ps(-0.0f); }
+};
+template <> struct Reg<double> {
+  using type = __m128d;
+  static constexpr int kWidth = 2;
+  static __m128d load(const double* p) { return _mm_load_pd(p); }
+  static __m128d set1(double x) { return _mm_set1_pd(x); }
+  static void store(double* p, __m128d x) { _mm_store_pd(p, x); }
+  static int mask(__m128d x) { return _mm_movemask_pd(x); }
+  static __m128d signBit() { return _mm_set1_pd(-0.0); }
+};
+inline __m128 add(__m128 a, __m128 b) { return _mm_add_ps(a, b); }
+inline __m128d add(__m128d a, __m128d b) { return _mm_add_pd(a, b); }
+inline __m128 sub(__m128 a, __m128 b) { return _mm_sub_ps(a, b); }
+inline __m128d sub(__m128d a, __m128d b) { return _mm_sub_pd(a, b); }
+inline __m128 mul(__m128 a, __m128 b) { return _mm_mul_ps(a, b); }
+inline __m128d mul(__m128d a, __m128d b) { return _mm_mul_pd(a, b); }
+inline __m128 div(__m128 a, __m128 b) { return _mm_div_ps(a, b); }
+inline __m128d div(__m128d a, __m128d b) { return _mm_div_pd(a, b); }
+inline __m128 bitOr(__m128 a, __m128 b) { return _mm_or_ps(a, b); }
+inline __m128d bitOr(__m128d a, __m128d b) { return _mm_or_pd(a, b); }
+inline __m128 bitAnd(__m128 a, __m128 b) { return _mm_and_ps(a, b); }
+inline __m128d bitAnd(__m128d a, __m128d b) { return _mm_and_pd(a, b); }
+inline __m128 andNot(__m128 a, __m128 b) { return _mm_andnot_ps(a, b); }  // ~a & b
+inline __m128d andNot(__m128d a, __m128d b) { return _mm_andnot_pd(a, b); }
+inline __m128 bitXor(__m128 a, __m128 b) { return _mm_xor_ps(a, b); }
+inline __m128d bitXor(__m128d a, __m128d b) { return _mm_xor_pd(a, b); }
+inline __m128 eq(__m128 a, __m128 b) { return _mm_cmpeq_ps(a, b); }
+inline __m128d eq(__m128d a, __m128d b) { return _mm_cmpeq_pd(a, b); }
+inline __m128 lt(__m128 a, __m128 b) { return _mm_cmplt_ps(a, b); }
+inline __m128d lt(__m128d a, __m128d b) { return _mm_cmplt_pd(a, b); }
+inline __m128 le(__m128 a, __m128 b) { return _mm_cmple_ps(a, b); }
+inline __m128d le(__m128d a, __m128d b) { return _mm_cmple_pd(a, b); }
+}  // namespace lanes
+#endif
+
+// Per-ray constants: the scalar test's WatertightRay<T> (permuted axes, shear, origin), and its origin and shear on
+// the permuted axes broadcast to the lanes once per ray.
+template <class T> struct WatertightRay4 {
+  WatertightRay<T> ray;
+#ifdef GQ_SSE42
+  typename lanes::Reg<T>::type ox, oy, oz, sx, sy, sz;
 #endif
 };
 
-inline WatertightRay4 makeWatertightRay4(const WatertightRay<float>& ray) {
-  WatertightRay4 r;
+template <class T> inline WatertightRay4<T> makeWatertightRay4(const WatertightRay<T>& ray) {
+  WatertightRay4<T> r;
   r.ray = ray;
 #ifdef GQ_SSE42
-  r.ox = _mm_set1_ps(ray.org[ray.kx]);
-  r.oy = _mm_set1_ps(ray.org[ray.ky]);
-  r.oz = _mm_set1_ps(ray.org[ray.kz]);
-  r.sx = _mm_set1_ps(ray.sx);
-  r.sy = _mm_set1_ps(ray.sy);
-  r.sz = _mm_set1_ps(ray.sz);
+  using R = lanes::Reg<T>;
+  r.ox = R::set1(ray.org[ray.kx]);
+  r.oy = R::set1(ray.org[ray.ky]);
+  r.oz = R::set1(ray.org[ray.kz]);
+  r.sx = R::set1(ray.sx);
+  r.sy = R::set1(ray.sy);
+  r.sz = R::set1(ray.sz);
 #endif
   return r;
 }
 
-// The hits of the lanes the 4-wide test decides alone (bit i of `decided`): the scalar test's t, u, v and side, bit
-// for bit (the same IEEE operations: 1 / det, then products). Other candidate lanes need the scalar test.
-struct TriangleHits4 {
+// The hits of the lanes the wide test decides alone (bit i of `decided`): the scalar test's t, u, v and side, bit for
+// bit (the same IEEE operations: 1 / det, then products). Other candidate lanes need the scalar test.
+template <class T> struct TriangleHits4 {
   int decided = 0;
-  alignas(16) float t[4], u[4], v[4];
+  alignas(16) T t[4], u[4], v[4];
   int frontMask = 0;  // bit i: lane i was hit on its front face
 };
 
-// Bit i set: the scalar watertight test of triangle i of the packet may accept the ray within [0, maxT]. A candidate
-// lane without an exactly zero edge function and with a finite hit is decided here: the scalar test accepts it with
-// the hit written to `hits` (bit i of hits.decided).
-inline int exactTriangleHits(const TriangleVertices4& p, const WatertightRay4& r, float maxT, bool cullBackFaces,
-                             TriangleHits4& hits) {
 #ifdef GQ_SSE42
-  const WatertightRay<float>& ray = r.ray;
-  const __m128 zero = _mm_setzero_ps();
+namespace lanes {
+// Lanes [lane0, lane0 + width) of the wide test: returns their candidate bits (shifted to lane0) and adds the decided
+// and front-face bits to `hits`.
+template <class T>
+inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r, int lane0, T maxT,
+                      bool cullBackFaces, TriangleHits4<T>& hits) {
+  using R = Reg<T>;
+  using V = typename R::type;
+  const WatertightRay<T>& ray = r.ray;
+  const V zero = R::set1(T(0));
+  auto at = [&](int vertex, int axis) { return R::load(&p.v[vertex][axis][lane0]); };
   // a = v0 - org, b = v1 - org, c = v2 - org on the permuted axes, then the shear.
-  const __m128 akz = _mm_sub_ps(_mm_load_ps(p.v[0][ray.kz]), r.oz);
-  const __m128 bkz = _mm_sub_ps(_mm_load_ps(p.v[1][ray.kz]), r.oz);
-  const __m128 ckz = _mm_sub_ps(_mm_load_ps(p.v[2][ray.kz]), r.oz);
-  const __m128 ax = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(p.v[0][ray.kx]), r.ox), _mm_mul_ps(r.sx, akz));
-  const __m128 ay = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(p.v[0][ray.ky]), r.oy), _mm_mul_ps(r.sy, akz));
-  const __m128 bx = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(p.v[1][ray.kx]), r.ox), _mm_mul_ps(r.sx, bkz));
-  const __m128 by = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(p.v[1][ray.ky]), r.oy), _mm_mul_ps(r.sy, bkz));
-  const __m128 cx = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(p.v[2][ray.kx]), r.ox), _mm_mul_ps(r.sx, ckz));
-  const __m128 cy = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(p.v[2][ray.ky]), r.oy), _mm_mul_ps(r.sy, ckz));
+  const V akz = sub(at(0, ray.kz), r.oz), bkz = sub(at(1, ray.kz), r.oz), ckz = sub(at(2, ray.kz), r.oz);
+  const V ax = sub(sub(at(0, ray.kx), r.ox), mul(r.sx, akz)), ay = sub(sub(at(0, ray.ky), r.oy), mul(r.sy, akz));
+  const V bx = sub(sub(at(1, ray.kx), r.ox), mul(r.sx, bkz)), by = sub(sub(at(1, ray.ky), r.oy), mul(r.sy, bkz));
+  const V cx = sub(sub(at(2, ray.kx), r.ox), mul(r.sx, ckz)), cy = sub(sub(at(2, ray.ky), r.oy), mul(r.sy, ckz));
   // edgeFunction(cx, cy, bx, by), edgeFunction(ax, ay, cx, cy), edgeFunction(bx, by, ax, ay).
-  const __m128 eu = _mm_sub_ps(_mm_mul_ps(cx, by), _mm_mul_ps(cy, bx));
-  const __m128 ev = _mm_sub_ps(_mm_mul_ps(ax, cy), _mm_mul_ps(ay, cx));
-  const __m128 ew = _mm_sub_ps(_mm_mul_ps(bx, ay), _mm_mul_ps(by, ax));
-  const __m128 anyZero =
-      _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(eu, zero), _mm_cmpeq_ps(ev, zero)), _mm_cmpeq_ps(ew, zero));
-  const __m128 anyNeg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(eu, zero), _mm_cmplt_ps(ev, zero)), _mm_cmplt_ps(ew, zero));
-  const __m128 anyPos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(eu, zero), _mm_cmpgt_ps(ev, zero)), _mm_cmpgt_ps(ew, zero));
-  __m128 reject = _mm_and_ps(anyNeg, anyPos);
-  const __m128 det = _mm_add_ps(_mm_add_ps(eu, ev), ew);
-  reject = _mm_or_ps(reject, _mm_cmpeq_ps(det, zero));
-  const __m128 front = _mm_cmpgt_ps(det, zero);
-  if (cullBackFaces) reject = _mm_or_ps(reject, _mm_cmple_ps(det, zero));  // !(det > 0)
-  const __m128 euAz = _mm_mul_ps(eu, _mm_mul_ps(r.sz, akz)), evBz = _mm_mul_ps(ev, _mm_mul_ps(r.sz, bkz));
-  const __m128 tScaled = _mm_add_ps(_mm_add_ps(euAz, evBz), _mm_mul_ps(ew, _mm_mul_ps(r.sz, ckz)));
+  const V eu = sub(mul(cx, by), mul(cy, bx));
+  const V ev = sub(mul(ax, cy), mul(ay, cx));
+  const V ew = sub(mul(bx, ay), mul(by, ax));
+  const V anyZero = bitOr(bitOr(eq(eu, zero), eq(ev, zero)), eq(ew, zero));
+  const V anyNeg = bitOr(bitOr(lt(eu, zero), lt(ev, zero)), lt(ew, zero));
+  const V anyPos = bitOr(bitOr(lt(zero, eu), lt(zero, ev)), lt(zero, ew));
+  V reject = bitAnd(anyNeg, anyPos);
+  const V det = add(add(eu, ev), ew);
+  reject = bitOr(reject, eq(det, zero));
+  const V front = lt(zero, det);
+  if (cullBackFaces) reject = bitOr(reject, le(det, zero));  // !(det > 0)
+  const V tScaled = add(add(mul(eu, mul(r.sz, akz)), mul(ev, mul(r.sz, bkz))),
+                                 mul(ew, mul(r.sz, ckz)));
   // sign = det > 0 ? 1 : -1; multiplying by -1 only flips the sign bit, as the xor below does.
-  const __m128 flip = _mm_andnot_ps(front, _mm_set1_ps(-0.0f));
-  const __m128 absDet = _mm_xor_ps(det, flip), st = _mm_xor_ps(tScaled, flip);
-  const __m128 inRange = _mm_and_ps(_mm_cmpge_ps(st, zero), _mm_cmple_ps(st, _mm_mul_ps(_mm_set1_ps(maxT), absDet)));
-  reject = _mm_or_ps(reject, _mm_cmplt_ps(st, zero));
-  reject = _mm_or_ps(reject, _mm_cmpgt_ps(st, _mm_mul_ps(_mm_set1_ps(maxT), absDet)));
-  // An exactly zero edge function: the scalar test re-evaluates it in double, so it decides.
-  reject = _mm_andnot_ps(anyZero, reject);
-  const int candidates = ~_mm_movemask_ps(reject) & 0xf;
+  const V flip = andNot(front, R::signBit());
+  const V absDet = bitXor(det, flip), st = bitXor(tScaled, flip);
+  const V limit = mul(R::set1(maxT), absDet);
+  const V inRange = bitAnd(le(zero, st), le(st, limit));
+  reject = bitOr(reject, bitOr(lt(st, zero), lt(limit, st)));
+  // An exactly zero edge function: the scalar test re-evaluates it in a wider type, so it decides.
+  reject = andNot(anyZero, reject);
+  const int full = (1 << R::kWidth) - 1;
+  const int candidates = ~R::mask(reject) & full;
   // Decided: no zero edge function, both range comparisons true (so nothing is NaN), and t, u, v finite (the mesh
   // raycast requires a finite hit).
-  __m128 sure = _mm_andnot_ps(anyZero, _mm_andnot_ps(reject, inRange));
-  int decided = _mm_movemask_ps(sure) & candidates;
+  int decided = R::mask(andNot(anyZero, andNot(reject, inRange))) & candidates;
   if (decided) {
-    const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), det);
-    const __m128 t = _mm_mul_ps(tScaled, inv), u = _mm_mul_ps(ev, inv), v = _mm_mul_ps(ew, inv);
-    const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-    const __m128 big = _mm_set1_ps(std::numeric_limits<float>::max());
-    const __m128 finite = _mm_and_ps(_mm_and_ps(_mm_cmple_ps(_mm_and_ps(t, absMask), big),
-                                                _mm_cmple_ps(_mm_and_ps(u, absMask), big)),
-                                     _mm_cmple_ps(_mm_and_ps(v, absMask), big));
-    decided &= _mm_movemask_ps(finite);
-    _mm_store_ps(hits.t, t);
-    _mm_store_ps(hits.u, u);
-    _mm_store_ps(hits.v, v);
-    hits.frontMask = _mm_movemask_ps(front);
+    const V inv = div(R::set1(T(1)), det);
+    const V t = mul(tScaled, inv), u = mul(ev, inv), v = mul(ew, inv);
+    const V big = R::set1(std::numeric_limits<T>::max());
+    const V sign = R::signBit();
+    const V finite = bitAnd(bitAnd(le(andNot(sign, t), big), le(andNot(sign, u), big)), le(andNot(sign, v), big));
+    decided &= R::mask(finite);
+    R::store(hits.t + lane0, t);
+    R::store(hits.u + lane0, u);
+    R::store(hits.v + lane0, v);
+    hits.frontMask |= (R::mask(front) & decided) << lane0;
   }
-  hits.decided = decided;
-  return candidates;
-#else
-  // Scalar build: the scalar test decides every lane it accepts with a finite hit.
+  hits.decided |= decided << lane0;
+  return candidates << lane0;
+}
+}  // namespace lanes
+#endif
+
+// Bit i set: the scalar watertight test of triangle i of the leaf may accept the ray within [0, maxT]. A candidate
+// lane without an exactly zero edge function and with a finite hit is decided here: the scalar test accepts it with
+// the hit written to `hits` (bit i of hits.decided).
+template <class T>
+inline int exactTriangleHits(const TriangleVertices4<T>& p, const WatertightRay4<T>& r, T maxT, bool cullBackFaces,
+                             TriangleHits4<T>& hits) {
   hits.decided = 0;
   hits.frontMask = 0;
+#ifdef GQ_SSE42
+  int mask = 0;
+  for (int lane0 = 0; lane0 < 4; lane0 += lanes::Reg<T>::kWidth)
+    mask |= lanes::exactLanes(p, r, lane0, maxT, cullBackFaces, hits);
+  return mask;
+#else
+  // Scalar build: the scalar test decides every lane it accepts with a finite hit.
   int mask = 0;
   for (int i = 0; i < 4; ++i) {
-    const Vec3<float> v0(p.v[0][0][i], p.v[0][1][i], p.v[0][2][i]);
-    const Vec3<float> v1(p.v[1][0][i], p.v[1][1][i], p.v[1][2][i]);
-    const Vec3<float> v2(p.v[2][0][i], p.v[2][1][i], p.v[2][2][i]);
-    TriangleRayHit<float> hit;
+    const Vec3<T> v0(p.v[0][0][i], p.v[0][1][i], p.v[0][2][i]);
+    const Vec3<T> v1(p.v[1][0][i], p.v[1][1][i], p.v[1][2][i]);
+    const Vec3<T> v2(p.v[2][0][i], p.v[2][1][i], p.v[2][2][i]);
+    TriangleRayHit<T> hit;
     if (!intersectRayTriangle(r.ray, v0, v1, v2, maxT, cullBackFaces, hit)) continue;
     mask |= 1 << i;
     if (std::isfinite(hit.t) && std::isfinite(hit.u) && std::isfinite(hit.v)) {
@@ -134,13 +255,6 @@ inline int exactTriangleHits(const TriangleVertices4& p, const WatertightRay4& r
   }
   return mask;
 #endif
-}
-
-// Bit i set: the scalar watertight test of triangle i of the packet may accept the ray within [0, maxT].
-inline int exactTriangleCandidates(const TriangleVertices4& p, const WatertightRay4& r, float maxT,
-                                   bool cullBackFaces) {
-  TriangleHits4 hits;
-  return exactTriangleHits(p, r, maxT, cullBackFaces, hits);
 }
 
 }  // namespace gq::detail

@@ -125,10 +125,6 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
       for (std::uint32_t v : triangles[input]) mesh->triangleVertices.push_back(vertices[v]);
       for (std::uint32_t v : triangles[input]) usedFlag[v] = 1;
     }
-    if constexpr (std::is_same_v<T, float>)
-      accel->vertexPackets = detail::buildVertexPackets(accel->bvh, mesh->triangleVertices);
-    else
-      accel->trianglePackets = detail::buildTrianglePackets(accel->bvh, mesh->triangleVertices);
     mesh->bvhBytes = accel->bvh.bytes();
     mesh->accel = std::move(accel);
     std::vector<std::uint32_t> used;

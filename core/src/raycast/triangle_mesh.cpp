@@ -1,8 +1,8 @@
 // Raycast against a triangle mesh (spec "Raycasts against Triangle Meshes"). The ray is taken into mesh space,
 // x_mesh = S^-1 R^T (x_world - p), keeping its parameter: o' + t d' maps to o + t dir, so t is the world distance
 // even under non-uniform scale. The BVH4 (bvh/traverse.h) is walked front to back with the closest distance found so
-// far as early-out; at a leaf a conservative float SIMD pre-test over its 4-triangle packet (bvh/triangle_packet.h)
-// selects the triangles that get the exact watertight test (mesh/triangle.h) in T, which alone decides hits.
+// far as early-out; at a leaf the exact watertight test (mesh/triangle.h) runs in T on its (up to) 4 triangles at once
+// (bvh/triangle_exact4.h, read from the mesh's triangle vertex copies), the scalar test only on lanes it cannot decide.
 // Modes: closest hit (default), any hit (AnyHit, maxHits 1), or up to maxHits hits (MeshMultiple): we keep the
 // maxHits closest hits and return them sorted by distance.
 #include <algorithm>
@@ -11,7 +11,6 @@
 
 #include "bvh/traverse.h"
 #include "bvh/triangle_exact4.h"
-#include "bvh/triangle_packet.h"
 #include "mesh/mesh_instance.h"
 #include "mesh/triangle.h"
 #include "raycast/raycast.h"
@@ -34,24 +33,8 @@ template <class T> float floatCeil(T t) {
 template <class T> class MeshRaycaster {
  public:
   MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir, bool cullBackFaces)
-      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), bvhRay_(makeBvhRay(org, dir)), cull_(cullBackFaces) {
-    if constexpr (kFloat) ray4_ = makeWatertightRay4(ray_);
-    else packetRay_ = makePacketRay(org, dir);
-  }
-
-  // Cooked indices of the leaf's triangles that may pass the exact test within maxT, as a bit mask over first + i.
-  // Float meshes: the exact test itself, 4 lanes at a time; double meshes: the conservative float pre-test at tMax,
-  // a float upper bound of maxT.
-  int candidates(std::uint32_t leafRef, std::uint32_t packet, float tMax, T maxT) const {
-    const int lanes = (1 << Bvh4Node::leafCount(leafRef)) - 1;
-    if constexpr (kFloat) {
-      (void)tMax;
-      return exactTriangleCandidates(mesh_.accel->vertexPackets[packet], ray4_, maxT, cull_) & lanes;
-    } else {
-      (void)maxT;
-      return packetCandidates(mesh_.accel->trianglePackets[packet], packetRay_, tMax, cull_) & lanes;
-    }
-  }
+      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), ray4_(makeWatertightRay4(ray_)), bvhRay_(makeBvhRay(org, dir)),
+        cull_(cullBackFaces) {}
 
   bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
     const Vec3<T>* v = &mesh_.triangleVertices[3 * std::size_t(cooked)];
@@ -61,26 +44,24 @@ template <class T> class MeshRaycaster {
            std::isfinite(hit.u) && std::isfinite(hit.v);
   }
 
-  // As candidates(); for float meshes the lanes the 4-wide test decides come with their hit in `hits`
-  // (hits.decided), bit-identical to the scalar test's, so only the other candidates need testTriangle.
-  int candidates(std::uint32_t leafRef, std::uint32_t packet, float tMax, T maxT, TriangleHits4& hits) const {
-    if constexpr (kFloat) {
-      const int lanes = (1 << Bvh4Node::leafCount(leafRef)) - 1;
-      (void)tMax;
-      return exactTriangleHits(mesh_.accel->vertexPackets[packet], ray4_, maxT, cull_, hits) & lanes;
-    } else {
-      hits.decided = 0;
-      return candidates(leafRef, packet, tMax, maxT);
-    }
+  // The leaf's triangles (cooked first + i) that the exact test may accept within maxT, as a bit mask over i, tested
+  // 4 wide; the lanes it decides come with their hit in `hits` (hits.decided), bit-identical to the scalar test's, so
+  // only the other candidates need testTriangle.
+  int candidates(std::uint32_t leafRef, T maxT, TriangleHits4<T>& hits) const {
+    const std::uint32_t first = Bvh4Node::leafFirst(leafRef), count = Bvh4Node::leafCount(leafRef);
+    TriangleVertices4<T> tris;
+    const std::size_t triangles = mesh_.triangleVertices.size() / 3;
+    loadTriangles4(&mesh_.triangleVertices[3 * std::size_t(first)], count, std::size_t(first) + 4 <= triangles, tris);
+    return exactTriangleHits(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
   }
 
-  // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the 4-wide test when it decided the
+  // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the wide test when it decided the
   // lane, else from the scalar test.
-  bool laneHit(const TriangleHits4& hits, int lane, std::uint32_t cooked, T maxT, TriangleRayHit<T>& h) const {
+  bool laneHit(const TriangleHits4<T>& hits, int lane, std::uint32_t cooked, T maxT, TriangleRayHit<T>& h) const {
     if ((hits.decided >> lane) & 1) {
-      h.t = T(hits.t[lane]);
-      h.u = T(hits.u[lane]);
-      h.v = T(hits.v[lane]);
+      h.t = hits.t[lane];
+      h.u = hits.u[lane];
+      h.v = hits.v[lane];
       h.frontFace = ((hits.frontMask >> lane) & 1) != 0;
       return true;
     }
@@ -92,11 +73,11 @@ template <class T> class MeshRaycaster {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
-    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
       bool lowered = false;
-      TriangleHits4 laneHits;
-      for (int mask = candidates(ref, packet, tMax, bestT, laneHits); mask; mask &= mask - 1) {
+      TriangleHits4<T> laneHits;
+      for (int mask = candidates(ref, bestT, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
@@ -115,14 +96,15 @@ template <class T> class MeshRaycaster {
     return found;
   }
 
-  // The first hit found within maxDist (any hit): the walk stops there.
+  // The first hit found within maxDist (any hit): the walk stops there. Nearest child first: a ray entering a closed
+  // mesh meets a hit sooner that way than in lane order (fewer nodes and leaves per ray on the bench's rays).
   bool any(T maxDist, RawHit<T>& best) const {
     float tMax = floatCeil(maxDist);
     bool found = false;
-    walkRayLeaves<false, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
-      TriangleHits4 laneHits;
-      for (int mask = candidates(ref, packet, tMax, maxDist, laneHits); mask; mask &= mask - 1) {
+      TriangleHits4<T> laneHits;
+      for (int mask = candidates(ref, maxDist, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
@@ -141,10 +123,10 @@ template <class T> class MeshRaycaster {
     auto farther = [](const RawHit<T>& a, const RawHit<T>& b) { return a.tri.t < b.tri.t; };  // max-heap on t
     T limit = maxDist;
     float tMax = floatCeil(maxDist);
-    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref, std::uint32_t packet) {
+    walkRayLeaves<true, !kFloat>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = Bvh4Node::leafFirst(ref);
-      TriangleHits4 laneHits;
-      for (int mask = candidates(ref, packet, tMax, limit, laneHits); mask; mask &= mask - 1) {
+      TriangleHits4<T> laneHits;
+      for (int mask = candidates(ref, limit, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
@@ -172,9 +154,8 @@ template <class T> class MeshRaycaster {
   static constexpr bool kFloat = std::is_same_v<T, float>;
   const TriangleMesh<T>& mesh_;
   WatertightRay<T> ray_;
+  WatertightRay4<T> ray4_;
   BvhRay bvhRay_;
-  WatertightRay4 ray4_{};  // float meshes
-  PacketRay packetRay_{};  // double meshes
   bool cull_;
 };
 
