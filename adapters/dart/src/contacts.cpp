@@ -75,133 +75,25 @@ bool distanceContact(const CollisionObject& o1, const CollisionObject& o2, std::
   return true;
 }
 
-// ---- box against box: the incident face clipped to the reference face -----------------------------------------
+// ---- two convex shapes, or a plane and a convex shape: gq's contact set ---------------------------------------
 
-struct BoxFrame {
-  Vec center;
-  Mat3<double> axes;  // columns
-  Vec half;
-};
-
-BoxFrame boxFrame(const CollisionObject& o) {
-  return {o.pose().p, o.pose().q.toRotationMatrix(), o.shape().geometry().get<BoxGeometry<double>>().halfExtents};
-}
-
-// The face of `box` whose outward normal is most aligned with `dir`: its axis index and sign.
-void bestFace(const BoxFrame& box, const Vec& dir, int& axis, double& sign, double& alignment) {
-  axis = 0;
-  alignment = -1.0;
-  sign = 1.0;
-  for (int i = 0; i < 3; ++i) {
-    const double d = box.axes.col(i).dot(dir);
-    if (std::abs(d) > alignment) {
-      alignment = std::abs(d);
-      axis = i;
-      sign = d >= 0.0 ? 1.0 : -1.0;
-    }
-  }
-}
-
-std::vector<Vec> faceVertices(const BoxFrame& box, int axis, double sign) {
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const Vec c = box.center + sign * box.half[axis] * box.axes.col(axis);
-  const Vec du = box.half[u] * box.axes.col(u), dv = box.half[v] * box.axes.col(v);
-  return {c + du + dv, c - du + dv, c - du - dv, c + du - dv};
-}
-
-// Keeps the part of `poly` with dot(n, x) <= offset.
-std::vector<Vec> clip(const std::vector<Vec>& poly, const Vec& n, double offset) {
-  std::vector<Vec> out;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Vec& a = poly[i];
-    const Vec& b = poly[(i + 1) % poly.size()];
-    const double da = n.dot(a) - offset, db = n.dot(b) - offset;
-    if (da <= 0.0) out.push_back(a);
-    if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
-  }
-  return out;
-}
-
-// Face-face alignment below which the contact is an edge or vertex contact and gets the single distance contact.
-constexpr double kFaceAlignment = 0.95;
-
-bool boxBoxContacts(const CollisionObject& o1, const CollisionObject& o2, std::vector<PairContact>& out) {
-  DistanceResult<double> d;
-  if (!distance(d, o1.shape(), o1.pose(), o2.shape(), o2.pose()).ok() || d.distance > 0.0) return false;
-  const Vec n = -d.normal;  // from 2 towards 1
-  const BoxFrame a = boxFrame(o1), b = boxFrame(o2);
-  int axisA, axisB;
-  double signA, signB, alignA, alignB;
-  bestFace(b, n, axisB, signB, alignB);   // b's face towards a
-  bestFace(a, -n, axisA, signA, alignA);  // a's face towards b
-  const bool referenceIsB = alignB >= alignA;
-  if (std::max(alignA, alignB) < kFaceAlignment) return distanceContact(o1, o2, out);
-  const BoxFrame& ref = referenceIsB ? b : a;
-  const BoxFrame& inc = referenceIsB ? a : b;
-  const int refAxis = referenceIsB ? axisB : axisA;
-  const double refSign = referenceIsB ? signB : signA;
-  const Vec refNormal = refSign * ref.axes.col(refAxis);
-  int incAxis;
-  double incSign, incAlign;
-  bestFace(inc, -refNormal, incAxis, incSign, incAlign);
-  std::vector<Vec> poly = faceVertices(inc, incAxis, incSign);
-  for (int k = 1; k <= 2 && !poly.empty(); ++k) {
-    const int side = (refAxis + k) % 3;
-    const Vec s = ref.axes.col(side);
-    const double c = s.dot(ref.center);
-    poly = clip(poly, s, c + ref.half[side]);
-    if (!poly.empty()) poly = clip(poly, -s, -c + ref.half[side]);
-  }
-  const double refOffset = refNormal.dot(ref.center) + ref.half[refAxis];
-  const Vec dartNormal = referenceIsB ? refNormal : Vec(-refNormal);
-  const std::size_t before = out.size();
-  for (const Vec& p : poly) {
-    const double sep = refNormal.dot(p) - refOffset;
-    if (sep > 0.0) continue;
+// The exact deepest point plus, where a face supports the contact, the other shape's clipped face (a box resting on
+// a box: its 4 corners), at most 4 points sharing one normal from object 2 towards object 1. Each point sits midway
+// between the two surfaces. Pairs without a contact set (none here in practice) take the signed distance's point.
+bool convexContacts(const CollisionObject& o1, const CollisionObject& o2, std::vector<PairContact>& out) {
+  ContactSet<double> set;
+  ContactSetSettings<double> settings;
+  settings.maxContacts = kMaxPairContacts;
+  if (!generateContacts(o1.shape(), o1.pose(), o2.shape(), o2.pose(), set, settings).ok())
+    return distanceContact(o1, o2, out);
+  for (std::uint32_t i = 0; i < set.count; ++i) {
     PairContact c;
-    c.point = p - 0.5 * sep * refNormal;
-    c.normal = dartNormal;
-    c.depth = -sep;
+    c.point = set.points[i].position + set.normal * (0.5 * set.points[i].separation);
+    c.normal = set.normal;
+    c.depth = -set.points[i].separation;
     out.push_back(c);
   }
-  if (out.size() == before) return distanceContact(o1, o2, out);
-  return true;
-}
-
-// ---- a box or capsule on a plane: its vertices (segment ends) below the plane ---------------------------------
-
-bool planeContacts(const CollisionObject& plane, const CollisionObject& solid, bool planeIsSecond,
-                   std::vector<PairContact>& out) {
-  const Vec n = plane.pose().rotate(Vec::UnitX());
-  const double offset = n.dot(plane.pose().p);
-  std::vector<Vec> points;
-  double radius = 0.0;
-  const Geometry<double>& g = solid.shape().geometry();
-  const Transform<double>& pose = solid.pose();
-  if (const auto* box = g.getIf<BoxGeometry<double>>()) {
-    for (int i = 0; i < 8; ++i) {
-      const Vec corner((i & 1) ? box->halfExtents.x() : -box->halfExtents.x(),
-                       (i & 2) ? box->halfExtents.y() : -box->halfExtents.y(),
-                       (i & 4) ? box->halfExtents.z() : -box->halfExtents.z());
-      points.push_back(pose.transform(corner));
-    }
-  } else {
-    const auto& cap = g.get<CapsuleGeometry<double>>();
-    radius = cap.radius;
-    points.push_back(pose.transform(Vec(-cap.halfHeight, 0, 0)));
-    points.push_back(pose.transform(Vec(cap.halfHeight, 0, 0)));
-  }
-  const std::size_t before = out.size();
-  for (const Vec& p : points) {
-    const double sep = n.dot(p) - offset - radius;
-    if (sep > 0.0) continue;
-    PairContact c;
-    c.point = p - (radius + 0.5 * sep) * n;
-    c.normal = planeIsSecond ? n : Vec(-n);
-    c.depth = -sep;
-    out.push_back(c);
-  }
-  return out.size() > before;
+  return set.count > 0;
 }
 
 // ---- a solid against a mesh or heightfield -------------------------------------------------------------------
@@ -362,20 +254,7 @@ void collect(const CollisionObject& o1, const CollisionObject& o2, std::size_t r
     }
     return;
   }
-  if (t1 == GeometryType::Box && t2 == GeometryType::Box) {
-    boxBoxContacts(o1, o2, out);
-    return;
-  }
-  const auto onPlane = [](GeometryType t) { return t == GeometryType::Box || t == GeometryType::Capsule; };
-  if (t2 == GeometryType::Plane && onPlane(t1)) {
-    planeContacts(o2, o1, true, out);
-    return;
-  }
-  if (t1 == GeometryType::Plane && onPlane(t2)) {
-    planeContacts(o1, o2, false, out);
-    return;
-  }
-  distanceContact(o1, o2, out);
+  convexContacts(o1, o2, out);
 }
 
 }  // namespace
