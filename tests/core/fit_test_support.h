@@ -57,15 +57,26 @@ inline MeshData<double> boxMesh(const Vec3d& half, const Transform<double>& pose
   return m;
 }
 
-// An L-shaped solid: two boxes glued (not convex), as one closed mesh made from two box meshes sharing a face region
-// (surfaces of both boxes; the shared inner faces are part of the mesh surface too, a fit is measured against them).
+// An L-shaped prism (not convex): the L polygon (0,0) (2,0) (2,0.5) (0.5,0.5) (0.5,1.5) (0,1.5) extruded over
+// z in [-0.25, 0.25], closed and outward-facing.
 inline MeshData<double> lShapeMesh() {
-  MeshData<double> a = boxMesh({1.0, 0.25, 0.25}, Transform<double>(Vec3d(0, 0, 0)));
-  const MeshData<double> b = boxMesh({0.25, 0.75, 0.25}, Transform<double>(Vec3d(0.75, 0.75, 0)));
-  const std::uint32_t base = std::uint32_t(a.vertices.size());
-  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (auto t : b.triangles) a.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-  return a;
+  const double xy[7][2] = {{0, 0}, {2, 0}, {2, 0.5}, {0.5, 0.5}, {0.5, 1.5}, {0, 1.5}, {0, 0.5}};
+  MeshData<double> m;
+  for (double z : {-0.25, 0.25})
+    for (const auto& p : xy) m.vertices.emplace_back(p[0], p[1], z);
+  // Caps: the L as two rectangles [0,2]x[0,0.5] and [0,0.5]x[0.5,1.5] (vertex 6 splits the left edge).
+  const std::uint32_t cap[5][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 6}, {6, 3, 4}, {6, 4, 5}};
+  for (const auto& t : cap) {
+    m.triangles.push_back({t[0] + 7, t[1] + 7, t[2] + 7});  // top, counter-clockwise from +z
+    m.triangles.push_back({t[0], t[2], t[1]});              // bottom
+  }
+  const std::uint32_t ring[7] = {0, 1, 2, 3, 4, 5, 6};
+  for (int i = 0; i < 7; ++i) {
+    const std::uint32_t a = ring[i], b = ring[(i + 1) % 7];
+    m.triangles.push_back({a, b, b + 7});
+    m.triangles.push_back({a, b + 7, a + 7});
+  }
+  return m;
 }
 
 template <class T> MeshData<T> castMesh(const MeshData<double>& m) {

@@ -171,6 +171,7 @@ struct Patch {
   Vec3d a, b, c;                   // Flat: corners; Spherical: unit directions (frame of the part's rotation)
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  // Side: axial [u0,u1] x angle [v0,v1]; Disk: radius [u0,u1] x angle
   double offset = 0;              // Spherical: centre offset along the axis; Disk: the cap's axial position
+  Vec3d normal = Vec3d::Zero();   // Flat: the outward normal of the face it lies on
 };
 
 // The patch's centre on the part's surface and a radius of a ball about it holding the whole patch.
@@ -233,8 +234,10 @@ void split(const Patch& p, std::vector<Patch>& out) {
     }
 }
 
-void flat(std::uint32_t part, const Vec3d& a, const Vec3d& b, const Vec3d& c, std::vector<Patch>& out) {
+void flat(std::uint32_t part, const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& normal,
+          std::vector<Patch>& out) {
   Patch p;
+  p.normal = normal;
   p.part = part;
   p.a = a;
   p.b = b;
@@ -310,17 +313,46 @@ void initialPatches(const Solid& s, std::uint32_t part, std::vector<Patch>& out)
             l[j] = (k >= 2) ? h[j] : -h[j];
             corner[k] = s.centre + s.rotation * l;
           }
-          flat(part, corner[0], corner[1], corner[2], out);
-          flat(part, corner[0], corner[2], corner[3], out);
+          const Vec3d normal = s.rotation.col(axis) * sgn;
+          flat(part, corner[0], corner[1], corner[2], normal, out);
+          flat(part, corner[0], corner[2], corner[3], normal, out);
         }
       return;
     }
     case Solid::Kind::Polytope:
       for (const Face& f : s.faces)
         for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k)
-          flat(part, s.vertices[f.vertices[0]], s.vertices[f.vertices[k]], s.vertices[f.vertices[k + 1]], out);
+          flat(part, s.vertices[f.vertices[0]], s.vertices[f.vertices[k]], s.vertices[f.vertices[k + 1]], f.normal,
+               out);
       return;
   }
+}
+
+// Whether the half of the ball B(c, r) on one side of the plane through c with normal n (side -1: n . (x - c) <= 0,
+// +1: >= 0) lies inside the polytope: for each face, the largest value of its plane function over the half ball is
+// at most 0 (over the half ball, m . (x - c) peaks at r when m points into the half, else at r times the length of
+// m's part in the plane).
+bool halfBallInside(const Solid& s, const Vec3d& c, double r, const Vec3d& n, int side) {
+  if (s.kind != Solid::Kind::Polytope) return false;
+  for (const Face& f : s.faces) {
+    const double cosine = f.normal.dot(n);
+    const bool intoHalf = side < 0 ? cosine <= 0 : cosine >= 0;
+    const double reach = intoHalf ? r : r * std::sqrt(std::max(0.0, 1 - cosine * cosine));
+    if (f.normal.dot(c) + f.d + reach > 0) return false;
+  }
+  return true;
+}
+
+// A flat patch of one part whose ball is covered by the union: the inner half ball inside its own part and the
+// outer half inside another (a cut face shared by two parts of a decomposition), or the whole ball inside another.
+bool buried(const std::vector<Solid>& parts, const Patch& p, const Vec3d& c, double r) {
+  Vec3d g;
+  for (std::uint32_t j = 0; j < parts.size(); ++j)
+    if (j != p.part && signedDistance(parts[j], c, g) <= -r) return true;
+  if (p.kind != Patch::Kind::Flat || !halfBallInside(parts[p.part], c, r, p.normal, -1)) return false;
+  for (std::uint32_t j = 0; j < parts.size(); ++j)
+    if (j != p.part && halfBallInside(parts[j], c, r, p.normal, 1)) return true;
+  return false;
 }
 
 struct Scored {
@@ -336,13 +368,11 @@ void fitToMesh(const Surface& surface, const std::vector<Solid>& parts, double t
     Vec3d c;
     double r;
     centreOf(p, parts[p.part], c, r);
+    if (parts.size() > 1 && buried(parts, p, c, r)) return;  // not on the union's boundary
     bool onBoundary = true;
-    for (std::uint32_t j = 0; j < parts.size(); ++j) {
-      if (j == p.part) continue;
+    for (std::uint32_t j = 0; j < parts.size() && onBoundary; ++j) {
       Vec3d g;
-      const double sd = signedDistance(parts[j], c, g);
-      if (sd <= -r) return;  // buried in another part: not on the union's boundary
-      if (sd < 0) onBoundary = false;
+      if (j != p.part && signedDistance(parts[j], c, g) < 0) onBoundary = false;
     }
     const double d = surface.distance(c);
     if (onBoundary) lower = std::max(lower, d);

@@ -5,8 +5,8 @@
 // hull of its piece. A piece's concavity is the largest distance from the centroids of its hull's faces (faces on
 // the piece's own cut planes excepted) to the mesh surface: a fast estimate that steers the splitting; the union's
 // bound is certified afterwards like any fit's.
-// Halves overlap in a slab of 10 % of the piece's extent across the cut: each hull then buries the other's cut face,
-// which is inside the mesh, so the union's surface is the mesh-hugging part of the hulls' surfaces.
+// Halves overlap in a slab 2e-6 of the mesh size thick across the cut, so the union has no crack along it; the
+// bound drops a patch of a cut face whose ball lies half in each hull.
 // Every mesh vertex lies in a piece and so in its hull: the union contains the mesh.
 #include <algorithm>
 #include <limits>
@@ -78,17 +78,17 @@ bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& 
 }
 
 bool splitPiece(const Piece& piece, const Surface& surface, Piece& a, Piece& b) {
-  const Mat3d axes = principalAxes(piece.triangles);
+  const Mat3d pca = principalAxes(piece.triangles);
   double best = std::numeric_limits<double>::infinity();
   bool found = false;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3d n = axes.col(i);
+  for (int i = 0; i < 6; ++i) {
+    const Vec3d n = i < 3 ? Vec3d(pca.col(i)) : Vec3d(Mat3d::Identity().col(i - 3));
     double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (const Vec3d& p : piece.triangles) {
       lo = std::min(lo, n.dot(p));
       hi = std::max(hi, n.dot(p));
     }
-    const double overlap = 0.05 * (hi - lo);
+    const double overlap = 1e-6 * surface.size;
     for (double f : {0.5, 0.25, 0.75}) {
       const double at = lo + f * (hi - lo);
       std::vector<Plane> cutsA = piece.cuts, cutsB = piece.cuts;

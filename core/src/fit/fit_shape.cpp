@@ -225,18 +225,20 @@ template <class T> Status fitShape(const MeshData<T>& mesh, const FitOptions<T>&
         if (st = realise<T>({polytopeOf(*hull)}, hullParts, hullExact); !st.ok()) return st;
         hullBound = certify(hullExact);
       }
-      if (allowed(FitRepresentation::SimplifiedHull) && !found && hullBound < tol) {
-        double slack = 0.9 * (tol - hullBound);
-        for (int attempt = 0; attempt < 3 && !found; ++attempt, slack *= 0.5) {
+      if (allowed(FitRepresentation::SimplifiedHull) && !found) {
+        // Within the tolerance, the slack is what the hull leaves; beyond it, a tenth of the hull's bound.
+        double slack = hullBound < tol ? 0.9 * (tol - hullBound) : 0.1 * hullBound;
+        Parts<T> lastParts;
+        std::vector<Solid> lastExact;
+        double lastBound = std::numeric_limits<double>::infinity();
+        for (int attempt = 0; attempt < 3; ++attempt, slack *= 0.5) {
           Solid simple;
           if (!simplifiedHull(*hull, slack, options.contain, simple).ok()) break;
-          if (simple.vertices.size() >= hull->vertices.size()) break;
-          Parts<T> parts;
-          std::vector<Solid> exact;
-          if (!realise<T>({simple}, parts, exact).ok()) break;
-          const double bound = certify(exact);
-          if (bound <= tol || attempt == 2) consider(FitRepresentation::SimplifiedHull, parts, exact, bound);
+          if (!realise<T>({simple}, lastParts, lastExact).ok()) break;
+          lastBound = certify(lastExact);
+          if (lastBound <= tol) break;
         }
+        if (!lastParts.empty()) consider(FitRepresentation::SimplifiedHull, lastParts, lastExact, lastBound);
       }
       if (allowed(FitRepresentation::ConvexHull) && !found) consider(FitRepresentation::ConvexHull, hullParts, hullExact, hullBound);
       if (allowed(FitRepresentation::ConvexDecomposition) && !found) {
