@@ -18,12 +18,19 @@
 
 #include "fit/fit_internal.h"
 #include "gq/query.h"
+#include "mesh/triangle.h"
 
 namespace gq::fit {
 
 double Surface::distance(const Vec3d& p) const {
+  std::uint32_t ignored = 0;
+  return distance(p, ignored);
+}
+
+double Surface::distance(const Vec3d& p, std::uint32_t& triangle) const {
   PointDistanceResult<double> r;
   const Status s = pointDistance<double>(p, TriangleMeshGeometry<double>(cooked), Transform<double>(), r);
+  triangle = r.closestIndex;
   return s.ok() ? r.distance : std::numeric_limits<double>::infinity();
 }
 
@@ -338,7 +345,8 @@ bool halfBallInside(const Solid& s, const Vec3d& c, double r, const Vec3d& n, in
     const double cosine = f.normal.dot(n);
     const bool intoHalf = side < 0 ? cosine <= 0 : cosine >= 0;
     const double reach = intoHalf ? r : r * std::sqrt(std::max(0.0, 1 - cosine * cosine));
-    if (f.normal.dot(c) + f.d + reach > 0) return false;
+    // c lies on one of the faces: its own plane's value is 0 up to rounding (covered by the final allowance).
+    if (f.normal.dot(c) + f.d + reach > 1e-12 * (std::abs(f.d) + c.norm() + r)) return false;
   }
   return true;
 }
@@ -353,6 +361,33 @@ bool buried(const std::vector<Solid>& parts, const Patch& p, const Vec3d& c, dou
   for (std::uint32_t j = 0; j < parts.size(); ++j)
     if (j != p.part && halfBallInside(parts[j], c, r, p.normal, 1)) return true;
   return false;
+}
+
+// A second bound over a flat or spherical patch: the distance to one mesh triangle T (the one nearest the patch's
+// centre) is convex, so over the flat triangle through the patch's corners it peaks at a corner; a spherical patch is
+// within R - h of that flat triangle (h: the sphere centre's distance to its plane), along the rays from the centre.
+// Where the fit and the mesh share a face this proves a bound far below the patch's size.
+double nearTriangleBound(const Surface& surface, const Solid& s, const Patch& p, std::uint32_t nearest) {
+  if (p.kind != Patch::Kind::Flat && p.kind != Patch::Kind::Spherical) return std::numeric_limits<double>::infinity();
+  if (nearest >= surface.cooked->cookedIndex.size()) return std::numeric_limits<double>::infinity();
+  const std::uint32_t cooked = surface.cooked->cookedIndex[nearest];
+  if (cooked == kRemovedTriangle) return std::numeric_limits<double>::infinity();
+  const TriangleIndices& t = surface.cooked->triangles[cooked];
+  const Vec3d& ta = surface.vertices[t[0]];
+  const Vec3d& tb = surface.vertices[t[1]];
+  const Vec3d& tc = surface.vertices[t[2]];
+  Vec3d corner[3] = {p.a, p.b, p.c};
+  double bulge = 0;
+  if (p.kind == Patch::Kind::Spherical) {
+    const Vec3d centre = s.centre + p.offset * s.rotation.col(0);
+    for (int i = 0; i < 3; ++i) corner[i] = centre + s.radius * (s.rotation * corner[i]);
+    const Vec3d n = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
+    if (!(n.norm() > 0)) return std::numeric_limits<double>::infinity();
+    bulge = s.radius - std::abs(n.normalized().dot(corner[0] - centre));
+  }
+  double worst = 0;
+  for (const Vec3d& v : corner) worst = std::max(worst, (v - detail::closestPointOnTriangle(v, ta, tb, tc)).norm());
+  return worst + bulge;
 }
 
 struct Scored {
@@ -374,9 +409,10 @@ void fitToMesh(const Surface& surface, const std::vector<Solid>& parts, double t
       Vec3d g;
       if (j != p.part && signedDistance(parts[j], c, g) < 0) onBoundary = false;
     }
-    const double d = surface.distance(c);
+    std::uint32_t nearest = 0;
+    const double d = surface.distance(c, nearest);
     if (onBoundary) lower = std::max(lower, d);
-    heap.push({p, d + r});
+    heap.push({p, std::min(d + r, nearTriangleBound(surface, parts[p.part], p, nearest))});
   };
   std::vector<Patch> initial;
   for (std::uint32_t i = 0; i < parts.size(); ++i) initialPatches(parts[i], i, initial);

@@ -82,7 +82,7 @@ bool splitPiece(const Piece& piece, const Surface& surface, Piece& a, Piece& b) 
   double best = std::numeric_limits<double>::infinity();
   bool found = false;
   for (int i = 0; i < 6; ++i) {
-    const Vec3d n = i < 3 ? Vec3d(pca.col(i)) : Vec3d(Mat3d::Identity().col(i - 3));
+    const Vec3d n = i < 3 ? Vec3d(Mat3d::Identity().col(i)) : Vec3d(pca.col(i - 3));
     double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (const Vec3d& p : piece.triangles) {
       lo = std::min(lo, n.dot(p));

@@ -44,6 +44,8 @@ struct Surface {
   std::shared_ptr<const TriangleMesh<double>> cooked;
   double size = 0;  // bounding-box diagonal
   double distance(const Vec3d& p) const;
+  // Same, and the (input) index of the nearest triangle.
+  double distance(const Vec3d& p, std::uint32_t& triangle) const;
 };
 
 // Builds the surface; fails as cookTriangleMesh does.
