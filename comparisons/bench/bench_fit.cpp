@@ -3,6 +3,7 @@
 // time of overlap and distance queries of a moving sphere and a moving box against the fit and against the mesh.
 // Writes comparisons/results/fit.csv (date, machine, commit passed in; see --help).
 // Timings: the best of 3 rounds of a 128-pose path (a helix through and around the mesh's bounds), ns per query.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -77,12 +78,14 @@ int main(int argc, char** argv) {
   CLI::App app{"Error bound against query cost for every fit representation; writes a CSV."};
   std::string shared = GQ_SHARED_DIR, out = "comparisons/results/fit.csv", date, machine, commit;
   double relTolerance = 0.002;
+  std::vector<std::string> skip;
   app.add_option("--shared", shared, "the shared data folder");
   app.add_option("--out", out, "CSV to write");
   app.add_option("--date", date)->required();
   app.add_option("--machine", machine)->required();
   app.add_option("--commit", commit)->required();
   app.add_option("--tolerance", relTolerance, "tolerance relative to the mesh size (bounds refine down to it)");
+  app.add_option("--skip", skip, "representations not to fit (e.g. decomposition, slow on large meshes)");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<std::string> files = {"meshes/stanford-bunny.obj", "meshes/spot.obj", "meshes/teapot.obj",
@@ -120,6 +123,7 @@ int main(int argc, char** argv) {
     }
     for (std::size_t r = 0; r < gq::kFitRepresentationCount; ++r) {
       const auto rep = gq::FitRepresentation(r);
+      if (std::find(skip.begin(), skip.end(), gq::toString(rep)) != skip.end()) continue;
       gq::FitOptions<double> o;
       o.tolerance = relTolerance * size;
       o.allowed = gq::fitBit(rep);
@@ -142,7 +146,7 @@ int main(int argc, char** argv) {
           << fit.errorBound << ',' << fit.errorBound / size << ',' << fitMs << ',' << t.overlapSphere << ','
           << t.distanceSphere << ',' << t.overlapBox << ',' << t.distanceBox;
       csv << ',' << t.overlapSphere / meshTime.overlapSphere << ',' << t.distanceSphere / meshTime.distanceSphere << ','
-          << t.overlapBox / meshTime.overlapBox << ',' << t.distanceBox / meshTime.distanceBox << '\n';
+          << t.overlapBox / meshTime.overlapBox << ',' << t.distanceBox / meshTime.distanceBox << std::endl;
       std::cerr << label << ' ' << gq::toString(rep) << " bound " << fit.errorBound << '\n';
     }
   }
