@@ -1,0 +1,450 @@
+// The certified bound: the two-sided Hausdorff distance between the mesh surface M and the boundary of the union U
+// of convex parts, from above.
+//  - M to the boundary of U, one part: the signed distance s to a convex solid is convex, so over a triangle its
+//    positive part peaks at a vertex, and -s (the depth) lies below its tangent plane at the centroid: the depth's
+//    maximum over the triangle is at most the largest tangent value at the vertices. Several parts: the distance to
+//    the boundary of U is 1-Lipschitz, so its value at the centroid (exact outside U, a ray walked out of U inside)
+//    plus the centroid's distance to the farthest vertex bounds it over the triangle.
+//  - the boundary of U to M: the parts' surfaces are covered by patches (flat triangles, spherical triangles,
+//    cylinder rectangles, disk sectors), each inside a ball of radius r about a surface point c. The distance to M is
+//    1-Lipschitz, so dist(c, M) + r bounds it over the patch; a patch inside another part's solid (the ball of
+//    radius r about c inside it) is not on the boundary of U and is dropped.
+// A piece whose bound exceeds max(target, 1.02 x the largest distance attained) is split in four and bounded again,
+// until the patch budget is spent; the bound is then the largest over the pieces, and stays an upper bound.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "fit/fit_internal.h"
+#include "gq/query.h"
+#include "mesh/triangle.h"
+
+namespace gq::fit {
+
+double Surface::distance(const Vec3d& p) const {
+  std::uint32_t ignored = 0;
+  return distance(p, ignored);
+}
+
+double Surface::distance(const Vec3d& p, std::uint32_t& triangle) const {
+  PointDistanceResult<double> r;
+  const Status s = pointDistance<double>(p, TriangleMeshGeometry<double>(cooked), Transform<double>(), r);
+  triangle = r.closestIndex;
+  return s.ok() ? r.distance : std::numeric_limits<double>::infinity();
+}
+
+Status makeSurface(const std::vector<Vec3d>& vertices, const std::vector<TriangleIndices>& triangles, Surface& out) {
+  MeshCookReport report;
+  Status s = cookTriangleMesh(vertices, triangles, out.cooked, &report);
+  if (!s.ok()) return s;
+  out.vertices = vertices;
+  out.triangles.clear();
+  for (const TriangleIndices& t : out.cooked->triangles) out.triangles.push_back(t);
+  Bounds3<double> b;
+  for (const auto& t : out.triangles)
+    for (std::uint32_t i : t) b.include(vertices[i]);
+  out.size = (b.max - b.min).norm();
+  return {};
+}
+
+namespace {
+
+constexpr int kMaxDepth = 14;
+
+struct Budget {
+  std::uint64_t left;
+  bool take(std::uint64_t n) {
+    if (left < n) return false;
+    left -= n;
+    return true;
+  }
+};
+
+bool acceptable(double upper, double target, double lower) { return upper <= std::max(target, 1.02 * lower); }
+
+// ---- mesh surface to the boundary of the union -------------------------------------------------------------
+
+// Distance from p to the boundary of the union, from above: exact outside; inside, a walk along +-dir out of the
+// union (each step to the exit of a part containing the point) and the distance from there.
+double outsideDistance(const std::vector<Solid>& parts, const Vec3d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  Vec3d g;
+  for (const Solid& s : parts) best = std::min(best, signedDistance(s, p, g));
+  return best;
+}
+
+double exitAlong(const Solid& s, const Vec3d& p, const Vec3d& dir) {
+  if (s.kind == Solid::Kind::Polytope) {
+    double t = std::numeric_limits<double>::infinity();
+    for (const Face& f : s.faces) {
+      const double nd = f.normal.dot(dir);
+      if (nd > 0) t = std::min(t, -(f.normal.dot(p) + f.d) / nd);
+    }
+    return std::max(t, 0.0);
+  }
+  double t = 0;  // sphere tracing: a step of the depth never leaves the solid
+  Vec3d g;
+  for (int i = 0; i < 200; ++i) {
+    const double sd = signedDistance(s, p + t * dir, g);
+    if (sd >= 0) break;
+    t += std::max(-sd, 1e-12);
+  }
+  return t;
+}
+
+double walkOut(const std::vector<Solid>& parts, const Vec3d& p, const Vec3d& dir, double size) {
+  double t = 0;
+  for (std::size_t step = 0; step < parts.size() + 8; ++step) {
+    const Vec3d x = p + t * dir;
+    const double out = outsideDistance(parts, x);
+    if (out >= 0) return t + out;
+    double next = t;
+    Vec3d g;
+    for (const Solid& s : parts)
+      if (signedDistance(s, x, g) < 0) next = std::max(next, t + exitAlong(s, x, dir));
+    t = next + 1e-9 * size;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+double unionBoundaryDistance(const std::vector<Solid>& parts, const Vec3d& p, const Vec3d& normal, double size) {
+  const double out = outsideDistance(parts, p);
+  if (out >= 0) return out;
+  return std::min(walkOut(parts, p, normal, size), walkOut(parts, p, -normal, size));
+}
+
+struct Tri {
+  Vec3d a, b, c;
+  int depth;
+  double upper;
+  bool operator<(const Tri& o) const { return upper < o.upper; }
+};
+
+// Bounds a mesh triangle's distance to the boundary of the union from above; `lower` gets a distance attained.
+double boundTriangle(const std::vector<Solid>& parts, const Tri& t, double size, double& lower) {
+  const Vec3d q = (t.a + t.b + t.c) / 3.0;
+  if (parts.size() == 1) {
+    Vec3d g, gv;
+    const double sq = signedDistance(parts[0], q, g);
+    const double sa = signedDistance(parts[0], t.a, gv), sb = signedDistance(parts[0], t.b, gv),
+                 sc = signedDistance(parts[0], t.c, gv);
+    const double outside = std::max({sa, sb, sc});
+    const double depth = std::max({-sq - g.dot(t.a - q), -sq - g.dot(t.b - q), -sq - g.dot(t.c - q)});
+    lower = std::max({std::abs(sa), std::abs(sb), std::abs(sc), std::abs(sq)});
+    return std::max({outside, depth, 0.0});
+  }
+  const Vec3d n = (t.b - t.a).cross(t.c - t.a);
+  const Vec3d normal = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::UnitX();
+  const double r = std::max({(t.a - q).norm(), (t.b - q).norm(), (t.c - q).norm()});
+  lower = std::max(0.0, outsideDistance(parts, q));  // exact where q is outside the union
+  return unionBoundaryDistance(parts, q, normal, size) + r;
+}
+
+// Best first: the triangle of largest bound is split until it is acceptable or the budget is spent; the bound is
+// then the largest left.
+void meshToFit(const Surface& surface, const std::vector<Solid>& parts, double target, Budget& budget, Bound& out) {
+  std::priority_queue<Tri> heap;
+  double lower = 0;
+  const auto push = [&](Tri t) {
+    double l = 0;
+    t.upper = boundTriangle(parts, t, surface.size, l);
+    lower = std::max(lower, l);
+    heap.push(t);
+  };
+  for (const auto& tri : surface.triangles)
+    push({surface.vertices[tri[0]], surface.vertices[tri[1]], surface.vertices[tri[2]], 0, 0});
+  while (!heap.empty()) {
+    const Tri t = heap.top();
+    if (acceptable(t.upper, target, lower) || t.depth >= kMaxDepth || !budget.take(4)) break;
+    heap.pop();
+    const Vec3d ab = (t.a + t.b) / 2, bc = (t.b + t.c) / 2, ca = (t.c + t.a) / 2;
+    const int d = t.depth + 1;
+    push({t.a, ab, ca, d, 0});
+    push({ab, t.b, bc, d, 0});
+    push({ca, bc, t.c, d, 0});
+    push({ab, bc, ca, d, 0});
+  }
+  out.lower = std::max(out.lower, lower);
+  if (!heap.empty()) out.upper = std::max(out.upper, heap.top().upper);
+}
+
+// ---- boundary of the union to the mesh surface -------------------------------------------------------------
+
+struct Patch {
+  enum class Kind : std::uint8_t { Flat, Spherical, Side, Disk } kind = Kind::Flat;
+  std::uint32_t part = 0;
+  int depth = 0;
+  Vec3d a, b, c;                   // Flat: corners; Spherical: unit directions (frame of the part's rotation)
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  // Side: axial [u0,u1] x angle [v0,v1]; Disk: radius [u0,u1] x angle
+  double offset = 0;              // Spherical: centre offset along the axis; Disk: the cap's axial position
+  Vec3d normal = Vec3d::Zero();   // Flat: the outward normal of the face it lies on
+};
+
+// The patch's centre on the part's surface and a radius of a ball about it holding the whole patch.
+void centreOf(const Patch& p, const Solid& s, Vec3d& centre, double& radius) {
+  const Vec3d axisCentre = s.centre + p.offset * s.rotation.col(0);
+  switch (p.kind) {
+    case Patch::Kind::Flat:
+      centre = (p.a + p.b + p.c) / 3.0;
+      radius = std::max({(p.a - centre).norm(), (p.b - centre).norm(), (p.c - centre).norm()});
+      return;
+    case Patch::Kind::Spherical: {
+      const Vec3d m = (p.a + p.b + p.c).normalized();
+      centre = axisCentre + s.radius * (s.rotation * m);
+      radius = s.radius * std::max({(m - p.a).norm(), (m - p.b).norm(), (m - p.c).norm()});
+      return;
+    }
+    case Patch::Kind::Side: {
+      const double t = 0.5 * (p.u0 + p.u1), phi = 0.5 * (p.v0 + p.v1);
+      centre = s.centre + s.rotation * Vec3d(t, s.radius * std::cos(phi), s.radius * std::sin(phi));
+      radius = std::hypot(0.5 * (p.u1 - p.u0), 2 * s.radius * std::sin(0.25 * (p.v1 - p.v0)));
+      return;
+    }
+    case Patch::Kind::Disk: {
+      const double rho = 0.5 * (p.u0 + p.u1), phi = 0.5 * (p.v0 + p.v1);
+      centre = s.centre + s.rotation * Vec3d(p.offset, rho * std::cos(phi), rho * std::sin(phi));
+      radius = 0.5 * (p.u1 - p.u0) + 2 * rho * std::sin(0.25 * (p.v1 - p.v0));
+      return;
+    }
+  }
+}
+
+void split(const Patch& p, std::vector<Patch>& out) {
+  Patch q = p;
+  q.depth = p.depth + 1;
+  if (p.kind == Patch::Kind::Flat || p.kind == Patch::Kind::Spherical) {
+    Vec3d ab = (p.a + p.b) / 2, bc = (p.b + p.c) / 2, ca = (p.c + p.a) / 2;
+    if (p.kind == Patch::Kind::Spherical) {
+      ab.normalize();
+      bc.normalize();
+      ca.normalize();
+    }
+    const Vec3d tris[4][3] = {{p.a, ab, ca}, {ab, p.b, bc}, {ca, bc, p.c}, {ab, bc, ca}};
+    for (const auto& t : tris) {
+      q.a = t[0];
+      q.b = t[1];
+      q.c = t[2];
+      out.push_back(q);
+    }
+    return;
+  }
+  const double um = 0.5 * (p.u0 + p.u1), vm = 0.5 * (p.v0 + p.v1);
+  const double us[2][2] = {{p.u0, um}, {um, p.u1}}, vs[2][2] = {{p.v0, vm}, {vm, p.v1}};
+  for (const auto& u : us)
+    for (const auto& v : vs) {
+      q.u0 = u[0];
+      q.u1 = u[1];
+      q.v0 = v[0];
+      q.v1 = v[1];
+      out.push_back(q);
+    }
+}
+
+void flat(std::uint32_t part, const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& normal,
+          std::vector<Patch>& out) {
+  Patch p;
+  p.normal = normal;
+  p.part = part;
+  p.a = a;
+  p.b = b;
+  p.c = c;
+  out.push_back(p);
+}
+
+// The octahedron's faces, the half with x >= 0 (sign +1) or x <= 0 (sign -1), or all of them (sign 0).
+void hemisphere(std::uint32_t part, int sign, double offset, std::vector<Patch>& out) {
+  const Vec3d x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  for (int sx : {1, -1}) {
+    if (sign != 0 && sx != sign) continue;
+    for (int sy : {1, -1})
+      for (int sz : {1, -1}) {
+        Patch p;
+        p.kind = Patch::Kind::Spherical;
+        p.part = part;
+        p.offset = offset;
+        p.a = sx * x;
+        p.b = sy * y;
+        p.c = sz * z;
+        out.push_back(p);
+      }
+  }
+}
+
+void sides(std::uint32_t part, double halfHeight, std::vector<Patch>& out) {
+  for (int k = 0; k < 8; ++k) {
+    Patch p;
+    p.kind = Patch::Kind::Side;
+    p.part = part;
+    p.u0 = -halfHeight;
+    p.u1 = halfHeight;
+    p.v0 = k * M_PI / 4;
+    p.v1 = (k + 1) * M_PI / 4;
+    out.push_back(p);
+  }
+}
+
+void initialPatches(const Solid& s, std::uint32_t part, std::vector<Patch>& out) {
+  switch (s.kind) {
+    case Solid::Kind::Sphere: hemisphere(part, 0, 0, out); return;
+    case Solid::Kind::Capsule:
+      hemisphere(part, 1, s.halfHeight, out);
+      hemisphere(part, -1, -s.halfHeight, out);
+      if (s.halfHeight > 0) sides(part, s.halfHeight, out);
+      return;
+    case Solid::Kind::Cylinder:
+      sides(part, s.halfHeight, out);
+      for (double x : {-s.halfHeight, s.halfHeight})
+        for (int k = 0; k < 8; ++k) {
+          Patch p;
+          p.kind = Patch::Kind::Disk;
+          p.part = part;
+          p.offset = x;
+          p.u0 = 0;
+          p.u1 = s.radius;
+          p.v0 = k * M_PI / 4;
+          p.v1 = (k + 1) * M_PI / 4;
+          out.push_back(p);
+        }
+      return;
+    case Solid::Kind::Box: {
+      const Vec3d& h = s.halfExtents;
+      for (int axis = 0; axis < 3; ++axis)
+        for (double sgn : {-1.0, 1.0}) {
+          const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+          Vec3d corner[4];
+          for (int k = 0; k < 4; ++k) {
+            Vec3d l;
+            l[axis] = sgn * h[axis];
+            l[i] = (k == 1 || k == 2) ? h[i] : -h[i];
+            l[j] = (k >= 2) ? h[j] : -h[j];
+            corner[k] = s.centre + s.rotation * l;
+          }
+          const Vec3d normal = s.rotation.col(axis) * sgn;
+          flat(part, corner[0], corner[1], corner[2], normal, out);
+          flat(part, corner[0], corner[2], corner[3], normal, out);
+        }
+      return;
+    }
+    case Solid::Kind::Polytope:
+      for (const Face& f : s.faces)
+        for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k)
+          flat(part, s.vertices[f.vertices[0]], s.vertices[f.vertices[k]], s.vertices[f.vertices[k + 1]], f.normal,
+               out);
+      return;
+  }
+}
+
+// Whether the half of the ball B(c, r) on one side of the plane through c with normal n (side -1: n . (x - c) <= 0,
+// +1: >= 0) lies inside the polytope: for each face, the largest value of its plane function over the half ball is
+// at most 0 (over the half ball, m . (x - c) peaks at r when m points into the half, else at r times the length of
+// m's part in the plane).
+bool halfBallInside(const Solid& s, const Vec3d& c, double r, const Vec3d& n, int side) {
+  if (s.kind != Solid::Kind::Polytope) return false;
+  for (const Face& f : s.faces) {
+    const double cosine = f.normal.dot(n);
+    const bool intoHalf = side < 0 ? cosine <= 0 : cosine >= 0;
+    const double reach = intoHalf ? r : r * std::sqrt(std::max(0.0, 1 - cosine * cosine));
+    // c lies on one of the faces: its own plane's value is 0 up to rounding (covered by the final allowance).
+    if (f.normal.dot(c) + f.d + reach > 1e-12 * (std::abs(f.d) + c.norm() + r)) return false;
+  }
+  return true;
+}
+
+// A flat patch of one part whose ball is covered by the union: the inner half ball inside its own part and the
+// outer half inside another (a cut face shared by two parts of a decomposition), or the whole ball inside another.
+bool buried(const std::vector<Solid>& parts, const Patch& p, const Vec3d& c, double r) {
+  Vec3d g;
+  for (std::uint32_t j = 0; j < parts.size(); ++j)
+    if (j != p.part && signedDistance(parts[j], c, g) <= -r) return true;
+  if (p.kind != Patch::Kind::Flat || !halfBallInside(parts[p.part], c, r, p.normal, -1)) return false;
+  for (std::uint32_t j = 0; j < parts.size(); ++j)
+    if (j != p.part && halfBallInside(parts[j], c, r, p.normal, 1)) return true;
+  return false;
+}
+
+// A second bound over a flat or spherical patch: the distance to one mesh triangle T (the one nearest the patch's
+// centre) is convex, so over the flat triangle through the patch's corners it peaks at a corner; a spherical patch is
+// within R - h of that flat triangle (h: the sphere centre's distance to its plane), along the rays from the centre.
+// Where the fit and the mesh share a face this proves a bound far below the patch's size.
+double nearTriangleBound(const Surface& surface, const Solid& s, const Patch& p, std::uint32_t nearest) {
+  if (p.kind != Patch::Kind::Flat && p.kind != Patch::Kind::Spherical) return std::numeric_limits<double>::infinity();
+  if (nearest >= surface.cooked->cookedIndex.size()) return std::numeric_limits<double>::infinity();
+  const std::uint32_t cooked = surface.cooked->cookedIndex[nearest];
+  if (cooked == kRemovedTriangle) return std::numeric_limits<double>::infinity();
+  const TriangleIndices& t = surface.cooked->triangles[cooked];
+  const Vec3d& ta = surface.vertices[t[0]];
+  const Vec3d& tb = surface.vertices[t[1]];
+  const Vec3d& tc = surface.vertices[t[2]];
+  Vec3d corner[3] = {p.a, p.b, p.c};
+  double bulge = 0;
+  if (p.kind == Patch::Kind::Spherical) {
+    const Vec3d centre = s.centre + p.offset * s.rotation.col(0);
+    for (int i = 0; i < 3; ++i) corner[i] = centre + s.radius * (s.rotation * corner[i]);
+    const Vec3d n = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
+    if (!(n.norm() > 0)) return std::numeric_limits<double>::infinity();
+    bulge = s.radius - std::abs(n.normalized().dot(corner[0] - centre));
+  }
+  double worst = 0;
+  for (const Vec3d& v : corner) worst = std::max(worst, (v - detail::closestPointOnTriangle(v, ta, tb, tc)).norm());
+  return worst + bulge;
+}
+
+struct Scored {
+  Patch patch;
+  double upper;
+  bool operator<(const Scored& o) const { return upper < o.upper; }
+};
+
+void fitToMesh(const Surface& surface, const std::vector<Solid>& parts, double target, Budget& budget, Bound& out) {
+  std::priority_queue<Scored> heap;
+  double lower = 0;
+  const auto push = [&](const Patch& p) {
+    Vec3d c;
+    double r;
+    centreOf(p, parts[p.part], c, r);
+    if (parts.size() > 1 && buried(parts, p, c, r)) return;  // not on the union's boundary
+    bool onBoundary = true;
+    for (std::uint32_t j = 0; j < parts.size() && onBoundary; ++j) {
+      Vec3d g;
+      if (j != p.part && signedDistance(parts[j], c, g) < 0) onBoundary = false;
+    }
+    std::uint32_t nearest = 0;
+    const double d = surface.distance(c, nearest);
+    if (onBoundary) lower = std::max(lower, d);
+    heap.push({p, std::min(d + r, nearTriangleBound(surface, parts[p.part], p, nearest))});
+  };
+  std::vector<Patch> initial;
+  for (std::uint32_t i = 0; i < parts.size(); ++i) initialPatches(parts[i], i, initial);
+  for (const Patch& p : initial) push(p);
+  std::vector<Patch> children;
+  while (!heap.empty()) {
+    const Scored top = heap.top();
+    if (acceptable(top.upper, target, lower) || top.patch.depth >= 2 * kMaxDepth || !budget.take(4)) break;
+    heap.pop();
+    children.clear();
+    split(top.patch, children);
+    for (const Patch& c : children) push(c);
+  }
+  out.lower = std::max(out.lower, lower);
+  if (!heap.empty()) out.upper = std::max(out.upper, heap.top().upper);
+}
+
+}  // namespace
+
+Bound certifiedBound(const Surface& surface, const std::vector<Solid>& parts, double target, std::uint32_t maxPatches) {
+  Bound b;
+  if (parts.empty()) {
+    b.upper = b.lower = std::numeric_limits<double>::infinity();
+    return b;
+  }
+  Budget first{maxPatches};
+  meshToFit(surface, parts, target, first, b);
+  Budget second{maxPatches};
+  fitToMesh(surface, parts, target, second, b);
+  // Rounding: hull faces merged by qhull are planar within 1e-9 of the hull size, distances are computed in double.
+  b.upper += 1e-8 * surface.size;
+  return b;
+}
+
+}  // namespace gq::fit

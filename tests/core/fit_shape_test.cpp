@@ -1,0 +1,232 @@
+// fitShape on generated meshes: the certified bound is never below dense sampling, contained fits contain every
+// vertex, the cheapest representation within the tolerance wins, fits are deterministic, bad input gets a status.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <map>
+
+#include "fit_test_support.h"
+
+namespace gq {
+namespace {
+
+using fittest::Vec3d;
+
+FitOptions<double> only(FitRepresentation r, double tolerance, bool contain = false) {
+  FitOptions<double> o;
+  o.tolerance = tolerance;
+  o.allowed = fitBit(r);
+  o.contain = contain;
+  o.measureCost = false;
+  o.maxBoundPatches = 100000;
+  return o;
+}
+
+MeshData<double> rotatedBox() {
+  const Quat<double> q(Eigen::AngleAxisd(0.4, Vec3d(1, 2, 3).normalized()));
+  return fittest::boxMesh({0.5, 0.3, 0.2}, Transform<double>(Vec3d(1, -2, 0.5), q));
+}
+
+MeshData<double> movedSphere() {
+  MeshData<double> m = fittest::sphereMesh(3, 0.7);
+  for (auto& v : m.vertices) v += Vec3d(0.3, 0.1, -0.2);
+  return m;
+}
+
+TEST(FitShapeBound, NeverBelowDenseSamplingOnEveryRepresentation) {
+  for (const MeshData<double>& mesh : {rotatedBox(), movedSphere(), fittest::lShapeMesh()}) {
+    for (FitRepresentation r : fittest::kSolidRepresentations) {
+      for (bool contain : {false, true}) {
+        FitResult<double> fit;
+        const Status s = fitShape(mesh, only(r, 1e-3, contain), fit);
+        ASSERT_TRUE(s.ok()) << toString(r) << ": " << s.toString();
+        ASSERT_FALSE(fit.parts.empty());
+        ASSERT_EQ(fit.representation, r);
+        const double sampled = fittest::sampledHausdorff(mesh, fit.parts, 20000);
+        EXPECT_GE(double(fit.errorBound), sampled) << toString(r) << (contain ? " containing" : " close");
+        if (contain) {
+          EXPECT_TRUE(fittest::containsVertices(mesh, fit.parts, 1e-9)) << toString(r);
+        }
+      }
+    }
+  }
+}
+
+TEST(FitShapeBound, TightOnExactShapes) {
+  // A box mesh is its own box and hull: the bound is proven far below the patch sizes (patches straddling the mesh's
+  // face diagonals are refined until the budget is spent); a fine sphere mesh is within its chord error of its
+  // enclosing sphere.
+  FitResult<double> fit;
+  ASSERT_TRUE(fitShape(rotatedBox(), only(FitRepresentation::Box, 1e-6), fit).ok());
+  EXPECT_LE(fit.errorBound, 5e-4);
+  ASSERT_TRUE(fitShape(rotatedBox(), only(FitRepresentation::ConvexHull, 1e-6), fit).ok());
+  EXPECT_LE(fit.errorBound, 5e-4);
+  ASSERT_TRUE(fitShape(movedSphere(), only(FitRepresentation::Sphere, 0.02), fit).ok());
+  EXPECT_LE(fit.errorBound, 0.02);  // level-3 octahedron: sagitta about 0.7 * (1 - cos(pi / 32 * 1.5))
+}
+
+TEST(FitShapeChoice, CheapestWithinToleranceWins) {
+  FitOptions<double> o;
+  o.tolerance = 1e-4;
+  o.measureCost = false;
+  FitResult<double> fit;
+  ASSERT_TRUE(fitShape(rotatedBox(), o, fit).ok());
+  EXPECT_EQ(fit.representation, FitRepresentation::Box);
+  ASSERT_GE(fit.candidates.size(), 3u);
+  EXPECT_GT(fit.candidates[0].errorBound, o.tolerance);  // the sphere is too far
+  o.tolerance = 0.02;
+  ASSERT_TRUE(fitShape(movedSphere(), o, fit).ok());
+  EXPECT_EQ(fit.representation, FitRepresentation::Sphere);
+  ASSERT_EQ(fit.parts.size(), 1u);
+  EXPECT_EQ(fit.parts[0].first.type(), GeometryType::Sphere);
+}
+
+TEST(FitShapeChoice, NonConvexMeshNeedsManyPartsOrTheMesh) {
+  FitOptions<double> o;
+  o.tolerance = 1e-3;
+  o.measureCost = false;
+  FitResult<double> fit;
+  ASSERT_TRUE(fitShape(fittest::lShapeMesh(), o, fit).ok());
+  EXPECT_TRUE(fit.representation == FitRepresentation::ConvexDecomposition ||
+              fit.representation == FitRepresentation::Mesh);
+  EXPECT_LE(fit.errorBound, o.tolerance);
+}
+
+TEST(FitShapeChoice, WarnsWhenNothingAllowedIsWithinTolerance) {
+  FitResult<double> fit;
+  const Status s = fitShape(fittest::lShapeMesh(), only(FitRepresentation::Sphere, 1e-3), fit);
+  EXPECT_EQ(s.code, StatusCode::Warning);
+  EXPECT_EQ(fit.representation, FitRepresentation::Sphere);
+  EXPECT_GT(fit.errorBound, 1e-3);
+}
+
+TEST(FitShapeChoice, MeshItselfHasNoError) {
+  FitResult<double> fit;
+  ASSERT_TRUE(fitShape(fittest::lShapeMesh(), only(FitRepresentation::Mesh, 1e-6), fit).ok());
+  EXPECT_EQ(fit.errorBound, 0.0);
+  ASSERT_EQ(fit.parts.size(), 1u);
+  EXPECT_EQ(fit.parts[0].first.type(), GeometryType::TriangleMesh);
+}
+
+TEST(FitShapeSimplifiedHull, FewerVerticesThanTheHullWithinTolerance) {
+  const MeshData<double> mesh = fittest::sphereMesh(4);
+  FitResult<double> hull, simple;
+  ASSERT_TRUE(fitShape(mesh, only(FitRepresentation::ConvexHull, 0.05), hull).ok());
+  for (bool contain : {false, true}) {
+    ASSERT_TRUE(fitShape(mesh, only(FitRepresentation::SimplifiedHull, 0.05, contain), simple).ok());
+    ASSERT_EQ(simple.representation, FitRepresentation::SimplifiedHull);
+    EXPECT_LE(simple.errorBound, 0.05);
+    ASSERT_EQ(simple.candidates.size(), 1u);
+    EXPECT_LT(simple.candidates[0].vertices, hull.candidates[0].vertices);
+    if (contain) {
+      EXPECT_TRUE(fittest::containsVertices(mesh, simple.parts, 1e-9));
+    }
+  }
+}
+
+TEST(FitShapeDecomposition, PartsWithinMaxPartsContainingAndCertified) {
+  FitOptions<double> o = only(FitRepresentation::ConvexDecomposition, 1e-3, true);
+  o.maxParts = 4;
+  FitResult<double> fit;
+  EXPECT_TRUE(fitShape(fittest::lShapeMesh(), o, fit).ok());
+  EXPECT_GE(fit.parts.size(), 2u);
+  EXPECT_LE(fit.parts.size(), 4u);
+  for (const auto& part : fit.parts) EXPECT_EQ(part.first.type(), GeometryType::ConvexMesh);
+  EXPECT_TRUE(fittest::containsVertices(fittest::lShapeMesh(), fit.parts, 1e-9));
+  EXPECT_GE(double(fit.errorBound), fittest::sampledHausdorff(fittest::lShapeMesh(), fit.parts, 20000));
+  // Better than the one hull, which covers the whole notch of the L.
+  FitResult<double> hull;
+  ASSERT_TRUE(fitShape(fittest::lShapeMesh(), only(FitRepresentation::ConvexHull, 1e-3), hull).code == StatusCode::Warning);
+  EXPECT_LT(fit.errorBound, hull.errorBound);
+}
+
+template <class T> std::vector<double> fingerprint(const FitResult<T>& fit) {
+  std::vector<double> f = {double(fit.errorBound), double(fit.representation), double(fit.parts.size())};
+  for (const auto& [g, pose] : fit.parts) {
+    for (int i = 0; i < 3; ++i) f.push_back(double(pose.p[i]));
+    for (int i = 0; i < 4; ++i) f.push_back(double(pose.q.coeffs()[i]));
+    if (const auto* c = g.template getIf<ConvexMeshGeometry<T>>())
+      for (const auto& v : c->mesh->vertices) f.insert(f.end(), v.data(), v.data() + 3);
+    if (const auto* b = g.template getIf<BoxGeometry<T>>()) f.insert(f.end(), b->halfExtents.data(), b->halfExtents.data() + 3);
+    if (const auto* s = g.template getIf<SphereGeometry<T>>()) f.push_back(double(s->radius));
+    if (const auto* c = g.template getIf<CapsuleGeometry<T>>()) f.insert(f.end(), {double(c->radius), double(c->halfHeight)});
+  }
+  for (const auto& c : fit.candidates) f.push_back(double(c.errorBound));
+  return f;
+}
+
+TEST(FitShapeDeterminism, SameInputSameFit) {
+  for (FitRepresentation r : fittest::kSolidRepresentations) {
+    FitResult<double> a, b;
+    ASSERT_TRUE(fitShape(fittest::lShapeMesh(), only(r, 1e-3), a).ok());
+    ASSERT_TRUE(fitShape(fittest::lShapeMesh(), only(r, 1e-3), b).ok());
+    EXPECT_EQ(fingerprint(a), fingerprint(b)) << toString(r);
+  }
+}
+
+TEST(FitShapeFloat, BoundAndContainmentHoldInFloat) {
+  const MeshData<float> mesh = fittest::castMesh<float>(movedSphere());
+  for (FitRepresentation r : {FitRepresentation::Sphere, FitRepresentation::Box, FitRepresentation::ConvexHull}) {
+    FitOptions<float> o;
+    o.tolerance = 0.5f;
+    o.allowed = fitBit(r);
+    o.contain = true;
+    o.measureCost = false;
+    FitResult<float> fit;
+    ASSERT_TRUE(fitShape(mesh, o, fit).ok()) << toString(r);
+    for (const auto& v : mesh.vertices) {
+      PointDistanceResult<float> pd;
+      ASSERT_TRUE(pointDistance<float>(v, fit.parts[0].first, fit.parts[0].second, pd).ok());
+      EXPECT_LE(pd.distance, 1e-6f) << toString(r);
+    }
+  }
+}
+
+TEST(FitShapeBadInput, ClearStatuses) {
+  FitResult<double> fit;
+  fit.errorBound = 42;
+  const FitOptions<double> ok = only(FitRepresentation::Box, 0.1);
+  EXPECT_EQ(fitShape(MeshData<double>(), ok, fit).code, StatusCode::DegenerateMesh);
+  MeshData<double> nan = rotatedBox();
+  nan.vertices[3].y() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(fitShape(nan, ok, fit).code, StatusCode::InvalidArgument);
+  MeshData<double> range = rotatedBox();
+  range.triangles[2][1] = 99;
+  EXPECT_EQ(fitShape(range, ok, fit).code, StatusCode::InvalidArgument);
+  for (double t : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    FitOptions<double> o = ok;
+    o.tolerance = t;
+    EXPECT_EQ(fitShape(rotatedBox(), o, fit).code, StatusCode::InvalidArgument) << t;
+  }
+  FitOptions<double> noParts = ok;
+  noParts.maxParts = 0;
+  EXPECT_EQ(fitShape(rotatedBox(), noParts, fit).code, StatusCode::InvalidArgument);
+  FitOptions<double> none = ok;
+  none.allowed = 0;
+  EXPECT_EQ(fitShape(rotatedBox(), none, fit).code, StatusCode::InvalidArgument);
+  MeshData<double> flat;
+  flat.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  flat.triangles = {{0, 1, 2}, {1, 3, 2}};
+  EXPECT_EQ(fitShape(flat, ok, fit).code, StatusCode::DegenerateMesh);
+  MeshData<double> zeroArea;
+  zeroArea.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  zeroArea.triangles = {{0, 1, 2}};
+  EXPECT_EQ(fitShape(zeroArea, ok, fit).code, StatusCode::DegenerateMesh);
+  EXPECT_EQ(fit.errorBound, 42);  // untouched on failure
+}
+
+TEST(FitShapeCertify, BoundOfAGivenFit) {
+  const MeshData<double> mesh = movedSphere();
+  double bound = 0;
+  const std::vector<std::pair<Geometry<double>, Transform<double>>> parts = {
+      {SphereGeometry<double>(0.8), Transform<double>(Vec3d(0.3, 0.1, -0.2))}};
+  ASSERT_TRUE(certifyFit(mesh, parts, 0.0, 100000, bound).ok());
+  EXPECT_GE(bound, 0.1);   // every mesh point is at least 0.1 inside
+  EXPECT_LE(bound, 0.13);  // and at most 0.1 plus the chord error
+  EXPECT_EQ(certifyFit(mesh, {}, 0.0, 1000, bound).code, StatusCode::InvalidArgument);
+  EXPECT_EQ(certifyFit(mesh, {{PlaneGeometry<double>(), Transform<double>()}}, 0.0, 1000, bound).code,
+            StatusCode::Unsupported);
+}
+
+}  // namespace
+}  // namespace gq
