@@ -175,7 +175,8 @@ struct Patch {
   enum class Kind : std::uint8_t { Flat, Spherical, Side, Disk } kind = Kind::Flat;
   std::uint32_t part = 0;
   int depth = 0;
-  Vec3d a, b, c;                   // Flat: corners; Spherical: unit directions (frame of the part's rotation)
+  // Flat: corners; Spherical: unit directions (frame of the part's rotation).
+  Vec3d a = Vec3d::Zero(), b = Vec3d::Zero(), c = Vec3d::Zero();
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  // Side: axial [u0,u1] x angle [v0,v1]; Disk: radius [u0,u1] x angle
   double offset = 0;              // Spherical: centre offset along the axis; Disk: the cap's axial position
   Vec3d normal = Vec3d::Zero();   // Flat: the outward normal of the face it lies on
@@ -400,8 +401,8 @@ void fitToMesh(const Surface& surface, const std::vector<Solid>& parts, double t
   std::priority_queue<Scored> heap;
   double lower = 0;
   const auto push = [&](const Patch& p) {
-    Vec3d c;
-    double r;
+    Vec3d c = Vec3d::Zero();
+    double r = 0;
     centreOf(p, parts[p.part], c, r);
     if (parts.size() > 1 && buried(parts, p, c, r)) return;  // not on the union's boundary
     bool onBoundary = true;

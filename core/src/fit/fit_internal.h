@@ -87,7 +87,9 @@ Solid shrunk(const Solid& s, double by);
 // of it; with `contain`, every face plane is pushed out past the farthest vertex. Empty solid kind Polytope with no
 // faces on failure.
 Status simplifiedHull(const ConvexMesh<double>& hull, double slack, bool contain, Solid& out);
-// The convex hull of points as a solid (qhull), or a status.
+// The convex hull of points (qhull), grown where facet merging left a point outside, so that it holds every point.
+Status enclosingHull(const std::vector<Vec3d>& pts, std::shared_ptr<const ConvexMesh<double>>& out);
+// The same as a solid, or a status.
 Status hullOf(const std::vector<Vec3d>& pts, Solid& out);
 
 // Approximate convex decomposition: hierarchical splitting by concavity (docs/fit.md).

@@ -156,7 +156,7 @@ template <class T> Status fitShape(const MeshData<T>& mesh, const FitOptions<T>&
     const double tol = double(options.tolerance);
     const std::vector<Vec3d> used = usedVertices(surface);
     std::shared_ptr<const ConvexMesh<double>> hull;
-    const Status hullStatus = cookConvexMesh(used, hull);
+    const Status hullStatus = enclosingHull(used, hull);
     // A flat mesh (no volume) has no solid fit; only the mesh itself stands for it.
     if (!hullStatus.ok() && (options.allowed & fitBit(FitRepresentation::Mesh)) == 0) return hullStatus;
 

@@ -36,10 +36,31 @@ double excess(const Face& f, const std::vector<Vec3d>& pts) {
 
 }  // namespace
 
-Status hullOf(const std::vector<Vec3d>& pts, Solid& out) {
+// Cooking merges facets whose planes agree within 1e-9 of the hull's size, so a point can lie that far outside a
+// merged face. The hull is then cooked again from its vertices scaled about its centre: a factor 1 + 2 e / r (e the
+// largest excess, r the inner ball's radius) moves every face plane out by at least 2 e.
+Status enclosingHull(const std::vector<Vec3d>& pts, std::shared_ptr<const ConvexMesh<double>>& out) {
   std::shared_ptr<const ConvexMesh<double>> hull;
   Status s = cookConvexMesh(pts, hull);
   if (!s.ok()) return s;
+  double worst = 0;
+  for (const auto& poly : hull->polygons)
+    for (const Vec3d& p : pts) worst = std::max(worst, poly.normal.dot(p) + poly.d);
+  if (worst > 0 && hull->innerRadius > 0) {
+    const double k = 1 + 2 * worst / hull->innerRadius;
+    std::vector<Vec3d> grown;
+    grown.reserve(hull->vertices.size());
+    for (const Vec3d& v : hull->vertices) grown.push_back(hull->center + k * (v - hull->center));
+    std::shared_ptr<const ConvexMesh<double>> outer;
+    if (cookConvexMesh(grown, outer).ok()) hull = outer;
+  }
+  out = std::move(hull);
+  return {};
+}
+
+Status hullOf(const std::vector<Vec3d>& pts, Solid& out) {
+  std::shared_ptr<const ConvexMesh<double>> hull;
+  if (Status s = enclosingHull(pts, hull); !s.ok()) return s;
   out = polytopeOf(*hull);
   return {};
 }
