@@ -139,46 +139,38 @@ void setRay(RTCRayHit& rh, const V& o, const V& d, float tfar) {
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
 }
 
-void BM_EmbreeSceneRaycast(benchmark::State& state) {
-  const EmbreeScenes& e = embree();
-  if (!e.ok) return state.SkipWithError("bunny not found or setup failed");
-  const Fixture& f = fixture();
+// One rtcIntersect1 per ray of (origins, dirs) into `scene`, up to maxDist; `hits` counts the rays that hit.
+void intersectEach(benchmark::State& state, RTCScene scene, const std::vector<V>& origins, const std::vector<V>& dirs,
+                   int count, float maxDist) {
   std::int64_t hits = 0;
   for (auto _ : state) {
     hits = 0;
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    for (int i = 0; i < kRays; ++i) {
+    for (int i = 0; i < count; ++i) {
       RTCRayHit rh;
-      setRay(rh, f.origins[i], f.dirs[i], 80.0f);
-      rtcIntersect1(e.objects, &ctx, &rh);
+      setRay(rh, origins[i], dirs[i], maxDist);
+      rtcIntersect1(scene, &ctx, &rh);
       hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     }
     benchmark::DoNotOptimize(hits);
   }
-  state.SetItemsProcessed(state.iterations() * kRays);
+  state.SetItemsProcessed(state.iterations() * count);
   state.counters["hits"] = double(hits);
+}
+
+void BM_EmbreeSceneRaycast(benchmark::State& state) {
+  const EmbreeScenes& e = embree();
+  if (!e.ok) return state.SkipWithError("bunny not found or setup failed");
+  const Fixture& f = fixture();
+  intersectEach(state, e.objects, f.origins, f.dirs, kRays, 80.0f);
 }
 
 void BM_EmbreeBunnyIntersect1(benchmark::State& state) {
   const EmbreeScenes& e = embree();
   if (!e.ok) return state.SkipWithError("bunny not found or setup failed");
   const Fixture& f = fixture();
-  std::int64_t hits = 0;
-  for (auto _ : state) {
-    hits = 0;
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    for (int i = 0; i < kBunnyRays; ++i) {
-      RTCRayHit rh;
-      setRay(rh, f.bunnyOrigins[i], f.bunnyDirs[i], 10.0f);
-      rtcIntersect1(e.bunny, &ctx, &rh);
-      hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    }
-    benchmark::DoNotOptimize(hits);
-  }
-  state.SetItemsProcessed(state.iterations() * kBunnyRays);
-  state.counters["hits"] = double(hits);
+  intersectEach(state, e.bunny, f.bunnyOrigins, f.bunnyDirs, kBunnyRays, 10.0f);
 }
 
 void BM_EmbreeBunnyIntersect1M(benchmark::State& state) {
