@@ -83,7 +83,10 @@ const EmbreeScenes& embree() {
     auto* out = new EmbreeScenes();
     const Fixture& f = fixture();
     if (!f.ok) return out;
-    out->device = rtcNewDevice("threads=1");
+    // Embree's default device: "threads=1" limits oneTBB to one thread in the whole process (a global control),
+    // which would also hold gq's threaded batches in this program to one thread. The rays below are cast one at a
+    // time from the benchmark's thread either way.
+    out->device = rtcNewDevice(nullptr);
     out->user.fixture = &f;
     for (const auto& g : f.geometries) {
       gq::Shape<T> s;
