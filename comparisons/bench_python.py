@@ -12,11 +12,8 @@ Medians of --repeats runs; the CSV gets one row per figure with the date, machin
 """
 
 import argparse
-import datetime
 import os
-import platform
 import statistics
-import subprocess
 import sys
 import time
 
@@ -26,6 +23,8 @@ import geomquery as gq
 import geomquery.trimesh as gtm
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "bench"))
+import results_csv  # noqa: E402  (date, machine and commit columns; one current CSV per benchmark)
 
 
 def load_obj(path):
@@ -51,26 +50,6 @@ def icosphere(levels):
 class Mesh:
     def __init__(self, vertices, faces):
         self.vertices, self.faces = vertices, faces
-
-
-def machine():
-    cpu = platform.processor() or platform.machine()
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-    return "%s, %d cores" % (cpu, os.cpu_count())
-
-
-def commit():
-    try:
-        return subprocess.check_output(["git", "-C", HERE, "rev-parse", "--short=8", "HEAD"], text=True).strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def bench_rays(n, repeats):
@@ -139,15 +118,13 @@ def main():
     for fig, what, py_v, cpp_v, unit, ratio in rows:
         print("%-26s %12.2f %12.2f %6s %7.3f  %s" % (fig, py_v, cpp_v, unit, ratio, what))
     if args.csv:
-        new = not os.path.exists(args.csv)
-        with open(args.csv, "a") as out:
-            if new:
-                out.write("date,machine,commit,load_1min,figure,python,cpp,unit,ratio_python_vs_cpp,what,note\n")
-            for fig, what, py_v, cpp_v, unit, ratio in rows:
-                out.write('%s,"%s",%s,%.1f,%s,%.2f,%.2f,%s,%.3f,"%s","%s"\n' % (
-                    datetime.date.today().isoformat(), machine(), commit(), load, fig, py_v, cpp_v, unit, ratio,
-                    what, args.note))
-
+        header = ["date", "machine", "commit", "load_1min", "figure", "python", "cpp", "unit", "ratio_python_vs_cpp",
+                  "what", "note"]
+        cols = results_csv.run_columns()
+        results_csv.write(args.csv, header, [
+            dict(cols, load_1min="%.1f" % load, figure=fig, python="%.2f" % py_v, cpp="%.2f" % cpp_v, unit=unit,
+                 ratio_python_vs_cpp="%.3f" % ratio, what=what, note=args.note)
+            for fig, what, py_v, cpp_v, unit, ratio in rows])
 
 if __name__ == "__main__":
     sys.exit(main())
