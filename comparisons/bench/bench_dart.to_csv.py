@@ -8,7 +8,6 @@ detector's speed relative to DART's bullet detector (bullet's time / this one's)
 machine and commit; --note says how loaded the machine was.
 """
 import argparse
-import json
 import os
 import statistics
 import sys
@@ -20,7 +19,6 @@ HEADER = ["date", "machine", "commit", "benchmark", "detector", "median_cpu_ms",
           "speed_vs_fcl", "runs", "note"]
 COMMENTS = ["# bench_dart: a 27-body pile (boxes, spheres, capsules) dropped on a ground box, 600 DART steps of 1 ms"
             " per iteration (world construction not timed), the detector chosen by name; CPU-time medians."]
-TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
 
 
 def main():
@@ -30,14 +28,8 @@ def main():
     ap.add_argument("--machine")
     ap.add_argument("--note", default="")
     args = ap.parse_args()
-    samples = {}
-    for path in args.runs:
-        with open(path) as f:
-            for b in json.load(f)["benchmarks"]:
-                if b.get("aggregate_name") != "median":
-                    continue
-                detector = b["name"][len("stepPile/"):].split("_")[0]
-                samples.setdefault(detector, []).append(b["cpu_time"] * TO_MS[b.get("time_unit", "ns")])
+    runs = results_csv.median_aggregates(args.runs, key=lambda name: name[len("stepPile/"):].split("_")[0])
+    samples = {d: [b["cpu_time"] * results_csv.TO_MS[b.get("time_unit", "ns")] for b in v] for d, v in runs.items()}
     med = {d: statistics.median(v) for d, v in samples.items()}
     cols = results_csv.run_columns(args.machine)
     rows = []

@@ -6,6 +6,7 @@ same benchmark (for example a second run to show the spread).
 """
 import csv
 import datetime
+import json
 import os
 import subprocess
 
@@ -40,6 +41,22 @@ def commit():
         return "unknown"
     dirty = subprocess.run(["git", "-C", REPO, "diff", "--quiet", "HEAD", "--"], capture_output=True).returncode
     return head + ("+dirty" if dirty else "")
+
+
+# Google Benchmark time units in milliseconds.
+TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+
+
+def median_aggregates(paths, key=lambda name: name):
+    """The "median" aggregate of each benchmark in Google Benchmark JSON runs (--benchmark_repetitions with
+    --benchmark_report_aggregates_only): {key(name): [one aggregate dict per run that has it]}."""
+    samples = {}
+    for path in paths:
+        with open(path) as f:
+            for b in json.load(f)["benchmarks"]:
+                if b.get("aggregate_name") == "median":
+                    samples.setdefault(key(b["name"]), []).append(b)
+    return samples
 
 
 def run_columns(machine_override=None):

@@ -81,6 +81,18 @@ def test_contacts_follow_fcl_conventions():
     assert fcl.distance(plane, deep) == pytest.approx(2.5)
 
 
+def test_colliding_distance_is_minus_one_unless_signed_distance_is_asked():
+    a = fcl.CollisionObject(fcl.Sphere(1.0))
+    b = fcl.CollisionObject(fcl.Sphere(1.0), fcl.Transform(np.array([0.0, 0.0, 1.5])))
+    result = fcl.DistanceResult()
+    assert fcl.distance(a, b, fcl.DistanceRequest(enable_nearest_points=True), result) == -1.0
+    assert result.min_distance == -1.0 and np.allclose(result.nearest_points, 0.0)
+    signed = fcl.DistanceRequest(True, True)  # python-fcl's order: enable_nearest_points, enable_signed_distance
+    result = fcl.DistanceResult()
+    assert fcl.distance(a, b, signed, result) == pytest.approx(-0.5)
+    assert np.allclose(result.nearest_points[0], [0, 0, 1.0]) and np.allclose(result.nearest_points[1], [0, 0, 0.5])
+
+
 def test_mesh_contacts_carry_triangle_indices():
     verts = np.array([[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [0.0, 1.0, 0.0]])
     m = fcl.BVHModel()

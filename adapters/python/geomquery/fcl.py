@@ -7,8 +7,8 @@ once to gq's (half extents, axis along X, plane x = 0). Quaternions are (w, x, y
 Results follow python-fcl: ``collide`` returns the number of contacts and appends them to the result (contacts'
 ``o1``/``o2`` are the very geometry objects given to the collision objects; ``b1``/``b2`` are triangle indices of
 meshes, -1 otherwise; ``normal`` points from o1 to o2); ``distance`` returns the pair's distance and keeps the
-smallest in the result. One difference: a colliding pair's distance is gq's signed distance (minus the penetration
-depth) rather than -1.
+smallest in the result. A colliding pair's distance is -1 with both nearest points at the origin, as FCL's, unless
+``DistanceRequest(enable_signed_distance=True)`` asks for gq's exact signed distance (minus the penetration depth).
 """
 
 import sys
@@ -452,12 +452,13 @@ class CollisionResult:
 
 
 class DistanceRequest:
-    def __init__(self, enable_nearest_points=False, gjk_solver_type=GJKSolverType.GST_LIBCCD, rel_err=0.0,
-                 abs_err=0.0, enable_signed_distance=True):
+    def __init__(self, enable_nearest_points=False, enable_signed_distance=False,
+                 gjk_solver_type=GJKSolverType.GST_LIBCCD, rel_err=0.0, abs_err=0.0, distance_tolerance=1e-6):
         self.enable_nearest_points = enable_nearest_points
+        self.enable_signed_distance = enable_signed_distance
         self.gjk_solver_type = gjk_solver_type
         self.rel_err, self.abs_err = rel_err, abs_err
-        self.enable_signed_distance = enable_signed_distance
+        self.distance_tolerance = distance_tolerance
 
 
 class DistanceResult:
@@ -548,7 +549,8 @@ def collide(o1, o2, request=None, result=None):
 
 
 def distance(o1, o2, request=None, result=None):
-    """Signed distance between o1 and o2 (< 0: minus the penetration depth); result keeps the smallest."""
+    """Distance between o1 and o2; for a colliding pair -1, or minus the penetration depth when the request enables
+    signed distance. The result keeps the smallest."""
     request = DistanceRequest() if request is None else request
     result = DistanceResult() if result is None else result
     best = None
@@ -569,6 +571,8 @@ def distance(o1, o2, request=None, result=None):
                 if best is None or d.distance < best[0]:
                     best = (d.distance, (d.point0, d.point1))
     dist, points = best
+    if dist < 0 and not request.enable_signed_distance:
+        dist, points = -1.0, (np.zeros(3), np.zeros(3))
     if dist < result.min_distance:
         result.min_distance = dist
         result.nearest_points = [np.array(points[0]), np.array(points[1])]

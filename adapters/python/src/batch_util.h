@@ -14,6 +14,30 @@ template <class T> gq::StridedArray<gq::Vec3<T>> strided(const py::array_t<T>& r
                                                   rows.shape(0) > 0 ? std::size_t(rows.strides(0)) : sizeof(gq::Vec3<T>));
 }
 
+// A batch of rays over (N, 3) origin and direction rows; the rows are held here, so the batch's views stay valid.
+template <class T> struct RayRows {
+  py::array_t<T> origins, dirs;
+  gq::RayBatch<T> batch;
+  std::size_t count = 0;
+};
+
+template <class T>
+RayRows<T> rayRows(const py::handle& origins, const py::handle& dirs, double maxDistance, gq::HitFlags flags,
+                   const char* what) {
+  RayRows<T> r;
+  r.origins = rowsArray<T>(origins, 3, "origins");
+  r.dirs = rowsArray<T>(dirs, 3, "directions");
+  r.count = std::size_t(r.origins.shape(0));
+  if (std::size_t(r.dirs.shape(0)) != r.count)
+    throw py::value_error(std::string(what) + ": " + std::to_string(r.count) + " origins and " +
+                          std::to_string(r.dirs.shape(0)) + " directions");
+  r.batch.origins = strided(r.origins);
+  r.batch.unitDirs = strided(r.dirs);
+  r.batch.maxDist = T(maxDistance);
+  r.batch.hitFlags = flags;
+  return r;
+}
+
 // Poses from an (N, 7) array (px, py, pz, qx, qy, qz, qw), or one pose (None, a Pose, 7 numbers) repeated `count`
 // times (count 0: an (N, 7) array is required).
 template <class T>

@@ -23,18 +23,11 @@ template <class T> py::array_t<T> vec3Out(std::size_t n) { return newArray<T>({p
 template <class T>
 py::tuple raycastBatch(const GeometryObject& g, const py::handle& origins, const py::handle& dirs, const py::handle& p,
                        double maxDistance, bool bothSides, std::uint32_t threads) {
-  const auto o = rowsArray<T>(origins, 3, "origins");
-  const auto d = rowsArray<T>(dirs, 3, "directions");
-  const std::size_t n = std::size_t(o.shape(0));
-  if (std::size_t(d.shape(0)) != n)
-    throw py::value_error("raycast_batch: " + std::to_string(n) + " origins and " + std::to_string(d.shape(0)) +
-                          " directions");
-  gq::RayBatch<T> rays;
-  rays.origins = strided(o);
-  rays.unitDirs = strided(d);
-  rays.maxDist = T(maxDistance);
-  rays.hitFlags = gq::kDefaultHitFlags;
-  if (bothSides) rays.hitFlags |= gq::HitFlag::MeshBothSides;
+  gq::HitFlags flags = gq::kDefaultHitFlags;
+  if (bothSides) flags |= gq::HitFlag::MeshBothSides;
+  const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, "raycast_batch");
+  const gq::RayBatch<T>& rays = r.batch;
+  const std::size_t n = r.count;
   const gq::Transform<T> tf = pose<T>(p, "pose");
   std::vector<gq::RaycastHit<T>> hits(n);
   auto has = newArray<bool>({py::ssize_t(n)});
@@ -66,16 +59,11 @@ py::tuple raycastBatch(const GeometryObject& g, const py::handle& origins, const
 template <class T>
 py::array_t<std::int64_t> raycastFaces(const GeometryObject& g, const py::handle& origins, const py::handle& dirs,
                                        const py::handle& p, double maxDistance, bool bothSides, std::uint32_t threads) {
-  const auto o = rowsArray<T>(origins, 3, "origins");
-  const auto d = rowsArray<T>(dirs, 3, "directions");
-  const std::size_t n = std::size_t(o.shape(0));
-  if (std::size_t(d.shape(0)) != n) throw py::value_error("raycast_batch_faces: origins and directions differ in count");
-  gq::RayBatch<T> rays;
-  rays.origins = strided(o);
-  rays.unitDirs = strided(d);
-  rays.maxDist = T(maxDistance);
-  rays.hitFlags = gq::HitFlags(gq::HitFlag::FaceIndex);
-  if (bothSides) rays.hitFlags |= gq::HitFlag::MeshBothSides;
+  gq::HitFlags flags = gq::HitFlags(gq::HitFlag::FaceIndex);
+  if (bothSides) flags |= gq::HitFlag::MeshBothSides;
+  const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, "raycast_batch_faces");
+  const gq::RayBatch<T>& rays = r.batch;
+  const std::size_t n = r.count;
   const gq::Transform<T> tf = pose<T>(p, "pose");
   std::vector<gq::RaycastHit<T>> hits(n);
   std::vector<std::uint8_t> has(n, 0);
@@ -110,14 +98,11 @@ void bindBatches(py::module_& m) {
   m.def("_time_raycast_batch_faces",
         [](const py::handle& origins, const py::handle& dirs, const GeometryObject& g, std::uint32_t threads) {
           if (g.f32) throw py::type_error("_time_raycast_batch_faces: float64 geometry expected");
-          const auto o = rowsArray<double>(origins, 3, "origins");
-          const auto d = rowsArray<double>(dirs, 3, "directions");
-          const std::size_t n = std::size_t(o.shape(0));
-          gq::RayBatch<double> rays;
-          rays.origins = strided(o);
-          rays.unitDirs = strided(d);
-          rays.maxDist = std::numeric_limits<double>::infinity();
-          rays.hitFlags = gq::HitFlag::FaceIndex | gq::HitFlag::MeshBothSides;
+          const RayRows<double> r =
+              rayRows<double>(origins, dirs, std::numeric_limits<double>::infinity(),
+                              gq::HitFlag::FaceIndex | gq::HitFlag::MeshBothSides, "_time_raycast_batch_faces");
+          const gq::RayBatch<double>& rays = r.batch;
+          const std::size_t n = r.count;
           std::vector<gq::RaycastHit<double>> hits(n);
           std::vector<std::uint8_t> has(n, 0);
           py::gil_scoped_release release;

@@ -210,14 +210,9 @@ void bindScene(py::module_& m) {
               std::uint32_t threads) {
              return s.with([&](auto& sc) {
                using T = ST<decltype(sc)>;
-               const auto o = rowsArray<T>(origins, 3, "origins");
-               const auto d = rowsArray<T>(dirs, 3, "directions");
-               const std::size_t n = std::size_t(o.shape(0));
-               if (std::size_t(d.shape(0)) != n) throw py::value_error("Scene.raycast_batch: origins and directions differ in count");
-               gq::RayBatch<T> rays;
-               rays.origins = strided(o);
-               rays.unitDirs = strided(d);
-               rays.maxDist = T(maxDistance);
+               const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, gq::kDefaultHitFlags, "Scene.raycast_batch");
+               const gq::RayBatch<T>& rays = r.batch;
+               const std::size_t n = r.count;
                std::vector<gq::SceneRaycastHit<T>> hits(n);
                std::vector<std::uint8_t> has(n, 0);
                const gq::SceneFilter filter = maskFilter(mask);
@@ -253,16 +248,11 @@ void bindScene(py::module_& m) {
              if (maxHits == 0) throw py::value_error("Scene.raycast_all_batch: max_hits must be >= 1");
              return s.with([&](auto& sc) {
                using T = ST<decltype(sc)>;
-               const auto o = rowsArray<T>(origins, 3, "origins");
-               const auto d = rowsArray<T>(dirs, 3, "directions");
-               const std::size_t n = std::size_t(o.shape(0));
-               if (std::size_t(d.shape(0)) != n) throw py::value_error("Scene.raycast_all_batch: origins and directions differ in count");
-               gq::RayBatch<T> rays;
-               rays.origins = strided(o);
-               rays.unitDirs = strided(d);
-               rays.maxDist = T(maxDistance);
-               rays.hitFlags = gq::kDefaultHitFlags | gq::HitFlag::MeshMultiple;
-               if (bothSides) rays.hitFlags |= gq::HitFlag::MeshBothSides;
+               gq::HitFlags flags = gq::kDefaultHitFlags | gq::HitFlag::MeshMultiple;
+               if (bothSides) flags |= gq::HitFlag::MeshBothSides;
+               const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, "Scene.raycast_all_batch");
+               const gq::RayBatch<T>& rays = r.batch;
+               const std::size_t n = r.count;
                const gq::SceneFilter filter = maskFilter(mask);
                std::vector<std::uint32_t> counts(n, 0);
                gq::SceneHitsOutput<T> out;
