@@ -7,6 +7,7 @@
 #include <dart/collision/CollisionResult.hpp>
 #include <dart/collision/DistanceResult.hpp>
 #include <dart/collision/RaycastResult.hpp>
+#include <dart/dynamics/PlaneShape.hpp>
 
 #include "dart_scene.h"
 
@@ -174,6 +175,55 @@ TEST(DartConventions, SphereOnHeightmap) {
   const bool ballIsFirst = c.collisionObject1->getShapeFrame() == ball.get();
   EXPECT_NEAR(c.normal.z(), ballIsFirst ? 1.0 : -1.0, 1e-6);
   EXPECT_NEAR(c.penetrationDepth, 0.05, 1e-6);
+}
+
+// A surface reaches into a plane's half-space through its vertices: each vertex below the plane is a contact as deep
+// as it lies below, along the plane's normal (a mesh tilted about y dips its x = +1 edge 2 * sin(0.1) / 2 below).
+TEST(DartConventions, MeshOnPlaneTouchesThroughItsVerticesBelowThePlane) {
+  auto d = detector("gq");
+  auto plane = frame(std::make_shared<dd::PlaneShape>(Eigen::Vector3d(0, 0, 1), 0.0), at(Eigen::Vector3d::Zero()),
+                     "plane");
+  const double tilt = 0.1;
+  auto mesh = frame(groundMesh(1.0, 4),
+                    at(Eigen::Vector3d(0, 0, 0.0), Eigen::Quaterniond(Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitY()))),
+                    "mesh");
+  auto group = d->createCollisionGroup(plane.get(), mesh.get());
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 100), &result));
+  ASSERT_EQ(result.getNumContacts(), 4u);
+  double deepest = 0.0;
+  for (const dc::Contact& c : result.getContacts()) {
+    const bool meshIsFirst = c.collisionObject1->getShapeFrame() == mesh.get();
+    EXPECT_NEAR(c.normal.z(), meshIsFirst ? 1.0 : -1.0, 1e-12);
+    const int tri = meshIsFirst ? c.triID1 : c.triID2;
+    EXPECT_GE(tri, 0);
+    EXPECT_LT(tri, 32);
+    EXPECT_GE(c.penetrationDepth, 0.0);
+    EXPECT_NEAR(c.point.z(), -0.5 * c.penetrationDepth, 1e-12);  // midway between the vertex and the plane
+    EXPECT_GE(c.point.x(), -1e-12);                                // only the half that dips below
+    deepest = std::max(deepest, c.penetrationDepth);
+  }
+  EXPECT_NEAR(deepest, std::sin(tilt), 1e-12);
+  // Lifted clear of the plane: no contact.
+  auto lifted = frame(groundMesh(1.0, 4), at(Eigen::Vector3d(0, 0, 0.2)), "lifted");
+  auto apart = d->createCollisionGroup(plane.get(), lifted.get());
+  EXPECT_FALSE(d->collide(apart.get(), dc::CollisionOption(true, 100), nullptr));
+}
+
+TEST(DartConventions, HeightmapBelowAPlaneTouchesItAtItsSamples) {
+  auto d = detector("gq");
+  auto plane = frame(std::make_shared<dd::PlaneShape>(Eigen::Vector3d(0, 0, 1), 0.0), at(Eigen::Vector3d::Zero()),
+                     "plane");
+  auto ground = frame(flatHeightmap(5, 0.5, 0.3), at(Eigen::Vector3d(0, 0, -0.35)), "ground");
+  auto group = d->createCollisionGroup(ground.get(), plane.get());
+  dc::CollisionResult result;
+  ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 100), &result));
+  ASSERT_EQ(result.getNumContacts(), 4u);
+  for (const dc::Contact& c : result.getContacts()) {
+    const bool groundIsFirst = c.collisionObject1->getShapeFrame() == ground.get();
+    EXPECT_NEAR(c.normal.z(), groundIsFirst ? 1.0 : -1.0, 1e-12);
+    EXPECT_NEAR(c.penetrationDepth, 0.05, 1e-6);  // float heights
+  }
 }
 
 }  // namespace

@@ -98,14 +98,10 @@ bool convexContacts(const CollisionObject& o1, const CollisionObject& o2, std::v
 
 // ---- a solid against a mesh or heightfield -------------------------------------------------------------------
 
-// Triangles of `surface` under `solid`'s bounds (a box around them), in pages of 64.
+// Triangles of `surface` overlapping a box, in pages of 64.
 template <class SurfaceGeometry>
-void trianglesUnder(const CollisionObject& solid, const SurfaceGeometry& surface, const Transform<double>& surfacePose,
-                    std::vector<std::uint32_t>& triangles) {
-  Bounds3<double> bounds;
-  if (!computeGeomBounds(bounds, solid.shape(), solid.pose()).ok()) return;
-  const Geometry<double> box = BoxGeometry<double>(bounds.extents().cwiseMax(Vec::Constant(1e-12)));
-  const Transform<double> boxPose(bounds.center());
+void trianglesUnder(const Geometry<double>& box, const Transform<double>& boxPose, const SurfaceGeometry& surface,
+                    const Transform<double>& surfacePose, std::vector<std::uint32_t>& triangles) {
   std::array<std::uint32_t, 64> page{};
   TriangleOverlapPage request{page.data(), std::uint32_t(page.size()), 0};
   for (;;) {
@@ -121,6 +117,16 @@ void trianglesUnder(const CollisionObject& solid, const SurfaceGeometry& surface
     if (!got.overflow || got.count == 0) return;
     request.start += got.count;
   }
+}
+
+// Triangles of `surface` under `solid`'s bounds (a box around them).
+template <class SurfaceGeometry>
+void trianglesUnder(const CollisionObject& solid, const SurfaceGeometry& surface, const Transform<double>& surfacePose,
+                    std::vector<std::uint32_t>& triangles) {
+  Bounds3<double> bounds;
+  if (!computeGeomBounds(bounds, solid.shape(), solid.pose()).ok()) return;
+  const Geometry<double> box = BoxGeometry<double>(bounds.extents().cwiseMax(Vec::Constant(1e-12)));
+  trianglesUnder(box, Transform<double>(bounds.center()), surface, surfacePose, triangles);
 }
 
 // The point of a sphere or convex custom shape farthest along `dir` (world).
@@ -211,6 +217,60 @@ bool surfaceContacts(const CollisionObject& solid, const CollisionObject& surfac
   return !found.empty();
 }
 
+// ---- a plane against a mesh or heightfield ----------------------------------------------------------------------
+
+// The surface's vertices at or below the plane (the plane's solid side), each a contact along the plane's normal, as
+// deep as the vertex lies below it: a surface reaches into a half-space only through its vertices, so these are
+// exact. The triangles come from an oriented box in the plane's frame around the part of the surface's bounds below
+// the plane (the mesh queries take a box, not a half-space).
+bool planeSurfaceContacts(const CollisionObject& plane, const CollisionObject& surface, bool planeIsFirst,
+                          std::vector<PairContact>& out) {
+  Bounds3<double> world;
+  if (!computeGeomBounds(world, surface.shape(), surface.pose()).ok()) return false;
+  const Transform<double>& planePose = plane.pose();  // gq's plane: x = 0 of its frame, solid at x <= 0
+  Bounds3<double> local;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec c((corner & 1) ? world.max.x() : world.min.x(), (corner & 2) ? world.max.y() : world.min.y(),
+                (corner & 4) ? world.max.z() : world.min.z());
+    local.include(planePose.transformInv(c));
+  }
+  if (local.min.x() > 0.0) return false;
+  local.max.x() = 0.0;
+  const Geometry<double> box = BoxGeometry<double>(local.extents().cwiseMax(Vec::Constant(1e-12)));
+  const Transform<double> boxPose(planePose.transform(local.center()), planePose.q);
+  const Geometry<double>& sg = surface.shape().geometry();
+  std::vector<std::uint32_t> triangles;
+  if (const auto* mesh = sg.getIf<TriangleMeshGeometry<double>>()) {
+    trianglesUnder(box, boxPose, *mesh, surface.pose(), triangles);
+  } else {
+    trianglesUnder(box, boxPose, sg.get<HeightFieldGeometry<double>>(), surface.pose(), triangles);
+  }
+  const Vec n = planePose.rotate(Vec::UnitX());
+  std::vector<PairContact> found;
+  for (std::uint32_t index : triangles) {
+    Triangle<double> tri;
+    const Status s = sg.getIf<TriangleMeshGeometry<double>>()
+                         ? getTriangle(*sg.getIf<TriangleMeshGeometry<double>>(), surface.pose(), index, tri)
+                         : getTriangle(sg.get<HeightFieldGeometry<double>>(), surface.pose(), index, tri);
+    if (!s.ok()) continue;
+    for (const Vec& v : tri.verts) {
+      const double height = n.dot(v - planePose.p);
+      if (height > 0.0) continue;
+      PairContact c;
+      c.depth = -height;
+      c.point = v + 0.5 * c.depth * n;
+      // A vertex shared by several triangles is one contact.
+      if (std::any_of(found.begin(), found.end(), [&](const PairContact& f) { return f.point == c.point; })) continue;
+      c.normal = planeIsFirst ? Vec(-n) : n;  // from object 2 towards object 1; the surface is pushed along n
+      (planeIsFirst ? c.tri2 : c.tri1) = int(index);
+      found.push_back(c);
+    }
+  }
+  reduce(found);
+  out.insert(out.end(), found.begin(), found.end());
+  return !found.empty();
+}
+
 bool meshMeshContacts(const CollisionObject& o1, const CollisionObject& o2, std::size_t room,
                       std::vector<PairContact>& out) {
   const auto* m1 = o1.shape().geometry().getIf<TriangleMeshGeometry<double>>();
@@ -246,8 +306,11 @@ void collect(const CollisionObject& o1, const CollisionObject& o2, std::size_t r
     return;
   }
   if (s1 || s2) {
-    if (t1 == GeometryType::Plane || t2 == GeometryType::Plane) return;
-    if (s2) {
+    if (t1 == GeometryType::Plane) {
+      planeSurfaceContacts(o1, o2, true, out);
+    } else if (t2 == GeometryType::Plane) {
+      planeSurfaceContacts(o2, o1, false, out);
+    } else if (s2) {
       surfaceContacts(o1, o2, true, out);
     } else {
       surfaceContacts(o2, o1, false, out);
