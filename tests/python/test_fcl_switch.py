@@ -156,3 +156,48 @@ def test_readme_broadphase():
     assert ddata.result.min_distance == pytest.approx(3.0)
     far.update()
     assert far.size() == 3 and not far.empty()
+
+
+def test_continuous_collide_translation_is_the_exact_first_contact():
+    box = fcl.CollisionObject(fcl.Box(1.0, 1.0, 1.0))
+    ball = fcl.CollisionObject(fcl.Sphere(0.5), fcl.Transform(np.array([-3.0, 0.0, 0.0])))
+    result = fcl.ContinuousCollisionResult()
+    toc = fcl.continuousCollide(ball, fcl.Transform(np.array([3.0, 0.0, 0.0])), box, fcl.Transform(), None, result)
+    assert toc == pytest.approx(1.0 / 3.0, abs=1e-9)  # the centre reaches x = -1 after 2 of 6 units
+    assert result.is_collide and result.time_of_contact == pytest.approx(1.0 / 3.0, abs=1e-9)
+    # Both moving: only the relative motion counts (the box comes 1 unit towards the ball: contact at 2 of 7).
+    toc = fcl.continuousCollide(ball, fcl.Transform(np.array([3.0, 0.0, 0.0])), box,
+                                fcl.Transform(np.array([-1.0, 0.0, 0.0])))
+    assert toc == pytest.approx(2.0 / 7.0, abs=1e-9)
+    # Passing beside the box: no contact, time 1.
+    beside = fcl.CollisionObject(fcl.Sphere(0.5), fcl.Transform(np.array([-3.0, 1.5, 0.0])))
+    result = fcl.ContinuousCollisionResult()
+    assert fcl.continuousCollide(beside, fcl.Transform(np.array([3.0, 1.5, 0.0])), box, fcl.Transform(),
+                                 None, result) == 1.0
+    assert not result.is_collide
+
+
+def test_continuous_collide_moves_a_mesh_by_sweeping_the_other_way():
+    m = fcl.BVHModel()
+    m.beginModel(3, 1)
+    m.addSubModel(np.array([[-5.0, -5.0, 0.0], [5.0, -5.0, 0.0], [0.0, 5.0, 0.0]]), np.array([[0, 1, 2]]))
+    m.endModel()
+    mesh = fcl.CollisionObject(m, fcl.Transform(np.array([0.0, 0.0, -2.0])))
+    ball = fcl.CollisionObject(fcl.Sphere(0.5))
+    toc = fcl.continuousCollide(mesh, fcl.Transform(np.array([0.0, 0.0, 2.0])), ball, fcl.Transform())
+    assert toc == pytest.approx(1.5 / 4.0, abs=1e-9)
+
+
+def test_continuous_collide_with_rotation_advances_to_within_toc_err():
+    # A 2 x 0.2 x 0.2 bar turning a quarter turn about z towards a ball of radius 0.1 at (0, 0.8, 0): its side
+    # touches the ball when 0.8 cos(phi) = 0.2, phi = t * pi / 2.
+    bar = fcl.CollisionObject(fcl.Box(2.0, 0.2, 0.2))
+    ball = fcl.CollisionObject(fcl.Sphere(0.1), fcl.Transform(np.array([0.0, 0.8, 0.0])))
+    quarter = np.array([np.cos(np.pi / 4), 0.0, 0.0, np.sin(np.pi / 4)])  # (w, x, y, z)
+    request = fcl.ContinuousCollisionRequest(ccd_motion_type=fcl.CCDMotionType.CCDM_LINEAR)
+    toc = fcl.continuousCollide(bar, fcl.Transform(quarter, np.zeros(3)), ball,
+                                fcl.Transform(np.array([0.0, 0.8, 0.0])), request)
+    assert toc == pytest.approx(np.arccos(0.25) / (np.pi / 2), abs=1e-3)
+    with pytest.raises(NotImplementedError):
+        fcl.continuousCollide(bar, fcl.Transform(quarter, np.zeros(3)), ball, fcl.Transform(),
+                              fcl.ContinuousCollisionRequest(ccd_motion_type=fcl.CCDMotionType.CCDM_SCREW))

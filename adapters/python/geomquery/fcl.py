@@ -22,12 +22,27 @@ __all__ = [
     "BVHModel", "Transform", "CollisionObject", "CollisionRequest", "CollisionResult", "Contact", "DistanceRequest",
     "DistanceResult", "CollisionData", "DistanceData", "collide", "distance", "DynamicAABBTreeCollisionManager",
     "defaultCollisionCallback", "defaultDistanceCallback", "GJKSolverType", "OBJECT_TYPE", "NODE_TYPE",
+    "CCDMotionType", "CCDSolverType", "ContinuousCollisionRequest", "ContinuousCollisionResult", "continuousCollide",
 ]
 
 
 class GJKSolverType:
     GST_LIBCCD = 0
     GST_INDEP = 1
+
+
+class CCDMotionType:
+    CCDM_TRANS = 0
+    CCDM_LINEAR = 1
+    CCDM_SCREW = 2
+    CCDM_SPLINE = 3
+
+
+class CCDSolverType:
+    CCDC_NAIVE = 0
+    CCDC_CONSERVATIVE_ADVANCEMENT = 1
+    CCDC_RAY_SHOOTING = 2
+    CCDC_POLYNOMIAL_SOLVER = 3
 
 
 class OBJECT_TYPE:
@@ -579,6 +594,130 @@ def distance(o1, o2, request=None, result=None):
         result.o1, result.o2 = o1.geom, o2.geom
         result.b1 = result.b2 = -1
     return dist
+
+
+class ContinuousCollisionRequest:
+    def __init__(self, num_max_iterations=10, toc_err=0.0001, ccd_motion_type=CCDMotionType.CCDM_TRANS,
+                 gjk_solver_type=GJKSolverType.GST_LIBCCD, ccd_solver_type=CCDSolverType.CCDC_CONSERVATIVE_ADVANCEMENT):
+        self.num_max_iterations = num_max_iterations
+        self.toc_err = toc_err
+        self.ccd_motion_type = ccd_motion_type
+        self.gjk_solver_type = gjk_solver_type
+        self.ccd_solver_type = ccd_solver_type
+
+
+class ContinuousCollisionResult:
+    def __init__(self, is_collide=False, time_of_contact=1.0):
+        self.is_collide = is_collide
+        self.time_of_contact = time_of_contact
+
+
+def _part_contact_time(ga, pa, gb, pb, motion):
+    """When geometry a, translated by `motion` over t in [0, 1], first touches b (fixed): t, or None. A sweep of
+    whichever of the two gq can move (the other way round along -motion when a cannot)."""
+    if _gq.overlap(ga, pa, gb, pb):
+        return 0.0
+    length = float(np.linalg.norm(motion))
+    if length == 0.0:
+        return None
+    direction = motion / length
+    try:
+        hit = _gq.sweep(direction, length, ga, pa, gb, pb)
+    except _gq.UnsupportedError:
+        hit = _gq.sweep(-direction, length, gb, pb, ga, pa)
+    return None if hit is None else min(1.0, hit.distance / length)
+
+
+def _translation_contact_time(o1, o2, motion):
+    """First t in [0, 1] at which o1, translated by `motion`, touches o2 (fixed), or None. A Plane surface is touched
+    when the other object reaches both of its closed half-spaces."""
+    def latest(times):
+        return None if any(t is None for t in times) else max(times)
+
+    def earliest(times):
+        times = [t for t in times if t is not None]
+        return min(times) if times else None
+
+    if o1.geom._surface or o2.geom._surface:
+        surface, other, sign = (o1, o2, -1.0) if o1.geom._surface else (o2, o1, 1.0)
+        return earliest([latest([_part_contact_time(g, p, h, q, sign * motion) for h, q in surface._parts()])
+                         for g, p in other._parts()])
+    return earliest([_part_contact_time(ga, pa, gb, pb, motion) for ga, pa in o1._parts() for gb, pb in o2._parts()])
+
+
+def _slerp_transform(a, b, t):
+    """The transform at t in [0, 1] of the linear motion from a to b (translation lerp, rotation slerp)."""
+    qa, qb = a.getQuatRotation(), b.getQuatRotation()
+    if np.dot(qa, qb) < 0:
+        qb = -qb
+    angle = np.arccos(min(1.0, abs(float(np.dot(qa, qb)))))
+    if angle < 1e-12:
+        q = qa
+    else:
+        q = (np.sin((1 - t) * angle) * qa + np.sin(t * angle) * qb) / np.sin(angle)
+    return Transform(q, (1 - t) * a.getTranslation() + t * b.getTranslation())
+
+
+def _rotation_angle(a, b):
+    qa, qb = a.getQuatRotation(), b.getQuatRotation()
+    return 2.0 * np.arccos(min(1.0, abs(float(np.dot(qa, qb)))))
+
+
+def _conservative_advancement(o1, tf1_end, o2, tf2_end, request):
+    """Linear motions with rotation: advance t by distance / (bound on how fast any point of one object approaches
+    the other: relative translation plus each rotation angle times the object's radius about its origin) until the
+    objects are within toc_err."""
+    a0, b0 = o1._tf, o2._tf
+
+    def radius(obj):
+        lo, hi = obj._aabb()
+        corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+        return float(np.max(np.linalg.norm(corners - obj._tf.getTranslation(), axis=1)))
+
+    speed = (np.linalg.norm((tf1_end.getTranslation() - a0.getTranslation()) -
+                            (tf2_end.getTranslation() - b0.getTranslation())) +
+             _rotation_angle(a0, tf1_end) * radius(o1) + _rotation_angle(b0, tf2_end) * radius(o2))
+    signed = DistanceRequest(enable_signed_distance=True)
+    t = 0.0
+    for _ in range(max(int(request.num_max_iterations), 1000)):
+        c1 = CollisionObject(o1.geom, _slerp_transform(a0, tf1_end, t))
+        c2 = CollisionObject(o2.geom, _slerp_transform(b0, tf2_end, t))
+        d = distance(c1, c2, signed)
+        if d <= request.toc_err:
+            return t
+        if speed == 0.0:
+            return None
+        t += d / speed
+        if t > 1.0:
+            return None
+    return t
+
+
+def continuousCollide(o1, tf1_end, o2, tf2_end, request=None, result=None):
+    """Whether o1 and o2 collide while moving from their transforms to tf1_end / tf2_end: the time of contact
+    (1.0 when they do not), kept in result as python-fcl does. CCDM_TRANS (and CCDM_LINEAR without rotation) is exact:
+    a gq sweep of the relative translation. CCDM_LINEAR with rotation is conservative advancement on gq's exact
+    distance, within request.toc_err. Screw and spline motions raise UnsupportedError."""
+    request = ContinuousCollisionRequest() if request is None else request
+    result = ContinuousCollisionResult() if result is None else result
+    tf1_end, tf2_end = Transform(tf1_end), Transform(tf2_end)
+    motion_type = request.ccd_motion_type
+    if motion_type not in (CCDMotionType.CCDM_TRANS, CCDMotionType.CCDM_LINEAR):
+        raise _gq.UnsupportedError("continuousCollide: only CCDM_TRANS and CCDM_LINEAR motions are supported")
+    rotates = motion_type == CCDMotionType.CCDM_LINEAR and (
+        not np.array_equal(o1._tf.getRotation(), tf1_end.getRotation()) or
+        not np.array_equal(o2._tf.getRotation(), tf2_end.getRotation()))
+    if rotates:
+        toc = _conservative_advancement(o1, tf1_end, o2, tf2_end, request)
+    else:
+        # Translations only (CCDM_TRANS keeps the start rotations): o1 moves relative to o2 by the difference.
+        motion = (tf1_end.getTranslation() - o1._tf.getTranslation()) - (tf2_end.getTranslation() - o2._tf.getTranslation())
+        toc = _translation_contact_time(o1, o2, motion)
+    if toc is None:
+        return 1.0
+    result.is_collide = True
+    result.time_of_contact = min(result.time_of_contact, toc)
+    return toc
 
 
 def defaultCollisionCallback(o1, o2, cdata):
