@@ -164,30 +164,39 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
     const T lower = (a > T(0) && b > T(0)) ? std::min(a, b) : T(0);
     if (lower >= bestDistance) return;
     const HullPolygon<T>& p = mesh.polygons[tree.facePolygon[f]];
+    const std::uint32_t* loop = mesh.polygonVertices.data() + p.indexBase;
+    if (point) {
+      // The polygon's point closest to c0 is c0's projection q when q is inside; otherwise it lies on an edge whose
+      // line q is outside of (at a vertex, q minus the vertex is in the cone of its two edges' outward normals, so q
+      // is outside at least one of their lines), so only those edges are measured.
+      const Vec3<T> q = c0 - p.normal * a;
+      bool inside = true;
+      for (std::uint32_t i = 0; i < p.indexCount; ++i) {
+        const Vec3<T>& v0 = mesh.vertices[loop[i]];
+        const Vec3<T>& v1 = mesh.vertices[loop[i + 1 < p.indexCount ? i + 1 : 0]];
+        if (!((v1 - v0).cross(q - v0).dot(p.normal) < T(0))) continue;
+        inside = false;
+        const Vec3<T> y = closestPointOnSegment(v0, v1, c0);
+        const T d = (c0 - y).norm();
+        if (d < bestDistance) bestDistance = d, onCore = c0, onHull = y, faceInterior = false;
+      }
+      if (inside) bestDistance = a, onCore = c0, onHull = q, faceInterior = true, closestFace = f;
+      return;
+    }
     if (a > T(0) && a < bestDistance) {
       const Vec3<T> q = c0 - p.normal * a;
       if (insidePolygon(mesh, p, q)) bestDistance = a, onCore = c0, onHull = q, faceInterior = true, closestFace = f;
     }
-    if (!point && b > T(0) && b < bestDistance) {
+    if (b > T(0) && b < bestDistance) {
       const Vec3<T> q = c1 - p.normal * b;
       if (insidePolygon(mesh, p, q)) bestDistance = b, onCore = c1, onHull = q, faceInterior = true, closestFace = f;
     }
-    const std::uint32_t* loop = mesh.polygonVertices.data() + p.indexBase;
     for (std::uint32_t i = 0; i < p.indexCount; ++i) {
       const Vec3<T>& v0 = mesh.vertices[loop[i]];
       const Vec3<T>& v1 = mesh.vertices[loop[i + 1 < p.indexCount ? i + 1 : 0]];
-      Vec3<T> x = c0, y;
-      if (point) {
-        y = closestPointOnSegment(v0, v1, c0);
-      } else {
-        const SegmentClosest<T> cp = closestSegmentSegment(c0, c1, v0, v1);
-        x = cp.c0;
-        y = cp.c1;
-      }
-      const T d = (x - y).norm();
-      if (d < bestDistance)
-        bestDistance = d, onCore = x, onHull = y, faceInterior = false,
-        bestEdge = point ? Vec3<T>::Zero() : Vec3<T>(v1 - v0);
+      const SegmentClosest<T> cp = closestSegmentSegment(c0, c1, v0, v1);
+      const T d = (cp.c0 - cp.c1).norm();
+      if (d < bestDistance) bestDistance = d, onCore = cp.c0, onHull = cp.c1, faceInterior = false, bestEdge = v1 - v0;
     }
   };
   // Per node, over its faces: s(x) <= max over the cap of n.(x - centre) - radius (a face seeing x needs > 0), and

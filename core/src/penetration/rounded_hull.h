@@ -12,7 +12,8 @@
 //    radius: apart.
 //  - Otherwise the core is outside: the hull point closest to it lies on a face that some core point sees (s > 0;
 //    the offset between the closest points is a non-negative combination of the normals of the faces there), so
-//    only those faces are searched (an endpoint's projection inside the polygon, or the polygon's edges), skipping
+//    only those faces are searched (an endpoint's projection inside the polygon, or the polygon's edges; for a point,
+//    only the edges whose line its projection is outside of), skipping
 //    nodes whose cap and ball show that no face sees the core or that every face is farther than the best distance
 //    found; the search ends once a distance equals the separating gap. Radius less that distance.
 // These are the same minima as the SAT and closest-point search over the posed polytope (overlap/polytope.h),
