@@ -234,7 +234,6 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
                         state_->side[0].versioned() && state_->side[1].versioned();
   if (reusable && reuseContacts(va, vb, trA, trB, threshold, body1->getCollisionObject())) {
     result->refreshContactPoints();
-    projectOntoB(manifoldB(*manifold_, trA, trB, body1->getCollisionObject()));
     return;
   }
   const PlacedShape a{&va, toGq(trA) * va.localPose};
@@ -261,14 +260,6 @@ bool ContactAlgorithm::reuseContacts(const ShapeView& va, const ShapeView& vb, c
   const btMatrix3x3& basisB = manifoldB(*manifold_, trA, trB, objectB).getBasis();
   for (int i = 0; i < r.points; ++i) manifold_->getContactPoint(i).m_normalWorldOnB = basisB * r.normalInB[i];
   return true;
-}
-
-void ContactAlgorithm::projectOntoB(const btTransform& trB) {
-  for (int i = 0; i < manifold_->getNumContacts(); ++i) {
-    btManifoldPoint& p = manifold_->getContactPoint(i);
-    p.m_positionWorldOnB = p.m_positionWorldOnA - p.m_normalWorldOnB * p.m_distance1;
-    p.m_localPointB = trB.invXform(p.m_positionWorldOnB);
-  }
 }
 
 void ContactAlgorithm::rememberContacts(const btTransform& trA, const btTransform& trB, Real threshold,

@@ -39,9 +39,6 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
   // (their normals turned with B); false when they must be recomputed.
   bool reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& trA, const btTransform& trB,
                      btScalar threshold, const btCollisionObject* objectB);
-  // Kept points after Bullet's refresh: the point on B is the point on A moved back along the normal by the depth
-  // (A's feature projected onto B's, as a fresh contact reports it).
-  void projectOntoB(const btTransform& trB);
   void rememberContacts(const btTransform& trA, const btTransform& trB, btScalar threshold,
                         const btCollisionObject* objectB);
 
