@@ -96,14 +96,14 @@ bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
   }
 }
 
-}  // namespace
-
 // The cooked data a mesh or heightfield view points to (its identity: it changes when the shape re-cooks).
 const void* surfaceData(const Geometry<Real>& g) {
   if (const auto* mesh = g.getIf<TriangleMeshGeometry<Real>>()) return mesh->mesh.get();
   if (const auto* field = g.getIf<HeightFieldGeometry<Real>>()) return field->heightField.get();
   return nullptr;
 }
+
+}  // namespace
 
 // One side of a pair: the view of its shape (and the prepared geometry) as of `key`.
 struct PairSide {
