@@ -1,5 +1,6 @@
 #include "contact_algorithm.h"
 
+#include <array>
 #include <cstring>
 #include <new>
 
@@ -95,6 +96,13 @@ bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
   }
 }
 
+// The cooked data a mesh or heightfield view points to (its identity: it changes when the shape re-cooks).
+const void* surfaceData(const Geometry<Real>& g) {
+  if (const auto* mesh = g.getIf<TriangleMeshGeometry<Real>>()) return mesh->mesh.get();
+  if (const auto* field = g.getIf<HeightFieldGeometry<Real>>()) return field->heightField.get();
+  return nullptr;
+}
+
 }  // namespace
 
 // One side of a pair: the view of its shape (and the prepared geometry) as of `key`.
@@ -104,6 +112,10 @@ struct PairSide {
   Support support = Support::Invalid;
   ShapeView view;
   Shape<Real> prepared;
+  // Changes whenever the view may have changed (a keyed shape rebuilt, a surface re-cooked or rescaled).
+  std::uint32_t version = 0;
+  const void* surface = nullptr;
+  btVector3 surfaceScaling{0, 0, 0};
 
   // The shape's view, rebuilt only when the shape's parameters changed since the last frame.
   Support refresh(const btCollisionShape* shape) {
@@ -115,21 +127,64 @@ struct PairSide {
     } else {
       keyed = false;
     }
+    ++version;
     support = viewShape(shape, view);
     view.prepared = nullptr;
     // Only convex pairs read the prepared shape; a mesh or heightfield is not prepared (making a Shape bounds every
     // vertex, which cost a pair with a large ground more than its contacts).
     const GeometryType type = view.geom.type();
-    const bool surface = type == GeometryType::TriangleMesh || type == GeometryType::HeightField;
-    if (support == Support::Gq && !surface && Shape<Real>::make(view.geom, prepared).ok()) view.prepared = &prepared;
+    const bool isSurface = type == GeometryType::TriangleMesh || type == GeometryType::HeightField;
+    if (support == Support::Gq && !isSurface && Shape<Real>::make(view.geom, prepared).ok()) view.prepared = &prepared;
+    if (isSurface && support == Support::Gq && surfaceData(view.geom) == surface &&
+        shape->getLocalScaling() == surfaceScaling)
+      --version;  // the same cooked surface at the same scaling: the view is unchanged
+    surface = isSurface ? surfaceData(view.geom) : nullptr;
+    if (shape) surfaceScaling = shape->getLocalScaling();
     return support;
   }
+  // Whether `version` tracks every change of the view (keyed shapes and surfaces; not multi-spheres).
+  bool versioned() const { return keyed || surface != nullptr; }
+};
+
+// The contact set of a pair is a function of the shapes and of B's pose relative to A. A frame whose relative pose
+// is within kReuseLength (times the smaller convex size) and kReuseAngle (radians) of the pose of the last exact
+// frame keeps the manifold's points instead of recomputing them: each point stays on its two features (fixed in
+// each body's frame), its normal turns with B and Bullet's refresh recomputes its depth from them, so a resting
+// pair pays for its contacts once, not every frame.
+constexpr Real kReuseLength = Real(1e-3);
+constexpr Real kReuseAngle = Real(1e-3);
+
+struct ReusedFrame {
+  bool valid = false;
+  btTransform relative;  // B's pose in A's frame at the last exact frame
+  Real threshold = 0;
+  std::uint32_t versions[2] = {0, 0};
+  int points = 0;
+  std::array<btVector3, MANIFOLD_CACHE_SIZE> normalInB;
 };
 
 struct PairState {
   PairSide side[2];
   PairMemory memory;
+  ReusedFrame reused;
 };
+
+namespace {
+
+// The manifold's own B (Bullet may have made it with the two objects the other way round).
+const btTransform& manifoldB(const btPersistentManifold& m, const btTransform& trA, const btTransform& trB,
+                             const btCollisionObject* objectB) {
+  return m.getBody1() == objectB ? trB : trA;
+}
+
+// The length the reuse tolerance is relative to: the smaller convex side (planes and surfaces are unbounded).
+Real reuseSize(const ShapeView& va, const ShapeView& vb) {
+  if (va.kind != ShapeKind::Convex) return vb.size;
+  if (vb.kind != ShapeKind::Convex) return va.size;
+  return std::min(va.size, vb.size);
+}
+
+}  // namespace
 
 ContactAlgorithm::ContactAlgorithm(btPersistentManifold* sharedManifold, const btCollisionAlgorithmConstructionInfo& ci,
                                    const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1)
@@ -163,6 +218,7 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
   if (!answerable) {
     // Bad input (or a shape edited into one gq does not model): no contact, and none kept from earlier frames.
     if (manifold_ && ownManifold_) manifold_->clearManifold();
+    if (state_) state_->reused.valid = false;
     return;
   }
   if (!manifold_) {
@@ -170,13 +226,54 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
     ownManifold_ = true;
   }
   result->setPersistentManifold(manifold_);
-  const PlacedShape a{&va, toGq(body0->getWorldTransform()) * va.localPose};
-  const PlacedShape b{&vb, toGq(body1->getWorldTransform()) * vb.localPose};
   // Bullet's algorithms report points up to the breaking threshold; contactTest widens it by its own threshold.
   const Real threshold = manifold_->getContactBreakingThreshold() + result->m_closestPointDistanceThreshold;
+  const btTransform& trA = body0->getWorldTransform();
+  const btTransform& trB = body1->getWorldTransform();
+  const bool reusable = state_ && ownManifold_ && result->m_closestPointDistanceThreshold == Real(0) &&
+                        state_->side[0].versioned() && state_->side[1].versioned();
+  if (reusable && reuseContacts(va, vb, trA, trB, threshold, body1->getCollisionObject())) {
+    result->refreshContactPoints();
+    return;
+  }
+  const PlacedShape a{&va, toGq(trA) * va.localPose};
+  const PlacedShape b{&vb, toGq(trB) * vb.localPose};
   ManifoldSink sink(*result);
   pairContacts(a, b, threshold, sink, state_ ? &state_->memory : nullptr);
   if (ownManifold_) result->refreshContactPoints();
+  if (reusable) rememberContacts(trA, trB, threshold, body1->getCollisionObject());
+}
+
+bool ContactAlgorithm::reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& trA,
+                                     const btTransform& trB, Real threshold, const btCollisionObject* objectB) {
+  ReusedFrame& r = state_->reused;
+  if (!r.valid || r.threshold != threshold || r.versions[0] != state_->side[0].version ||
+      r.versions[1] != state_->side[1].version || manifold_->getNumContacts() != r.points)
+    return false;
+  const btTransform relative = trA.inverseTimes(trB);
+  const Real length = kReuseLength * reuseSize(va, vb);
+  if ((relative.getOrigin() - r.relative.getOrigin()).length2() > length * length) return false;
+  const btMatrix3x3& now = relative.getBasis();
+  const btMatrix3x3& then = r.relative.getBasis();
+  const Real turn2 = (now[0] - then[0]).length2() + (now[1] - then[1]).length2() + (now[2] - then[2]).length2();
+  if (turn2 > kReuseAngle * kReuseAngle) return false;
+  const btMatrix3x3& basisB = manifoldB(*manifold_, trA, trB, objectB).getBasis();
+  for (int i = 0; i < r.points; ++i) manifold_->getContactPoint(i).m_normalWorldOnB = basisB * r.normalInB[i];
+  return true;
+}
+
+void ContactAlgorithm::rememberContacts(const btTransform& trA, const btTransform& trB, Real threshold,
+                                        const btCollisionObject* objectB) {
+  ReusedFrame& r = state_->reused;
+  r.valid = true;
+  r.relative = trA.inverseTimes(trB);
+  r.threshold = threshold;
+  r.versions[0] = state_->side[0].version;
+  r.versions[1] = state_->side[1].version;
+  r.points = manifold_->getNumContacts();
+  const btMatrix3x3& basisB = manifoldB(*manifold_, trA, trB, objectB).getBasis();
+  for (int i = 0; i < r.points; ++i)
+    r.normalInB[i] = manifold_->getContactPoint(i).m_normalWorldOnB * basisB;  // basisB^T n
 }
 
 void ContactAlgorithm::getAllContactManifolds(btManifoldArray& manifolds) {

@@ -2,6 +2,7 @@
 // The gq contact algorithm as a Bullet collision algorithm, and the create function the configuration installs.
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCollisionCreateFunc.h>
+#include <LinearMath/btTransform.h>
 
 #include <memory>
 
@@ -33,6 +34,13 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
  private:
   void collide(bool answerable, const ShapeView& va, const ShapeView& vb, const btCollisionObjectWrapper* body0,
                const btCollisionObjectWrapper* body1, btManifoldResult* result);
+
+  // True when B's pose relative to A is close enough to the last exact frame's that the manifold's points are kept
+  // (their normals turned with B); false when they must be recomputed.
+  bool reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& trA, const btTransform& trB,
+                     btScalar threshold, const btCollisionObject* objectB);
+  void rememberContacts(const btTransform& trA, const btTransform& trB, btScalar threshold,
+                        const btCollisionObject* objectB);
 
   btPersistentManifold* manifold_;
   bool ownManifold_;

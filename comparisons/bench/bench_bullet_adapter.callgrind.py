@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Instructions of stock Bullet vs gq::bullet (callgrind) per bench_bullet_adapter scene -> bullet_adapter_callgrind.csv.
+
+Usage: bench_bullet_adapter.callgrind.py <build>/comparisons/bench/bench_bullet_adapter [names...] [--out CSV]
+       [--machine TEXT]
+Runs each benchmark once (one iteration) under callgrind. Stepping scenes: the instructions inside
+btDiscreteDynamicsWorld::stepSimulation (the timed 500 steps plus the untimed rest-measure run of 500 more; world
+construction excluded). Pair scenes: instructions per contact call (the benchmark switches collection on around its
+1000 calls). Prints the rows and writes comparisons/results/bullet_adapter_callgrind.csv (or --out) with the run's
+date, machine and commit; measuring only some names replaces their rows and keeps the others'.
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import results_csv  # noqa: E402
+
+STEPS = ["stack", "drops_mesh", "drops_heightfield", "grid", "mixed_pile"]
+PAIRS = ["sphere_box", "box_box", "capsule_box", "hull_hull", "box_mesh"]
+PAIR_CALLS = 1000  # kPairCalls of bench_bullet_adapter.cpp
+HEADER = ["date", "machine", "commit", "benchmark", "bullet_instr", "gq_instr", "ratio_gq_speed_vs_bullet", "note"]
+
+
+def instructions(bench, name, backend):
+    """Collected instructions of one benchmark run (Ir total of the callgrind output)."""
+    step = name in STEPS
+    with tempfile.NamedTemporaryFile(suffix=".callgrind") as out:
+        args = ["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out.name]
+        args += ["--toggle-collect=btDiscreteDynamicsWorld::stepSimulation(*"] if step else ["--collect-atstart=no"]
+        args += [bench, "--benchmark_filter=BM_%s/%s_%s$" % ("Step" if step else "PairContacts", name, backend),
+                 "--benchmark_min_time=0.000001"]
+        run = subprocess.run(args, capture_output=True, text=True)
+        m = re.search(r"Collected : (\d+)", run.stderr)
+        if not m:
+            raise SystemExit("%s %s: no callgrind total\n%s" % (name, backend, run.stderr[-2000:]))
+        total = int(m.group(1))
+    return total if step else total / PAIR_CALLS
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("bench")
+    ap.add_argument("names", nargs="*")
+    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "bullet_adapter_callgrind.csv"))
+    ap.add_argument("--machine")
+    a = ap.parse_args()
+    names = a.names or STEPS + PAIRS
+    run = results_csv.run_columns(
+        a.machine or results_csv.machine() + " (callgrind: instruction counts, load-independent)")
+    rows = []
+    for name in names:
+        bullet, gq = (instructions(a.bench, name, backend) for backend in ("bullet", "gq"))
+        note = ("instructions in stepSimulation, 2 x 500 steps" if name in STEPS else
+                "instructions per contact call, resting pair wobbling by up to 1 mm")
+        r = dict(run, benchmark=("Step/" if name in STEPS else "PairContacts/") + name, bullet_instr="%.0f" % bullet,
+                 gq_instr="%.0f" % gq, ratio_gq_speed_vs_bullet="%.2f" % (bullet / gq), note=note)
+        print(",".join(str(r[h]) for h in HEADER[3:-1]), flush=True)
+        rows.append(r)
+    measured = {r["benchmark"] for r in rows}
+    old = []
+    if os.path.exists(a.out):
+        with open(a.out, newline="") as fh:
+            old = [r for r in csv.DictReader(l for l in fh if not l.startswith("#")) if r["benchmark"] not in measured]
+    order = ["Step/" + n for n in STEPS] + ["PairContacts/" + n for n in PAIRS]
+    merged = sorted(old + rows, key=lambda r: order.index(r["benchmark"]) if r["benchmark"] in order else len(order))
+    results_csv.write(a.out, HEADER, merged)
+    print("%d rows -> %s" % (len(merged), a.out))
+
+
+if __name__ == "__main__":
+    main()
