@@ -202,12 +202,14 @@ Status treeDistance(const MeshTree<T>& mesh, const Transform<T>& meshPose, const
 
 template <class T> Bounds3<T> treeBounds(const MeshTree<T>& mesh, const Transform<T>& pose) {
   Bounds3<T> world;
-  onModel(mesh, [&](const auto& m) {
+  const Status s = onModel(mesh, [&](const auto& m) {
     const Bounds3<T> local = nodeBox(m.getBV(0).bv);
     world = orientedBox<T>(pose.q.toRotationMatrix(), pose.transform(local.center()), local.extents());
     return Status{};
   });
-  return world;
+  if (s.ok()) return world;
+  const T inf = std::numeric_limits<T>::infinity();  // not finite: the caller takes FCL's own AABB
+  return Bounds3<T>::fromMinMax(Vec3<T>::Constant(-inf), Vec3<T>::Constant(inf));
 }
 
 template Status treeContacts<float>(const MeshTree<float>&, const Transform<float>&, const Converted<float>&,

@@ -35,7 +35,7 @@ template <class T>
 Status treeDistance(const MeshTree<T>& mesh, const Transform<T>& meshPose, const Converted<T>& shape,
                     const Transform<T>& shapePose, PairDistance<T>& out, T farEnough);
 
-// World bounds of the tree model: its root BV's box at `pose` (conservative).
+// World bounds of the tree model: its root BV's box at `pose` (conservative; infinite for a BV type not handled).
 template <class T> Bounds3<T> treeBounds(const MeshTree<T>& mesh, const Transform<T>& pose);
 
 }  // namespace gq::fcl::internal

@@ -30,9 +30,10 @@ namespace k = gq::kernels;
 namespace {
 
 constexpr int kFingerprintSamples = 16;
-// The cook's estimate in tree work units (fcl_tree.h) a triangle. Measured: cookTriangleMesh takes ~110 ns a
-// triangle (1k and 10k triangle spheres), a tree node visit ~2.5 ns.
-constexpr std::uint64_t kCookWorkPerTriangle = 40;
+// The cook's estimate in tree work units (fcl_tree.h) a triangle. Measured by callgrind on a 192-triangle sphere
+// mesh (FclNewMesh.RepeatedQueriesKeepTheirAnswersAcrossTheCook): cookTriangleMesh 1.85M instructions (9.6k a
+// triangle), tree distance queries ~74 instructions a work unit, so a cook is ~130 units a triangle.
+constexpr std::uint64_t kCookWorkPerTriangle = 130;
 constexpr std::size_t kThreadSlots = 16;  // per-thread table in front of the shared map (a power of two)
 
 // FNV-1a over 64-bit words: equal inputs give equal fingerprints; a change is caught unless it collides.

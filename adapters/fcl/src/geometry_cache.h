@@ -9,7 +9,7 @@
 //    reused while a fingerprint matches: counts, array addresses and up to kFingerprintSamples vertices and
 //    triangles sampled evenly. An edit that changes none of them needs forgetGeometry().
 // A new BVHModel is not cooked at once: lookups that allow it (MeshUse::TreeAllowed) get its FCL tree (fcl_tree.h)
-// and each such query charges its work; once the work reaches the cook's estimate (kCookWorkPerTriangle a triangle)
+// and each such query charges its work; once the work reaches the cook's estimate (kCookWorkPerTriangle a triangle, measured)
 // the model is cooked, so a model queried a few times never pays the cook and one queried often pays it once (ski
 // rental: the total stays within twice the better of the two choices). A cook first looks for an identical model
 // cooked before (a 128-bit hash of the vertex and triangle arrays: a pass over them, a fraction of a cook).
