@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -162,6 +163,26 @@ TEST(FclNewMesh, RepeatedQueriesKeepTheirAnswersAcrossTheCook) {
     }
     if (round == 20) gq::fcl::forgetGeometry<double>(tree.get());
   }
+}
+
+// A new model with a NaN vertex is bad input whatever path would answer it: nothing written (as a cooked model).
+TEST(FclNewMesh, NewModelWithANaNVertexWritesNothing) {
+  auto model = std::make_shared<Model<double>>();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  model->beginModel();
+  model->addTriangle(::fcl::Vector3d(0, 0, 0), ::fcl::Vector3d(1, 0, 0), ::fcl::Vector3d(0, 1, 0));
+  model->addTriangle(::fcl::Vector3d(0, 0, 0), ::fcl::Vector3d(nan, 0, 1), ::fcl::Vector3d(0, 1, 1));
+  model->endModel();
+  ::fcl::Sphered sphere(0.5);
+  const ::fcl::Transform3d identity = ::fcl::Transform3d::Identity();
+  ::fcl::CollisionResultd collision;
+  EXPECT_EQ(gq::fcl::collide<double>(model.get(), identity, &sphere, identity, ::fcl::CollisionRequestd(), collision),
+            0u);
+  EXPECT_EQ(collision.numContacts(), 0u);
+  ::fcl::DistanceResultd distance;
+  EXPECT_EQ(gq::fcl::distance<double>(model.get(), identity, &sphere, identity, ::fcl::DistanceRequestd(true), distance),
+            std::numeric_limits<double>::max());
+  EXPECT_EQ(distance.min_distance, std::numeric_limits<double>::max());
 }
 
 }  // namespace

@@ -221,6 +221,15 @@ template <class T> std::shared_ptr<const TriangleMesh<T>> cookMeshData(const Mes
   return mesh;
 }
 
+// Every vertex coordinate finite: the plain sum of all of them is finite only if each is (inf - inf is NaN); a
+// non-finite sum is a non-finite coordinate or an overflow of finite ones, told apart exactly (x * 0 is 0 only for
+// a finite x). A model with a non-finite vertex is cooked at once: the cook rejects it, and the call writes nothing.
+template <class T> bool finiteVertices(const MeshView<T>& v) {
+  static_assert(sizeof(::fcl::Vector3<T>) == 3 * sizeof(T), "FCL's vertices are contiguous coordinates");
+  const Eigen::Map<const Eigen::Array<T, Eigen::Dynamic, 1>> all(v.vertices[0].data(), 3 * Eigen::Index(v.vertexCount));
+  return all.sum() * T(0) == T(0) || (all * T(0)).sum() == T(0);
+}
+
 // A model's first entry: its FCL tree, with the cook's estimate as the budget of its tree queries.
 template <class T>
 std::shared_ptr<const Entry<T>> treeEntry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type,
@@ -290,7 +299,8 @@ template <class T> std::shared_ptr<const Entry<T>> sharedLookup(const Key<T>& ke
   }
   std::shared_ptr<const Entry<T>> fresh;
   if (key.convex) fresh = cookConvex(*static_cast<const ::fcl::Convex<T>*>(key.geometry));
-  else if (key.use == MeshUse::TreeAllowed) fresh = treeEntry(key.geometry, key.type, key.mesh, key.fingerprint);
+  else if (key.use == MeshUse::TreeAllowed && finiteVertices(key.mesh))
+    fresh = treeEntry(key.geometry, key.type, key.mesh, key.fingerprint);
   else fresh = cookMesh(key.mesh, key.fingerprint);
   std::unique_lock<std::shared_mutex> lock(c.mutex);
   std::shared_ptr<const Entry<T>>& slot = c.entries[key.geometry];
