@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "convert.h"
+#include "fcl_tree.h"
 #include "gq/query.h"
 
 namespace gq::fcl {
@@ -33,15 +34,17 @@ template <class S> Bounds3<S> merged(const Bounds3<S>& a, const Bounds3<S>& b) {
   return m;
 }
 
-// World AABB of an object: gq's exact bounds of the converted geometry; FCL's own AABB for geometries gq does not
-// convert (octrees, point clouds) or whose bounds are unbounded (planes, half-spaces: FCL's huge box).
+// World AABB of an object: gq's exact bounds of the converted geometry (a BVHModel not cooked yet: its FCL root
+// BV's box, placed); FCL's own AABB for geometries gq does not convert (octrees, point clouds) or whose bounds are
+// unbounded (planes, half-spaces: FCL's huge box).
 template <class S> Bounds3<S> worldBounds(::fcl::CollisionObject<S>* obj) {
   internal::Converted<S> c;
   const auto* geometry = obj->collisionGeometry().get();
-  if (internal::convert(geometry, c) == internal::Conversion::Ok && !c.isPlaneLike()) {
+  if (internal::convert(geometry, c, internal::MeshUse::TreeAllowed) == internal::Conversion::Ok && !c.isPlaneLike()) {
     Bounds3<S> b;
     const Transform<S> pose = internal::shapePose(c, obj->getTransform());
-    if (computeGeomBounds(b, c.geometry(), pose, S(0), S(1)).ok() && isFinite(b.min) && isFinite(b.max)) return b;
+    if (c.isTree()) b = internal::treeBounds(c.tree(), pose);
+    if (c.isTree() ? isFinite(b.min) && isFinite(b.max) : computeGeomBounds(b, c.geometry(), pose, S(0), S(1)).ok() && isFinite(b.min) && isFinite(b.max)) return b;
   }
   obj->computeAABB();
   const ::fcl::AABB<S>& a = obj->getAABB();

@@ -4,6 +4,7 @@
 
 #include "convert.h"
 #include "fallback.h"
+#include "fcl_tree.h"
 #include "gq/fcl/collision.h"
 #include "pair_kernels.h"
 #include "solid_pairs.h"
@@ -80,8 +81,9 @@ template <class S>
                                             ::fcl::CollisionResult<S>& result, bool fclContact) {
   if (!isFiniteTransforms(tf1, tf2)) return 0;
   Converted<S> a, b;
-  const Conversion ca = convert(o1, a), cb = convert(o2, b);
+  Conversion ca = convert(o1, a, MeshUse::TreeAllowed), cb = convert(o2, b, MeshUse::TreeAllowed);
   if (ca == Conversion::Invalid || cb == Conversion::Invalid) return 0;
+  if ((a.isTree() || b.isTree()) && !treeAgainstSolid(a, b)) ca = convert(o1, a), cb = convert(o2, b);
   if (!rotationUsable(a, tf1) || !rotationUsable(b, tf2)) return 0;
   const Transform<S> pa = shapePose(a, tf1), pb = shapePose(b, tf2);
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost || fclContact ||

@@ -87,16 +87,17 @@ template <class T> Conversion triangle(const ::fcl::TriangleP<T>& t, Converted<T
   return Conversion::Ok;
 }
 
-template <class T> Conversion cached(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Converted<T>& out) {
+template <class T>
+Conversion cached(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, MeshUse use, Converted<T>& out) {
   Cooked<T> cooked;
-  const Conversion conversion = cachedGeometry(g, type, cooked);
+  const Conversion conversion = cachedGeometry(g, type, cooked, use);
   if (conversion == Conversion::Ok) out.setCached(cooked);
   return conversion;
 }
 
 }  // namespace
 
-template <class T> Conversion convert(const ::fcl::CollisionGeometry<T>* g, Converted<T>& out) {
+template <class T> Conversion convert(const ::fcl::CollisionGeometry<T>* g, Converted<T>& out, MeshUse use) {
   if (!g) return Conversion::Invalid;
   const ::fcl::NODE_TYPE type = g->getNodeType();
   switch (type) {
@@ -122,15 +123,15 @@ template <class T> Conversion convert(const ::fcl::CollisionGeometry<T>* g, Conv
       return planeFrame<T>(FclShape::Plane, p->n, p->d, out);
     }
     case ::fcl::GEOM_OCTREE: return Conversion::NotModelled;
-    default: return cached(g, type, out);  // Convex and BVHModels
+    default: return cached(g, type, use, out);  // Convex and BVHModels
   }
 }
 
 template <class T> void forget(const ::fcl::CollisionGeometry<T>* g) { forgetCached(g); }
 void clearCache() { clearCached(); }
 
-template Conversion convert<float>(const ::fcl::CollisionGeometry<float>*, Converted<float>&);
-template Conversion convert<double>(const ::fcl::CollisionGeometry<double>*, Converted<double>&);
+template Conversion convert<float>(const ::fcl::CollisionGeometry<float>*, Converted<float>&, MeshUse);
+template Conversion convert<double>(const ::fcl::CollisionGeometry<double>*, Converted<double>&, MeshUse);
 template void forget<float>(const ::fcl::CollisionGeometry<float>*);
 template void forget<double>(const ::fcl::CollisionGeometry<double>*);
 

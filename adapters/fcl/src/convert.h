@@ -60,6 +60,18 @@ template <class T> struct HullPlanes {
   std::uint32_t pairs = 0;
 };
 
+// A triangle BVHModel the cache has not cooked yet: queried on FCL's own BV tree (fcl_tree.h), its work charged to
+// the cache's entry, until the queries have cost about as much as cooking it.
+template <class T> struct MeshTree {
+  const ::fcl::CollisionGeometry<T>* model;
+  int type;           // the model's ::fcl::NODE_TYPE (its BV type)
+  const void* entry;  // the cache's entry (geometry_cache.cpp)
+};
+
+// Whether a conversion may answer a triangle BVHModel with its FCL tree (the pairs fcl_tree.h answers) or needs
+// the cooked mesh.
+enum class MeshUse : std::uint8_t { Cooked, TreeAllowed };
+
 // No initialisers on purpose: cachedGeometry / cachedHulls write every field before a caller may read one (on Ok),
 // and the Convex pairs' two a call cost them as much as their last certificate saved.
 template <class T> struct Cooked {
@@ -68,6 +80,7 @@ template <class T> struct Cooked {
   const CandidateVolume<T>* candidate;
   const gq::kernels::ConvexShape<T>* support;
   const HullPlanes<T>* planes;  // Convex: its face planes, packed for the point-in-hull test
+  const MeshTree<T>* tree;      // a BVHModel not cooked yet (geometry then unset); else null
 };
 
 template <class T> class Converted {
@@ -83,6 +96,9 @@ template <class T> class Converted {
   const Geometry<T>& geometry() const { return *geometry_; }
   bool isPlaneLike() const { return shape == FclShape::Halfspace || shape == FclShape::Plane; }
   bool isMesh() const { return shape == FclShape::Mesh; }
+  // A BVHModel answered on FCL's tree: geometry() is not a gq mesh, tree() is set.
+  bool isTree() const { return tree_ != nullptr; }
+  const MeshTree<T>& tree() const { return *tree_; }
   // A closed convex solid (or a half-space): gq's pair kernels answer it directly.
   bool isSolid() const { return shape != FclShape::Mesh && shape != FclShape::Plane && shape != FclShape::Unsupported; }
 
@@ -102,6 +118,7 @@ template <class T> class Converted {
     geometry_ = cooked.geometry;
     candidate_ = cooked.candidate;
     support_ = cooked.support;
+    tree_ = cooked.tree;
   }
   const CandidateVolume<T>* cachedCandidate() const { return candidate_; }
   const gq::kernels::ConvexShape<T>* cachedSupport() const { return support_; }
@@ -111,11 +128,13 @@ template <class T> class Converted {
   const Geometry<T>* geometry_ = &local_;
   const CandidateVolume<T>* candidate_ = nullptr;
   const gq::kernels::ConvexShape<T>* support_ = nullptr;
+  const MeshTree<T>* tree_ = nullptr;
   std::variant<std::monostate, CylinderCallbacks<T>, ConeCallbacks<T>, EllipsoidCallbacks<T>, TriangleCallbacks<T>>
       callbacks_;
 };
 
-template <class T> Conversion convert(const ::fcl::CollisionGeometry<T>* geometry, Converted<T>& out);
+template <class T>
+Conversion convert(const ::fcl::CollisionGeometry<T>* geometry, Converted<T>& out, MeshUse use = MeshUse::Cooked);
 template <class T> void forget(const ::fcl::CollisionGeometry<T>* geometry);
 void clearCache();
 

@@ -15,6 +15,7 @@
 
 #include "convert.h"
 #include "fallback.h"
+#include "fcl_tree.h"
 #include "gq/fcl/collision.h"
 #include "pair_kernels.h"
 #include "solid_pairs.h"
@@ -58,8 +59,11 @@ template <class S>
   constexpr S kNothing = std::numeric_limits<S>::max();
   if (!internal::isFiniteTransforms(tf1, tf2)) return kNothing;
   internal::Converted<S> a, b;
-  const Conversion ca = internal::convert(o1, a), cb = internal::convert(o2, b);
+  Conversion ca = internal::convert(o1, a, internal::MeshUse::TreeAllowed);
+  Conversion cb = internal::convert(o2, b, internal::MeshUse::TreeAllowed);
   if (ca == Conversion::Invalid || cb == Conversion::Invalid) return kNothing;
+  if ((a.isTree() || b.isTree()) && !internal::treeAgainstSolid(a, b))
+    ca = internal::convert(o1, a), cb = internal::convert(o2, b);
   if (!internal::rotationUsable(a, tf1) || !internal::rotationUsable(b, tf2)) return kNothing;
   const Transform<S> pa = internal::shapePose(a, tf1), pb = internal::shapePose(b, tf2);
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled)

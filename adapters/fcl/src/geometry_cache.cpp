@@ -30,6 +30,10 @@ namespace k = gq::kernels;
 namespace {
 
 constexpr int kFingerprintSamples = 16;
+// The cook's estimate in tree work units (fcl_tree.h) a triangle. Measured by callgrind on a 192-triangle sphere
+// mesh (FclNewMesh.RepeatedQueriesKeepTheirAnswersAcrossTheCook): cookTriangleMesh 1.85M instructions (9.6k a
+// triangle), tree distance queries ~74 instructions a work unit, so a cook is ~130 units a triangle.
+constexpr std::uint64_t kCookWorkPerTriangle = 130;
 constexpr std::size_t kThreadSlots = 16;  // per-thread table in front of the shared map (a power of two)
 
 // FNV-1a over 64-bit words: equal inputs give equal fingerprints; a change is caught unless it collides.
@@ -101,6 +105,41 @@ template <class T> std::uint64_t meshFingerprint(const MeshView<T>& v) {
   return f.h;
 }
 
+// A 128-bit hash of a model's whole vertex and triangle arrays (two independent 64-bit mixes of every word), the key
+// of the cooked meshes shared between identical models.
+struct ContentHash {
+  std::uint64_t a = 1469598103934665603ull, b = 0x9E3779B97F4A7C15ull;
+  void mix(std::uint64_t word) {
+    a = (a ^ word) * 1099511628211ull;
+    b = (b + word) * 0xC2B2AE3D27D4EB4Full;
+    b ^= b >> 29;
+  }
+  void bytes(const void* data, std::size_t size) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    std::size_t i = 0;
+    for (; i + 8 <= size; i += 8) {
+      std::uint64_t word;
+      std::memcpy(&word, p + i, 8);
+      mix(word);
+    }
+    std::uint64_t tail = 0;
+    std::memcpy(&tail, p + i, size - i);
+    mix(tail ^ (std::uint64_t(size) << 56));
+  }
+  bool operator==(const ContentHash& o) const { return a == o.a && b == o.b; }
+};
+struct ContentHashOf {
+  std::size_t operator()(const ContentHash& h) const { return std::size_t(h.a ^ (h.b << 1)); }
+};
+
+template <class T> ContentHash contentHash(const MeshView<T>& v) {
+  ContentHash h;
+  h.mix(std::uint64_t(v.vertexCount)), h.mix(std::uint64_t(v.triangleCount));
+  for (int i = 0; i < v.vertexCount; ++i) h.bytes(v.vertices[i].data(), 3 * sizeof(T));
+  h.bytes(v.triangles, std::size_t(v.triangleCount) * sizeof(::fcl::Triangle));
+  return h;
+}
+
 template <class T> struct Entry {
   FclShape shape = FclShape::Unsupported;
   Conversion conversion = Conversion::Invalid;
@@ -111,6 +150,13 @@ template <class T> struct Entry {
   const void* vertexArray = nullptr;            // Convex: its vertex vector (identity)
   std::optional<::fcl::Convex<T>> convexAlive;  // Convex: a copy sharing that vector keeps it alive
   std::uint64_t fingerprint = 0;                // BVHModel
+  // A BVHModel not cooked yet: answered on FCL's tree while `spent` (work units) is below `budget` (the cook's
+  // estimate); `superseded` once its cooked entry replaced it in the shared map.
+  std::optional<MeshTree<T>> tree;
+  MeshView<T> view;
+  std::uint64_t budget = 0;
+  mutable std::atomic<std::uint64_t> spent{0};
+  mutable std::atomic<bool> cooking{false}, superseded{false};
 };
 
 // The lookup key of one geometry for one call: its identity data.
@@ -120,8 +166,12 @@ template <class T> struct Key {
   const void* vertexArray;   // Convex
   MeshView<T> mesh;          // BVHModel
   std::uint64_t fingerprint;  // BVHModel
+  MeshUse use;                // BVHModel
+  ::fcl::NODE_TYPE type;      // BVHModel: its BV type
   bool matches(const Entry<T>& e) const {
-    return convex ? e.vertexArray == vertexArray : e.vertexArray == nullptr && e.fingerprint == fingerprint;
+    if (convex) return e.vertexArray == vertexArray;
+    return e.vertexArray == nullptr && e.fingerprint == fingerprint &&
+           (!e.tree || (use == MeshUse::TreeAllowed && !e.superseded.load(std::memory_order_relaxed)));
   }
 };
 
@@ -160,26 +210,46 @@ template <class T> std::shared_ptr<const Entry<T>> cookConvex(const ::fcl::Conve
   return e;
 }
 
-template <class T> std::shared_ptr<const Entry<T>> cookMesh(const MeshView<T>& v, std::uint64_t fingerprint) {
-  auto e = std::make_shared<Entry<T>>();
-  e->fingerprint = fingerprint;
+template <class T> std::shared_ptr<const TriangleMesh<T>> cookMeshData(const MeshView<T>& v) {
   std::vector<Vec3<T>> vertices(v.vertices, v.vertices + v.vertexCount);
   std::vector<TriangleIndices> triangles(std::size_t(v.triangleCount));
   for (int i = 0; i < v.triangleCount; ++i)
     triangles[std::size_t(i)] = {std::uint32_t(v.triangles[i][0]), std::uint32_t(v.triangles[i][1]),
                                  std::uint32_t(v.triangles[i][2])};
   std::shared_ptr<const TriangleMesh<T>> mesh;
-  if (cookTriangleMesh(vertices, triangles, mesh).ok()) {
-    e->shape = FclShape::Mesh;
-    e->conversion = Conversion::Ok;
-    e->geometry = TriangleMeshGeometry<T>(mesh);
-  }
+  if (!cookTriangleMesh(vertices, triangles, mesh).ok()) return nullptr;
+  return mesh;
+}
+
+// Every vertex coordinate finite: the plain sum of all of them is finite only if each is (inf - inf is NaN); a
+// non-finite sum is a non-finite coordinate or an overflow of finite ones, told apart exactly (x * 0 is 0 only for
+// a finite x). A model with a non-finite vertex is cooked at once: the cook rejects it, and the call writes nothing.
+template <class T> bool finiteVertices(const MeshView<T>& v) {
+  static_assert(sizeof(::fcl::Vector3<T>) == 3 * sizeof(T), "FCL's vertices are contiguous coordinates");
+  const Eigen::Map<const Eigen::Array<T, Eigen::Dynamic, 1>> all(v.vertices[0].data(), 3 * Eigen::Index(v.vertexCount));
+  return all.sum() * T(0) == T(0) || (all * T(0)).sum() == T(0);
+}
+
+// A model's first entry: its FCL tree, with the cook's estimate as the budget of its tree queries.
+template <class T>
+std::shared_ptr<const Entry<T>> treeEntry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type,
+                                          const MeshView<T>& v, std::uint64_t fingerprint) {
+  auto e = std::make_shared<Entry<T>>();
+  e->fingerprint = fingerprint;
+  e->shape = FclShape::Mesh;
+  e->conversion = Conversion::Ok;
+  e->tree = MeshTree<T>{g, int(type), e.get()};
+  e->view = v;
+  e->budget = kCookWorkPerTriangle * std::uint64_t(v.triangleCount);
   return e;
 }
 
 template <class T> struct SharedCache {
   std::shared_mutex mutex;
   std::unordered_map<const void*, std::shared_ptr<const Entry<T>>> entries;
+  // Cooked meshes by content: an identical model (same arrays) shares one cook while any entry holds it.
+  std::mutex contentMutex;
+  std::unordered_map<ContentHash, std::weak_ptr<const TriangleMesh<T>>, ContentHashOf> byContent;
 };
 // Bumped by forget and clear: every per-thread slot older than it is stale. At namespace scope (constant
 // initialisation, no guard to check on the hit path).
@@ -189,7 +259,37 @@ template <class T> SharedCache<T>& shared() {
   return c;
 }
 
-// The shared entry for `key`, cooked (outside the lock: cooking may take milliseconds) when absent or stale.
+// The cooked entry of a triangle model: an identical model's cooked mesh when one is alive, else a new cook.
+template <class T> std::shared_ptr<const Entry<T>> cookMesh(const MeshView<T>& v, std::uint64_t fingerprint) {
+  SharedCache<T>& c = shared<T>();
+  const ContentHash hash = contentHash(v);
+  std::shared_ptr<const TriangleMesh<T>> mesh;
+  {
+    std::lock_guard<std::mutex> lock(c.contentMutex);
+    auto it = c.byContent.find(hash);
+    if (it != c.byContent.end()) mesh = it->second.lock();
+  }
+  if (!mesh) {
+    mesh = cookMeshData(v);
+    if (mesh) {
+      std::lock_guard<std::mutex> lock(c.contentMutex);
+      if (c.byContent.size() > 64 + 2 * c.entries.size())  // drop the expired ones now and then
+        for (auto it = c.byContent.begin(); it != c.byContent.end();) it = it->second.expired() ? c.byContent.erase(it) : ++it;
+      c.byContent[hash] = mesh;
+    }
+  }
+  auto e = std::make_shared<Entry<T>>();
+  e->fingerprint = fingerprint;
+  if (mesh) {
+    e->shape = FclShape::Mesh;
+    e->conversion = Conversion::Ok;
+    e->geometry = TriangleMeshGeometry<T>(mesh);
+  }
+  return e;
+}
+
+// The shared entry for `key`, cooked (outside the lock: cooking may take milliseconds) when absent or stale; a
+// triangle model looked up with MeshUse::TreeAllowed gets a tree entry instead of a cook.
 template <class T> std::shared_ptr<const Entry<T>> sharedLookup(const Key<T>& key) {
   SharedCache<T>& c = shared<T>();
   {
@@ -197,10 +297,15 @@ template <class T> std::shared_ptr<const Entry<T>> sharedLookup(const Key<T>& ke
     auto it = c.entries.find(key.geometry);
     if (it != c.entries.end() && key.matches(*it->second)) return it->second;
   }
-  std::shared_ptr<const Entry<T>> fresh =
-      key.convex ? cookConvex(*static_cast<const ::fcl::Convex<T>*>(key.geometry)) : cookMesh(key.mesh, key.fingerprint);
+  std::shared_ptr<const Entry<T>> fresh;
+  if (key.convex) fresh = cookConvex(*static_cast<const ::fcl::Convex<T>*>(key.geometry));
+  else if (key.use == MeshUse::TreeAllowed && finiteVertices(key.mesh))
+    fresh = treeEntry(key.geometry, key.type, key.mesh, key.fingerprint);
+  else fresh = cookMesh(key.mesh, key.fingerprint);
   std::unique_lock<std::shared_mutex> lock(c.mutex);
-  c.entries[key.geometry] = fresh;
+  std::shared_ptr<const Entry<T>>& slot = c.entries[key.geometry];
+  if (slot && slot->tree) slot->superseded.store(true, std::memory_order_relaxed);
+  slot = fresh;
   return fresh;
 }
 
@@ -274,6 +379,7 @@ template <class T> void fill(const Entry<T>& e, Cooked<T>& out) {
   out.candidate = e.candidate ? &*e.candidate : nullptr;
   out.support = e.support ? &*e.support : nullptr;
   out.planes = &e.planes;
+  out.tree = e.tree ? &*e.tree : nullptr;
 }
 
 template <class T> void clearShared() {
@@ -285,8 +391,9 @@ template <class T> void clearShared() {
 
 // The lookup through the per-thread table and the shared map (out of line: its frame would cost every Convex hit).
 template <class T>
-[[gnu::noinline]] Conversion slowLookup(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
-  Key<T> key{g, type == ::fcl::GEOM_CONVEX, nullptr, {}, 0};
+[[gnu::noinline]] Conversion slowLookup(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out,
+                                       MeshUse use = MeshUse::Cooked) {
+  Key<T> key{g, type == ::fcl::GEOM_CONVEX, nullptr, {}, 0, use, type};
   if (key.convex) {
     key.vertexArray = &static_cast<const ::fcl::Convex<T>*>(g)->getVertices();
   } else {
@@ -322,10 +429,24 @@ template <class T>
 }  // namespace
 
 template <class T>
-Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out) {
+Conversion cachedGeometry(const ::fcl::CollisionGeometry<T>* g, ::fcl::NODE_TYPE type, Cooked<T>& out, MeshUse use) {
   if (type == ::fcl::GEOM_CONVEX && convexHit(g, gGeneration<T>.load(std::memory_order_acquire), out))
     return Conversion::Ok;
-  return slowLookup(g, type, out);
+  return slowLookup(g, type, out, use);
+}
+
+template <class T> void chargeTree(const MeshTree<T>& tree, std::uint64_t work) {
+  const Entry<T>& e = *static_cast<const Entry<T>*>(tree.entry);
+  const std::uint64_t spent = e.spent.fetch_add(work, std::memory_order_relaxed) + work;
+  if (spent < e.budget || e.cooking.exchange(true, std::memory_order_acq_rel)) return;
+  // This query's work reached the cook's estimate: cook now (once), replacing the tree entry if it is still current.
+  std::shared_ptr<const Entry<T>> cooked = cookMesh(e.view, e.fingerprint);
+  SharedCache<T>& c = shared<T>();
+  std::unique_lock<std::shared_mutex> lock(c.mutex);
+  auto it = c.entries.find(tree.model);
+  if (it == c.entries.end() || it->second.get() != &e) return;
+  it->second = std::move(cooked);
+  e.superseded.store(true, std::memory_order_relaxed);
 }
 
 template <class T>
@@ -352,9 +473,12 @@ template bool cachedHulls<float>(const ::fcl::CollisionGeometry<float>*, const :
                                  Cooked<float>&, Cooked<float>&);
 template bool cachedHulls<double>(const ::fcl::CollisionGeometry<double>*, const ::fcl::CollisionGeometry<double>*,
                                   Cooked<double>&, Cooked<double>&);
-template Conversion cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, ::fcl::NODE_TYPE, Cooked<float>&);
+template Conversion cachedGeometry<float>(const ::fcl::CollisionGeometry<float>*, ::fcl::NODE_TYPE, Cooked<float>&,
+                                          MeshUse);
 template Conversion cachedGeometry<double>(const ::fcl::CollisionGeometry<double>*, ::fcl::NODE_TYPE,
-                                           Cooked<double>&);
+                                           Cooked<double>&, MeshUse);
+template void chargeTree<float>(const MeshTree<float>&, std::uint64_t);
+template void chargeTree<double>(const MeshTree<double>&, std::uint64_t);
 template void forgetCached<float>(const ::fcl::CollisionGeometry<float>*);
 template void forgetCached<double>(const ::fcl::CollisionGeometry<double>*);
 

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "fcl_tree.h"
 #include "gq/cooking.h"
 #include "gq/kernels/mesh.h"
 #include "gq/mesh_query.h"
@@ -86,19 +87,6 @@ template <class T> bool isPrimitiveQuery(const Geometry<T>& g) {
   return t == GeometryType::Sphere || t == GeometryType::Capsule || t == GeometryType::Box;
 }
 
-// Contact of `shape` with one world triangle; normal from the triangle to the shape.
-template <class T>
-Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const Triangle<T>& triangle,
-                       PairContact<T>& contact, bool& hit) {
-  const TriangleCallbacks<T> callbacks(triangle.verts[0], triangle.verts[1], triangle.verts[2]);
-  const Geometry<T> tri = borrowed<T>(callbacks);
-  DistanceResult<T> d;
-  const Status s = distance(d, tri, Transform<T>(), shape, pose);
-  if (!s.ok()) return s;
-  hit = d.distance <= T(0);
-  if (hit) contact = contactFrom(d);
-  return s;
-}
 
 // The candidates of a boolean test in the order of their centroids' distance from the candidate volume's centre,
 // nearest first: they overlap the shape most often, and a test that wants one contact stops at the first hit (in the
@@ -315,6 +303,19 @@ template <class T> const TriangleMeshGeometry<T>* meshOf(const Converted<T>& c) 
 
 }  // namespace
 
+template <class T>
+Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const Triangle<T>& triangle,
+                       PairContact<T>& contact, bool& hit) {
+  const TriangleCallbacks<T> callbacks(triangle.verts[0], triangle.verts[1], triangle.verts[2]);
+  const Geometry<T> tri = borrowed<T>(callbacks);
+  DistanceResult<T> d;
+  const Status s = distance(d, tri, Transform<T>(), shape, pose);
+  if (!s.ok()) return s;
+  hit = d.distance <= T(0);
+  if (hit) contact = contactFrom(d);
+  return s;
+}
+
 template <class T> Status candidateVolume(const Geometry<T>& g, CandidateVolume<T>& out) {
   Bounds3<T> local;
   const Status s = computeGeomBounds(local, g, Transform<T>(), T(0), T(1));
@@ -337,6 +338,15 @@ template <class T>
 Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Converted<T>& b, const Transform<T>& pb,
                     bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out) {
   if (room == 0) return {};
+  if (a.isTree() || b.isTree()) {  // a BVHModel not cooked yet, against a solid: on FCL's tree
+    if (!treeAgainstSolid(a, b)) return Status::unsupported("a BVHModel's FCL tree against a plane or a mesh");
+    const std::size_t first = out.size();
+    const Status s = a.isTree() ? treeContacts(a.tree(), pa, b, pb, withGeometry, room, out)
+                                : treeContacts(b.tree(), pb, a, pa, withGeometry, room, out);
+    if (b.isTree())
+      for (std::size_t i = first; i < out.size(); ++i) flip(out[i]);
+    return s;
+  }
   const TriangleMeshGeometry<T>* ma = meshOf(a);
   const TriangleMeshGeometry<T>* mb = meshOf(b);
   if (ma && mb) return meshMeshContacts(*ma, pa, *mb, pb, withGeometry, room, out);
@@ -373,6 +383,13 @@ Status pairContacts(const Converted<T>& a, const Transform<T>& pa, const Convert
 template <class T>
 Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Converted<T>& b, const Transform<T>& pb,
                     PairDistance<T>& out, T farEnough) {
+  if (a.isTree() || b.isTree()) {  // a BVHModel not cooked yet, against a solid: on FCL's tree
+    if (!treeAgainstSolid(a, b)) return Status::unsupported("a BVHModel's FCL tree against a plane or a mesh");
+    const Status s = a.isTree() ? treeDistance(a.tree(), pa, b, pb, out, farEnough)
+                                : treeDistance(b.tree(), pb, a, pa, out, farEnough);
+    if (b.isTree()) flip(out);
+    return s;
+  }
   const TriangleMeshGeometry<T>* ma = meshOf(a);
   const TriangleMeshGeometry<T>* mb = meshOf(b);
   DistanceResult<T> d;
@@ -402,6 +419,10 @@ Status pairDistance(const Converted<T>& a, const Transform<T>& pa, const Convert
   return s;
 }
 
+template Status triangleContact<float>(const Geometry<float>&, const Transform<float>&, const Triangle<float>&,
+                                       PairContact<float>&, bool&);
+template Status triangleContact<double>(const Geometry<double>&, const Transform<double>&, const Triangle<double>&,
+                                        PairContact<double>&, bool&);
 template Status candidateVolume<float>(const Geometry<float>&, CandidateVolume<float>&);
 template Status candidateVolume<double>(const Geometry<double>&, CandidateVolume<double>&);
 template Status pairContacts<float>(const Converted<float>&, const Transform<float>&, const Converted<float>&,

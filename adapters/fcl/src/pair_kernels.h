@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "convert.h"
+#include "gq/mesh_query.h"
 #include "gq/status.h"
 
 namespace gq::fcl::internal {
@@ -29,6 +30,12 @@ template <class T> struct PairDistance {
 // local bounding box or, for a convex mesh whose circumsphere about the box's centre has the smaller volume (round
 // hulls), that sphere: a sphere-triangle test costs a fraction of the box-triangle separating-axis test.
 template <class T> Status candidateVolume(const Geometry<T>& g, CandidateVolume<T>& out);
+
+// Contact of `shape` with one world triangle (hit: distance <= 0); normal from the triangle to the shape, position
+// midway between the deepest points.
+template <class T>
+Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const Triangle<T>& triangle,
+                       PairContact<T>& contact, bool& hit);
 
 // Appends up to `room` contacts of a colliding pair (one per primitive pair, as FCL). Without `withGeometry` only
 // b1/b2 are meaningful. A non-ok status means gq cannot answer the pair (the caller falls back to FCL).
