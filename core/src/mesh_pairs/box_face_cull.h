@@ -3,9 +3,11 @@
 // triangle's mesh-space vertices (no world triangle is built). The exact box-triangle test (overlapBoxTriangle) asks
 // these three axes first, on the world triangle brought into the box's frame; here the same box-frame coordinates come
 // from one matrix, y = A v + t (A = R^T L, t = R^T (p - c): box rotation R and centre c, mesh linear map L and
-// position p). A triangle counts as separated only when all three vertices lie beyond a face by more than `guard_`, a
+// position p). A triangle counts as separated only when all three vertices lie beyond a face by more than a guard, a
 // relative epsilon of every magnitude in either computation (far above their rounding), so the exact test answers
-// "separated" for every triangle this one rejects: the pair's boolean is unchanged.
+// "separated" for every triangle this one rejects: the pair's boolean is unchanged. The same test on a BVH node's box
+// (its centre against the face, less its projected radius) skips whole subtrees: a box's own axes cull far more of a
+// rotated mesh than the axis-aligned box test alone (measured on boxes against the rotated bunny).
 #include <algorithm>
 
 #include "gq/geometry.h"
@@ -27,6 +29,15 @@ template <class T> class BoxFaceCull {
     const T scale = std::max({box.halfExtents.maxCoeff(), meshPosition.cwiseAbs().maxCoeff() + pose.p.cwiseAbs().maxCoeff() +
                                                            meshToWorld.cwiseAbs().rowwise().sum().maxCoeff() * vertexMax});
     limit_ = box.halfExtents.array() + T(tol::Rel<T>::kEpsilon) * scale;
+    absA_ = a_.cwiseAbs();
+  }
+
+  // Whether a box face axis separates the mesh-space box `b` (a BVH node's) by more than the guard: its centre's
+  // box-frame coordinate lies beyond the face by more than the node's projected radius |A| extents.
+  bool separatesBox(const Bounds3<T>& b) const {
+    const Vec3<T> y = a_ * b.center() + t_;
+    const Vec3<T> r = absA_ * b.extents();
+    return ((y.cwiseAbs() - r).array() > limit_.array()).any();
   }
 
   // Whether a box face axis separates the triangle of mesh-space vertices v[0..2] by more than the guard.
@@ -43,7 +54,7 @@ template <class T> class BoxFaceCull {
   }
 
  private:
-  Mat3<T> a_;
+  Mat3<T> a_, absA_;
   Vec3<T> t_;
   Vec3<T> limit_;  // half extents plus the guard
 };

@@ -157,6 +157,10 @@ template <class T> class MeshSurface {
 
   // fn(cooked) for every cooked triangle whose BVH leaf box meets the mesh-space box, until fn returns true.
   template <class Fn> bool forEachCookedTriangle(const Bounds3<T>& meshBox, Fn&& fn) const {
+    return forEachCookedTriangle(meshBox, fn, [](const Bounds3<T>&) { return false; });
+  }
+  // The same, skipping every child whose mesh-space box `skip` proves holds no triangle fn would accept.
+  template <class Fn, class Skip> bool forEachCookedTriangle(const Bounds3<T>& meshBox, Fn&& fn, Skip&& skip) const {
     const Bvh4& bvh = inst_.mesh.accel->bvh;
     if (bvh.rootChild == Bvh4Node::kEmpty) return false;
     const FloatBounds q = toFloatBounds(meshBox);
@@ -173,7 +177,9 @@ template <class T> class MeshSurface {
       }
       const Bvh4Node& node = bvh.nodes[ref];
       for (int lane = 0; lane < 4; ++lane)
-        if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q)) stack[top++] = node.child[lane];
+        if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q) &&
+            !skip(childLocalBounds(node, lane)))
+          stack[top++] = node.child[lane];
     }
     return false;
   }

@@ -16,9 +16,10 @@ Status overlapConvexTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, 
   const Bounds3<T> meshBox = shape.cullBoundsIn(mesh.worldToMesh(), mesh.position());
   if (const auto* box = g0.template getIf<BoxGeometry<T>>()) {
     const BoxFaceCull<T> cull(*box, p0, mesh.meshToWorld(), mesh.position(), mesh.mesh().localBounds);
-    overlapping = mesh.forEachCookedTriangle(meshBox, [&](std::uint32_t k) {
-      return !cull.separates(mesh.cookedVertices(k)) && shape.overlaps(mesh.triangle(k));
-    });
+    overlapping = mesh.forEachCookedTriangle(
+        meshBox,
+        [&](std::uint32_t k) { return !cull.separates(mesh.cookedVertices(k)) && shape.overlaps(mesh.triangle(k)); },
+        [&](const Bounds3<T>& node) { return cull.separatesBox(node); });
     return Status();
   }
   overlapping = mesh.forEachTriangleInMeshBox(meshBox, [&](std::uint32_t, const Triangle<T>& tri) { return shape.overlaps(tri); });
