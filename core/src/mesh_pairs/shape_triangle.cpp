@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bounds/bounds.h"
+#include "mesh_pairs/surface.h"
 #include "mesh_pairs/triangle_tests.h"
 #include "mesh/triangle.h"
 #include "common/unit_vector.h"
@@ -104,11 +105,35 @@ template <class T> T TriangleQueryShape<T>::distanceLowerBound(const Triangle<T>
   return (q - ballCentre_).norm() - ballRadius_;
 }
 
+namespace {
+// cullBounds' growth: a relative epsilon of the shape's size and coordinates.
+template <class T> T cullGrowth(const Bounds3<T>& b, T size) {
+  const T scale = std::max({size, b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()});
+  return T(tol::Rel<T>::kEpsilon) * scale;
+}
+}  // namespace
+
 template <class T> Bounds3<T> TriangleQueryShape<T>::cullBounds() const {
   const Bounds3<T>& b = worldBounds();
-  const T scale = std::max({size(), b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()});
-  return Bounds3<T>::fromMinMax(b.min.array() - T(tol::Rel<T>::kEpsilon) * scale,
-                                b.max.array() + T(tol::Rel<T>::kEpsilon) * scale);
+  const T grow = cullGrowth(b, size());
+  return Bounds3<T>::fromMinMax(b.min.array() - grow, b.max.array() + grow);
+}
+
+template <class T> Bounds3<T> TriangleQueryShape<T>::cullBoundsIn(const Mat3<T>& linear, const Vec3<T>& origin) const {
+  if (type_ != GeometryType::Sphere && type_ != GeometryType::Capsule && type_ != GeometryType::Box)
+    return mapBox(cullBounds(), linear, Vec3<T>(-(linear * origin)));
+  const T grow = cullGrowth(worldBounds(), size());
+  Vec3<T> lo, hi, half;
+  if (type_ == GeometryType::Box) {
+    lo = hi = linear * (pose_.p - origin);
+    half = (linear * pose_.q.toRotationMatrix()).cwiseAbs() * (halfExtents_.array() + grow).matrix();
+  } else {  // the segment [segA, segB] (a point for a sphere) grown by the radius
+    const Vec3<T> a = linear * (segA_ - origin), b = linear * (segB_ - origin);
+    lo = a.cwiseMin(b);
+    hi = a.cwiseMax(b);
+    half = (radius_ + grow) * linear.rowwise().norm();
+  }
+  return Bounds3<T>::fromMinMax(lo - half, hi + half);
 }
 
 template <class T> bool TriangleQueryShape<T>::overlaps(const Triangle<T>& tri) const {

@@ -112,6 +112,15 @@ template <class T> class MeshSurface {
     return t;
   }
 
+  // The cooked triangle's three mesh-space vertices (unscaled, in cooked order).
+  const Vec3<T>* cookedVertices(std::uint32_t cooked) const {
+    return &inst_.mesh.triangleVertices[3 * std::size_t(cooked)];
+  }
+  // World point x to mesh space: worldToMesh() (x - position()). Mesh space to world: meshToWorld() v + position().
+  const Mat3<T>& worldToMesh() const { return invLinear_; }
+  const Mat3<T>& meshToWorld() const { return linear_; }
+  const Vec3<T>& position() const { return inst_.pose.p; }
+
   // Mesh-space box of child `lane` of a BVH node.
   static Bounds3<T> childLocalBounds(const Bvh4Node& n, int lane) {
     return Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
@@ -137,9 +146,24 @@ template <class T> class MeshSurface {
   }
 
   template <class Fn> bool forEachTriangle(const Bounds3<T>& worldBox, Fn&& fn) const {
+    return forEachTriangleInMeshBox(toMeshSpace(worldBox), fn);
+  }
+
+  // forEachTriangle on a box given in mesh space (x_mesh = worldToMesh() (x - position())), for callers that bound
+  // their shape there directly: tighter than the mesh-space box of a world box when the mesh is rotated.
+  template <class Fn> bool forEachTriangleInMeshBox(const Bounds3<T>& meshBox, Fn&& fn) const {
+    return forEachCookedTriangle(meshBox, [&](std::uint32_t k) { return fn(inputIndex(k), triangle(k)); });
+  }
+
+  // fn(cooked) for every cooked triangle whose BVH leaf box meets the mesh-space box, until fn returns true.
+  template <class Fn> bool forEachCookedTriangle(const Bounds3<T>& meshBox, Fn&& fn) const {
+    return forEachCookedTriangle(meshBox, fn, [](const Bounds3<T>&) { return false; });
+  }
+  // The same, skipping every child whose mesh-space box `skip` proves holds no triangle fn would accept.
+  template <class Fn, class Skip> bool forEachCookedTriangle(const Bounds3<T>& meshBox, Fn&& fn, Skip&& skip) const {
     const Bvh4& bvh = inst_.mesh.accel->bvh;
     if (bvh.rootChild == Bvh4Node::kEmpty) return false;
-    const FloatBounds q = toFloatBounds(toMeshSpace(worldBox));
+    const FloatBounds q = toFloatBounds(meshBox);
     std::uint32_t stack[kStackSize];
     int top = 0;
     stack[top++] = bvh.rootChild;
@@ -148,12 +172,14 @@ template <class T> class MeshSurface {
       if (Bvh4Node::isLeaf(ref)) {
         const std::uint32_t first = Bvh4Node::leafFirst(ref), count = Bvh4Node::leafCount(ref);
         for (std::uint32_t k = first; k < first + count; ++k)
-          if (fn(inputIndex(k), triangle(k))) return true;
+          if (fn(k)) return true;
         continue;
       }
       const Bvh4Node& node = bvh.nodes[ref];
       for (int lane = 0; lane < 4; ++lane)
-        if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q)) stack[top++] = node.child[lane];
+        if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q) &&
+            !skip(childLocalBounds(node, lane)))
+          stack[top++] = node.child[lane];
     }
     return false;
   }

@@ -754,30 +754,35 @@ void candidatePairs(const AabbTree<T>& ta, const std::vector<std::uint32_t>& ua,
     }
   }
   if (ta.root() == Tree::kNull || tb.root() == Tree::kNull) return;
-  // Pairs of nodes (a, b); in a self walk a == b means "pairs inside a".
-  std::vector<std::pair<std::int32_t, std::int32_t>> stack;
-  stack.emplace_back(ta.root(), tb.root());
+  // Pairs of nodes (a, b) whose boxes overlap; in a self walk a == b means "pairs inside a". A pair is tested
+  // before it is pushed, so every popped pair is descended.
+  SmallStack<std::pair<std::int32_t, std::int32_t>> stack;
+  const auto pushIfOverlapping = [&](std::int32_t a, std::int32_t b) {
+    if (ta.node(a).box.overlaps(tb.node(b).box)) stack.push({a, b});
+  };
+  if (self)
+    stack.push({ta.root(), tb.root()});
+  else
+    pushIfOverlapping(ta.root(), tb.root());
   while (!stack.empty()) {
-    const auto [a, b] = stack.back();
-    stack.pop_back();
+    const auto [a, b] = stack.pop();
     const auto& na = ta.node(a);
     const auto& nb = tb.node(b);
     if (self && a == b) {
       if (na.isLeaf()) continue;
-      stack.emplace_back(na.left, na.left);
-      stack.emplace_back(na.right, na.right);
-      stack.emplace_back(na.left, na.right);
+      stack.push({na.left, na.left});
+      stack.push({na.right, na.right});
+      pushIfOverlapping(na.left, na.right);
       continue;
     }
-    if (!na.box.overlaps(nb.box)) continue;
     if (na.isLeaf() && nb.isLeaf()) {
       out.emplace_back(std::uint32_t(na.item), std::uint32_t(nb.item));
     } else if (nb.isLeaf() || (!na.isLeaf() && detail::boxArea(na.box) >= detail::boxArea(nb.box))) {
-      stack.emplace_back(na.left, b);
-      stack.emplace_back(na.right, b);
+      pushIfOverlapping(na.left, b);
+      pushIfOverlapping(na.right, b);
     } else {
-      stack.emplace_back(a, nb.left);
-      stack.emplace_back(a, nb.right);
+      pushIfOverlapping(a, nb.left);
+      pushIfOverlapping(a, nb.right);
     }
   }
 }

@@ -81,6 +81,10 @@ template <class T> class TriangleQueryShape {
   const Bounds3<T>& worldBounds() const;
   // Culling box: the world bounds grown by a relative epsilon, so touching triangles are never culled by rounding.
   Bounds3<T> cullBounds() const;
+  // Culling box in another space: the AABB of the image of the shape grown by cullBounds' epsilon under
+  // x -> linear (x - origin). Spheres, capsules and boxes map exactly (a rotated box's image box is tighter than the
+  // image of its world box); other shapes map their cullBounds.
+  Bounds3<T> cullBoundsIn(const Mat3<T>& linear, const Vec3<T>& origin) const;
   T size() const { return convex_.size; }
   Vec3<T> center() const { return centre_; }
 
