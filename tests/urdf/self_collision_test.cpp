@@ -128,6 +128,78 @@ TYPED_TEST(SelfCollisionData, BatchMatchesSingleChecks) {
   EXPECT_GT(colliding, 0u);
 }
 
+// The batch on gq's pool answers every configuration as the single checker does, on 1 thread, 2 threads and every
+// hardware thread; self-distances bitwise equal.
+TYPED_TEST(SelfCollisionData, ThreadedBatchesAreTheSingleChecksWhateverTheThreadCount) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kPanda, Representation::Hull);
+  ASSERT_TRUE(m);
+  const std::size_t dof = m->variables.size(), n = 300;
+  std::uint64_t rng = 11;
+  std::vector<T> rows;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::vector<T> q = randomConfiguration(*m, rng);
+    rows.insert(rows.end(), q.begin(), q.end());
+  }
+  const StridedArray<T> configs(rows.data(), n, dof * sizeof(T));
+  SelfCollisionChecker<T> single(m);
+  std::vector<std::uint8_t> expected(n);
+  std::vector<SelfDistanceResult<T>> expectedDistance(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::vector<T> q(rows.begin() + std::ptrdiff_t(k * dof), rows.begin() + std::ptrdiff_t((k + 1) * dof));
+    CollisionResult r;
+    ASSERT_TRUE(single.checkSelfCollision(q, r).ok());
+    expected[k] = r.colliding ? 1 : 0;
+    ASSERT_TRUE(single.selfDistance(q, expectedDistance[k]).ok());
+  }
+  EXPECT_GT(std::count(expected.begin(), expected.end(), 1), 0);
+  for (std::uint32_t threads : {1u, 2u, 0u}) {
+    BatchSettings settings;
+    settings.threads = threads;
+    settings.grain = 7;
+    std::vector<std::uint8_t> colliding(n, 2);
+    std::vector<Status> statuses(n);
+    ASSERT_EQ(checkSelfCollisionBatch<T>(m, configs, dof, colliding.data(), statuses.data(), settings).code,
+              StatusCode::Ok);
+    EXPECT_EQ(colliding, expected) << threads << " threads";
+    std::vector<SelfDistanceResult<T>> distances(n);
+    ASSERT_EQ(selfDistanceBatch<T>(m, configs, dof, distances.data(), nullptr, settings).code, StatusCode::Ok);
+    for (std::size_t k = 0; k < n; ++k) {
+      EXPECT_EQ(distances[k].distance, expectedDistance[k].distance) << k << ", " << threads << " threads";
+      EXPECT_EQ(distances[k].pair, expectedDistance[k].pair) << k;
+    }
+  }
+}
+
+// A NaN in one configuration fails that configuration only; a wrong row length, a short stride or a null output is
+// rejected before anything is written.
+TYPED_TEST(SelfCollisionData, BatchBadInputFailsItsItemOrTheCallAndWritesNothing) {
+  using T = TypeParam;
+  const auto m = loadCached<T>(kPanda, Representation::Hull);
+  ASSERT_TRUE(m);
+  const std::size_t dof = m->variables.size();
+  std::vector<T> rows(3 * dof, T(0));
+  rows[dof + 2] = std::numeric_limits<T>::quiet_NaN();
+  std::vector<std::uint8_t> colliding(3, 7);
+  std::vector<Status> statuses(3);
+  const Status s = checkSelfCollisionBatch<T>(m, StridedArray<T>(rows.data(), 3, dof * sizeof(T)), dof,
+                                              colliding.data(), statuses.data());
+  EXPECT_EQ(s.code, StatusCode::Warning);
+  EXPECT_EQ(s.index(), 1u);
+  EXPECT_TRUE(statuses[0].ok());
+  EXPECT_EQ(statuses[1].code, StatusCode::InvalidArgument);
+  EXPECT_TRUE(statuses[2].ok());
+  std::vector<std::uint8_t> untouched(3, 7);
+  EXPECT_EQ(checkSelfCollisionBatch<T>(m, StridedArray<T>(rows.data(), 3, dof * sizeof(T)), dof - 1, untouched.data())
+                .code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(checkSelfCollisionBatch<T>(m, StridedArray<T>(rows.data(), 3, sizeof(T)), dof, untouched.data()).code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(checkSelfCollisionBatch<T>(m, StridedArray<T>(rows.data(), 3, dof * sizeof(T)), dof, nullptr).code,
+            StatusCode::InvalidArgument);
+  EXPECT_EQ(untouched, std::vector<std::uint8_t>(3, 7));
+}
+
 // The checker visits link pairs most-often-touching first and culls before the narrow phase; neither may change
 // the answer. Reference: every link pair the allowed-collision matrix leaves, every shape pair, gq::overlap at the
 // forward-kinematics poses (no culling, link order). A first-hit check reports one pair of that set.

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <memory>
-#include <thread>
 #include <vector>
 
+#include "batch_util.h"
 #include "common.h"
 #include "gq/urdf/robot.h"
 #include "gq/urdf/self_collision.h"
@@ -14,8 +14,8 @@ namespace gqpy {
 
 namespace {
 
-// One checker per worker thread (a checker owns scratch buffers); configurations are split into contiguous chunks,
-// and each configuration's answer is the serial checker's (configurations are independent).
+// check and self_distance use one checker; check_batch runs gq::urdf's batch on gq's pool (one checker per worker),
+// whose answers are the single checker's.
 class Robot {
  public:
   Robot(const std::string& urdf, const std::string& srdf, const std::string& mode,
@@ -26,7 +26,7 @@ class Robot {
     auto model = std::make_shared<gq::urdf::RobotModel<double>>();
     check(gq::urdf::loadRobot(urdf, srdf, options, *model), "Robot");
     model_ = model;
-    checkers_.push_back(std::make_unique<gq::urdf::SelfCollisionChecker<double>>(model_));
+    checker_ = std::make_unique<gq::urdf::SelfCollisionChecker<double>>(model_);
   }
 
   const gq::urdf::RobotModel<double>& model() const { return *model_; }
@@ -45,7 +45,7 @@ class Robot {
     gq::urdf::CollisionResult r;
     gq::urdf::CollisionRequest req;
     req.allPairs = allPairs;
-    check(checkers_[0]->checkSelfCollision(v, r, req), "Robot.check");
+    check(checker_->checkSelfCollision(v, r, req), "Robot.check");
     if (!allPairs) return py::bool_(r.colliding);
     py::list pairs;
     for (const auto& p : r.pairs) pairs.append(py::make_tuple(model_->links[p.a].name, model_->links[p.b].name));
@@ -60,38 +60,11 @@ class Robot {
       throw py::value_error("Q: expected an (N, " + std::to_string(dof) + ") array of configurations");
     }
     const std::size_t n = std::size_t(a.shape(0));
-    std::vector<std::vector<double>> configs(n);
-    for (std::size_t i = 0; i < n; ++i) configs[i].assign(a.data() + i * dof, a.data() + (i + 1) * dof);
-    unsigned workers = threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads;
-    workers = unsigned(std::min<std::size_t>(workers, std::max<std::size_t>(1, n / 16)));
-    while (checkers_.size() < workers) checkers_.push_back(std::make_unique<gq::urdf::SelfCollisionChecker<double>>(model_));
+    const auto configs = gq::StridedArray<double>::fromBytes(a.data(), n, dof * sizeof(double));
     std::vector<std::uint8_t> out(n, 0);
-    std::vector<gq::Status> status(workers);
-    std::vector<std::size_t> failedAt(workers, 0);
-    {
-      py::gil_scoped_release release;
-      const auto work = [&](unsigned w) {
-        const std::size_t begin = n * w / workers, end = n * (w + 1) / workers;
-        gq::urdf::CollisionRequest first;
-        first.allPairs = false;
-        gq::urdf::CollisionResult r;
-        for (std::size_t i = begin; i < end; ++i) {
-          gq::Status s = checkers_[w]->checkSelfCollision(configs[i], r, first);
-          if (!s.ok()) {
-            status[w] = s;
-            failedAt[w] = i;
-            return;
-          }
-          out[i] = r.colliding ? 1 : 0;
-        }
-      };
-      std::vector<std::thread> pool;
-      for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work, w);
-      work(0);
-      for (auto& t : pool) t.join();
-    }
-    for (unsigned w = 0; w < workers; ++w)
-      if (!status[w].ok()) raiseStatus(status[w], "Robot.check_batch: configuration " + std::to_string(failedAt[w]));
+    runBatch([&](gq::Status* st) {
+      return gq::urdf::checkSelfCollisionBatch<double>(model_, configs, dof, out.data(), st, batchSettings(threads));
+    }, n, "Robot.check_batch");
     auto result = newArray<bool>({py::ssize_t(n)});
     std::copy(out.begin(), out.end(), result.mutable_data());
     return result;
@@ -100,14 +73,14 @@ class Robot {
   py::tuple selfDistance(const py::handle& q) {
     const auto v = config(q);
     gq::urdf::SelfDistanceResult<double> r;
-    check(checkers_[0]->selfDistance(v, r), "Robot.self_distance");
+    check(checker_->selfDistance(v, r), "Robot.self_distance");
     return py::make_tuple(r.distance, py::make_tuple(model_->links[r.pair.a].name, model_->links[r.pair.b].name),
                           r.point0, r.point1);
   }
 
  private:
   std::shared_ptr<const gq::urdf::RobotModel<double>> model_;
-  std::vector<std::unique_ptr<gq::urdf::SelfCollisionChecker<double>>> checkers_;
+  std::unique_ptr<gq::urdf::SelfCollisionChecker<double>> checker_;
 };
 
 }  // namespace

@@ -22,6 +22,7 @@
 // index() is the number of items that failed (their Status says why).
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "gq/geometry.h"
 #include "gq/hit.h"
@@ -126,5 +127,18 @@ template <class T>
 Status pointDistanceBatch(StridedArray<Vec3<T>> points, const Shape<T>& shape, const Transform<T>& pose,
                           PointDistanceResult<T>* results, Status* statuses = nullptr,
                           const BatchSettings& settings = {}) noexcept;
+
+// ---- any per-item work ------------------------------------------------------------------------------------------
+
+// How many workers a batch with these settings runs at most: the `slot` numbers forEachBatchItem hands out are below
+// it (size per-worker scratch by it).
+std::uint32_t batchSlots(const BatchSettings& settings) noexcept;
+
+// Runs item(i, slot) for every i in [0, count) on the batches' pool, as the batches above do: `slot` (below
+// batchSlots(settings)) names the worker, and no two items run at once in one slot, so per-worker state needs no
+// lock. item returns false when item i failed (an exception counts as a failure). Ok, or a Warning whose index is
+// how many items failed. With items that write only their own outputs, any thread count gives the same bytes.
+Status forEachBatchItem(std::size_t count, const BatchSettings& settings,
+                        const std::function<bool(std::size_t item, std::uint32_t slot)>& item) noexcept;
 
 }  // namespace gq

@@ -35,27 +35,32 @@ template <class E0, class E1> Status checkArrays(const StridedArray<E0>& a, cons
   return {};
 }
 
-// Runs item(i) for i in [0, n); item returns true when item i succeeded. Returns the number of failed items.
-template <class Item> std::size_t runItems(std::size_t n, const BatchSettings& settings, const Item& item) {
+// The arena's concurrency for these settings: oneTBB runs at most the hardware's threads (more would only wait for
+// a core, and it warns on stderr).
+int arenaThreads(const BatchSettings& settings) {
+  const int hardware = tbb::info::default_concurrency();
+  return settings.threads == 0 || settings.threads > std::uint32_t(hardware) ? hardware : int(settings.threads);
+}
+
+// Runs item(i, slot) for i in [0, n), slot < arenaThreads(settings) the worker's index in the arena; item returns true
+// when item i succeeded. Returns the number of failed items.
+template <class Item> std::size_t runSlottedItems(std::size_t n, const BatchSettings& settings, const Item& item) {
   const std::size_t grain = settings.grain == 0 ? 1 : settings.grain;
-  auto serial = [&](std::size_t begin, std::size_t end) {
+  auto serial = [&](std::size_t begin, std::size_t end, std::uint32_t slot) {
     std::size_t failed = 0;
-    for (std::size_t i = begin; i < end; ++i) failed += item(i) ? 0 : 1;
+    for (std::size_t i = begin; i < end; ++i) failed += item(i, slot) ? 0 : 1;
     return failed;
   };
-  if (settings.threads == 1 || n <= grain) return serial(0, n);
+  if (settings.threads == 1 || n <= grain) return serial(0, n, 0);
   std::atomic<std::size_t> failed{0};
   try {
-    // oneTBB runs at most the hardware's threads (more would only wait for a core, and it warns on stderr).
-    const int hardware = tbb::info::default_concurrency();
-    const int threads = settings.threads == 0 || settings.threads > std::uint32_t(hardware) ? hardware
-                                                                                           : int(settings.threads);
-    tbb::task_arena arena(threads);
+    tbb::task_arena arena(arenaThreads(settings));
     arena.execute([&] {
       tbb::parallel_for(
           tbb::blocked_range<std::size_t>(0, n, grain),
           [&](const tbb::blocked_range<std::size_t>& r) {
-            const std::size_t f = serial(r.begin(), r.end());
+            const int index = tbb::this_task_arena::current_thread_index();
+            const std::size_t f = serial(r.begin(), r.end(), index < 0 ? 0u : std::uint32_t(index));
             if (f) failed.fetch_add(f, std::memory_order_relaxed);
           },
           tbb::simple_partitioner());
@@ -63,9 +68,14 @@ template <class Item> std::size_t runItems(std::size_t n, const BatchSettings& s
   } catch (...) {
     // The pool could not start (out of memory or threads): the loop on this thread gives the same answers. Items
     // are pure functions of their input, so recomputing those already done rewrites the same bytes.
-    return serial(0, n);
+    return serial(0, n, 0);
   }
   return failed.load();
+}
+
+// runSlottedItems for items that keep no per-worker state: item(i).
+template <class Item> std::size_t runItems(std::size_t n, const BatchSettings& settings, const Item& item) {
+  return runSlottedItems(n, settings, [&](std::size_t i, std::uint32_t) { return item(i); });
 }
 
 Status batchResult(std::size_t failed) {
@@ -259,5 +269,29 @@ template Status penetrationBatch(const Shape<double>&, StridedArray<Transform<do
                                  const BatchSettings&) noexcept;
 template Status pointDistanceBatch(StridedArray<Vec3<double>>, const Shape<double>&, const Transform<double>&,
                                    PointDistanceResult<double>*, Status*, const BatchSettings&) noexcept;
+
+std::uint32_t batchSlots(const BatchSettings& settings) noexcept {
+  try {
+    return settings.threads == 1 ? 1u : std::uint32_t(arenaThreads(settings));
+  } catch (...) {
+    return 1u;
+  }
+}
+
+Status forEachBatchItem(std::size_t count, const BatchSettings& settings,
+                        const std::function<bool(std::size_t, std::uint32_t)>& item) noexcept {
+  if (!item) return Status::invalid("forEachBatchItem: the item function is empty");
+  try {
+    return batchResult(runSlottedItems(count, settings, [&](std::size_t i, std::uint32_t slot) {
+      try {
+        return item(i, slot);
+      } catch (...) {
+        return false;
+      }
+    }));
+  } catch (...) {
+    return Status::invalid("forEachBatchItem: the batch could not run");
+  }
+}
 
 }  // namespace gq

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "gq/batch.h"
 #include "gq/math.h"
 #include "gq/query.h"
 #include "gq/urdf/robot.h"
@@ -74,6 +75,22 @@ template <class T> class SelfCollisionChecker {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Many configurations on gq's batch pool (gq/batch.h), one checker per worker: configuration i is the `dof` values
+// starting at configs[i] (rows configs.stride bytes apart, so an (N, dof) array passes without a copy). The answers
+// are the single checker's, whatever the thread count. statuses[i] (when given) is configuration i's Status; the
+// call returns Ok, a Warning (index = how many failed) when some configuration failed, or InvalidArgument for a dof
+// other than the model's, a stride shorter than a row, or a null output (nothing written).
+// colliding[i] = 1 when configuration i collides (its first colliding pair ends its check).
+template <class T>
+Status checkSelfCollisionBatch(std::shared_ptr<const RobotModel<T>> model, StridedArray<T> configs, std::size_t dof,
+                               std::uint8_t* colliding, Status* statuses = nullptr, const BatchSettings& settings = {},
+                               const CheckerOptions& options = CheckerOptions());
+// results[i] = the signed self-distance of configuration i.
+template <class T>
+Status selfDistanceBatch(std::shared_ptr<const RobotModel<T>> model, StridedArray<T> configs, std::size_t dof,
+                         SelfDistanceResult<T>* results, Status* statuses = nullptr, const BatchSettings& settings = {},
+                         const CheckerOptions& options = CheckerOptions());
 
 // Pairs of links (with shapes, not already allowed) that never touched in `samples` random configurations.
 struct NeverCollidingResult {
