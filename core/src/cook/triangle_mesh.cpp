@@ -112,6 +112,7 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
     std::vector<std::uint32_t> order;
     auto accel = std::make_shared<detail::MeshAccel>();
     accel->bvh = detail::buildBvh4(primBounds, order);
+    accel->rayBvh = detail::collapseToBvh8(accel->bvh);
     mesh->triangles.resize(kept.size());
     mesh->inputIndex.resize(kept.size());
     mesh->cookedIndex.assign(triangles.size(), kRemovedTriangle);
@@ -125,7 +126,7 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
       for (std::uint32_t v : triangles[input]) mesh->triangleVertices.push_back(vertices[v]);
       for (std::uint32_t v : triangles[input]) usedFlag[v] = 1;
     }
-    mesh->bvhBytes = accel->bvh.bytes();
+    mesh->bvhBytes = accel->bvh.bytes() + accel->rayBvh.bytes();
     mesh->accel = std::move(accel);
     std::vector<std::uint32_t> used;
     for (std::uint32_t v = 0; v < vertices.size(); ++v)
