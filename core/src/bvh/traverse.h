@@ -15,10 +15,9 @@
 
 namespace gq::detail {
 
-// Bounded by the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels) times 4 pushes.
-inline constexpr int kBvhStackSize = 256;
-// A ray walk pushes at most W - 1 entries per level; an 8-wide node stands for at least one 4-wide level.
-template <int W> inline constexpr int kBvhRayStackSize = 64 * W;
+// Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels; an
+// 8-wide node stands for at least one 4-wide level) times the 7 siblings an 8-wide node leaves behind, plus slack.
+inline constexpr int kBvhStackSize = 512;
 
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
 // ray that the triangles are tested against. W: the width of the nodes it walks (the plane offsets depend on it).
@@ -199,7 +198,7 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
   constexpr int W = Lanes::kWidth;
   using Node = BvhNode<W>;
   struct Entry { std::uint32_t ref; float tNear; };
-  Entry stack[kBvhRayStackSize<W>];
+  Entry stack[kBvhStackSize];
   int top = 0;
   if (bvh.rootChild == Node::kEmpty) return;
   stack[top++] = {bvh.rootChild, 0.0f};
@@ -256,25 +255,26 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
 // Best-first traversal for nearest-primitive queries. `childLowerBound(node, lane)` returns a lower bound of the
 // squared distance to anything inside that child (or +inf); `leaf(first, count)` tests primitives and may lower
 // bestSq (owned by the caller).
-template <class T, class BoundFn, class LeafFn>
-inline void traverseNearest(const Bvh4& bvh, T& bestSq, BoundFn&& childLowerBound, LeafFn&& leaf) {
+template <int W, class T, class BoundFn, class LeafFn>
+inline void traverseNearest(const Bvh<W>& bvh, T& bestSq, BoundFn&& childLowerBound, LeafFn&& leaf) {
+  using Node = BvhNode<W>;
   struct Entry { std::uint32_t ref; T lower; };
   Entry stack[kBvhStackSize];
   int top = 0;
-  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  if (bvh.rootChild == Node::kEmpty) return;
   stack[top++] = {bvh.rootChild, T(0)};
   while (top > 0) {
     const Entry e = stack[--top];
     if (e.lower > bestSq) continue;
-    if (Bvh4Node::isLeaf(e.ref)) {
-      leaf(Bvh4Node::leafFirst(e.ref), Bvh4Node::leafCount(e.ref));
+    if (Node::isLeaf(e.ref)) {
+      leaf(Node::leafFirst(e.ref), Node::leafCount(e.ref));
       continue;
     }
-    const Bvh4Node& node = bvh.nodes[e.ref];
-    Entry hit[4];
+    const Node& node = bvh.nodes[e.ref];
+    Entry hit[W];
     int n = 0;
-    for (int i = 0; i < 4; ++i) {
-      if (node.child[i] == Bvh4Node::kEmpty) continue;
+    for (int i = 0; i < W; ++i) {
+      if (node.child[i] == Node::kEmpty) continue;
       const T lb = childLowerBound(node, i);
       if (lb > bestSq) continue;
       Entry c{node.child[i], lb};
