@@ -76,8 +76,8 @@ TYPED_TEST(MeshCook, AllDegenerateOrEmptyMeshIsDegenerateMesh) {
 template <class T> void checkBvh(const TriangleMesh<T>& mesh) {
   std::vector<int> seen(mesh.triangles.size(), 0);
   std::function<void(std::uint32_t, const Bounds3<T>&)> walk = [&](std::uint32_t ref, const Bounds3<T>& box) {
-    if (Bvh4Node::isLeaf(ref)) {
-      const std::uint32_t first = Bvh4Node::leafFirst(ref), count = Bvh4Node::leafCount(ref);
+    if (MeshBvhNode::isLeaf(ref)) {
+      const std::uint32_t first = MeshBvhNode::leafFirst(ref), count = MeshBvhNode::leafCount(ref);
       ASSERT_LE(count, 4u);
       for (std::uint32_t c = first; c < first + count; ++c) {
         ASSERT_LT(c, mesh.triangles.size());
@@ -87,9 +87,9 @@ template <class T> void checkBvh(const TriangleMesh<T>& mesh) {
       return;
     }
     ASSERT_LT(ref, mesh.accel->bvh.nodes.size());
-    const Bvh4Node& n = mesh.accel->bvh.nodes[ref];
-    for (int i = 0; i < 4; ++i) {
-      if (n.child[i] == Bvh4Node::kEmpty) continue;
+    const MeshBvhNode& n = mesh.accel->bvh.nodes[ref];
+    for (int i = 0; i < MeshBvhNode::kWidth; ++i) {
+      if (n.child[i] == MeshBvhNode::kEmpty) continue;
       Bounds3<T> b = Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[i]), T(n.minY[i]), T(n.minZ[i])),
                                             Vec3<T>(T(n.maxX[i]), T(n.maxY[i]), T(n.maxZ[i])));
       ASSERT_TRUE(box.contains(b.min) && box.contains(b.max));
@@ -109,7 +109,7 @@ TYPED_TEST(MeshCook, BvhLeavesHoldEveryTriangleOnceInsideTheirBoxes) {
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   checkBvh(*mesh);
   const auto small = meshtest::cook(meshtest::quadStack<T>(1).vertices, meshtest::quadStack<T>(1).triangles);
-  EXPECT_TRUE(Bvh4Node::isLeaf(small->accel->bvh.rootChild));  // 2 triangles: one leaf, no nodes
+  EXPECT_TRUE(MeshBvhNode::isLeaf(small->accel->bvh.rootChild));  // 2 triangles: one leaf, no nodes
   checkBvh(*small);
 }
 

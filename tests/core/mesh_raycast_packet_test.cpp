@@ -48,7 +48,7 @@ struct Counts {
 // The leaf's triangles as the raycast loads them: from the mesh's vertex copies, 4 readable or zero-padded.
 template <class T> detail::TriangleVertices4<T> leafTriangles(const TriangleMesh<T>& mesh, bool fourReadable) {
   detail::TriangleVertices4<T> tris;
-  detail::loadTriangles4(mesh.triangleVertices.data(), Bvh4Node::leafCount(mesh.accel->bvh.rootChild), fourReadable,
+  detail::loadTriangles4(mesh.triangleVertices.data(), MeshBvhNode::leafCount(mesh.accel->bvh.rootChild), fourReadable,
                          tris);
   return tris;
 }
@@ -57,8 +57,8 @@ template <class T> detail::TriangleVertices4<T> leafTriangles(const TriangleMesh
 template <class T>
 void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins, const std::vector<Vec3<T>>& targets,
                bool tightMaxT, Counts& counts) {
-  ASSERT_TRUE(Bvh4Node::isLeaf(mesh.accel->bvh.rootChild));
-  const std::uint32_t count = Bvh4Node::leafCount(mesh.accel->bvh.rootChild);
+  ASSERT_TRUE(MeshBvhNode::isLeaf(mesh.accel->bvh.rootChild));
+  const std::uint32_t count = MeshBvhNode::leafCount(mesh.accel->bvh.rootChild);
   const detail::TriangleVertices4<T> tris = leafTriangles(mesh, count == 4);
   for (std::size_t r = 0; r < origins.size(); ++r) {
     const Vec3<T> dir = (targets[r] - origins[r]).normalized();
@@ -164,7 +164,7 @@ TYPED_TEST(MeshRaycastPacket, WideTestRejectsTrianglesTheRayMisses) {
   }
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   ASSERT_NE(mesh, nullptr);
-  ASSERT_TRUE(Bvh4Node::isLeaf(mesh->accel->bvh.rootChild));
+  ASSERT_TRUE(MeshBvhNode::isLeaf(mesh->accel->bvh.rootChild));
   const detail::TriangleVertices4<T> tris = leafTriangles(*mesh, true);
   auto candidates = [&](const Vec3<T>& origin, const Vec3<T>& dir, T maxT, bool cull) {
     detail::TriangleHits4<T> hits;
@@ -193,7 +193,7 @@ TYPED_TEST(MeshRaycastPacket, LeafTrianglesLoadTheSameFromRegistersAndLaneByLane
   const MeshData<T> m = randomLeaf<T>(rng, Vec3<T>(T(1), T(-2), T(3)), 0.5);
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   ASSERT_NE(mesh, nullptr);
-  ASSERT_EQ(Bvh4Node::leafCount(mesh->accel->bvh.rootChild), 4u);
+  ASSERT_EQ(MeshBvhNode::leafCount(mesh->accel->bvh.rootChild), 4u);
   const detail::TriangleVertices4<T> wide = leafTriangles(*mesh, true), lanes = leafTriangles(*mesh, false);
   for (int k = 0; k < 3; ++k)
     for (int a = 0; a < 3; ++a)

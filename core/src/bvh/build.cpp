@@ -169,7 +169,81 @@ template <class T> float roundUp(T x) {
   return T(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
+// Builds 8-wide nodes over a 4-wide tree, top down.
+class Collapser {
+ public:
+  explicit Collapser(const Bvh4& bvh) : in_(bvh) {}
+
+  Bvh8 run() {
+    out_.rootChild = Bvh4Node::isLeaf(in_.rootChild) || in_.rootChild == Bvh4Node::kEmpty ? in_.rootChild
+                                                                                             : collapse(in_.rootChild);
+    return std::move(out_);
+  }
+
+ private:
+  struct Slot {
+    std::uint32_t ref;
+    Bounds3<float> box;
+  };
+
+  static Bounds3<float> laneBox(const Bvh4Node& n, int lane) {
+    return Bounds3<float>::fromMinMax(Vec3<float>(n.minX[lane], n.minY[lane], n.minZ[lane]),
+                                      Vec3<float>(n.maxX[lane], n.maxY[lane], n.maxZ[lane]));
+  }
+  static int childCount(const Bvh4Node& n) {
+    int c = 0;
+    for (int lane = 0; lane < 4; ++lane) c += n.child[lane] != Bvh4Node::kEmpty;
+    return c;
+  }
+
+  // Index of the 8-wide node over the 4-wide inner node `ref`.
+  std::uint32_t collapse(std::uint32_t ref) {
+    std::array<Slot, 8> slots;
+    int n = 0;
+    const Bvh4Node& root = in_.nodes[ref];
+    for (int lane = 0; lane < 4; ++lane)
+      if (root.child[lane] != Bvh4Node::kEmpty) slots[n++] = Slot{root.child[lane], laneBox(root, lane)};
+    for (;;) {
+      // Open the inner slot with the largest area whose children fit.
+      int pick = -1;
+      float best = -1.0f;
+      for (int i = 0; i < n; ++i) {
+        if (Bvh4Node::isLeaf(slots[i].ref)) continue;
+        if (n - 1 + childCount(in_.nodes[slots[i].ref]) > 8) continue;
+        const float a = halfArea(slots[i].box);
+        if (a > best) { best = a; pick = i; }
+      }
+      if (pick < 0) break;
+      const Bvh4Node& open = in_.nodes[slots[pick].ref];
+      slots[pick] = slots[--n];
+      for (int lane = 0; lane < 4; ++lane)
+        if (open.child[lane] != Bvh4Node::kEmpty) slots[n++] = Slot{open.child[lane], laneBox(open, lane)};
+    }
+    const auto index = std::uint32_t(out_.nodes.size());
+    out_.nodes.emplace_back();
+    std::array<std::uint32_t, 8> refs;
+    refs.fill(Bvh8Node::kEmpty);
+    for (int i = 0; i < n; ++i) refs[i] = Bvh4Node::isLeaf(slots[i].ref) ? slots[i].ref : collapse(slots[i].ref);
+    Bvh8Node& node = out_.nodes[index];
+    const float inf = std::numeric_limits<float>::infinity();
+    for (int i = 0; i < 8; ++i) {
+      node.child[i] = refs[i];
+      // Empty lanes get an all-+inf box, as in the 4-wide tree.
+      const Bounds3<float> b = i < n ? slots[i].box : Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf),
+                                                                                Vec3<float>::Constant(inf));
+      node.minX[i] = b.min.x(); node.minY[i] = b.min.y(); node.minZ[i] = b.min.z();
+      node.maxX[i] = b.max.x(); node.maxY[i] = b.max.y(); node.maxZ[i] = b.max.z();
+    }
+    return index;
+  }
+
+  const Bvh4& in_;
+  Bvh8 out_;
+};
+
 }  // namespace
+
+Bvh8 collapseToBvh8(const Bvh4& bvh) { return Collapser(bvh).run(); }
 
 Bvh4 buildBvh4(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order) {
   order.resize(primBounds.size());

@@ -1,5 +1,5 @@
 #pragma once
-// BVH4 traversal kernels: front-to-back ray traversal with early-out at the current closest distance, and a
+// BVH traversal kernels: front-to-back ray traversal with early-out at the current closest distance, and a
 // best-first closest-point traversal. They take the leaf handler as a callable, so they are inline templates.
 #include <cmath>
 #include <cstdint>
@@ -10,21 +10,22 @@
 #include "gq/math.h"
 
 #ifdef GQ_SSE42
-#include <smmintrin.h>
+#include <immintrin.h>
 #endif
 
 namespace gq::detail {
 
-// Bounded by the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels) times 4 pushes.
-inline constexpr int kBvhStackSize = 256;
+// Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels; an
+// 8-wide node stands for at least one 4-wide level) times the 7 siblings an 8-wide node leaves behind, plus slack.
+inline constexpr int kBvhStackSize = 512;
 
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
-// ray that the triangles are tested against.
-struct BvhRay {
+// ray that the triangles are tested against. W: the width of the nodes it walks (the plane offsets depend on it).
+template <int W> struct BvhRay {
   alignas(16) float org[3];
   float invDir[3];
   float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |invDir|
-  // Per axis, the float offset in a Bvh4Node of the child bounds the ray enters (near) and leaves (far) by: the min
+  // Per axis, the float offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
   // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis.
   std::uint32_t nearOffset[3], farOffset[3];
 #ifdef GQ_SSE42
@@ -35,10 +36,10 @@ struct BvhRay {
   static constexpr float kRelPad = 16.0f * std::numeric_limits<float>::epsilon();
 };
 
-template <class T> inline BvhRay makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
+template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   // Components this small would give infinite inverses (and 0 * inf = NaN); clamping keeps slabs correct.
   constexpr float kTinyDir = 1e-20f;
-  BvhRay r;
+  BvhRay<W> r;
   for (int i = 0; i < 3; ++i) {
     r.org[i] = static_cast<float>(org[i]);
     float d = static_cast<float>(dir[i]);
@@ -50,8 +51,8 @@ template <class T> inline BvhRay makeBvhRay(const Vec3<T>& org, const Vec3<T>& d
       const double originError = std::abs(double(org[i]) - double(r.org[i]));
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
     }
-    // minX, minY, minZ, maxX, maxY, maxZ: 4 floats each.
-    const std::uint32_t minPlane = 4u * std::uint32_t(i), maxPlane = 12u + 4u * std::uint32_t(i);
+    // minX, minY, minZ, maxX, maxY, maxZ: W floats each.
+    const std::uint32_t minPlane = std::uint32_t(W * i), maxPlane = std::uint32_t(W * (3 + i));
     r.nearOffset[i] = r.invDir[i] >= 0.0f ? minPlane : maxPlane;
     r.farOffset[i] = r.invDir[i] >= 0.0f ? maxPlane : minPlane;
 #ifdef GQ_SSE42
@@ -63,15 +64,13 @@ template <class T> inline BvhRay makeBvhRay(const Vec3<T>& org, const Vec3<T>& d
   return r;
 }
 
-// Tests the ray against the 4 children of `node` for t in [0, tMax]; returns a 4-bit hit mask (empty lanes never set)
-// and the entry distances of the children in tNear. kSlack = false for rays whose origin is exactly the float one
-// (float queries: slack is 0), which skips the padding adds.
-template <bool kSlack = true>
-inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax, float tNear[4]) {
 #ifdef GQ_SSE42
+// Lanes [lane0, lane0 + 4) of a node's slab test (SSE): the 4-bit hit mask, entry distances stored to tNear + lane0.
+template <bool kSlack, int W>
+inline int intersectLanes4(const BvhNode<W>& node, const BvhRay<W>& ray, int lane0, float tMax, float* tNear) {
   // With a positive (negative) inverse the min (max) plane gives the smaller slab distance, and rounding keeps that
   // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
-  const float* base = node.minX;
+  const float* base = node.minX + lane0;
   auto slab = [&](std::uint32_t offset, int axis) {
     return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + offset), ray.org4[axis]), ray.invDir4[axis]);
   };
@@ -87,54 +86,131 @@ inline int intersectChildren(const Bvh4Node& node, const BvhRay& ray, float tMax
   }
   __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
   __m128 tf = _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax)));
-  tn = _mm_mul_ps(tn, _mm_set1_ps(1.0f - BvhRay::kRelPad));
-  tf = _mm_mul_ps(tf, _mm_set1_ps(1.0f + BvhRay::kRelPad));
-  _mm_storeu_ps(tNear, tn);
+  tn = _mm_mul_ps(tn, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad));
+  tf = _mm_mul_ps(tf, _mm_set1_ps(1.0f + BvhRay<W>::kRelPad));
+  _mm_store_ps(tNear + lane0, tn);
   // Empty lanes (all-+inf boxes) fail the slab test only for a finite float origin and tMax; an origin beyond the
   // float range (|x| > 3.4e38 in mesh space) gives inf - inf = NaN there, so they are masked out explicitly.
-  const __m128i empty = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(node.child)),
+  const __m128i empty = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(node.child + lane0)),
                                         _mm_set1_epi32(-1));
   return _mm_movemask_ps(_mm_andnot_ps(_mm_castsi128_ps(empty), _mm_cmple_ps(tn, tf)));
-#else
-  const float* lo[3] = {node.minX, node.minY, node.minZ};
-  const float* hi[3] = {node.maxX, node.maxY, node.maxZ};
-  int mask = 0;
-  for (int i = 0; i < 4; ++i) {
-    float tn = 0.0f, tf = tMax;
-    for (int a = 0; a < 3; ++a) {
-      const float t0 = (lo[a][i] - ray.org[a]) * ray.invDir[a];
-      const float t1 = (hi[a][i] - ray.org[a]) * ray.invDir[a];
-      tn = std::max(tn, std::min(t0, t1) - ray.slack[a]);
-      tf = std::min(tf, std::max(t0, t1) + ray.slack[a]);
-    }
-    tn *= 1.0f - BvhRay::kRelPad;
-    tf *= 1.0f + BvhRay::kRelPad;
-    tNear[i] = tn;
-    if (tn <= tf && node.child[i] != Bvh4Node::kEmpty) mask |= 1 << i;
-  }
-  return mask;
-#endif
 }
+
+// The 8-lane slab test with AVX2: the operations of intersectLanes4 on 8 lanes at once, so both give the same
+// masks and entry distances bit for bit (no FMA: a fused multiply-add would round differently).
+// (A helper function, not a lambda: a lambda does not inherit the target attribute.)
+__attribute__((target("avx2"))) inline __m256 slab8(const float* plane, const BvhRay<8>& ray, int axis) {
+  return _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(plane), _mm256_broadcast_ss(&ray.org[axis])),
+                       _mm256_broadcast_ss(&ray.invDir[axis]));
+}
+
+template <bool kSlack>
+__attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
+                                                            float* tNear) {
+  const float* base = node.minX;
+  __m256 nearX = slab8(base + ray.nearOffset[0], ray, 0), nearY = slab8(base + ray.nearOffset[1], ray, 1);
+  __m256 nearZ = slab8(base + ray.nearOffset[2], ray, 2);
+  __m256 farX = slab8(base + ray.farOffset[0], ray, 0), farY = slab8(base + ray.farOffset[1], ray, 1);
+  __m256 farZ = slab8(base + ray.farOffset[2], ray, 2);
+  if constexpr (kSlack) {
+    nearX = _mm256_sub_ps(nearX, _mm256_broadcast_ss(&ray.slack[0]));
+    nearY = _mm256_sub_ps(nearY, _mm256_broadcast_ss(&ray.slack[1]));
+    nearZ = _mm256_sub_ps(nearZ, _mm256_broadcast_ss(&ray.slack[2]));
+    farX = _mm256_add_ps(farX, _mm256_broadcast_ss(&ray.slack[0]));
+    farY = _mm256_add_ps(farY, _mm256_broadcast_ss(&ray.slack[1]));
+    farZ = _mm256_add_ps(farZ, _mm256_broadcast_ss(&ray.slack[2]));
+  }
+  __m256 tn = _mm256_max_ps(_mm256_max_ps(nearX, nearY), _mm256_max_ps(nearZ, _mm256_setzero_ps()));
+  __m256 tf = _mm256_min_ps(_mm256_min_ps(farX, farY), _mm256_min_ps(farZ, _mm256_set1_ps(tMax)));
+  tn = _mm256_mul_ps(tn, _mm256_set1_ps(1.0f - BvhRay<8>::kRelPad));
+  tf = _mm256_mul_ps(tf, _mm256_set1_ps(1.0f + BvhRay<8>::kRelPad));
+  _mm256_store_ps(tNear, tn);
+  const __m256i empty = _mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
+                                           _mm256_set1_epi32(-1));
+  return _mm256_movemask_ps(_mm256_andnot_ps(_mm256_castsi256_ps(empty), _mm256_cmp_ps(tn, tf, _CMP_LE_OQ)));
+}
+#endif
+
+// Node tests for the walk below: the hit mask of a node's children for t in [0, tMax] (empty lanes never set) and
+// their entry distances in tNear. kSlack = false for rays whose origin is exactly the float one (float queries:
+// slack is 0), which skips the padding adds.
+template <int W> struct BvhLanesScalar {
+  static constexpr int kWidth = W;
+  template <bool kSlack> static int test(const BvhNode<W>& node, const BvhRay<W>& ray, float tMax, float* tNear) {
+    const float* lo[3] = {node.minX, node.minY, node.minZ};
+    const float* hi[3] = {node.maxX, node.maxY, node.maxZ};
+    int mask = 0;
+    for (int i = 0; i < W; ++i) {
+      float tn = 0.0f, tf = tMax;
+      for (int a = 0; a < 3; ++a) {
+        const float t0 = (lo[a][i] - ray.org[a]) * ray.invDir[a];
+        const float t1 = (hi[a][i] - ray.org[a]) * ray.invDir[a];
+        tn = std::max(tn, std::min(t0, t1) - ray.slack[a]);
+        tf = std::min(tf, std::max(t0, t1) + ray.slack[a]);
+      }
+      tn *= 1.0f - BvhRay<W>::kRelPad;
+      tf *= 1.0f + BvhRay<W>::kRelPad;
+      tNear[i] = tn;
+      if (tn <= tf && node.child[i] != BvhNode<W>::kEmpty) mask |= 1 << i;
+    }
+    return mask;
+  }
+};
+
+#ifdef GQ_SSE42
+// 8-wide nodes on the SSE4.2 baseline: two 4-lane halves.
+struct Bvh8LanesSse {
+  static constexpr int kWidth = 8;
+  template <bool kSlack> static int test(const Bvh8Node& node, const BvhRay<8>& ray, float tMax, float* tNear) {
+    return intersectLanes4<kSlack>(node, ray, 0, tMax, tNear) | intersectLanes4<kSlack>(node, ray, 4, tMax, tNear) << 4;
+  }
+};
+
+// 8-wide nodes with AVX2 (only on CPUs that have it: callers check hasAvx2()).
+struct Bvh8LanesAvx2 {
+  static constexpr int kWidth = 8;
+  template <bool kSlack>
+  __attribute__((target("avx2"))) static int test(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
+                                                  float* tNear) {
+    return intersectLanes8<kSlack>(node, ray, tMax, tNear);
+  }
+};
+
+// Whether this CPU runs AVX2 code (checked once).
+inline bool hasAvx2() {
+  static const bool yes = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return yes;
+}
+using Bvh8LanesBaseline = Bvh8LanesSse;
+#else
+using Bvh8LanesBaseline = BvhLanesScalar<8>;
+#endif
 
 // Walks the leaves whose boxes the ray enters within [0, tMax]. Ordered: nearest child first, and entries whose entry
 // distance passed tMax (lowered by the leaf handler since they were pushed) are dropped. Unordered: the children are
 // pushed as found (no compare per node, but on closed meshes the nearest child is likelier to hold a first hit).
-template <bool kOrdered, bool kSlack, class LeafFn>
-inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafFn&& leaf) {
+template <bool kOrdered, bool kSlack, class Lanes, class LeafFn>
+inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWidth>& ray, float& tMax,
+                          LeafFn&& leaf) {
+  constexpr int W = Lanes::kWidth;
+  using Node = BvhNode<W>;
   struct Entry { std::uint32_t ref; float tNear; };
   Entry stack[kBvhStackSize];
   int top = 0;
-  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  if (bvh.rootChild == Node::kEmpty) return;
   stack[top++] = {bvh.rootChild, 0.0f};
   while (top > 0) {
     Entry e = stack[--top];
     if (kOrdered && e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
     // Descend through inner nodes, pushing the other children and continuing with one (the nearest when ordered).
     bool missed = false;
-    while (!Bvh4Node::isLeaf(e.ref)) {
-      const Bvh4Node& node = bvh.nodes[e.ref];
-      alignas(16) float tn[4];
-      int mask = intersectChildren<kSlack>(node, ray, tMax, tn);  // empty lanes never set
+    while (!Node::isLeaf(e.ref)) {
+      const Node& node = bvh.nodes[e.ref];
+      alignas(32) float tn[W];
+      int mask = Lanes::template test<kSlack>(node, ray, tMax, tn);  // empty lanes never set
       if (mask == 0) { missed = true; break; }
       int i = __builtin_ctz(unsigned(mask));
       mask &= mask - 1;
@@ -158,20 +234,18 @@ inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafF
         e = Entry{node.child[nearLane], tn[nearLane]};
         continue;
       }
-      // Collect hit children sorted by entry distance (insertion sort of at most 4).
-      Entry hit[4];
-      hit[0] = Entry{node.child[i], tn[i]};
-      int n = 1;
+      // Push the hit children sorted by entry distance (insertion sort on the stack, nearest on top).
+      const int base = top;
+      stack[top++] = Entry{node.child[i], tn[i]};
       while (mask) {
         i = __builtin_ctz(unsigned(mask));
         mask &= mask - 1;
-        Entry c{node.child[i], tn[i]};
-        int j = n++;
-        while (j > 0 && hit[j - 1].tNear < c.tNear) { hit[j] = hit[j - 1]; --j; }
-        hit[j] = c;  // descending: nearest last
+        const Entry c{node.child[i], tn[i]};
+        int k = top++;
+        while (k > base && stack[k - 1].tNear < c.tNear) { stack[k] = stack[k - 1]; --k; }
+        stack[k] = c;
       }
-      for (int k = 0; k < n - 1; ++k) stack[top++] = hit[k];
-      e = hit[n - 1];
+      e = stack[--top];
     }
     if (missed) continue;
     if (leaf(e.ref)) return;
@@ -181,25 +255,26 @@ inline void walkRayLeaves(const Bvh4& bvh, const BvhRay& ray, float& tMax, LeafF
 // Best-first traversal for nearest-primitive queries. `childLowerBound(node, lane)` returns a lower bound of the
 // squared distance to anything inside that child (or +inf); `leaf(first, count)` tests primitives and may lower
 // bestSq (owned by the caller).
-template <class T, class BoundFn, class LeafFn>
-inline void traverseNearest(const Bvh4& bvh, T& bestSq, BoundFn&& childLowerBound, LeafFn&& leaf) {
+template <int W, class T, class BoundFn, class LeafFn>
+inline void traverseNearest(const Bvh<W>& bvh, T& bestSq, BoundFn&& childLowerBound, LeafFn&& leaf) {
+  using Node = BvhNode<W>;
   struct Entry { std::uint32_t ref; T lower; };
   Entry stack[kBvhStackSize];
   int top = 0;
-  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  if (bvh.rootChild == Node::kEmpty) return;
   stack[top++] = {bvh.rootChild, T(0)};
   while (top > 0) {
     const Entry e = stack[--top];
     if (e.lower > bestSq) continue;
-    if (Bvh4Node::isLeaf(e.ref)) {
-      leaf(Bvh4Node::leafFirst(e.ref), Bvh4Node::leafCount(e.ref));
+    if (Node::isLeaf(e.ref)) {
+      leaf(Node::leafFirst(e.ref), Node::leafCount(e.ref));
       continue;
     }
-    const Bvh4Node& node = bvh.nodes[e.ref];
-    Entry hit[4];
+    const Node& node = bvh.nodes[e.ref];
+    Entry hit[W];
     int n = 0;
-    for (int i = 0; i < 4; ++i) {
-      if (node.child[i] == Bvh4Node::kEmpty) continue;
+    for (int i = 0; i < W; ++i) {
+      if (node.child[i] == Node::kEmpty) continue;
       const T lb = childLowerBound(node, i);
       if (lb > bestSq) continue;
       Entry c{node.child[i], lb};

@@ -104,7 +104,7 @@ template <class T> struct Validator {
   }
   Problem operator()(const TriangleMeshGeometry<T>& g) const {
     if (!g.mesh) return Problem::invalid("triangle mesh geometry has no cooked mesh");
-    if (g.mesh->triangles.empty() || !g.mesh->accel || g.mesh->accel->bvh.rootChild == Bvh4Node::kEmpty)
+    if (g.mesh->triangles.empty() || !g.mesh->accel || g.mesh->accel->bvh.rootChild == MeshBvhNode::kEmpty)
       return Problem::degenerate("triangle mesh is empty (cook it with cookTriangleMesh)");
     if (const Problem p = scaleProblem(g.scale, true)) return p;
     if (pair && !scaledExtentIsSupported(g.mesh->localBounds, g.scale))

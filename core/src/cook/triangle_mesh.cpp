@@ -19,7 +19,7 @@ template <class T> Status validateMeshInput(const std::vector<Vec3<T>>& vertices
                                             const std::vector<TriangleIndices>& triangles) {
   if (triangles.empty()) return Status::degenerate("triangle mesh has no triangles");
   if (vertices.size() >= std::size_t(0xffffffffu)) return Status::invalid("triangle mesh has too many vertices");
-  if (triangles.size() > std::size_t(Bvh4Node::kLeafFirstMask))
+  if (triangles.size() > std::size_t(MeshBvhNode::kLeafFirstMask))
     return Status::invalid("triangle mesh has more than 2^28 triangles");
   for (std::size_t i = 0; i < vertices.size(); ++i)
     if (!isFinite(vertices[i])) return Status::owned(StatusCode::InvalidArgument, "vertex " + std::to_string(i) + " is not finite");
@@ -111,7 +111,7 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
     mesh->vertices = vertices;
     std::vector<std::uint32_t> order;
     auto accel = std::make_shared<detail::MeshAccel>();
-    accel->bvh = detail::buildBvh4(primBounds, order);
+    accel->bvh = detail::collapseToBvh8(detail::buildBvh4(primBounds, order));
     mesh->triangles.resize(kept.size());
     mesh->inputIndex.resize(kept.size());
     mesh->cookedIndex.assign(triangles.size(), kRemovedTriangle);

@@ -33,8 +33,8 @@ template <class T> struct Best {
 // whose box passes is pruned by the shape's ball too before its GJK (hulls and boxes: the ball test takes mesh-convex30
 // distance in the FCL adapter from ~206,000 to ~165,000 instructions).
 template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const MeshSurface<T>& mesh, Best<T>& best) {
-  const Bvh4& bvh = mesh.mesh().accel->bvh;
-  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  const MeshBvh& bvh = mesh.mesh().accel->bvh;
+  if (bvh.rootChild == MeshBvhNode::kEmpty) return;
   const Bounds3<T> box = shape.worldBounds();
   const bool ballBound = shape.distanceRunsGjk();  // a triangle's ball bound before its GJK
   struct Entry {
@@ -48,9 +48,9 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
   while (top > 0) {
     const Entry e = stack[--top];
     if (e.lower > best.boundSq()) continue;
-    if (Bvh4Node::isLeaf(e.ref)) {
-      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(e.ref); ++k) {
-        const Triangle<T> tri = mesh.triangle(Bvh4Node::leafFirst(e.ref) + k);
+    if (MeshBvhNode::isLeaf(e.ref)) {
+      for (std::uint32_t k = 0; k < MeshBvhNode::leafCount(e.ref); ++k) {
+        const Triangle<T> tri = mesh.triangle(MeshBvhNode::leafFirst(e.ref) + k);
         if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) continue;
         if (ballBound && best.bounded() && shape.distanceLowerBound(tri) > best.bound()) continue;
         DistanceResult<T> r;
@@ -60,11 +60,11 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
       }
       continue;
     }
-    const Bvh4Node& node = mesh.mesh().accel->bvh.nodes[e.ref];
-    Entry children[4];
+    const MeshBvhNode& node = mesh.mesh().accel->bvh.nodes[e.ref];
+    Entry children[MeshBvhNode::kWidth];
     int n = 0;
-    for (int lane = 0; lane < 4; ++lane) {
-      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+    for (int lane = 0; lane < MeshBvhNode::kWidth; ++lane) {
+      if (node.child[lane] == MeshBvhNode::kEmpty) continue;
       const Entry c{node.child[lane], boxDistanceSq(box, mesh.childWorldBounds(node, lane))};
       if (!(c.lower > best.boundSq())) insertNearestLast(children, n, c);
     }
@@ -112,7 +112,7 @@ Status distanceConvexSurface(const Geometry<T>& g0, const Transform<T>& p0, cons
   Best<T> best;
   const auto* m = g1.template getIf<TriangleMeshGeometry<T>>();
   // An empty mesh keeps its status; a heightfield without a cell within the bound (holes included) is beyond it.
-  const bool searchable = !m || m->mesh->accel->bvh.rootChild != Bvh4Node::kEmpty;
+  const bool searchable = !m || m->mesh->accel->bvh.rootChild != MeshBvhNode::kEmpty;
   if (cache) cache->iterations = 0;
   if (farEnough < T(0) && searchable) {  // nothing of a surface is closer than 0
     out.distance = surfaceBoundBeyond(farEnough);

@@ -13,7 +13,7 @@ Status distanceTriangleMeshTriangleMesh(const Geometry<T>& g0, const Transform<T
   const MeshSurface<T> a(g0.template get<TriangleMeshGeometry<T>>(), Transform<T>());
   const MeshSurface<T> b(g1.template get<TriangleMeshGeometry<T>>(), p1.relativeTo(p0));
   const bool bounded = farEnough < std::numeric_limits<T>::infinity();
-  const bool empty = a.mesh().accel->bvh.rootChild == Bvh4Node::kEmpty || b.mesh().accel->bvh.rootChild == Bvh4Node::kEmpty;
+  const bool empty = a.mesh().accel->bvh.rootChild == MeshBvhNode::kEmpty || b.mesh().accel->bvh.rootChild == MeshBvhNode::kEmpty;
   if (bounded && !empty && farEnough < T(0)) {  // surfaces are >= 0 apart
     out.distance = surfaceBoundBeyond(farEnough);
     return Status();

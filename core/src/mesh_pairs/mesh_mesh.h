@@ -38,9 +38,9 @@ template <class T> struct BvhOverlapEntry {
 // fn(cookedA, triA, cookedB, triB) returns true to stop; returns whether it stopped.
 template <class T, class PairFn>
 bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T margin, PairFn&& fn) {
-  const Bvh4& bvhA = a.mesh().accel->bvh;
-  const Bvh4& bvhB = b.mesh().accel->bvh;
-  if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return false;
+  const MeshBvh& bvhA = a.mesh().accel->bvh;
+  const MeshBvh& bvhB = b.mesh().accel->bvh;
+  if (bvhA.rootChild == MeshBvhNode::kEmpty || bvhB.rootChild == MeshBvhNode::kEmpty) return false;
   const auto meets = [margin](const Bounds3<T>& x, const Bounds3<T>& y) { return grown(x, margin).overlaps(y); };
   // A's box against B's node on both sets of face axes (a separating plane on either set proves the nodes apart).
   const auto nodesMeet = [&](const Bounds3<T>& boxA, const Bounds3<T>& boxB, const Bounds3<T>& localB) {
@@ -52,15 +52,15 @@ bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T mar
   const Bounds3<T> rootA = a.toWorldBox(a.mesh().localBounds), rootB = b.toWorldBox(b.mesh().localBounds);
   if (!nodesMeet(rootA, rootB, b.mesh().localBounds)) return false;
   stack.push_back({bvhA.rootChild, bvhB.rootChild, rootA, rootB, b.mesh().localBounds});
-  Triangle<T> trisA[Bvh4Node::kMaxLeafSize], trisB[Bvh4Node::kMaxLeafSize];
-  Bounds3<T> boxesA[Bvh4Node::kMaxLeafSize], boxesB[Bvh4Node::kMaxLeafSize];
+  Triangle<T> trisA[MeshBvhNode::kMaxLeafSize], trisB[MeshBvhNode::kMaxLeafSize];
+  Bounds3<T> boxesA[MeshBvhNode::kMaxLeafSize], boxesB[MeshBvhNode::kMaxLeafSize];
   while (!stack.empty()) {
     const BvhOverlapEntry<T> e = stack.back();
     stack.pop_back();
-    const bool leafA = Bvh4Node::isLeaf(e.refA), leafB = Bvh4Node::isLeaf(e.refB);
+    const bool leafA = MeshBvhNode::isLeaf(e.refA), leafB = MeshBvhNode::isLeaf(e.refB);
     if (leafA && leafB) {
-      const std::uint32_t firstA = Bvh4Node::leafFirst(e.refA), countA = Bvh4Node::leafCount(e.refA);
-      const std::uint32_t firstB = Bvh4Node::leafFirst(e.refB), countB = Bvh4Node::leafCount(e.refB);
+      const std::uint32_t firstA = MeshBvhNode::leafFirst(e.refA), countA = MeshBvhNode::leafCount(e.refA);
+      const std::uint32_t firstB = MeshBvhNode::leafFirst(e.refB), countB = MeshBvhNode::leafCount(e.refB);
       for (std::uint32_t i = 0; i < countA; ++i) {
         trisA[i] = a.triangle(firstA + i);
         boxesA[i] = triangleBounds(trisA[i]);
@@ -77,12 +77,12 @@ bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T mar
     // Split the larger box; children are pushed so that the one sharing the most volume with the other side is
     // popped first (a boolean query ends at the first intersecting pair, which deep overlaps reach sooner).
     const bool splitA = !leafA && (leafB || boxVolume(e.boxA) >= boxVolume(e.boxB));
-    const Bvh4Node& node = splitA ? bvhA.nodes[e.refA] : bvhB.nodes[e.refB];
-    BvhOverlapEntry<T> children[4];
-    T shared[4];
+    const MeshBvhNode& node = splitA ? bvhA.nodes[e.refA] : bvhB.nodes[e.refB];
+    BvhOverlapEntry<T> children[MeshBvhNode::kWidth];
+    T shared[MeshBvhNode::kWidth];
     int n = 0;
-    for (int lane = 0; lane < 4; ++lane) {
-      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+    for (int lane = 0; lane < MeshBvhNode::kWidth; ++lane) {
+      if (node.child[lane] == MeshBvhNode::kEmpty) continue;
       BvhOverlapEntry<T> c = e;
       if (splitA) {
         c.refA = node.child[lane];
@@ -123,9 +123,9 @@ MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>
                                    T limitSq = std::numeric_limits<T>::infinity()) {
   MeshPairClosest<T> best;
   best.distSq = limitSq;
-  const Bvh4& bvhA = a.mesh().accel->bvh;
-  const Bvh4& bvhB = b.mesh().accel->bvh;
-  if (bvhA.rootChild == Bvh4Node::kEmpty || bvhB.rootChild == Bvh4Node::kEmpty) return best;
+  const MeshBvh& bvhA = a.mesh().accel->bvh;
+  const MeshBvh& bvhB = b.mesh().accel->bvh;
+  if (bvhA.rootChild == MeshBvhNode::kEmpty || bvhB.rootChild == MeshBvhNode::kEmpty) return best;
   struct Entry {
     BvhPairEntry<T> pair;
     T lower;
@@ -139,13 +139,13 @@ MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>
     stack.pop_back();
     if (e.lower > best.distSq) continue;
     const BvhPairEntry<T>& p = e.pair;
-    const bool leafA = Bvh4Node::isLeaf(p.refA), leafB = Bvh4Node::isLeaf(p.refB);
+    const bool leafA = MeshBvhNode::isLeaf(p.refA), leafB = MeshBvhNode::isLeaf(p.refB);
     if (leafA && leafB) {
-      for (std::uint32_t i = 0; i < Bvh4Node::leafCount(p.refA); ++i) {
-        const std::uint32_t ia = Bvh4Node::leafFirst(p.refA) + i;
+      for (std::uint32_t i = 0; i < MeshBvhNode::leafCount(p.refA); ++i) {
+        const std::uint32_t ia = MeshBvhNode::leafFirst(p.refA) + i;
         const Triangle<T> ta = a.triangle(ia);
-        for (std::uint32_t j = 0; j < Bvh4Node::leafCount(p.refB); ++j) {
-          const std::uint32_t ib = Bvh4Node::leafFirst(p.refB) + j;
+        for (std::uint32_t j = 0; j < MeshBvhNode::leafCount(p.refB); ++j) {
+          const std::uint32_t ib = MeshBvhNode::leafFirst(p.refB) + j;
           const Triangle<T> tb = b.triangle(ib);
           if (boxDistanceSq(triangleBounds(ta), triangleBounds(tb)) > best.distSq) continue;
           const TrianglePairClosest<T> c = closestTriangleTriangle(ta, tb);
@@ -156,11 +156,11 @@ MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>
     }
     // Split the larger box; push children farthest first so the nearest is popped next.
     const bool splitA = !leafA && (leafB || boxVolume(p.boxA) >= boxVolume(p.boxB));
-    Entry children[4];
+    Entry children[MeshBvhNode::kWidth];
     int n = 0;
-    const Bvh4Node& node = splitA ? bvhA.nodes[p.refA] : bvhB.nodes[p.refB];
-    for (int lane = 0; lane < 4; ++lane) {
-      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+    const MeshBvhNode& node = splitA ? bvhA.nodes[p.refA] : bvhB.nodes[p.refB];
+    for (int lane = 0; lane < MeshBvhNode::kWidth; ++lane) {
+      if (node.child[lane] == MeshBvhNode::kEmpty) continue;
       Entry c;
       if (splitA) {
         const Bounds3<T> box = a.childWorldBounds(node, lane);

@@ -49,7 +49,7 @@ template <class T> FloatBounds toFloatBounds(const Bounds3<T>& b) {
   return f;
 }
 
-inline bool childOverlapsBox(const Bvh4Node& n, int lane, const FloatBounds& q) {
+inline bool childOverlapsBox(const MeshBvhNode& n, int lane, const FloatBounds& q) {
   return n.minX[lane] <= q.hi[0] && n.maxX[lane] >= q.lo[0] && n.minY[lane] <= q.hi[1] && n.maxY[lane] >= q.lo[1] &&
          n.minZ[lane] <= q.hi[2] && n.maxZ[lane] >= q.lo[2];
 }
@@ -122,13 +122,13 @@ template <class T> class MeshSurface {
   const Vec3<T>& position() const { return inst_.pose.p; }
 
   // Mesh-space box of child `lane` of a BVH node.
-  static Bounds3<T> childLocalBounds(const Bvh4Node& n, int lane) {
+  static Bounds3<T> childLocalBounds(const MeshBvhNode& n, int lane) {
     return Bounds3<T>::fromMinMax(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
                                   Vec3<T>(T(n.maxX[lane]), T(n.maxY[lane]), T(n.maxZ[lane])));
   }
 
   // World AABB of child `lane` of a BVH node (the node's mesh-space box through scale and pose).
-  Bounds3<T> childWorldBounds(const Bvh4Node& n, int lane) const { return toWorldBox(childLocalBounds(n, lane)); }
+  Bounds3<T> childWorldBounds(const MeshBvhNode& n, int lane) const { return toWorldBox(childLocalBounds(n, lane)); }
   Bounds3<T> toWorldBox(const Bounds3<T>& local) const { return mapBox(local, linear_, inst_.pose.p); }
 
   // Mesh-space AABB of a world box: x_mesh = linear^-1 (x - p), linear^-1 = S^-1 R^T.
@@ -161,31 +161,31 @@ template <class T> class MeshSurface {
   }
   // The same, skipping every child whose mesh-space box `skip` proves holds no triangle fn would accept.
   template <class Fn, class Skip> bool forEachCookedTriangle(const Bounds3<T>& meshBox, Fn&& fn, Skip&& skip) const {
-    const Bvh4& bvh = inst_.mesh.accel->bvh;
-    if (bvh.rootChild == Bvh4Node::kEmpty) return false;
+    const MeshBvh& bvh = inst_.mesh.accel->bvh;
+    if (bvh.rootChild == MeshBvhNode::kEmpty) return false;
     const FloatBounds q = toFloatBounds(meshBox);
     std::uint32_t stack[kStackSize];
     int top = 0;
     stack[top++] = bvh.rootChild;
     while (top > 0) {
       const std::uint32_t ref = stack[--top];
-      if (Bvh4Node::isLeaf(ref)) {
-        const std::uint32_t first = Bvh4Node::leafFirst(ref), count = Bvh4Node::leafCount(ref);
+      if (MeshBvhNode::isLeaf(ref)) {
+        const std::uint32_t first = MeshBvhNode::leafFirst(ref), count = MeshBvhNode::leafCount(ref);
         for (std::uint32_t k = first; k < first + count; ++k)
           if (fn(k)) return true;
         continue;
       }
-      const Bvh4Node& node = bvh.nodes[ref];
-      for (int lane = 0; lane < 4; ++lane)
-        if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q) &&
+      const MeshBvhNode& node = bvh.nodes[ref];
+      for (int lane = 0; lane < MeshBvhNode::kWidth; ++lane)
+        if (node.child[lane] != MeshBvhNode::kEmpty && childOverlapsBox(node, lane, q) &&
             !skip(childLocalBounds(node, lane)))
           stack[top++] = node.child[lane];
     }
     return false;
   }
 
-  // Depth-first stack bound: the build's depth limit (60 levels) times 3 siblings left behind per level, plus slack.
-  static constexpr int kStackSize = 256;
+  // Depth-first stack bound: the build's depth limit (60 levels) times 7 siblings left behind per level, plus slack.
+  static constexpr int kStackSize = 512;
 
  private:
   const TriangleMeshGeometry<T>& geom_;

@@ -31,7 +31,7 @@ void pointDistanceTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform
   T bestSq = std::numeric_limits<T>::infinity();
   Vec3<T> bestPoint = Vec3<T>::Zero();
   std::uint32_t bestCooked = 0;
-  auto lowerBound = [&](const Bvh4Node& node, int i) {
+  auto lowerBound = [&](const MeshBvhNode& node, int i) {
     const Vec3<T> lo(T(node.minX[i]), T(node.minY[i]), T(node.minZ[i]));
     const Vec3<T> hi(T(node.maxX[i]), T(node.maxY[i]), T(node.maxZ[i]));
     const Vec3<T> c = inst.scale * ((lo + hi) * T(0.5));

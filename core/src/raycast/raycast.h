@@ -32,6 +32,9 @@ template <class T>
 std::uint32_t raycastConvex(const ConvexMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
 template <class T>
 std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
+// Mesh raycasts walk 8-wide nodes with AVX2 where the CPU has it; true makes them use the SSE4.2 baseline (two 4-lane
+// halves per node) on any CPU, so tests can compare both walks on one machine. Not for use while rays are cast.
+void setMeshRaycastBaselineOnly(bool baselineOnly);
 template <class T>
 std::uint32_t raycastHeightField(const HeightFieldGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
 template <class T>

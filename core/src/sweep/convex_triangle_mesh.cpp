@@ -19,24 +19,24 @@ namespace {
 
 // Visits the cooked triangle indices in leaves whose boxes overlap `q`. A fixed stack (no allocation): at most 4
 // pushes per level of a BVH's bounded depth (bvh/traverse.h).
-template <class Visit> void forTrianglesInBox(const Bvh4& bvh, const FloatBounds& q, Visit&& visit) {
-  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+template <class Visit> void forTrianglesInBox(const MeshBvh& bvh, const FloatBounds& q, Visit&& visit) {
+  if (bvh.rootChild == MeshBvhNode::kEmpty) return;
   std::uint32_t stack[kBvhStackSize];
   int top = 0;
   stack[top++] = bvh.rootChild;
   while (top > 0) {
     const std::uint32_t ref = stack[--top];
-    if (Bvh4Node::isLeaf(ref)) {
-      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(ref); ++k) visit(Bvh4Node::leafFirst(ref) + k);
+    if (MeshBvhNode::isLeaf(ref)) {
+      for (std::uint32_t k = 0; k < MeshBvhNode::leafCount(ref); ++k) visit(MeshBvhNode::leafFirst(ref) + k);
       continue;
     }
-    const Bvh4Node& node = bvh.nodes[ref];
-    for (int lane = 0; lane < 4; ++lane)
-      if (node.child[lane] != Bvh4Node::kEmpty && childOverlapsBox(node, lane, q)) stack[top++] = node.child[lane];
+    const MeshBvhNode& node = bvh.nodes[ref];
+    for (int lane = 0; lane < MeshBvhNode::kWidth; ++lane)
+      if (node.child[lane] != MeshBvhNode::kEmpty && childOverlapsBox(node, lane, q)) stack[top++] = node.child[lane];
   }
 }
 
-template <class T> T childEntry(const FatRay<T>& ray, const Bvh4Node& n, int lane, T tMax) {
+template <class T> T childEntry(const FatRay<T>& ray, const MeshBvhNode& n, int lane, T tMax) {
   return ray.entry(Vec3<T>(T(n.minX[lane]), T(n.minY[lane]), T(n.minZ[lane])),
                    Vec3<T>(T(n.maxX[lane]), T(n.maxY[lane]), T(n.maxZ[lane])), tMax);
 }
@@ -45,8 +45,8 @@ template <class T> T childEntry(const FatRay<T>& ray, const Bvh4Node& n, int lan
 // current pruning distance.
 template <class T, class TMax, class Visit>
 void traverseFatRay(const TriangleMesh<T>& mesh, const FatRay<T>& ray, TMax&& tMax, Visit&& visit) {
-  const Bvh4& bvh = mesh.accel->bvh;
-  if (bvh.rootChild == Bvh4Node::kEmpty) return;
+  const MeshBvh& bvh = mesh.accel->bvh;
+  if (bvh.rootChild == MeshBvhNode::kEmpty) return;
   struct Entry {
     std::uint32_t ref;
     T t;
@@ -57,9 +57,9 @@ void traverseFatRay(const TriangleMesh<T>& mesh, const FatRay<T>& ray, TMax&& tM
   while (top > 0) {
     const Entry e = stack[--top];
     if (e.t > tMax()) continue;
-    if (Bvh4Node::isLeaf(e.ref)) {
-      for (std::uint32_t k = 0; k < Bvh4Node::leafCount(e.ref); ++k) {
-        const std::uint32_t cooked = Bvh4Node::leafFirst(e.ref) + k;
+    if (MeshBvhNode::isLeaf(e.ref)) {
+      for (std::uint32_t k = 0; k < MeshBvhNode::leafCount(e.ref); ++k) {
+        const std::uint32_t cooked = MeshBvhNode::leafFirst(e.ref) + k;
         const TriangleIndices& idx = mesh.triangles[cooked];
         Bounds3<T> box;
         for (const std::uint32_t v : idx) box.include(mesh.vertices[v]);
@@ -68,15 +68,15 @@ void traverseFatRay(const TriangleMesh<T>& mesh, const FatRay<T>& ray, TMax&& tM
       }
       continue;
     }
-    const Bvh4Node& node = bvh.nodes[e.ref];
-    std::array<Entry, 4> hit;
+    const MeshBvhNode& node = bvh.nodes[e.ref];
+    std::array<Entry, MeshBvhNode::kWidth> hit;
     int n = 0;
-    for (int lane = 0; lane < 4; ++lane) {
-      if (node.child[lane] == Bvh4Node::kEmpty) continue;
+    for (int lane = 0; lane < MeshBvhNode::kWidth; ++lane) {
+      if (node.child[lane] == MeshBvhNode::kEmpty) continue;
       const T t = childEntry(ray, node, lane, tMax());
       if (t <= tMax()) hit[n++] = {node.child[lane], t};
     }
-    if (n > 4) __builtin_unreachable();  // tells GCC that std::sort's 16-element prefix pass is dead
+    if (n > MeshBvhNode::kWidth) __builtin_unreachable();  // tells GCC that std::sort's 16-element prefix pass is dead
     std::sort(hit.begin(), hit.begin() + n, [](const Entry& x, const Entry& y) { return x.t > y.t; });
     for (int i = 0; i < n && top < kBvhStackSize; ++i) stack[top++] = hit[i];  // nearest pushed last, popped first
   }

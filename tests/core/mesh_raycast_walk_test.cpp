@@ -1,0 +1,178 @@
+// Mesh raycasts walk a tree of 8-wide nodes built over the 4-wide tree's leaves: with AVX2 on CPUs that have it, on
+// the SSE4.2 baseline as two 4-lane halves per node otherwise. Both walks must give the same hits (closest, any and
+// multiple, both culling modes, float and double), and the 8-wide tree must hold exactly the 4-wide tree's leaves
+// under boxes that contain them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "bvh/build.h"
+#include "gq/query.h"
+#include "gq/shape.h"
+#include "mesh_test_helpers.h"
+#include "raycast/raycast.h"
+
+namespace gq {
+namespace {
+
+using meshtest::Scalars;
+
+template <class T> class MeshRaycastWalks : public ::testing::Test {};
+TYPED_TEST_SUITE(MeshRaycastWalks, Scalars);
+
+// Every field of the hits, bit for bit.
+template <class T> bool sameHits(const std::vector<RaycastHit<T>>& a, const std::vector<RaycastHit<T>>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const RaycastHit<T>& x = a[i];
+    const RaycastHit<T>& y = b[i];
+    if (x.flags != y.flags || x.faceIndex != y.faceIndex) return false;
+    if (std::memcmp(&x.distance, &y.distance, sizeof(T)) != 0 || std::memcmp(&x.u, &y.u, sizeof(T)) != 0 ||
+        std::memcmp(&x.v, &y.v, sizeof(T)) != 0 || x.position != y.position || x.normal != y.normal)
+      return false;
+  }
+  return true;
+}
+
+// Rays from a sphere around the mesh, half aimed at vertices (shared edges and vertices: ties between triangles),
+// half at random points of the bounds.
+template <class T> void rays(const MeshData<T>& m, int count, std::vector<Vec3<T>>& origins,
+                             std::vector<Vec3<T>>& dirs) {
+  Bounds3<double> b;
+  for (const auto& v : m.vertices) b.include(v.template cast<double>());
+  const Vec3<double> c = b.center();
+  const double radius = (b.max - b.min).norm();
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> n;
+  for (int i = 0; i < count; ++i) {
+    const double x = n(rng), y = n(rng), z = n(rng);
+    const Vec3<double> o = c + Vec3<double>(x, y, z).normalized() * radius;
+    Vec3<double> target;
+    if (i % 2 == 0) {
+      target = m.vertices[std::size_t(u(rng) * double(m.vertices.size())) % m.vertices.size()].template cast<double>();
+    } else {
+      target = b.min + (b.max - b.min).cwiseProduct(Vec3<double>(u(rng), u(rng), u(rng)));
+    }
+    origins.push_back(o.cast<T>());
+    dirs.push_back((target - o).normalized().cast<T>());
+  }
+}
+
+// The hits of every ray in every mode, with the walk chosen by `baselineOnly`.
+template <class T>
+std::vector<std::vector<RaycastHit<T>>> castAll(const Shape<T>& shape, const std::vector<Vec3<T>>& origins,
+                                                const std::vector<Vec3<T>>& dirs, bool baselineOnly) {
+  detail::setMeshRaycastBaselineOnly(baselineOnly);
+  const HitFlags base = kDefaultHitFlags | HitFlag::UV;
+  const HitFlags modes[] = {base, base | HitFlag::MeshBothSides, base | HitFlag::AnyHit,
+                            base | HitFlag::MeshBothSides | HitFlag::AnyHit,
+                            base | HitFlag::MeshBothSides | HitFlag::MeshMultiple};
+  std::vector<std::vector<RaycastHit<T>>> out;
+  for (const HitFlags flags : modes) {
+    const std::uint32_t maxHits = flags.has(HitFlag::MeshMultiple) ? 8 : 1;
+    for (std::size_t i = 0; i < origins.size(); ++i) {
+      std::vector<RaycastHit<T>> hits(maxHits);
+      std::uint32_t n = 0;
+      EXPECT_TRUE(raycast(origins[i], dirs[i], shape, Transform<T>(), T(100), flags, maxHits, hits.data(), n).ok());
+      hits.resize(n);
+      out.push_back(hits);
+    }
+  }
+  detail::setMeshRaycastBaselineOnly(false);
+  return out;
+}
+
+template <class T> void checkSameHits(const MeshData<T>& m, int rayCount) {
+  Shape<T> shape;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(m.vertices, m.triangles)), shape).ok());
+  std::vector<Vec3<T>> origins, dirs;
+  rays(m, rayCount, origins, dirs);
+  const auto wide = castAll(shape, origins, dirs, false);
+  const auto baseline = castAll(shape, origins, dirs, true);
+  ASSERT_EQ(wide.size(), baseline.size());
+  std::size_t hits = 0, differ = 0;
+  for (std::size_t i = 0; i < wide.size(); ++i) {
+    hits += wide[i].size();
+    differ += !sameHits(wide[i], baseline[i]);
+  }
+  EXPECT_EQ(differ, 0u);
+  EXPECT_GT(hits, wide.size() / 4);  // the rays do hit: the comparison is not of empty answers
+}
+
+TYPED_TEST(MeshRaycastWalks, Avx2AndBaselineWalksFindTheSameHitsOnAnIcosphere) {
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this CPU has no AVX2: both walks are the baseline";
+  checkSameHits(meshtest::icosphere<TypeParam>(4), 4000);
+}
+
+TYPED_TEST(MeshRaycastWalks, Avx2AndBaselineWalksFindTheSameHitsOnTheBunny) {
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this CPU has no AVX2: both walks are the baseline";
+  GQ_REQUIRE_BUNNY();
+  checkSameHits(meshtest::bunny<TypeParam>(), 4000);
+}
+
+// Leaves of a tree (a set of references) and whether every child box contains its subtree's leaf boxes.
+template <int W> struct TreeWalk {
+  const Bvh<W>& bvh;
+  const std::vector<Bounds3<float>>& leafBoxes;  // by first primitive: the union of the leaf's triangle boxes
+  std::vector<std::uint32_t> leaves;
+  bool contained = true;
+
+  Bounds3<float> visit(std::uint32_t ref) {
+    if (BvhNode<W>::isLeaf(ref)) {
+      leaves.push_back(ref);
+      return leafBoxes[BvhNode<W>::leafFirst(ref)];
+    }
+    const BvhNode<W>& n = bvh.nodes[ref];
+    Bounds3<float> all;
+    for (int i = 0; i < W; ++i) {
+      if (n.child[i] == BvhNode<W>::kEmpty) continue;
+      const Bounds3<float> inside = visit(n.child[i]);
+      const Bounds3<float> box = Bounds3<float>::fromMinMax(Vec3<float>(n.minX[i], n.minY[i], n.minZ[i]),
+                                                            Vec3<float>(n.maxX[i], n.maxY[i], n.maxZ[i]));
+      contained = contained && (box.min.array() <= inside.min.array()).all() &&
+                  (box.max.array() >= inside.max.array()).all();
+      all.include(box);
+    }
+    return all;
+  }
+};
+
+TEST(MeshRaycastWalks, EightWideTreeHoldsTheFourWideLeavesUnderContainingBoxes) {
+  const MeshData<float> m = meshtest::icosphere<float>(5);  // 20,480 triangles
+  std::vector<Bounds3<float>> prims;
+  for (const auto& t : m.triangles) {
+    Bounds3<float> b;
+    for (std::uint32_t v : t) b.include(m.vertices[v]);
+    prims.push_back(b);
+  }
+  std::vector<std::uint32_t> order;
+  const Bvh4 bvh4 = detail::buildBvh4(prims, order);
+  const Bvh8 bvh8 = detail::collapseToBvh8(bvh4);
+  std::vector<Bounds3<float>> leafBoxes(prims.size());
+  auto fill = [&](std::uint32_t ref) {
+    Bounds3<float> b;
+    for (std::uint32_t k = 0; k < Bvh4Node::leafCount(ref); ++k) b.include(prims[order[Bvh4Node::leafFirst(ref) + k]]);
+    leafBoxes[Bvh4Node::leafFirst(ref)] = b;
+  };
+  TreeWalk<4> collect{bvh4, leafBoxes};
+  collect.visit(bvh4.rootChild);  // the leaves; their boxes are filled next
+  for (std::uint32_t ref : collect.leaves) fill(ref);
+  TreeWalk<4> walk4{bvh4, leafBoxes};
+  walk4.visit(bvh4.rootChild);
+  TreeWalk<8> walk8{bvh8, leafBoxes};
+  walk8.visit(bvh8.rootChild);
+  EXPECT_TRUE(walk4.contained);
+  EXPECT_TRUE(walk8.contained);
+  std::sort(walk4.leaves.begin(), walk4.leaves.end());
+  std::sort(walk8.leaves.begin(), walk8.leaves.end());
+  EXPECT_EQ(walk4.leaves, walk8.leaves);
+  // Fewer, wider nodes: at most 3/4 of the 4-wide tree's node count on this mesh.
+  EXPECT_LT(4 * bvh8.nodes.size(), 3 * bvh4.nodes.size());
+}
+
+}  // namespace
+}  // namespace gq
