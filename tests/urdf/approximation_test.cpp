@@ -78,7 +78,9 @@ template <class T> RobotModel<T> load(const std::string& objPath, const LoadOpti
 }
 
 template <class T> RobotModel<T> load(const std::string& objPath, Representation rep) {
-  return load<T>(objPath, testOptions(rep));
+  LoadOptions o = testOptions(rep);
+  o.errorBoundTarget = LoadOptions().errorBoundTarget;
+  return load<T>(objPath, o);
 }
 
 template <class T> RobotModel<T> loadFit(const std::string& objPath, double tolerance) {

@@ -89,21 +89,21 @@ template <class T> Shape<T> meshSourceShape(const MeshData<T>& mesh, Representat
   return shape;
 }
 
-// The triangle mesh itself, with its convex hull as the checker's culling volume: error 0.
+// The triangle mesh itself, with its convex hull as the checker's culling volume (none for a flat mesh, which has
+// no hull): error 0.
 template <class T> Status wholeMesh(const MeshData<T>& mesh, Representation rep, MeshParts<T>& out) {
   std::shared_ptr<const TriangleMesh<T>> cooked;
   MeshCookReport report;
   Status s = cookTriangleMesh(mesh.vertices, mesh.triangles, cooked, &report);
   if (!s.ok()) return s;
   std::shared_ptr<const ConvexMesh<T>> hull;
-  s = cookConvexMesh(mesh.vertices, hull);
-  if (!s.ok()) return s;
+  if (!cookConvexMesh(mesh.vertices, hull).ok()) hull.reset();
   Shape<T> shape = meshSourceShape(mesh, rep);
   shape.geometry = TriangleMeshGeometry<T>(cooked);
   shape.boundingHull = hull;
   shape.fitted = FitRepresentation::Mesh;
   shape.modelTriangles = report.cookedTriangles;
-  shape.bytes = meshBytes(*cooked, report.bvhBytes) + hullBytes(*hull);
+  shape.bytes = meshBytes(*cooked, report.bvhBytes) + (hull ? hullBytes(*hull) : 0);
   out.shapes = {std::move(shape)};
   out.fits = {Transform<T>()};
   return {};

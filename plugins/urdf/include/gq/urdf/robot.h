@@ -78,8 +78,8 @@ template <class T> struct Shape {
   Representation representation = Representation::Hull;  // the mode that modelled it, for mesh sources
   FitRepresentation fitted = FitRepresentation::Mesh;     // what `geometry` is, for mesh sources
   std::uint32_t fitParts = 1;  // shapes the collision element became: a decomposition's parts are consecutive shapes
-  // Mesh representation only: the mesh's convex hull. Hull-disjoint implies mesh-disjoint, so the checker tests
-  // the hulls (GJK) before the triangles.
+  // The mesh itself only: its convex hull (null for a flat mesh). Hull-disjoint implies mesh-disjoint, so the
+  // checker tests the hulls (GJK) before the triangles.
   std::shared_ptr<const ConvexMesh<T>> boundingHull;
   std::string file;                 // resolved mesh path
   std::uint32_t sourceTriangles = 0;
