@@ -107,15 +107,19 @@ void measureConcavity(const Surface& surface, Piece& piece) {
   if (n.norm() > 0) piece.deepestPlane = {n.normalized(), n.normalized().dot(m.vertices[t[0]])};
 }
 
-// The piece's hull holds its triangles, each point on a cut pushed across it by kOverlap of the mesh size: the two
-// halves of a cut overlap in a thin slab, so their union has no crack along it.
+// The piece's hull holds its triangles and each of their points on a cut pushed across it by kOverlap of the mesh
+// size: the two halves of a cut overlap in a thin slab, so their union has no crack along it.
 bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& surface, Piece& out) {
   if (tris.size() < 12) return false;
+  // The points themselves stay too: pushing a corner where a cut meets a slanted face can leave it just outside.
   std::vector<Vec3d> points = tris;
   const double eps = kOnPlane * surface.size, overlap = kOverlap * surface.size;
-  for (Vec3d& p : points)
+  for (const Vec3d& p : tris) {
+    Vec3d pushed = p;
     for (const Plane& c : cuts)
-      if (std::abs(c.normal.dot(p) - c.offset) <= eps) p += overlap * c.normal;
+      if (std::abs(c.normal.dot(p) - c.offset) <= eps) pushed += overlap * c.normal;
+    if (pushed != p) points.push_back(pushed);
+  }
   out.triangles = std::move(tris);
   out.cuts = std::move(cuts);
   if (!hullOf(points, out.hull).ok()) return false;
