@@ -1,4 +1,5 @@
-// Speed against error at the model level: every shared mesh and every Panda/UR5 collision link, fitted by each
+// Speed against error at the model level: generated meshes (an L of two boxes, a torus, a sphere: no data needed),
+// every shared mesh and every Panda/UR5 collision link, fitted by each
 // representation (gq::fitShape, containing fits, the bound refined to within 2 % of the true distance), and the
 // time of overlap and distance queries of a moving sphere and a moving box against the fit and against the mesh.
 // Writes comparisons/results/fit.csv (date, machine, commit passed in; see --help).
@@ -72,6 +73,65 @@ Timing timeQueries(const Parts& parts, const gq::Bounds3<double>& box) {
   return t;
 }
 
+// An L-shaped prism, the union of the boxes [0,2]x[0,0.5] and [0,0.5]x[0.5,1.5] over z in [-0.25, 0.25].
+gq::MeshData<double> lShape() {
+  const double xy[7][2] = {{0, 0}, {2, 0}, {2, 0.5}, {0.5, 0.5}, {0.5, 1.5}, {0, 1.5}, {0, 0.5}};
+  gq::MeshData<double> m;
+  for (double z : {-0.25, 0.25})
+    for (const auto& p : xy) m.vertices.emplace_back(p[0], p[1], z);
+  const std::uint32_t cap[5][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 6}, {6, 3, 4}, {6, 4, 5}};
+  for (const auto& t : cap) {
+    m.triangles.push_back({t[0] + 7, t[1] + 7, t[2] + 7});
+    m.triangles.push_back({t[0], t[2], t[1]});
+  }
+  for (std::uint32_t i = 0; i < 7; ++i) {
+    const std::uint32_t a = i, b = (i + 1) % 7;
+    m.triangles.push_back({a, b, b + 7});
+    m.triangles.push_back({a, b + 7, a + 7});
+  }
+  return m;
+}
+
+// A (u, v) grid on a surface of revolution about Z: radius R + r cos v, height r sin v (a torus), or a UV sphere
+// (R = 0, poles collapsed to one vertex each).
+gq::MeshData<double> torus(double R, double r, std::uint32_t nu, std::uint32_t nv) {
+  gq::MeshData<double> m;
+  for (std::uint32_t i = 0; i < nu; ++i)
+    for (std::uint32_t j = 0; j < nv; ++j) {
+      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+      m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  const auto at = [&](std::uint32_t i, std::uint32_t j) { return (i % nu) * nv + j % nv; };
+  for (std::uint32_t i = 0; i < nu; ++i)
+    for (std::uint32_t j = 0; j < nv; ++j) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+gq::MeshData<double> uvSphere(double radius, std::uint32_t nu, std::uint32_t nv) {
+  gq::MeshData<double> m;
+  m.vertices.emplace_back(0, 0, -radius);
+  for (std::uint32_t j = 1; j < nv; ++j)
+    for (std::uint32_t i = 0; i < nu; ++i) {
+      const double u = 2 * M_PI * i / nu, v = M_PI * j / nv - M_PI / 2;
+      m.vertices.emplace_back(radius * std::cos(v) * std::cos(u), radius * std::cos(v) * std::sin(u), radius * std::sin(v));
+    }
+  m.vertices.emplace_back(0, 0, radius);
+  const auto at = [&](std::uint32_t ring, std::uint32_t i) { return 1 + (ring - 1) * nu + i % nu; };
+  const std::uint32_t top = std::uint32_t(m.vertices.size() - 1);
+  for (std::uint32_t i = 0; i < nu; ++i) {
+    m.triangles.push_back({0, at(1, i + 1), at(1, i)});
+    m.triangles.push_back({top, at(nv - 1, i), at(nv - 1, i + 1)});
+    for (std::uint32_t ring = 1; ring + 1 < nv; ++ring) {
+      m.triangles.push_back({at(ring, i), at(ring, i + 1), at(ring + 1, i + 1)});
+      m.triangles.push_back({at(ring, i), at(ring + 1, i + 1), at(ring + 1, i)});
+    }
+  }
+  return m;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,7 +148,8 @@ int main(int argc, char** argv) {
   app.add_option("--skip", skip, "representations not to fit (e.g. decomposition, slow on large meshes)");
   CLI11_PARSE(app, argc, argv);
 
-  std::vector<std::string> files = {"meshes/stanford-bunny.obj", "meshes/spot.obj", "meshes/teapot.obj",
+  std::vector<std::string> files = {"generated/l-shape", "generated/torus", "generated/sphere",
+                                    "meshes/stanford-bunny.obj", "meshes/spot.obj", "meshes/teapot.obj",
                                     "meshes/fandisk.obj"};
   const std::string panda = "robots/example-robot-data/robots/panda_description/meshes/collision/";
   const std::string ur5 = "robots/example-robot-data/robots/ur_description/meshes/ur5/collision/";
@@ -103,7 +164,10 @@ int main(int argc, char** argv) {
          "distance_sphere_vs_mesh,overlap_box_vs_mesh,distance_box_vs_mesh\n";
   for (const std::string& file : files) {
     gq::MeshData<double> mesh;
-    if (!gq::loadMeshFile(shared + "/" + file, mesh).ok()) {
+    if (file == "generated/l-shape") mesh = lShape();
+    else if (file == "generated/torus") mesh = torus(1.0, 0.3, 48, 24);
+    else if (file == "generated/sphere") mesh = uvSphere(1.0, 48, 24);
+    else if (!gq::loadMeshFile(shared + "/" + file, mesh).ok()) {
       std::cerr << "bench_fit: skipping " << file << " (not readable)\n";
       continue;
     }
@@ -139,8 +203,10 @@ int main(int argc, char** argv) {
       const Timing t = timeQueries(fit.parts, box);
       std::uint32_t vertices = fit.candidates.empty() ? 0 : fit.candidates.back().vertices;
       const std::string name = file.substr(file.find_last_of('/') + 1);
-      const std::string label = file.find("panda") != std::string::npos ? "panda/" + name
-                                : file.find("ur5") != std::string::npos ? "ur5/" + name : name;
+      const std::string label = file.find("panda") != std::string::npos       ? "panda/" + name
+                                : file.find("ur5") != std::string::npos       ? "ur5/" + name
+                                : file.find("generated/") != std::string::npos ? file
+                                                                               : name;
       csv << date << ",\"" << machine << "\"," << commit << ',' << label << ',' << mesh.triangles.size() << ','
           << size << ',' << gq::toString(rep) << ',' << fit.parts.size() << ',' << vertices << ','
           << fit.errorBound << ',' << fit.errorBound / size << ',' << fitMs << ',' << t.overlapSphere << ','

@@ -140,6 +140,26 @@ TEST(FitShapeDecomposition, PartsWithinMaxPartsContainingAndCertified) {
   EXPECT_LT(fit.errorBound, hull.errorBound);
 }
 
+TEST(FitShapeDecomposition, AnLOfTwoBoxesSplitsAlongItsConcaveEdgeIntoTheTwoBoxes) {
+  FitOptions<double> o = only(FitRepresentation::ConvexDecomposition, 1e-3, true);
+  o.maxParts = 4;
+  o.maxBoundPatches = FitOptions<double>().maxBoundPatches;  // the bound along the boxes' edges needs the default
+  FitResult<double> fit;
+  const Status s = fitShape(fittest::lShapeMesh(), o, fit);
+  EXPECT_EQ(s.code, StatusCode::Ok) << s.toString();
+  ASSERT_EQ(fit.parts.size(), 2u);
+  EXPECT_LE(double(fit.errorBound), 1e-3);
+  EXPECT_TRUE(fittest::containsVertices(fittest::lShapeMesh(), fit.parts, 1e-9));
+  EXPECT_GE(double(fit.errorBound), fittest::sampledHausdorff(fittest::lShapeMesh(), fit.parts, 20000));
+  // Each part is one of the boxes [0,2]x[0,0.5] and [0,0.5]x[0,1.5] or [0,0.5]x[0.5,1.5] and [0,2]x[0,0.5] (the
+  // cut at x = 0.5 or at y = 0.5), reaching at most the overlap slab across the cut: 8 corners each.
+  for (const auto& part : fit.parts) {
+    const auto* hull = part.first.getIf<ConvexMeshGeometry<double>>();
+    ASSERT_NE(hull, nullptr);
+    EXPECT_EQ(hull->mesh->vertices.size(), 8u);
+  }
+}
+
 template <class T> std::vector<double> fingerprint(const FitResult<T>& fit) {
   std::vector<double> f = {double(fit.errorBound), double(fit.representation), double(fit.parts.size())};
   for (const auto& [g, pose] : fit.parts) {

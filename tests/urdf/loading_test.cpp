@@ -166,8 +166,7 @@ TYPED_TEST(UrdfLoading, CylinderIsTheExactCustomCylinderAlongZ) {
   EXPECT_NEAR(cylinder->radius(), T(0.1), tol);
   EXPECT_NEAR(cylinder->halfHeight(), T(0.2), tol);
   EXPECT_NEAR(std::abs(shape.origin.rotate(Vec3<T>::UnitX()).z()), T(1), tol) << "custom X axis = URDF Z axis";
-  EXPECT_EQ(shape.error.meshToApproximation, T(0));
-  EXPECT_EQ(shape.error.approximationToMesh, T(0));
+  EXPECT_EQ(shape.errorBound, T(0));
   // Ball of radius 0.01 centred at angle pi/64 (mid-edge of a 64-gon) at radial distance 0.11 - 3e-5: it overlaps
   // the true cylinder by 3e-5 but clears the prism by sagitta - 3e-5 = 0.1 (1 - cos(pi/64)) - 3e-5 = 9e-5.
   const double angle = M_PI / 64, radial = 0.11 - 3e-5;

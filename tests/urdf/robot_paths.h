@@ -1,5 +1,5 @@
 #pragma once
-// Shared helpers of the URDF tests: robot paths, cached models (loading cooks hulls and measures errors once per
+// Shared helpers of the URDF tests: robot paths, cached models (loading fits the shapes and certifies their error bounds once per
 // scalar type, robot and representation), and typed-test lists.
 #include <gtest/gtest.h>
 
@@ -34,7 +34,7 @@ inline LoadOptions testOptions(Representation rep) {
   o.representation = rep;
   o.packagePaths = {robotsDir()};
   o.useRosPackagePath = false;
-  o.errorSamplesPerShape = 500;
+  o.errorBoundTarget = 1e-3;  // a millimetre bound loads fast; tests of the bound itself ask for the default
   return o;
 }
 

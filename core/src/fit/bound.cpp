@@ -121,6 +121,65 @@ struct Tri {
   bool operator<(const Tri& o) const { return upper < o.upper; }
 };
 
+// Whether one face plane of polytope q has every point of `corners` on or outside it (within `slack`) and its
+// normal not against `dir`: then no point of their triangle, nor any point beyond it along dir, is inside q.
+bool beyondAFace(const Solid& q, const Vec3d (&corners)[3], const Vec3d& dir, double slack) {
+  for (const Face& g : q.faces) {
+    if (g.normal.dot(dir) < 0) continue;
+    if (g.normal.dot(corners[0]) + g.d >= -slack && g.normal.dot(corners[1]) + g.d >= -slack &&
+        g.normal.dot(corners[2]) + g.d >= -slack)
+      return true;
+  }
+  return false;
+}
+
+// A mesh triangle on (or just inside) a flat face of the union, from above, far below its size. Along the
+// outward normal u, each point p reaches the plane of the face F through which the centroid leaves its part P at
+// beta(p) = -(n_F . p + d_F) / (n_F . u), linear in p. When each other part lies beyond one of its own face planes
+// from the image triangle (corners p + beta(p) u) with a normal not against u, points just past the image are
+// outside every part, so the distance from p to the union's boundary is at most beta(p): at most the largest beta
+// at a corner. Polytopes only (a decomposition's parts); infinity when the test does not apply.
+double exitThroughFace(const std::vector<Solid>& parts, const Tri& t, const Vec3d& q, const Vec3d& u, double size) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double slack = 1e-9 * size;
+  for (const Solid& s : parts)
+    if (s.kind != Solid::Kind::Polytope) return inf;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const Solid& p = parts[k];
+    Vec3d g;
+    if (signedDistance(p, q, g) > slack) continue;
+    const Face* exit = nullptr;
+    double nearest = inf;
+    for (const Face& f : p.faces) {
+      const double nu = f.normal.dot(u);
+      if (nu <= 1e-6) continue;
+      const double at = -(f.normal.dot(q) + f.d) / nu;
+      if (at < nearest) {
+        nearest = at;
+        exit = &f;
+      }
+    }
+    if (!exit) continue;
+    const double nu = exit->normal.dot(u);
+    const Vec3d v[3] = {t.a, t.b, t.c};
+    Vec3d image[3];
+    double worst = 0;
+    bool behind = false;
+    for (int i = 0; i < 3; ++i) {
+      const double beta = -(exit->normal.dot(v[i]) + exit->d) / nu;
+      if (beta < -slack) behind = true;
+      worst = std::max(worst, beta);
+      image[i] = v[i] + beta * u;
+    }
+    if (behind) continue;
+    bool clear = true;
+    for (std::size_t j = 0; j < parts.size() && clear; ++j)
+      if (j != k) clear = beyondAFace(parts[j], image, u, slack);
+    if (clear) return worst + slack;
+  }
+  return inf;
+}
+
 // Bounds a mesh triangle's distance to the boundary of the union from above; `lower` gets a distance attained.
 double boundTriangle(const std::vector<Solid>& parts, const Tri& t, double size, double& lower) {
   const Vec3d q = (t.a + t.b + t.c) / 3.0;
@@ -138,7 +197,9 @@ double boundTriangle(const std::vector<Solid>& parts, const Tri& t, double size,
   const Vec3d normal = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::UnitX();
   const double r = std::max({(t.a - q).norm(), (t.b - q).norm(), (t.c - q).norm()});
   lower = std::max(0.0, outsideDistance(parts, q));  // exact where q is outside the union
-  return unionBoundaryDistance(parts, q, normal, size) + r;
+  const double walked = unionBoundaryDistance(parts, q, normal, size) + r;
+  if (n.norm() > 0) return std::min(walked, exitThroughFace(parts, t, q, normal, size));
+  return walked;
 }
 
 // Best first: the triangle of largest bound is split until it is acceptable or the budget is spent; the bound is
@@ -443,6 +504,7 @@ Bound certifiedBound(const Surface& surface, const std::vector<Solid>& parts, do
   meshToFit(surface, parts, target, first, b);
   Budget second{maxPatches};
   fitToMesh(surface, parts, target, second, b);
+
   // Rounding: hull faces merged by qhull are planar within 1e-9 of the hull size, distances are computed in double.
   b.upper += 1e-8 * surface.size;
   return b;

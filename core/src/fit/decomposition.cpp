@@ -1,17 +1,21 @@
 // Approximate convex decomposition by hierarchical splitting on concavity (in the spirit of V-HACD and CoACD):
 // start from the whole mesh as one piece; while there are fewer than maxParts pieces and the most concave piece's
-// concavity exceeds half the tolerance, split it by the best of nine planes (its three principal axes at a quarter,
-// half and three quarters of its extent), the one whose two halves have the least concavity. Each part is the convex
-// hull of its piece. A piece's concavity is the largest distance from the centroids of its hull's faces (faces on
-// the piece's own cut planes excepted) to the mesh surface: a fast estimate that steers the splitting; the union's
-// bound is certified afterwards like any fit's.
+// concavity exceeds half the tolerance, split it by the candidate plane whose two halves have the least concavity.
+// Candidates: the plane of the mesh face nearest the piece's deepest concavity (a cut along a concave edge: an L of
+// two boxes splits into the two boxes), the axis planes through that point, and each axis (mesh frame, principal)
+// at a quarter, half and three quarters of the piece's extent. Each part is the convex hull of its piece. A piece's
+// concavity is the largest distance from the centroids of its hull's faces (faces on the piece's own cut planes
+// excepted) to the mesh surface: a fast estimate that steers the splitting; the union's bound is certified
+// afterwards like any fit's.
 // Halves overlap in a slab 2e-6 of the mesh size thick across the cut, so the union has no crack along it; the
 // bound drops a patch of a cut face whose ball lies half in each hull.
 // Every mesh vertex lies in a piece and so in its hull: the union contains the mesh.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "fit/fit_internal.h"
+#include "gq/query.h"
 
 namespace gq::fit {
 namespace {
@@ -26,18 +30,35 @@ struct Piece {
   std::vector<Plane> cuts;
   Solid hull;
   double concavity = 0;
+  // Where the concavity estimate peaks: the mesh point nearest the worst hull sample and its triangle's plane.
+  Vec3d deepest = Vec3d::Zero();
+  Plane deepestPlane{Vec3d::UnitX(), 0.0};
 };
 
-// Sutherland-Hodgman clipping of every triangle to normal . x <= offset, fanned back to triangles.
-std::vector<Vec3d> clip(const std::vector<Vec3d>& tris, const Plane& plane) {
+// What counts as on a plane (rounding of clipped points and of coplanar mesh faces), and how far a piece's hull
+// reaches across each of its cuts, relative to the mesh size.
+constexpr double kOnPlane = 1e-9;
+constexpr double kOverlap = 1e-6;
+
+// Sutherland-Hodgman clipping of every triangle to normal . x <= offset, fanned back to triangles. A triangle lying
+// in the plane bounds the solid on the side opposite its outward normal: it stays with the half on that side.
+std::vector<Vec3d> clip(const std::vector<Vec3d>& tris, const Plane& plane, double size) {
   std::vector<Vec3d> out;
   std::vector<Vec3d> poly;
+  const double eps = kOnPlane * size;
   for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
+    double d[3];
+    for (int i = 0; i < 3; ++i) d[i] = plane.normal.dot(tris[t + i]) - plane.offset;
+    if (std::abs(d[0]) <= eps && std::abs(d[1]) <= eps && std::abs(d[2]) <= eps) {
+      const Vec3d n = (tris[t + 1] - tris[t]).cross(tris[t + 2] - tris[t]);
+      if (n.dot(plane.normal) > 0) out.insert(out.end(), tris.begin() + std::ptrdiff_t(t), tris.begin() + std::ptrdiff_t(t + 3));
+      continue;
+    }
     poly.clear();
     for (int i = 0; i < 3; ++i) {
       const Vec3d& a = tris[t + i];
       const Vec3d& b = tris[t + (i + 1) % 3];
-      const double da = plane.normal.dot(a) - plane.offset, db = plane.normal.dot(b) - plane.offset;
+      const double da = d[i], db = d[(i + 1) % 3];
       if (da <= 0) poly.push_back(a);
       if ((da < 0 && db > 0) || (da > 0 && db < 0)) poly.push_back(a + (da / (da - db)) * (b - a));
     }
@@ -52,35 +73,70 @@ std::vector<Vec3d> clip(const std::vector<Vec3d>& tris, const Plane& plane) {
 
 bool onCut(const Face& f, const std::vector<Plane>& cuts, double size) {
   for (const Plane& c : cuts)
-    if (f.normal.dot(c.normal) > 1 - 1e-9 && std::abs(-f.d - c.offset) <= 1e-9 * size) return true;
+    if (f.normal.dot(c.normal) > 1 - 1e-9 && std::abs(-f.d - c.offset - kOverlap * size) <= 1e-8 * size) return true;
   return false;
 }
 
-double concavityOf(const Solid& hull, const std::vector<Plane>& cuts, const Surface& surface) {
-  double worst = 0;
-  for (const Face& f : hull.faces) {
-    if (onCut(f, cuts, surface.size)) continue;
+// The concavity estimate: the largest distance from a hull face's fan-triangle centroid (faces on the piece's cuts
+// excepted) to the mesh surface, and where it peaks.
+void measureConcavity(const Surface& surface, Piece& piece) {
+  piece.concavity = 0;
+  Vec3d worst = Vec3d::Zero();
+  bool any = false;
+  for (const Face& f : piece.hull.faces) {
+    if (onCut(f, piece.cuts, surface.size)) continue;
+    const auto& v = piece.hull.vertices;
     for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k) {
-      const Vec3d c = (hull.vertices[f.vertices[0]] + hull.vertices[f.vertices[k]] + hull.vertices[f.vertices[k + 1]]) / 3.0;
-      worst = std::max(worst, surface.distance(c));
+      const Vec3d c = (v[f.vertices[0]] + v[f.vertices[k]] + v[f.vertices[k + 1]]) / 3.0;
+      const double d = surface.distance(c);
+      if (d > piece.concavity || !any) {
+        piece.concavity = d;
+        worst = c;
+        any = true;
+      }
     }
   }
-  return worst;
+  if (!any) return;
+  PointDistanceResult<double> r;
+  if (!pointDistance<double>(worst, TriangleMeshGeometry<double>(surface.cooked), Transform<double>(), r).ok()) return;
+  piece.deepest = r.closestPoint;
+  const TriangleMesh<double>& m = *surface.cooked;
+  if (r.closestIndex >= m.cookedIndex.size() || m.cookedIndex[r.closestIndex] >= m.triangles.size()) return;
+  const TriangleIndices& t = m.triangles[m.cookedIndex[r.closestIndex]];
+  const Vec3d n = (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]);
+  if (n.norm() > 0) piece.deepestPlane = {n.normalized(), n.normalized().dot(m.vertices[t[0]])};
 }
 
+// The piece's hull holds its triangles and each of their points on a cut pushed across it by kOverlap of the mesh
+// size: the two halves of a cut overlap in a thin slab, so their union has no crack along it.
 bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& surface, Piece& out) {
   if (tris.size() < 12) return false;
+  // The points themselves stay too: pushing a corner where a cut meets a slanted face can leave it just outside.
+  std::vector<Vec3d> points = tris;
+  const double eps = kOnPlane * surface.size, overlap = kOverlap * surface.size;
+  for (const Vec3d& p : tris) {
+    Vec3d pushed = p;
+    for (const Plane& c : cuts)
+      if (std::abs(c.normal.dot(p) - c.offset) <= eps) pushed += overlap * c.normal;
+    if (pushed != p) points.push_back(pushed);
+  }
   out.triangles = std::move(tris);
   out.cuts = std::move(cuts);
-  if (!hullOf(out.triangles, out.hull).ok()) return false;
-  out.concavity = concavityOf(out.hull, out.cuts, surface);
+  if (!hullOf(points, out.hull).ok()) return false;
+  measureConcavity(surface, out);
   return true;
 }
 
-bool splitPiece(const Piece& piece, const Surface& surface, Piece& a, Piece& b) {
+// Candidate planes: first through the deepest concavity (the plane of the mesh face there, which cuts along a
+// concave edge, and the axis planes through the point), then each axis at a quarter, half and three quarters of
+// the piece's extent. Axes: the mesh frame's and the piece's principal axes.
+std::vector<Plane> candidatePlanes(const Piece& piece) {
   const Mat3d pca = principalAxes(piece.triangles);
-  double best = std::numeric_limits<double>::infinity();
-  bool found = false;
+  std::vector<Plane> out{piece.deepestPlane};
+  for (int i = 0; i < 6; ++i) {
+    const Vec3d n = i < 3 ? Vec3d(Mat3d::Identity().col(i)) : Vec3d(pca.col(i - 3));
+    out.push_back({n, n.dot(piece.deepest)});
+  }
   for (int i = 0; i < 6; ++i) {
     const Vec3d n = i < 3 ? Vec3d(Mat3d::Identity().col(i)) : Vec3d(pca.col(i - 3));
     double lo = std::numeric_limits<double>::max(), hi = -lo;
@@ -88,22 +144,29 @@ bool splitPiece(const Piece& piece, const Surface& surface, Piece& a, Piece& b) 
       lo = std::min(lo, n.dot(p));
       hi = std::max(hi, n.dot(p));
     }
-    const double overlap = 1e-6 * surface.size;
-    for (double f : {0.5, 0.25, 0.75}) {
-      const double at = lo + f * (hi - lo);
-      std::vector<Plane> cutsA = piece.cuts, cutsB = piece.cuts;
-      cutsA.push_back({n, at + overlap});
-      cutsB.push_back({-n, -(at - overlap)});
-      Piece pa, pb;
-      if (!makePiece(clip(piece.triangles, cutsA.back()), cutsA, surface, pa)) continue;
-      if (!makePiece(clip(piece.triangles, cutsB.back()), cutsB, surface, pb)) continue;
-      const double score = std::max(pa.concavity, pb.concavity);
-      if (score < best) {
-        best = score;
-        a = std::move(pa);
-        b = std::move(pb);
-        found = true;
-      }
+    for (double f : {0.5, 0.25, 0.75}) out.push_back({n, lo + f * (hi - lo)});
+  }
+  return out;
+}
+
+// The candidate plane whose two halves have the least concavity (the larger of the two); a plane that leaves
+// (nearly) nothing on one side is skipped.
+bool splitPiece(const Piece& piece, const Surface& surface, Piece& a, Piece& b) {
+  double best = std::numeric_limits<double>::infinity();
+  bool found = false;
+  for (const Plane& plane : candidatePlanes(piece)) {
+    std::vector<Plane> cutsA = piece.cuts, cutsB = piece.cuts;
+    cutsA.push_back(plane);
+    cutsB.push_back({-plane.normal, -plane.offset});
+    Piece pa, pb;
+    if (!makePiece(clip(piece.triangles, cutsA.back(), surface.size), cutsA, surface, pa)) continue;
+    if (!makePiece(clip(piece.triangles, cutsB.back(), surface.size), cutsB, surface, pb)) continue;
+    const double score = std::max(pa.concavity, pb.concavity);
+    if (score < best) {
+      best = score;
+      a = std::move(pa);
+      b = std::move(pb);
+      found = true;
     }
   }
   return found;

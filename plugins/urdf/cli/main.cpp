@@ -28,7 +28,7 @@ struct CommonOptions {
 void addCommon(CLI::App& app, CommonOptions& o) {
   app.add_option("--urdf", o.urdf, "URDF file")->required();
   app.add_option("--srdf", o.srdf, "SRDF file (disable_collisions, group states)");
-  app.add_option("--mode", o.mode, "mesh | hull | box | box-aabb | capsule | sphere | best-primitive");
+  app.add_option("--mode", o.mode, "mesh | hull | box | box-aabb | capsule | sphere | best-primitive | fit:<tolerance, metres>");
   app.add_option("--package-path", o.packagePaths, "folder holding ROS packages (repeatable; ROS_PACKAGE_PATH also used)");
 }
 
@@ -40,7 +40,7 @@ int fail(const gq::Status& s) {
 gq::Status load(const CommonOptions& o, const std::string& mode, std::shared_ptr<const RobotModel<double>>& out) {
   LoadOptions lo;
   lo.packagePaths = o.packagePaths;
-  gq::Status s = parseRepresentation(mode, lo.representation);
+  gq::Status s = parseMode(mode, lo);
   if (!s.ok()) return s;
   auto model = std::make_shared<RobotModel<double>>();
   s = loadRobot(o.urdf, o.srdf, lo, *model);
@@ -65,14 +65,25 @@ int runInfo(const CommonOptions& o) {
     std::printf("  %-28s %-10s %s -> %s  [%g, %g]%s\n", j.name.c_str(), toString(j.type),
                 m->links[j.parentLink].name.c_str(), m->links[j.childLink].name.c_str(), double(j.lower),
                 double(j.upper), j.mimicJoint >= 0 ? "  (mimic)" : "");
-  std::printf("\nshapes (error: mesh->approximation / approximation->mesh, metres; sampled one-sided Hausdorff):\n");
-  for (const auto& sh : m->shapes)
-    std::printf("  %-20s %-9s as %-14s src tris %6u  model faces %5u  err %.5f / %.5f  %7.1f KiB  %s\n",
-                m->links[sh.link].name.c_str(), toString(sh.source),
-                sh.source == ShapeSource::Mesh ? toString(sh.representation)
-                : sh.source == ShapeSource::Cylinder ? "exact cylinder" : toString(sh.source),
-                sh.sourceTriangles, sh.modelTriangles, double(sh.error.meshToApproximation),
-                double(sh.error.approximationToMesh), sh.bytes / 1024.0, sh.file.c_str());
+  std::printf("\nshapes (bound: certified upper bound of the two-sided Hausdorff distance between the mesh and its "
+              "model, metres; a decomposition's parts share their union's bound):\n");
+  for (const auto& sh : m->shapes) {
+    const bool mesh = sh.source == ShapeSource::Mesh;
+    const std::string as = !mesh ? (sh.source == ShapeSource::Cylinder ? "exact cylinder" : toString(sh.source))
+                           : sh.representation == Representation::BoxAabb ? "box-aabb"
+                           : sh.fitParts > 1 ? std::string(gq::toString(sh.fitted)) + " x" + std::to_string(sh.fitParts)
+                                             : gq::toString(sh.fitted);
+    std::printf("  %-20s %-9s as %-18s src tris %6u  model faces %5u  bound %.5f  %7.1f KiB  %s\n",
+                m->links[sh.link].name.c_str(), toString(sh.source), as.c_str(), sh.sourceTriangles,
+                sh.modelTriangles, double(sh.errorBound), sh.bytes / 1024.0, sh.file.c_str());
+  }
+  std::printf("\nper link (largest bound of its shapes):\n");
+  for (const auto& link : m->links) {
+    if (link.shapes.empty()) continue;
+    double bound = 0;
+    for (std::uint32_t i : link.shapes) bound = std::max(bound, double(m->shapes[i].errorBound));
+    std::printf("  %-20s %2zu shape(s)  bound %.5f\n", link.name.c_str(), link.shapes.size(), bound);
+  }
   std::size_t checked = 0, allowed = 0;
   for (std::uint32_t a = 0; a < m->links.size(); ++a)
     for (std::uint32_t b = a + 1; b < m->links.size(); ++b) {
@@ -306,7 +317,7 @@ int main(int argc, char** argv) {
   CLI::App app{"gq-urdf: URDF/SRDF robot self-collision with GeomQuery"};
   app.require_subcommand(1);
   CommonOptions common;
-  auto* info = app.add_subcommand("info", "links, joints, shapes, triangle counts, approximation errors, memory");
+  auto* info = app.add_subcommand("info", "links, joints, shapes, triangle counts, certified error bounds, memory");
   addCommon(*info, common);
   std::string config;
   std::size_t random = 0;

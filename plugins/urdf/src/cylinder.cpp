@@ -1,6 +1,6 @@
 // A URDF cylinder (axis local Z, `length` along it) as gq's exact custom Cylinder (gq/custom_shapes.h), whose axis
 // is local X: the shape frame is the URDF frame turned a quarter about Y (-pi/2 maps X onto Z). No approximation:
-// its error is 0 both ways.
+// its error bound is 0.
 #include <cmath>
 
 #include "gq/custom_shapes.h"
@@ -27,7 +27,7 @@ template <class T> Status cylinderShape(T radius, T length, Shape<T>& shape, Tra
   shape.representation = Representation::Hull;  // unused for non-mesh sources
   shape.modelTriangles = 0;
   shape.bytes = sizeof(Geometry<T>) + sizeof(CylinderCallbacks<T>);
-  shape.error = ApproximationError<T>();
+  shape.errorBound = T(0);
   fit = cylinderAxisToUrdfZ<T>();
   return {};
 }

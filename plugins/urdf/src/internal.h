@@ -37,20 +37,19 @@ struct SrdfData {
 // ParseError with tinyxml2's line and message for malformed XML, or for a <disable_collisions> missing a link.
 Status parseSrdf(const std::string& xml, SrdfData& out);
 
-// ---- Shapes (cylinder.cpp, mesh_shape.cpp, approximation_error.cpp) -------------------------------------------
+// ---- Shapes (cylinder.cpp, mesh_shape.cpp) -------------------------------------------------------------------
 template <class T> std::size_t hullBytes(const ConvexMesh<T>& hull);
 // The exact custom Cylinder for a URDF cylinder along local Z; `fit` turns the custom shape's X axis onto Z.
 template <class T> Status cylinderShape(T radius, T length, Shape<T>& shape, Transform<T>& fit);
 
-// Fills shape.geometry and the fit's pose relative to the collision element frame (`fit`), per representation.
+// A mesh collision element's model: one shape per part (several for a convex decomposition), each placed in the
+// mesh frame by fits[i]; geometry, representation, fitted, fitParts, errorBound, modelTriangles and bytes are set.
+template <class T> struct MeshParts {
+  std::vector<Shape<T>> shapes;
+  std::vector<Transform<T>> fits;
+};
 template <class T>
-Status meshShape(const MeshData<T>& mesh, Representation rep, const LoadOptions& options, Shape<T>& shape,
-                 Transform<T>& fit);
-
-// Measures shape.error for a mesh source: `fit` places shape.geometry in the mesh frame.
-template <class T>
-Status measureApproximationError(const MeshData<T>& mesh, const Geometry<T>& approximation, const Transform<T>& fit,
-                                 const LoadOptions& options, ApproximationError<T>& error);
+Status meshShapes(const MeshData<T>& mesh, Representation rep, const LoadOptions& options, MeshParts<T>& out);
 
 // ---- Point-cloud frames (mesh_shape.cpp) ---------------------------------------------------------------------
 // Principal axes of the points as a proper rotation (columns by decreasing variance), and their mean.

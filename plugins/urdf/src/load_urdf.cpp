@@ -159,8 +159,8 @@ template <class T> void applyScale(const ::urdf::Vector3& s, MeshData<T>& mesh) 
 }
 
 template <class T>
-Status meshElement(const ::urdf::Mesh& m, const std::string& baseDir, const LoadOptions& options, Shape<T>& shape,
-                   Transform<T>& fit) {
+Status meshElement(const ::urdf::Mesh& m, const std::string& baseDir, const LoadOptions& options,
+                   internal::MeshParts<T>& parts) {
   std::string path;
   Status s = resolveMeshPath(m.filename, baseDir, options, path);
   if (!s.ok()) return s;
@@ -168,21 +168,21 @@ Status meshElement(const ::urdf::Mesh& m, const std::string& baseDir, const Load
   s = loadMeshFile(path, mesh, endsWithDae(path));  // ROS tools ignore the DAE root (up-axis) transform
   if (!s.ok()) return Status::owned(s.code, "mesh file '" + path + "': " + s.detailedMessage());
   applyScale(m.scale, mesh);
-  shape.file = path;
-  s = internal::meshShape(mesh, options.representation, options, shape, fit);
+  s = internal::meshShapes(mesh, options.representation, options, parts);
   if (!s.ok()) return Status::owned(s.code, "mesh file '" + path + "': " + s.detailedMessage());
-  if (shape.representation != Representation::Mesh) {
-    s = internal::measureApproximationError(mesh, shape.geometry, fit, options, shape.error);
-    if (!s.ok()) return Status::owned(s.code, "measuring the approximation error of '" + path + "': " + s.detailedMessage());
-  }
+  for (auto& shape : parts.shapes) shape.file = path;
   return {};
 }
 
+// The shapes of one <collision>: one, or one per part of a mesh's convex decomposition.
 template <class T>
 Status collisionElement(const ::urdf::Collision& c, const std::string& linkName, const std::string& baseDir,
-                        const LoadOptions& options, Shape<T>& shape) {
+                        const LoadOptions& options, std::vector<Shape<T>>& shapes) {
   if (!c.geometry) return Status::owned(StatusCode::ParseError, "malformed URDF: a <collision> of link '" + linkName + "' has no geometry");
-  Transform<T> fit;
+  internal::MeshParts<T> parts;
+  parts.shapes.resize(1);
+  parts.fits.resize(1);
+  Shape<T>& shape = parts.shapes[0];
   Status s;
   const ::urdf::Geometry& g = *c.geometry;
   switch (g.type) {
@@ -200,10 +200,10 @@ Status collisionElement(const ::urdf::Collision& c, const std::string& linkName,
     }
     case ::urdf::Geometry::CYLINDER: {
       const auto& cyl = static_cast<const ::urdf::Cylinder&>(g);
-      s = internal::cylinderShape(T(cyl.radius), T(cyl.length), shape, fit);
+      s = internal::cylinderShape(T(cyl.radius), T(cyl.length), shape, parts.fits[0]);
       break;
     }
-    case ::urdf::Geometry::MESH: s = meshElement(static_cast<const ::urdf::Mesh&>(g), baseDir, options, shape, fit); break;
+    case ::urdf::Geometry::MESH: s = meshElement(static_cast<const ::urdf::Mesh&>(g), baseDir, options, parts); break;
   }
   if (!s.ok()) return s;
   if (shape.source != ShapeSource::Mesh && shape.source != ShapeSource::Cylinder) {
@@ -211,7 +211,10 @@ Status collisionElement(const ::urdf::Collision& c, const std::string& linkName,
     if (!s.ok()) return Status::owned(StatusCode::ParseError, "malformed URDF: link '" + linkName + "': " + s.detailedMessage());
     shape.bytes = sizeof(Geometry<T>);
   }
-  shape.origin = toTransform<T>(c.origin) * fit;
+  for (std::size_t i = 0; i < parts.shapes.size(); ++i) {
+    parts.shapes[i].origin = toTransform<T>(c.origin) * parts.fits[i];
+    shapes.push_back(std::move(parts.shapes[i]));
+  }
   return {};
 }
 
@@ -289,12 +292,14 @@ Status buildTree(const ::urdf::ModelInterface& um, const std::string& baseDir, c
     Link<T> link;
     link.name = ul.name;
     for (const auto& c : ul.collision_array) {
-      Shape<T> shape;
-      shape.link = std::uint32_t(head);
-      Status s = collisionElement(*c, ul.name, baseDir, options, shape);
+      std::vector<Shape<T>> shapes;
+      Status s = collisionElement(*c, ul.name, baseDir, options, shapes);
       if (!s.ok()) return s;
-      link.shapes.push_back(std::uint32_t(model.shapes.size()));
-      model.shapes.push_back(std::move(shape));
+      for (auto& shape : shapes) {
+        shape.link = std::uint32_t(head);
+        link.shapes.push_back(std::uint32_t(model.shapes.size()));
+        model.shapes.push_back(std::move(shape));
+      }
     }
     if (head > 0) {
       const auto& uj = *ul.parent_joint;

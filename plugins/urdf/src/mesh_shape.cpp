@@ -1,14 +1,13 @@
-// A mesh collision element in the requested representation. Primitive fits enclose every vertex:
-//  - box: the bounding box in the principal-axis (PCA) frame of the vertices, or in the link frame (box-aabb);
-//  - capsule: axis = first principal axis through the centre of the PCA box's cross-section, radius = largest
-//    distance of a vertex from that axis, segment ends as short as every vertex allows: a vertex at axial t and
-//    radial r is covered when t lies within sqrt(R^2 - r^2) of the segment;
-//  - sphere: centred at the AABB centre or the vertex centroid (the smaller radius wins);
-//  - best primitive: the enclosing box, capsule or sphere of least volume.
+// A mesh collision element in the requested representation: the mesh itself, its bounding box in the element frame
+// (box-aabb), or what gq::fitShape (gq/fit.h) fits enclosing it, with the fit's certified error bound. Also the
+// point-cloud frames and the enclosing capsule the culling volumes use: the capsule's segment ends are as short as
+// every point allows (a point at axial t and radial r is covered when t lies within sqrt(R^2 - r^2) of the segment).
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
 
+#include "gq/custom_shapes.h"
+#include "gq/fit.h"
 #include "gq/tolerances.h"
 #include "internal.h"
 
@@ -77,131 +76,111 @@ template EnclosingCapsule enclosingCapsule<double>(const std::vector<Vec3<double
 
 namespace {
 
-template <class T> struct Fit {
-  Geometry<T> geometry;
-  Transform<T> pose;  // in the mesh frame
-  double volume = 0;
-  Representation representation = Representation::Box;
-};
-
-template <class T> double sizeOf(const std::vector<Vec3<T>>& v) {
-  Bounds3<double> b;
-  for (const auto& p : v) b.include(p.template cast<double>());
-  return (b.max - b.min).norm();
-}
-
-template <class T> Transform<T> poseOf(const Vec3<double>& centre, const Mat3<double>& r) {
-  return Transform<T>(centre.cast<T>(), Quat<T>(Quat<double>(r).normalized().template cast<T>()));
-}
-
-template <class T> Fit<T> fitBox(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minHalf, Representation rep) {
-  Vec3<double> lo, hi;
-  extentsIn(v, r, lo, hi);
-  const Vec3<double> half = ((hi - lo) * 0.5).cwiseMax(Vec3<double>::Constant(minHalf));
-  Fit<T> f;
-  f.geometry = BoxGeometry<T>(half.cast<T>());
-  f.pose = poseOf<T>(r * ((lo + hi) * 0.5), r);
-  f.volume = 8.0 * half.prod();
-  f.representation = rep;
-  return f;
-}
-
-template <class T> Fit<T> fitCapsule(const std::vector<Vec3<T>>& v, const Mat3<double>& r, double minHalf) {
-  const EnclosingCapsule c = enclosingCapsule(v, r, minHalf);
-  Fit<T> f;
-  f.geometry = CapsuleGeometry<T>(T(c.radius), T(c.halfHeight));
-  f.pose = poseOf<T>(c.centre, r);
-  f.volume = M_PI * c.radius * c.radius * (2.0 * c.halfHeight + 4.0 / 3.0 * c.radius);
-  f.representation = Representation::Capsule;
-  return f;
-}
-
-template <class T> double radiusAbout(const std::vector<Vec3<T>>& v, const Vec3<double>& c) {
-  double r = 0;
-  for (const auto& p : v) r = std::max(r, (p.template cast<double>() - c).norm());
-  return r;
-}
-
-template <class T> Fit<T> fitSphere(const std::vector<Vec3<T>>& v, const Vec3<double>& mean, double minHalf) {
-  Vec3<double> lo, hi;
-  extentsIn(v, Mat3<double>::Identity(), lo, hi);
-  Vec3<double> c = (lo + hi) * 0.5;
-  double radius = radiusAbout(v, c);
-  if (const double rm = radiusAbout(v, mean); rm < radius) {
-    radius = rm;
-    c = mean;
-  }
-  radius = std::max(radius, minHalf);
-  Fit<T> f;
-  f.geometry = SphereGeometry<T>(T(radius));
-  f.pose = Transform<T>(c.cast<T>());
-  f.volume = 4.0 / 3.0 * M_PI * radius * radius * radius;
-  f.representation = Representation::Sphere;
-  return f;
-}
-
-template <class T> Fit<T> fitPrimitive(const std::vector<Vec3<T>>& v, Representation rep) {
-  const double minHalf = double(tol::Rel<T>::kEpsilon) * sizeOf(v);  // flat meshes still get a valid solid
-  Vec3<double> mean;
-  const Mat3<double> axes = principalAxes(v, mean);
-  switch (rep) {
-    case Representation::Box: return fitBox(v, axes, minHalf, rep);
-    case Representation::BoxAabb: return fitBox(v, Mat3<double>::Identity(), minHalf, rep);
-    case Representation::Capsule: return fitCapsule(v, axes, minHalf);
-    case Representation::Sphere: return fitSphere(v, mean, minHalf);
-    default: break;
-  }
-  Fit<T> best = fitBox(v, axes, minHalf, Representation::Box);
-  for (const Fit<T>& f : {fitBox(v, Mat3<double>::Identity(), minHalf, Representation::BoxAabb),
-                          fitCapsule(v, axes, minHalf), fitSphere(v, mean, minHalf)})
-    if (f.volume < best.volume) best = f;
-  return best;
-}
-
 template <class T> std::size_t meshBytes(const TriangleMesh<T>& m, std::size_t bvhBytes) {
   return m.vertices.size() * sizeof(Vec3<T>) + m.triangles.size() * sizeof(TriangleIndices) +
          (m.inputIndex.size() + m.cookedIndex.size() + m.hullVertices.size()) * sizeof(std::uint32_t) + bvhBytes;
 }
 
+template <class T> Shape<T> meshSourceShape(const MeshData<T>& mesh, Representation rep) {
+  Shape<T> shape;
+  shape.source = ShapeSource::Mesh;
+  shape.sourceTriangles = std::uint32_t(mesh.triangles.size());
+  shape.representation = rep;
+  return shape;
+}
+
+// The triangle mesh itself, with its convex hull as the checker's culling volume (none for a flat mesh, which has
+// no hull): error 0.
+template <class T> Status wholeMesh(const MeshData<T>& mesh, Representation rep, MeshParts<T>& out) {
+  std::shared_ptr<const TriangleMesh<T>> cooked;
+  MeshCookReport report;
+  Status s = cookTriangleMesh(mesh.vertices, mesh.triangles, cooked, &report);
+  if (!s.ok()) return s;
+  std::shared_ptr<const ConvexMesh<T>> hull;
+  if (!cookConvexMesh(mesh.vertices, hull).ok()) hull.reset();
+  Shape<T> shape = meshSourceShape(mesh, rep);
+  shape.geometry = TriangleMeshGeometry<T>(cooked);
+  shape.boundingHull = hull;
+  shape.fitted = FitRepresentation::Mesh;
+  shape.modelTriangles = report.cookedTriangles;
+  shape.bytes = meshBytes(*cooked, report.bvhBytes) + (hull ? hullBytes(*hull) : 0);
+  out.shapes = {std::move(shape)};
+  out.fits = {Transform<T>()};
+  return {};
+}
+
+// The bounding box in the mesh frame (flat meshes get a box of a few ulps of their size across), and its bound.
+template <class T> Status meshFrameBox(const MeshData<T>& mesh, const LoadOptions& options, MeshParts<T>& out) {
+  Vec3<double> lo, hi;
+  extentsIn(mesh.vertices, Mat3<double>::Identity(), lo, hi);
+  const double minHalf = double(tol::Rel<T>::kEpsilon) * (hi - lo).norm();
+  const Vec3<double> half = ((hi - lo) * 0.5).cwiseMax(Vec3<double>::Constant(minHalf));
+  Shape<T> shape = meshSourceShape(mesh, Representation::BoxAabb);
+  shape.geometry = BoxGeometry<T>(half.cast<T>());
+  shape.fitted = FitRepresentation::Box;
+  shape.bytes = sizeof(Geometry<T>);
+  const Transform<T> pose(((lo + hi) * 0.5).cast<T>());
+  Status s = certifyFit(mesh, {{shape.geometry, pose}}, T(options.errorBoundTarget), FitOptions<T>().maxBoundPatches,
+                        shape.errorBound);
+  if (!s.ok()) return s;
+  out.shapes = {std::move(shape)};
+  out.fits = {pose};
+  return {};
+}
+
+FitRepresentationSet allowedFor(Representation rep) {
+  switch (rep) {
+    case Representation::Hull: return fitBit(FitRepresentation::ConvexHull);
+    case Representation::Box: return fitBit(FitRepresentation::Box);
+    case Representation::Capsule: return fitBit(FitRepresentation::Capsule);
+    case Representation::Sphere: return fitBit(FitRepresentation::Sphere);
+    case Representation::BestPrimitive: return kFitPrimitives;
+    default: return kAllFitRepresentations;
+  }
+}
+
+template <class T> std::uint32_t polygonCount(const Geometry<T>& g) {
+  const auto* hull = g.template getIf<ConvexMeshGeometry<T>>();
+  return hull ? std::uint32_t(hull->mesh->polygons.size()) : 0u;
+}
+
+template <class T> std::size_t geometryBytes(const Geometry<T>& g) {
+  if (const auto* hull = g.template getIf<ConvexMeshGeometry<T>>()) return hullBytes(*hull->mesh);
+  if (g.template getIf<CustomGeometry<T>>()) return sizeof(Geometry<T>) + sizeof(CylinderCallbacks<T>);
+  return sizeof(Geometry<T>);
+}
+
 }  // namespace
 
 template <class T>
-Status meshShape(const MeshData<T>& mesh, Representation rep, const LoadOptions&, Shape<T>& shape, Transform<T>& fit) {
-  shape.source = ShapeSource::Mesh;
-  shape.sourceTriangles = std::uint32_t(mesh.triangles.size());
-  fit = Transform<T>();
-  if (rep == Representation::Mesh) {
-    std::shared_ptr<const TriangleMesh<T>> cooked;
-    MeshCookReport report;
-    Status s = cookTriangleMesh(mesh.vertices, mesh.triangles, cooked, &report);
-    if (!s.ok()) return s;
-    std::shared_ptr<const ConvexMesh<T>> hull;
-    s = cookConvexMesh(mesh.vertices, hull);
-    if (!s.ok()) return s;
-    shape.geometry = TriangleMeshGeometry<T>(cooked);
-    shape.boundingHull = hull;
-    shape.representation = rep;
-    shape.modelTriangles = report.cookedTriangles;
-    shape.bytes = meshBytes(*cooked, report.bvhBytes) + hullBytes(*hull);
-    return {};
+Status meshShapes(const MeshData<T>& mesh, Representation rep, const LoadOptions& options, MeshParts<T>& out) {
+  if (rep == Representation::Mesh) return wholeMesh(mesh, rep, out);
+  if (rep == Representation::BoxAabb) return meshFrameBox(mesh, options, out);
+  FitOptions<T> fit;
+  fit.tolerance = T(rep == Representation::Fit ? options.fitTolerance : options.errorBoundTarget);
+  fit.allowed = allowedFor(rep);
+  fit.maxParts = options.fitMaxParts;
+  fit.contain = true;
+  fit.measureCost = false;
+  FitResult<T> result;
+  // A Warning only says that no allowed representation is within the tolerance: the modes other than Fit allow
+  // one and report its bound whatever it is.
+  Status s = fitShape(mesh, fit, result);
+  if (!s.ok() && s.code != StatusCode::Warning) return s;
+  if (result.representation == FitRepresentation::Mesh) return wholeMesh(mesh, rep, out);
+  out.shapes.clear();
+  out.fits.clear();
+  for (const auto& [geometry, pose] : result.parts) {
+    Shape<T> shape = meshSourceShape(mesh, rep);
+    shape.geometry = geometry;
+    shape.fitted = result.representation;
+    shape.fitParts = std::uint32_t(result.parts.size());
+    shape.modelTriangles = polygonCount(geometry);
+    shape.bytes = geometryBytes(geometry);
+    shape.errorBound = result.errorBound;
+    out.shapes.push_back(std::move(shape));
+    out.fits.push_back(pose);
   }
-  if (rep == Representation::Hull) {
-    std::shared_ptr<const ConvexMesh<T>> hull;
-    Status s = cookConvexMesh(mesh.vertices, hull);
-    if (!s.ok()) return s;
-    shape.geometry = ConvexMeshGeometry<T>(hull);
-    shape.representation = rep;
-    shape.modelTriangles = std::uint32_t(hull->polygons.size());
-    shape.bytes = hullBytes(*hull);
-    return {};
-  }
-  if (mesh.vertices.empty()) return Status::degenerate("mesh has no vertices");
-  Fit<T> f = fitPrimitive(mesh.vertices, rep);
-  shape.geometry = f.geometry;
-  shape.representation = f.representation;
-  shape.modelTriangles = 0;
-  shape.bytes = sizeof(Geometry<T>);
-  fit = f.pose;
   return {};
 }
 
@@ -209,9 +188,7 @@ template Mat3<double> principalAxes<float>(const std::vector<Vec3<float>>&, Vec3
 template Mat3<double> principalAxes<double>(const std::vector<Vec3<double>>&, Vec3<double>&);
 template void extentsIn<float>(const std::vector<Vec3<float>>&, const Mat3<double>&, Vec3<double>&, Vec3<double>&);
 template void extentsIn<double>(const std::vector<Vec3<double>>&, const Mat3<double>&, Vec3<double>&, Vec3<double>&);
-template Status meshShape<float>(const MeshData<float>&, Representation, const LoadOptions&, Shape<float>&,
-                                 Transform<float>&);
-template Status meshShape<double>(const MeshData<double>&, Representation, const LoadOptions&, Shape<double>&,
-                                  Transform<double>&);
+template Status meshShapes<float>(const MeshData<float>&, Representation, const LoadOptions&, MeshParts<float>&);
+template Status meshShapes<double>(const MeshData<double>&, Representation, const LoadOptions&, MeshParts<double>&);
 
 }  // namespace gq::urdf::internal

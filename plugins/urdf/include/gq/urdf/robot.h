@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "gq/fit.h"
 #include "gq/geometry.h"
 #include "gq/status.h"
 #include "gq/transform.h"
@@ -13,26 +14,37 @@
 namespace gq::urdf {
 
 // How a mesh collision element is modelled. Box/sphere/cylinder elements keep their own exact shape in every mode
-// (a cylinder is gq's custom CylinderCallbacks, gq/custom_shapes.h).
+// (a cylinder is gq's custom CylinderCallbacks, gq/custom_shapes.h). Every mode but `Mesh` and `BoxAabb` is fitted by
+// gq::fitShape (gq/fit.h), and every fit encloses the mesh.
 enum class Representation : std::uint8_t {
   Mesh,           // the triangle mesh itself (needs mesh-mesh queries)
-  Hull,           // convex hull (qhull)
-  Box,            // PCA-oriented bounding box
+  Hull,           // convex hull
+  Box,            // approximate minimum-volume oriented box
   BoxAabb,        // bounding box aligned with the link frame
-  Capsule,        // capsule along the principal axis, enclosing every vertex
-  Sphere,         // enclosing sphere
-  BestPrimitive,  // the enclosing box / capsule / sphere of least volume
+  Capsule,        // enclosing capsule of least volume over the candidate axes
+  Sphere,         // smallest enclosing sphere
+  BestPrimitive,  // the enclosing sphere, capsule, box or cylinder of the smallest certified error bound
+  Fit,            // the cheapest enclosing fit within LoadOptions::fitTolerance: a primitive, a (simplified) hull,
+                  // a convex decomposition (several shapes) or the mesh itself
 };
 const char* toString(Representation r);
+// "mesh", "hull", "box", "box-aabb", "capsule", "sphere", "best-primitive" or "fit" (Fit keeps the tolerance it has).
 Status parseRepresentation(const std::string& name, Representation& out);
 
 struct LoadOptions {
   Representation representation = Representation::Hull;
   std::vector<std::string> packagePaths;  // folders searched for package://<name>/..., before ROS_PACKAGE_PATH
   bool useRosPackagePath = true;          // also search the ROS_PACKAGE_PATH environment variable
-  std::uint32_t errorSamplesPerShape = 2000;  // surface samples for the measured approximation error
-  std::uint64_t errorSeed = 1;
+  double fitTolerance = 0.002;            // metres: Representation::Fit's largest certified error
+  std::uint32_t fitMaxParts = 16;         // Representation::Fit: most parts of a convex decomposition
+  // Metres: the certified error bound of the other fitted modes is refined until it is within the larger of this
+  // and 2 % of the distance actually attained (a tighter target costs loading time, never accuracy).
+  double errorBoundTarget = 1e-4;
 };
+
+// Parses a mode of the CLI into `options`: the names of parseRepresentation, or "fit:<tolerance>" (metres, finite
+// and > 0) for Representation::Fit. InvalidArgument for anything else; `options` is unchanged then.
+Status parseMode(const std::string& mode, LoadOptions& options);
 
 enum class JointType : std::uint8_t { Revolute, Continuous, Prismatic, Fixed };
 const char* toString(JointType t);
@@ -58,29 +70,23 @@ template <class T> struct Link {
 enum class ShapeSource : std::uint8_t { Box, Sphere, Cylinder, Mesh };
 const char* toString(ShapeSource s);
 
-// Measured geometric error of a shape's representation against its source (0 for exact shapes).
-template <class T> struct ApproximationError {
-  // max over mesh vertices and points sampled on the mesh triangles of the distance to the approximation solid
-  // (the one-sided Hausdorff distance mesh -> approximation; 0 when the approximation encloses the mesh)
-  T meshToApproximation = T(0);
-  // max over points sampled on the approximation's surface of the distance to the source surface: how far the
-  // representation reaches beyond the real shape (0 for boxes, spheres and the exact cylinders)
-  T approximationToMesh = T(0);
-};
-
 template <class T> struct Shape {
   std::uint32_t link = 0;
   Transform<T> origin;  // link frame -> shape frame
   Geometry<T> geometry;
   ShapeSource source = ShapeSource::Box;
-  Representation representation = Representation::Hull;  // what `geometry` is, for mesh sources
-  // Mesh representation only: the mesh's convex hull. Hull-disjoint implies mesh-disjoint, so the checker tests
-  // the hulls (GJK) before the triangles.
+  Representation representation = Representation::Hull;  // the mode that modelled it, for mesh sources
+  FitRepresentation fitted = FitRepresentation::Mesh;     // what `geometry` is, for mesh sources
+  std::uint32_t fitParts = 1;  // shapes the collision element became: a decomposition's parts are consecutive shapes
+  // The mesh itself only: its convex hull (null for a flat mesh). Hull-disjoint implies mesh-disjoint, so the
+  // checker tests the hulls (GJK) before the triangles.
   std::shared_ptr<const ConvexMesh<T>> boundingHull;
   std::string file;                 // resolved mesh path
   std::uint32_t sourceTriangles = 0;
   std::uint32_t modelTriangles = 0;  // triangles (or hull polygons) of what is checked
-  ApproximationError<T> error;
+  // Certified upper bound (metres) of the two-sided Hausdorff distance between the source mesh's surface and the
+  // surface of what is checked (the union of the element's parts), gq::certifyFit; 0 for exact shapes and the mesh.
+  T errorBound = T(0);
   std::size_t bytes = 0;             // memory of the cooked representation
 };
 
