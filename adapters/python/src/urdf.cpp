@@ -21,7 +21,7 @@ class Robot {
   Robot(const std::string& urdf, const std::string& srdf, const std::string& mode,
         const std::vector<std::string>& packagePaths) {
     gq::urdf::LoadOptions options;
-    check(gq::urdf::parseRepresentation(mode, options.representation), "Robot mode");
+    check(gq::urdf::parseMode(mode, options), "Robot mode");
     options.packagePaths = packagePaths;
     auto model = std::make_shared<gq::urdf::RobotModel<double>>();
     check(gq::urdf::loadRobot(urdf, srdf, options, *model), "Robot");
@@ -94,7 +94,7 @@ void bindUrdf(py::module_& m) {
            }),
            py::arg("urdf"), py::arg("srdf") = py::none(), py::arg("mode") = "hull",
            py::arg("package_paths") = std::vector<std::string>(),
-           "mode: how mesh links are modelled: mesh, hull, box, box-aabb, capsule, sphere or best-primitive.")
+           "mode: how mesh links are modelled: mesh, hull, box, box-aabb, capsule, sphere, best-primitive or fit:<tolerance> (metres).")
       .def_property_readonly("name", [](const Robot& r) { return r.model().name; })
       .def_property_readonly("variables", [](const Robot& r) { return r.model().variables; },
                              "Joint names of the configuration vector, in order.")
