@@ -104,6 +104,34 @@ TEST(BulletContacts, BoxOnBoxGivesItsFourFaceCornersAtOnce) {
   }
 }
 
+TEST(BulletContacts, TiltedBoxOnBoxGivesOnlyItsPenetratingCorners) {
+  QueryWorld w;
+  btBoxShape big(btVector3(1, 1, 1)), small(btVector3(0.5, 0.5, 0.5));
+  const double tilt = 0.01;  // about z: the bottom edge at -x lies 2 mm into the top face, the one at +x ~8 mm above
+  const double centreY = 1 - 0.002 + 0.5 * std::cos(tilt) + 0.5 * std::sin(tilt);
+  auto* top = w.add(&small, btVector3(0.2, btScalar(centreY), -0.1), btQuaternion(btVector3(0, 0, 1), btScalar(tilt)));
+  auto* bottom = w.add(&big, btVector3(0, 0, 0));
+  const auto pts = w.contacts(top, bottom);
+  ASSERT_EQ(pts.size(), 2u);
+  for (const Point& p : pts) {
+    EXPECT_NEAR(p.distance, -0.002, kTol);
+    EXPECT_NEAR(p.pointOnB.y(), 1, kTol);
+    EXPECT_NEAR(std::abs(p.pointOnB.z() + 0.1), 0.5, kTol);
+  }
+}
+
+TEST(BulletContacts, BoxPairApartWithinTheThresholdGivesOnlyItsClosestPoint) {
+  QueryWorld w;
+  btBoxShape big(btVector3(1, 1, 1)), small(btVector3(0.5, 0.5, 0.5));
+  auto* top = w.add(&small, btVector3(0.2, btScalar(1.505), -0.1));  // 5 mm above, face on face
+  auto* bottom = w.add(&big, btVector3(0, 0, 0));
+  const auto pts = w.contacts(top, bottom);
+  ASSERT_EQ(pts.size(), 1u);
+  EXPECT_NEAR(pts[0].distance, 0.005, kTol);
+  expectVec(pts[0].normalOnB, btVector3(0, 1, 0), kTol);
+  EXPECT_NEAR(pts[0].pointOnB.y(), 1, kTol);
+}
+
 TEST(BulletContacts, HullMarginIsOutsideBoxMarginInside) {
   QueryWorld w;
   ShapeStore store;

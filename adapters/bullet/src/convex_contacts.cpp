@@ -74,6 +74,29 @@ bool culledBySeparatingAxis(const PlacedShape& a, const PlacedShape& b, Real thr
 // Bullet's manifold holds 4 points: sending it more makes it sort its cache once per extra point.
 constexpr std::uint32_t kManifoldPoints = 4;
 
+// The points of `set` (bit i for point i) whose separation is <= threshold.
+std::uint32_t pointsWithin(const ContactSet<Real>& set, Real threshold) {
+  std::uint32_t bits = 0;
+  for (std::uint32_t i = 0; i < set.count; ++i)
+    if (set.points[i].separation <= threshold) bits |= 1u << i;
+  return bits;
+}
+
+// The points of a box pair the manifold gets: the penetrating ones, as Bullet's box-box algorithm adds them (the
+// manifold keeps older points until they pass the breaking threshold); a pair with none gets only its closest point
+// within the threshold. Boxes lying next to each other (many in a pile) so hand the solver one row instead of four,
+// and the one speculative row keeps an approaching box from bouncing (penetrating points only was measured to keep
+// a box pile awake longer, costing more than the rows saved).
+std::uint32_t boxPairPoints(const ContactSet<Real>& set, Real threshold) {
+  std::uint32_t penetrating = 0, closest = 0;
+  for (std::uint32_t i = 0; i < set.count; ++i) {
+    if (set.points[i].separation <= Real(0)) penetrating |= 1u << i;
+    if (set.points[i].separation < set.points[closest].separation) closest = i;
+  }
+  if (penetrating != 0 || set.count == 0) return penetrating;
+  return set.points[closest].separation <= threshold ? 1u << closest : 0u;
+}
+
 // The pair's contact set on the prepared shapes when both views carry them (validated once, derived data kept).
 bool convexContactsExact(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
                          GjkCache<Real>* gjk) {
@@ -89,9 +112,10 @@ bool convexContactsExact(const PlacedShape& a, const PlacedShape& b, Real thresh
                        ? generateContacts(*a.view->prepared, a.pose, *b.view->prepared, b.pose, set, settings)
                        : generateContacts(a.view->geom, a.pose, b.view->geom, b.pose, set, settings);
   if (!s.ok()) return false;
+  const bool boxes = a.view->geom.type() == GeometryType::Box && b.view->geom.type() == GeometryType::Box;
+  const std::uint32_t sent = boxes ? boxPairPoints(set, threshold) : pointsWithin(set, threshold);
   for (std::uint32_t i = 0; i < set.count; ++i)
-    if (set.points[i].separation <= threshold)
-      sink.add(set.normal, set.points[i].position, set.points[i].separation, TriangleIds(), true);
+    if (sent >> i & 1u) sink.add(set.normal, set.points[i].position, set.points[i].separation, TriangleIds(), true);
   return set.count > 0;
 }
 
