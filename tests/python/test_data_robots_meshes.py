@@ -58,7 +58,7 @@ def test_robot_check_batch_equals_check(panda):
 def test_robot_errors(panda):
     with pytest.raises(ValueError):
         panda.check(np.zeros(2))
-    with pytest.raises(ValueError, match="configuration 1"):
+    with pytest.raises(ValueError, match="item 1 .*not finite"):
         panda.check_batch(np.vstack([panda.home, np.full(len(panda.variables), np.nan)]))
     with pytest.raises(FileNotFoundError):
         gurdf.Robot("/nonexistent/robot.urdf")

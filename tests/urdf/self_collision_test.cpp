@@ -178,7 +178,12 @@ TYPED_TEST(SelfCollisionData, BatchBadInputFailsItsItemOrTheCallAndWritesNothing
   const auto m = loadCached<T>(kPanda, Representation::Hull);
   ASSERT_TRUE(m);
   const std::size_t dof = m->variables.size();
-  std::vector<T> rows(3 * dof, T(0));
+  std::uint64_t rng = 3;
+  std::vector<T> rows;
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<T> q = randomConfiguration(*m, rng);
+    rows.insert(rows.end(), q.begin(), q.end());
+  }
   rows[dof + 2] = std::numeric_limits<T>::quiet_NaN();
   std::vector<std::uint8_t> colliding(3, 7);
   std::vector<Status> statuses(3);
