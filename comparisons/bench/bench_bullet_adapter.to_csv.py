@@ -89,10 +89,7 @@ def main():
                              height_error="%.5f" % c["height_error"] if "height_error" in c else "",
                              contacts_per_call="%.2f" % c["contacts"] if "contacts" in c else "",
                              note=WHAT[bench]))
-    if not rows:
-        raise SystemExit("no median rows in %s" % ", ".join(args.runs))
-    results_csv.write(args.out, HEADER, rows, comments=COMMENTS)
-    print("%d rows -> %s" % (len(rows), args.out))
+    results_csv.write_runs(args.out, HEADER, rows, args.runs, comments=COMMENTS)
 
 
 if __name__ == "__main__":

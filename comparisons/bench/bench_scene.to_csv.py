@@ -84,10 +84,7 @@ def main():
         rows.append(dict(cols, benchmark=bench, time_ms="%.3f" % m["ms"], clock=m["clock"],
                          items_per_second="%.0f" % m["ips"], answers="%.0f" % m["answers"], versus=versus,
                          speed_vs=speed, note=note))
-    if not rows:
-        raise SystemExit("no median rows in %s" % ", ".join(args.runs))
-    results_csv.write(args.out, HEADER, rows, comments=COMMENTS)
-    print("%d rows -> %s" % (len(rows), args.out))
+    results_csv.write_runs(args.out, HEADER, rows, args.runs, comments=COMMENTS)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@
 
 #include "gq/urdf/robot.h"
 #include "gq/urdf/self_collision.h"
+#include "panda_model.h"
 
 namespace {
 
@@ -27,15 +28,8 @@ const PandaBatch* pandaBatch(Representation rep) {
   auto& slot = cached[int(rep) % 8];
   if (slot) return slot->model ? slot.get() : nullptr;
   slot = std::make_unique<PandaBatch>();
-  const std::string robots = std::string(GQ_SHARED_DIR) + "/robots";
-  LoadOptions o;
-  o.representation = rep;
-  o.packagePaths = {robots};
-  o.useRosPackagePath = false;
-  o.errorBoundTarget = 1.0;  // the bound is not used here: a coarse one loads fast
-  auto model = std::make_shared<RobotModel<double>>();
-  const std::string base = robots + "/example-robot-data/robots/panda_description/";
-  if (!loadRobot(base + "urdf/panda.urdf", base + "srdf/panda.srdf", o, *model).ok()) return nullptr;
+  const auto model = gqbench::loadPanda(rep);
+  if (!model) return nullptr;
   slot->model = model;
   slot->dof = model->variables.size();
   std::uint64_t rng = 2026;

@@ -51,10 +51,7 @@ def main():
                              checks_per_second="%.0f" % m[1],
                              versus="%s/%s thread" % versus if versus else "",
                              speed_vs="%.2f" % (m[1] / other[1]) if other and other[1] else "", note=args.note))
-    if not rows:
-        raise SystemExit("no median rows in %s" % ", ".join(args.runs))
-    results_csv.write(args.out, HEADER, rows, comments=COMMENTS)
-    print("%d rows -> %s" % (len(rows), args.out))
+    results_csv.write_runs(args.out, HEADER, rows, args.runs, comments=COMMENTS)
 
 
 if __name__ == "__main__":

@@ -11,23 +11,13 @@
 #include "gq/urdf/fcl_checker.h"
 #include "gq/urdf/robot.h"
 #include "gq/urdf/self_collision.h"
+#include "panda_model.h"
 
 namespace {
 
 using namespace gq::urdf;
 
-std::shared_ptr<const RobotModel<double>> panda(Representation rep) {
-  const std::string robots = std::string(GQ_SHARED_DIR) + "/robots";
-  LoadOptions o;
-  o.representation = rep;
-  o.packagePaths = {robots};
-  o.useRosPackagePath = false;
-  o.errorBoundTarget = 1.0;  // the bound is not used here: a coarse one loads fast
-  auto model = std::make_shared<RobotModel<double>>();
-  const std::string base = robots + "/example-robot-data/robots/panda_description/";
-  if (!loadRobot(base + "urdf/panda.urdf", base + "srdf/panda.srdf", o, *model).ok()) return nullptr;
-  return model;
-}
+std::shared_ptr<const RobotModel<double>> panda(Representation rep) { return gqbench::loadPanda(rep); }
 
 // 64 collision-free configurations of the model (gq's checker decides; the same seed for both libraries).
 std::vector<std::vector<double>> freeConfigurations(const std::shared_ptr<const RobotModel<double>>& model) {

@@ -87,3 +87,11 @@ def write(path, header, rows, append=False, comments=()):
                 f.write(c + "\n")
         for r in rows:
             w.writerow([r.get(h, "") for h in header])
+
+
+def write_runs(path, header, rows, runs, comments=()):
+    """write() for a *.to_csv.py script: stops with a message when the runs gave no rows, prints what it wrote."""
+    if not rows:
+        raise SystemExit("no median rows in %s" % ", ".join(runs))
+    write(path, header, rows, comments=comments)
+    print("%d rows -> %s" % (len(rows), path))
