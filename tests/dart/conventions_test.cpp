@@ -226,4 +226,37 @@ TEST(DartConventions, HeightmapBelowAPlaneTouchesItAtItsSamples) {
   }
 }
 
+// A closed cube mesh 0.01 into a ground mesh or a heightmap: its side triangles cross the ground and touch along the
+// ground's face normal, 0.01 deep, with both triangle ids; lifted clear, no contact.
+std::shared_ptr<dd::MeshShape> cubeMesh(double half) {
+  std::vector<Eigen::Vector3d> v;
+  for (int i = 0; i < 8; ++i) v.emplace_back(i & 1 ? half : -half, i & 2 ? half : -half, i & 4 ? half : -half);
+  const std::vector<std::array<unsigned, 3>> t = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                  {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return std::make_shared<dd::MeshShape>(Eigen::Vector3d::Ones(),
+                                         std::shared_ptr<const aiScene>(meshScene(v, t), [](const aiScene*) {}).get());
+}
+
+TEST(DartConventions, MeshOnMeshOrHeightmapTouchesAlongTheGroundNormal) {
+  auto d = detector("gq");
+  auto cube = frame(cubeMesh(0.2), at(Eigen::Vector3d(0.35, 0.35, 0.19)), "cube");  // sides off the grid lines
+  for (const dd::ShapePtr& groundShape : {dd::ShapePtr(groundMesh(2.0, 4)), dd::ShapePtr(flatHeightmap(9, 0.5, 0.0))}) {
+    auto ground = frame(groundShape, at(Eigen::Vector3d::Zero()), "ground");
+    auto group = d->createCollisionGroup(ground.get(), cube.get());
+    dc::CollisionResult result;
+    ASSERT_TRUE(d->collide(group.get(), dc::CollisionOption(true, 100), &result)) << groundShape->getType();
+    ASSERT_GE(result.getNumContacts(), 3u) << groundShape->getType();
+    for (const dc::Contact& c : result.getContacts()) {
+      const bool groundIsFirst = c.collisionObject1->getShapeFrame() == ground.get();
+      EXPECT_NEAR(c.normal.z(), groundIsFirst ? -1.0 : 1.0, 1e-9) << groundShape->getType();
+      EXPECT_NEAR(c.penetrationDepth, 0.01, 1e-6) << groundShape->getType();
+      EXPECT_GE(c.triID1, 0);
+      EXPECT_GE(c.triID2, 0);
+    }
+    auto lifted = frame(cubeMesh(0.2), at(Eigen::Vector3d(0.35, 0.35, 0.25)), "lifted");
+    auto apart = d->createCollisionGroup(ground.get(), lifted.get());
+    EXPECT_FALSE(d->collide(apart.get(), dc::CollisionOption(true, 100), nullptr)) << groundShape->getType();
+  }
+}
+
 }  // namespace
