@@ -4,6 +4,7 @@
 // every point allows (a point at axial t and radial r is covered when t lies within sqrt(R^2 - r^2) of the segment).
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 
 #include "gq/custom_shapes.h"
@@ -109,6 +110,14 @@ template <class T> Status wholeMesh(const MeshData<T>& mesh, Representation rep,
   return {};
 }
 
+// The certified bound's refinement target: LoadOptions::errorBoundTarget, but at least 1e-4 of the mesh's size, so a
+// huge mesh (a large scale) is not refined to an absolute target far below what its size resolves.
+template <class T> T boundTarget(const MeshData<T>& mesh, const LoadOptions& options) {
+  Vec3<double> lo, hi;
+  extentsIn(mesh.vertices, Mat3<double>::Identity(), lo, hi);
+  return T(std::max(options.errorBoundTarget, 1e-4 * (hi - lo).norm()));
+}
+
 // The bounding box in the mesh frame (flat meshes get a box of a few ulps of their size across), and its bound.
 template <class T> Status meshFrameBox(const MeshData<T>& mesh, const LoadOptions& options, MeshParts<T>& out) {
   Vec3<double> lo, hi;
@@ -120,7 +129,7 @@ template <class T> Status meshFrameBox(const MeshData<T>& mesh, const LoadOption
   shape.fitted = FitRepresentation::Box;
   shape.bytes = sizeof(Geometry<T>);
   const Transform<T> pose(((lo + hi) * 0.5).cast<T>());
-  Status s = certifyFit(mesh, {{shape.geometry, pose}}, T(options.errorBoundTarget), FitOptions<T>().maxBoundPatches,
+  Status s = certifyFit(mesh, {{shape.geometry, pose}}, boundTarget(mesh, options), FitOptions<T>().maxBoundPatches,
                         shape.errorBound);
   if (!s.ok()) return s;
   out.shapes = {std::move(shape)};
@@ -157,7 +166,7 @@ Status meshShapes(const MeshData<T>& mesh, Representation rep, const LoadOptions
   if (rep == Representation::Mesh) return wholeMesh(mesh, rep, out);
   if (rep == Representation::BoxAabb) return meshFrameBox(mesh, options, out);
   FitOptions<T> fit;
-  fit.tolerance = T(rep == Representation::Fit ? options.fitTolerance : options.errorBoundTarget);
+  fit.tolerance = rep == Representation::Fit ? T(options.fitTolerance) : boundTarget(mesh, options);
   fit.allowed = allowedFor(rep);
   fit.maxParts = options.fitMaxParts;
   fit.contain = true;

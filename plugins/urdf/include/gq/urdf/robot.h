@@ -37,8 +37,9 @@ struct LoadOptions {
   bool useRosPackagePath = true;          // also search the ROS_PACKAGE_PATH environment variable
   double fitTolerance = 0.002;            // metres: Representation::Fit's largest certified error
   std::uint32_t fitMaxParts = 16;         // Representation::Fit: most parts of a convex decomposition
-  // Metres: the certified error bound of the other fitted modes is refined until it is within the larger of this
-  // and 2 % of the distance actually attained (a tighter target costs loading time, never accuracy).
+  // Metres: the certified error bound of the other fitted modes is refined until it is within the largest of this,
+  // 1e-4 of the mesh's size and 2 % of the distance actually attained (a tighter target costs loading time, never
+  // accuracy).
   double errorBoundTarget = 1e-4;
 };
 
