@@ -2,12 +2,13 @@
 """Instructions of stock Bullet vs gq::bullet (callgrind) per bench_bullet_adapter scene -> bullet_adapter_callgrind.csv.
 
 Usage: bench_bullet_adapter.callgrind.py <build>/comparisons/bench/bench_bullet_adapter [names...] [--out CSV]
-       [--machine TEXT]
+       [--machine TEXT] [--builds float,float64]
+Measures the float build (bench_bullet_adapter) and Bullet's float64 build (bench_bullet_adapter_double, beside it).
 Runs each benchmark once (one iteration) under callgrind. Stepping scenes: the instructions inside
 btDiscreteDynamicsWorld::stepSimulation (the timed 500 steps plus the untimed rest-measure run of 500 more; world
 construction excluded). Pair scenes: instructions per contact call (the benchmark switches collection on around its
 1000 calls). Prints the rows and writes comparisons/results/bullet_adapter_callgrind.csv (or --out) with the run's
-date, machine and commit; measuring only some names replaces their rows and keeps the others'.
+date, machine and commit; measuring only some names (or builds) replaces their rows and keeps the others'.
 """
 import argparse
 import csv
@@ -23,7 +24,8 @@ import results_csv  # noqa: E402
 STEPS = ["stack", "drops_mesh", "drops_heightfield", "grid", "mixed_pile"]
 PAIRS = ["sphere_box", "box_box", "capsule_box", "hull_hull", "box_mesh"]
 PAIR_CALLS = 1000  # kPairCalls of bench_bullet_adapter.cpp
-HEADER = ["date", "machine", "commit", "benchmark", "bullet_instr", "gq_instr", "ratio_gq_speed_vs_bullet", "note"]
+BUILDS = {"float": "", "float64": "_double"}  # Bullet build -> suffix of the benchmark program
+HEADER = ["date", "machine", "commit", "bullet_build", "benchmark", "bullet_instr", "gq_instr", "ratio_gq_speed_vs_bullet", "note"]
 
 
 def instructions(bench, name, backend):
@@ -48,26 +50,35 @@ def main():
     ap.add_argument("names", nargs="*")
     ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "bullet_adapter_callgrind.csv"))
     ap.add_argument("--machine")
+    ap.add_argument("--builds", default="float,float64", help="comma-separated subset of " + ",".join(BUILDS))
     a = ap.parse_args()
     names = a.names or STEPS + PAIRS
+    builds = a.builds.split(",")
+    if any(b not in BUILDS for b in builds):
+        raise SystemExit("--builds: one of " + ",".join(BUILDS))
     run = results_csv.run_columns(
         a.machine or results_csv.machine() + " (callgrind: instruction counts, load-independent)")
     rows = []
-    for name in names:
-        bullet, gq = (instructions(a.bench, name, backend) for backend in ("bullet", "gq"))
+    for build, name in ((b, n) for b in builds for n in names):
+        bench = a.bench + BUILDS[build]
+        bullet, gq = (instructions(bench, name, backend) for backend in ("bullet", "gq"))
         note = ("instructions in stepSimulation, 2 x 500 steps" if name in STEPS else
                 "instructions per contact call, resting pair wobbling by up to 1 mm")
-        r = dict(run, benchmark=("Step/" if name in STEPS else "PairContacts/") + name, bullet_instr="%.0f" % bullet,
+        r = dict(run, bullet_build=build, benchmark=("Step/" if name in STEPS else "PairContacts/") + name, bullet_instr="%.0f" % bullet,
                  gq_instr="%.0f" % gq, ratio_gq_speed_vs_bullet="%.2f" % (bullet / gq), note=note)
         print(",".join(str(r[h]) for h in HEADER[3:-1]), flush=True)
         rows.append(r)
-    measured = {r["benchmark"] for r in rows}
+    measured = {(r["bullet_build"], r["benchmark"]) for r in rows}
     old = []
     if os.path.exists(a.out):
         with open(a.out, newline="") as fh:
-            old = [r for r in csv.DictReader(l for l in fh if not l.startswith("#")) if r["benchmark"] not in measured]
+            old = [r for r in csv.DictReader(l for l in fh if not l.startswith("#")) if (r.get("bullet_build", "float"), r["benchmark"]) not in measured]
+        for r in old:
+            r.setdefault("bullet_build", "float")
     order = ["Step/" + n for n in STEPS] + ["PairContacts/" + n for n in PAIRS]
-    merged = sorted(old + rows, key=lambda r: order.index(r["benchmark"]) if r["benchmark"] in order else len(order))
+    rank = lambda r: (list(BUILDS).index(r["bullet_build"]) if r["bullet_build"] in BUILDS else len(BUILDS),
+                      order.index(r["benchmark"]) if r["benchmark"] in order else len(order))
+    merged = sorted(old + rows, key=rank)
     results_csv.write(a.out, HEADER, merged)
     print("%d rows -> %s" % (len(merged), a.out))
 

@@ -2,8 +2,9 @@
 """bench_bullet_adapter JSON runs -> bullet_adapter.csv.
 
 Usage: bench_bullet_adapter.to_csv.py <run1.json> [<run2.json> ...] [--out CSV] [--machine TEXT]
-Each run: bench_bullet_adapter --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true
---benchmark_report_aggregates_only=true --benchmark_out=runK.json. One row per benchmark and backend: the median over
+Each run: bench_bullet_adapter (float Bullet) or bench_bullet_adapter_double (Bullet's float64 build; the build is
+read from the run's executable name) --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true
+--benchmark_report_aggregates_only=true --benchmark_out=runK.json. One row per Bullet build, benchmark and backend: the median over
 the runs of each run's CPU-time median (ms per iteration), the items per second, gq's speed relative to stock Bullet
 (Bullet's time / gq's), the rest measures the stepping benchmarks report (largest body speed after 5 s, depth of the
 lowest body below the ground, the stack's largest height error) and contacts per pair call, with the run's date,
@@ -18,9 +19,9 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_csv  # noqa: E402
 
-HEADER = ["date", "machine", "commit", "benchmark", "backend", "median_cpu_ms", "median_real_ms", "items_per_second",
+HEADER = ["date", "machine", "commit", "bullet_build", "benchmark", "backend", "median_cpu_ms", "median_real_ms", "items_per_second",
           "ratio_gq_speed_vs_bullet", "max_speed_5s", "below_ground", "height_error", "contacts_per_call", "note"]
-COMMENTS = ["# bench_bullet_adapter, float Bullet: stock configuration (bullet) against gq::bullet's (gq), same world,"
+COMMENTS = ["# bench_bullet_adapter (float Bullet) and bench_bullet_adapter_double (float64): stock configuration (bullet) against gq::bullet's (gq), same world,"
             " solver and broadphase; CPU-time medians of alternating runs."]
 # What one iteration of each benchmark does (the README's table shows it).
 WHAT = {
@@ -48,6 +49,12 @@ def split(name):
     return (family + "/" + key if key else family), backend
 
 
+def build_of(run):
+    """float64 for a run of bench_bullet_adapter_double, else float."""
+    exe = run.get("context", {}).get("executable", "")
+    return "float64" if os.path.basename(exe).endswith("_double") else "float"
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("runs", nargs="+")
@@ -57,17 +64,18 @@ def main():
     samples = {}
     for path in args.runs:
         with open(path) as f:
-            for b in json.load(f)["benchmarks"]:
-                if b.get("aggregate_name") != "median":
-                    continue
-                samples.setdefault(split(b["name"]), []).append(b)
+            run = json.load(f)
+        for b in run["benchmarks"]:
+            if b.get("aggregate_name") != "median":
+                continue
+            samples.setdefault((build_of(run),) + split(b["name"]), []).append(b)
     cols = results_csv.run_columns(args.machine)
     order = [k for k in WHAT]
     rows = []
-    for bench in order:
+    for build, bench in ((b, n) for b in ("float", "float64") for n in order):
         med = {}
         for backend in ("bullet", "gq"):
-            runs = samples.get((bench, backend))
+            runs = samples.get((build, bench, backend))
             if not runs:
                 continue
             unit = TO_MS[runs[0].get("time_unit", "ns")]
@@ -81,7 +89,7 @@ def main():
         for backend, m in med.items():
             ratio = med["bullet"]["cpu"] / m["cpu"] if "bullet" in med else float("nan")
             c = m["counters"]
-            rows.append(dict(cols, benchmark=bench, backend=backend, median_cpu_ms="%.3f" % m["cpu"],
+            rows.append(dict(cols, bullet_build=build, benchmark=bench, backend=backend, median_cpu_ms="%.3f" % m["cpu"],
                              median_real_ms="%.3f" % m["real"], items_per_second="%.0f" % m["ips"],
                              ratio_gq_speed_vs_bullet="%.2f" % ratio,
                              max_speed_5s="%.4f" % c["max_speed_5s"] if "max_speed_5s" in c else "",

@@ -43,7 +43,9 @@ inline btConvexHullShape* randomHull(ShapeStore& store, int n, const btVector3& 
 }
 
 // 200 bodies (40 each of boxes, spheres, capsules, cylinders and 30-vertex hulls, ~0.5 m across) in 2 layers of
-// 10x10, 1 m apart, released 0.6 m and 1.4 m above a flat triangle-mesh ground (24 x 24 m, 1 m quads) at y = 0.
+// 10x10, 1 m apart, released 0.6 m and 1.4 m above a flat triangle-mesh ground (24 x 24 m, 1 m quads) at y = 0; the
+// upper layer is shifted by half a cell in x and z, so its bodies fall into the gaps of the lower layer (a body
+// released exactly above an identical one balances on it and rolls off at a time set by round-off).
 // Rolling friction keeps round bodies from rolling forever on the flat ground, in both worlds.
 inline PileScene mixedPile(TestWorld& w, ShapeStore& store) {
   PileScene s;
@@ -59,7 +61,9 @@ inline PileScene mixedPile(TestWorld& w, ShapeStore& store) {
   std::uniform_real_distribution<double> angle(-3.14159, 3.14159);
   for (int i = 0; i < 200; ++i) {
     const int layer = i / 100, cell = i % 100;
-    const btVector3 at(btScalar(-4.5 + (cell % 10)), btScalar(0.6 + 0.8 * layer), btScalar(-4.5 + (cell / 10)));
+    const double offset = 0.5 * layer;  // the upper layer over the gaps of the lower one, not balanced on its bodies
+    const btVector3 at(btScalar(-4.5 + offset + (cell % 10)), btScalar(0.6 + 0.8 * layer),
+                       btScalar(-4.5 + offset + (cell / 10)));
     const btQuaternion q(btVector3(btScalar(angle(rng)), 1, btScalar(angle(rng))).normalized(),
                          btScalar(angle(rng)));
     btRigidBody* b = w.add(shapes[i % 5], 1, at, q);

@@ -92,5 +92,21 @@ void checkPile(PileScene (*build)(TestWorld&, ShapeStore&)) {
 TEST(BulletRestQuality, BoxGridPileComesToRest) { checkPile(basicDemoGrid); }
 TEST(BulletRestQuality, MixedPileComesToRest) { checkPile(mixedPile); }
 
+// The mixed pile (its upper layer falls into the gaps of the lower one, so no body balances on another and rolls
+// off late) is at rest after 5 s in both worlds: its fastest body then is no faster with gq than with stock Bullet,
+// and slower than 1 cm/s.
+TEST(BulletRestQuality, MixedPileIsAtRestAfterFiveSecondsNoFasterThanStock) {
+  btScalar speed[2] = {0, 0};
+  for (Backend backend : {Backend::Bullet, Backend::Gq}) {
+    ShapeStore store;
+    TestWorld w(backend);
+    const PileScene s = mixedPile(w, store);
+    w.step(300);
+    speed[int(backend)] = maxSpeed(s);
+  }
+  EXPECT_LE(speed[1], speed[0] + btScalar(1e-3)) << "stock " << speed[0];
+  EXPECT_LT(speed[1], btScalar(0.01));
+}
+
 }  // namespace
 }  // namespace gq::bullet::test

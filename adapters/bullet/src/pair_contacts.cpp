@@ -5,10 +5,10 @@
 namespace gq::bullet {
 
 bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
-                  PairMemory* memory) {
+                  PairMemory* memory, const PairMotion* motion) {
   const ShapeKind ka = a.view->kind, kb = b.view->kind;
   if (ka == ShapeKind::Convex && (kb == ShapeKind::Convex || kb == ShapeKind::Plane)) {
-    convexContacts(a, b, threshold, sink, memory);
+    convexContacts(a, b, threshold, sink, memory, motion);
     return true;
   }
   if (ka == ShapeKind::Convex) {
