@@ -12,7 +12,6 @@
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
-#include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include "contacts.h"
 #include "gq/bullet/collision_configuration.h"
@@ -172,21 +171,6 @@ struct PairState {
 
 namespace {
 
-// The bodies' motion (zero for a static or non-rigid object) and the step length (0 outside a world step).
-PairMotion motionOf(const btCollisionObject* a, const btCollisionObject* b, btScalar timeStep) {
-  PairMotion m;
-  const btCollisionObject* objects[2] = {a, b};
-  for (int i = 0; i < 2; ++i) {
-    m.origin[i] = toGq(objects[i]->getWorldTransform().getOrigin());
-    if (const btRigidBody* body = btRigidBody::upcast(objects[i])) {
-      m.linear[i] = toGq(body->getLinearVelocity());
-      m.angular[i] = toGq(body->getAngularVelocity());
-    }
-  }
-  m.timeStep = timeStep;
-  return m;
-}
-
 // The manifold's own B (Bullet may have made it with the two objects the other way round).
 const btTransform& manifoldB(const btPersistentManifold& m, const btTransform& trA, const btTransform& trB,
                              const btCollisionObject* objectB) {
@@ -214,24 +198,23 @@ ContactAlgorithm::~ContactAlgorithm() {
 }
 
 void ContactAlgorithm::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
-                                        const btDispatcherInfo& info, btManifoldResult* result) {
-  const btScalar timeStep = info.m_timeStep;
+                                        const btDispatcherInfo&, btManifoldResult* result) {
   const bool finite = isFinite(body0->getWorldTransform()) && isFinite(body1->getWorldTransform());
   if (state_) {
     const bool answerable = finite && state_->side[0].refresh(body0->getCollisionShape()) == Support::Gq &&
                             state_->side[1].refresh(body1->getCollisionShape()) == Support::Gq;
-    collide(answerable, state_->side[0].view, state_->side[1].view, body0, body1, timeStep, result);
+    collide(answerable, state_->side[0].view, state_->side[1].view, body0, body1, result);
     return;
   }
   ShapeView va, vb;  // views of this frame only
   const bool answerable = finite && viewShape(body0->getCollisionShape(), va) == Support::Gq &&
                           viewShape(body1->getCollisionShape(), vb) == Support::Gq;
-  collide(answerable, va, vb, body0, body1, timeStep, result);
+  collide(answerable, va, vb, body0, body1, result);
 }
 
 void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const ShapeView& vb,
                                const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
-                               btScalar timeStep, btManifoldResult* result) {
+                               btManifoldResult* result) {
   if (!answerable) {
     // Bad input (or a shape edited into one gq does not model): no contact, and none kept from earlier frames.
     if (manifold_ && ownManifold_) manifold_->clearManifold();
@@ -256,9 +239,7 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
   const PlacedShape a{&va, toGq(trA) * va.localPose};
   const PlacedShape b{&vb, toGq(trB) * vb.localPose};
   ManifoldSink sink(*result);
-  const PairMotion motion = motionOf(body0->getCollisionObject(), body1->getCollisionObject(),
-                                    result->m_closestPointDistanceThreshold == Real(0) ? timeStep : btScalar(0));
-  pairContacts(a, b, threshold, sink, state_ ? &state_->memory : nullptr, &motion);
+  pairContacts(a, b, threshold, sink, state_ ? &state_->memory : nullptr);
   if (ownManifold_) result->refreshContactPoints();
   if (reusable) rememberContacts(trA, trB, threshold, body1->getCollisionObject());
 }

@@ -33,7 +33,7 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
 
  private:
   void collide(bool answerable, const ShapeView& va, const ShapeView& vb, const btCollisionObjectWrapper* body0,
-               const btCollisionObjectWrapper* body1, btScalar timeStep, btManifoldResult* result);
+               const btCollisionObjectWrapper* body1, btManifoldResult* result);
 
   // True when B's pose relative to A is close enough to the last exact frame's that the manifold's points are kept
   // (their normals turned with B); false when they must be recomputed.

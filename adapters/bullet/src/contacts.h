@@ -43,28 +43,13 @@ struct PairMemory {
   bool touching = false;
 };
 
-// The two bodies' motion this frame (world frame: velocity of the body origin, angular velocity) and the step
-// length: a separated pair's speculative point is sent only when the gap closes within the next steps.
-struct PairMotion {
-  V3 origin[2] = {V3::Zero(), V3::Zero()};
-  V3 linear[2] = {V3::Zero(), V3::Zero()};
-  V3 angular[2] = {V3::Zero(), V3::Zero()};
-  Real timeStep = 0;  // 0: unknown (every speculative point is sent)
-  // How far the gap at `pointOnB` (normal from B to A) closes in one step at the current velocities.
-  Real closing(const V3& pointOnB, const V3& normalOnB) const {
-    const V3 va = linear[0] + angular[0].cross(pointOnB - origin[0]);
-    const V3 vb = linear[1] + angular[1].cross(pointOnB - origin[1]);
-    return -(va - vb).dot(normalOnB) * timeStep;
-  }
-};
-
 // `memory` (optional) carries what the pair learned from one frame to the next.
 void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
-                    PairMemory* memory = nullptr, const PairMotion* motion = nullptr);
+                    PairMemory* memory = nullptr);
 void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
 
 // Any supported pair in either order (the surface or plane may be A or B); false if the pair has no gq path.
 bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
-                  PairMemory* memory = nullptr, const PairMotion* motion = nullptr);
+                  PairMemory* memory = nullptr);
 
 }  // namespace gq::bullet

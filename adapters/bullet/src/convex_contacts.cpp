@@ -82,34 +82,24 @@ std::uint32_t pointsWithin(const ContactSet<Real>& set, Real threshold) {
   return bits;
 }
 
-// A separated pair's speculative point is sent when its gap closes within this many steps at the bodies' current
-// velocities (the solver adds a step of gravity to them, hence more than one).
-constexpr Real kSpeculativeSteps = Real(2);
-
 // The points of a box pair the manifold gets: the penetrating ones, as Bullet's box-box algorithm adds them (the
 // manifold keeps older points until they pass the breaking threshold); a pair with none gets only its closest point
-// within the threshold, and only while the bodies approach (closing its gap within kSpeculativeSteps steps) when
-// their motion is known. Boxes lying still next to each other (many in a pile, all the diagonal neighbours of a
-// dropped grid) so hand the solver no row, and an approaching box still has the row that keeps it from bouncing
-// (penetrating points only was measured to keep a box pile awake longer, costing more than the rows saved; over 16
-// jittered BasicDemo grids the approach test cut the solver's points per awake step by ~15%).
-std::uint32_t boxPairPoints(const ContactSet<Real>& set, Real threshold, const PairMotion* motion) {
+// within the threshold. Boxes lying next to each other (many in a pile) so hand the solver one row instead of four,
+// and the one speculative row keeps an approaching box from bouncing (penetrating points only was measured to keep
+// a box pile awake longer, costing more than the rows saved).
+std::uint32_t boxPairPoints(const ContactSet<Real>& set, Real threshold) {
   std::uint32_t penetrating = 0, closest = 0;
   for (std::uint32_t i = 0; i < set.count; ++i) {
     if (set.points[i].separation <= Real(0)) penetrating |= 1u << i;
     if (set.points[i].separation < set.points[closest].separation) closest = i;
   }
   if (penetrating != 0 || set.count == 0) return penetrating;
-  const ContactSetPoint<Real>& p = set.points[closest];
-  if (p.separation > threshold) return 0u;
-  const bool idle = motion && motion->timeStep > Real(0) &&
-                    motion->closing(p.position, set.normal) * kSpeculativeSteps < p.separation;
-  return idle ? 0u : 1u << closest;
+  return set.points[closest].separation <= threshold ? 1u << closest : 0u;
 }
 
 // The pair's contact set on the prepared shapes when both views carry them (validated once, derived data kept).
 bool convexContactsExact(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
-                         GjkCache<Real>* gjk, const PairMotion* motion) {
+                         GjkCache<Real>* gjk) {
   ContactSetSettings<Real> settings;
   settings.contactDistance = std::max(threshold, Real(0));
   settings.maxContacts = kManifoldPoints;
@@ -123,7 +113,7 @@ bool convexContactsExact(const PlacedShape& a, const PlacedShape& b, Real thresh
                        : generateContacts(a.view->geom, a.pose, b.view->geom, b.pose, set, settings);
   if (!s.ok()) return false;
   const bool boxes = a.view->geom.type() == GeometryType::Box && b.view->geom.type() == GeometryType::Box;
-  const std::uint32_t sent = boxes ? boxPairPoints(set, threshold, motion) : pointsWithin(set, threshold);
+  const std::uint32_t sent = boxes ? boxPairPoints(set, threshold) : pointsWithin(set, threshold);
   for (std::uint32_t i = 0; i < set.count; ++i)
     if (sent >> i & 1u) sink.add(set.normal, set.points[i].position, set.points[i].separation, TriangleIds(), true);
   return set.count > 0;
@@ -132,10 +122,10 @@ bool convexContactsExact(const PlacedShape& a, const PlacedShape& b, Real thresh
 }  // namespace
 
 void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
-                    PairMemory* memory, const PairMotion* motion) {
+                    PairMemory* memory) {
   // A pair in contact range last frame most likely still is: the cull is tried on the others only.
   if (!(memory && memory->touching) && culledBySeparatingAxis(a, b, threshold, memory)) return;
-  const bool touching = convexContactsExact(a, b, threshold, sink, memory ? &memory->gjk : nullptr, motion);
+  const bool touching = convexContactsExact(a, b, threshold, sink, memory ? &memory->gjk : nullptr);
   if (memory) memory->touching = touching;
 }
 

@@ -5,10 +5,10 @@
 namespace gq::bullet {
 
 bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
-                  PairMemory* memory, const PairMotion* motion) {
+                  PairMemory* memory) {
   const ShapeKind ka = a.view->kind, kb = b.view->kind;
   if (ka == ShapeKind::Convex && (kb == ShapeKind::Convex || kb == ShapeKind::Plane)) {
-    convexContacts(a, b, threshold, sink, memory, motion);
+    convexContacts(a, b, threshold, sink, memory);
     return true;
   }
   if (ka == ShapeKind::Convex) {
