@@ -65,8 +65,8 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
   RoundedHullScratch<T>& s = roundedHullScratch<T>();
   T best = std::numeric_limits<T>::max();
   Vec3<T> bestAxis = Vec3<T>::UnitX();
-  std::uint32_t bestFace = 0;
-  bool bestIsFace = false;
+  std::uint32_t bestFace = 0;  // the face of the best facet, or a face beside its edge
+  bool bestHasFace = false;
   const auto reachOf = [&](const typename GaussTree<T>::Node& node, const Vec3<T>& x) {
     const Vec3<T> z = x - node.centre;
     const T zc = node.axis.dot(z), z2 = z.squaredNorm();
@@ -81,8 +81,8 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
   const auto axisBothSigns = [&](const Vec3<T>& k) {
     const T a = c0.dot(k), b = c1.dot(k);
     const T positive = hullSupport(k) - std::min(a, b), negative = std::max(a, b) + hullSupport(Vec3<T>(-k));
-    if (positive < best) best = positive, bestAxis = k, bestIsFace = false;
-    if (negative < best) best = negative, bestAxis = -k, bestIsFace = false;
+    if (positive < best) best = positive, bestAxis = k;
+    if (negative < best) best = negative, bestAxis = -k;
   };
   const auto evaluateLeaf = [&](const typename GaussTree<T>::Node& node) {
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
@@ -90,7 +90,7 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
       const T a = n.dot(c0) + tree.faceOffset[f];
       const T b = point ? a : n.dot(c1) + tree.faceOffset[f];
       const T push = -std::min(a, b);
-      if (push < best) best = push, bestAxis = n, bestFace = f, bestIsFace = true;
+      if (push < best) best = push, bestAxis = n, bestFace = f, bestHasFace = true;
     }
     if (point) return;
     for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
@@ -114,9 +114,11 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
       if (!flat && ((a1 > clear && a2 < -clear) || (a1 < -clear && a2 > clear))) {
         if (k.dot(n1 + n2) < T(0)) k = -k;  // the crossing inside the edge's arc
         const T value = k.dot(v0 - c0);
-        if (value < best) best = value, bestAxis = k, bestIsFace = false;
+        if (value < best) best = value, bestAxis = k, bestFace = edge.face1, bestHasFace = true;
       } else {
+        const T before = best;
         axisBothSigns(k);
+        if (best < before) bestFace = edge.face1, bestHasFace = true;
       }
     }
   };
@@ -149,8 +151,8 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
   const T gap = -best;
 
   // The core outside (or touching): its distance to the faces it sees, those of nodes whose cap may see it and whose
-  // planes may pass closer than the best distance found. The gap's face first: the distance is at least the gap, so
-  // once a face gives that, no other can give less.
+  // planes may pass closer than the best distance found. The gap's face (or a face beside the gap's edge) first: the
+  // distance is at least the gap, so once a face gives that, no other can give less.
   T bestDistance = std::numeric_limits<T>::max();
   Vec3<T> onCore = c0, onHull = c0;
   bool faceInterior = false;
@@ -209,9 +211,21 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
     return (zc < T(0) && zp * node.cosAngle <= -zc * node.sinAngle) ? -std::sqrt(z2)
                                                                       : zc * node.cosAngle - zp * node.sinAngle;
   };
-  if (bestIsFace) visit(bestFace);
+  // A closest pair at distance D is certified by its plane (through the hull point, normal u = the offset over D)
+  // when the hull lies below it (u.x <= u.onHull for every hull point x: one support call, exact over the vertices)
+  // and the core above (min over its endpoints of u.c >= u.onCore): every other pair is then at least D apart, less
+  // the rounding allowance. Otherwise the search below measures every face that may be closer.
+  const T roundingAllowance = T(64) * std::numeric_limits<T>::epsilon() * magnitude;
+  const auto separatedAlong = [&](const Vec3<T>& onC, const Vec3<T>& onH, T distance) {
+    if (!(distance > T(0)) || !(distance < std::numeric_limits<T>::max())) return false;
+    const Vec3<T> axis = (onC - onH) / distance;
+    const T coreLow = point ? axis.dot(c0) : std::min(axis.dot(c0), axis.dot(c1));
+    if (!(coreLow - axis.dot(onC) >= -roundingAllowance)) return false;
+    return hullSupport(axis) - axis.dot(onH) <= roundingAllowance;
+  };
+  if (bestHasFace) visit(bestFace);
   s.stack.clear();
-  s.stack.push_back(0);
+  if (bestDistance > gap && !separatedAlong(onCore, onHull, bestDistance)) s.stack.push_back(0);
   while (!s.stack.empty() && bestDistance > gap) {
     const typename GaussTree<T>::Node& node = tree.nodes[s.stack.back()];
     s.stack.pop_back();
@@ -223,7 +237,7 @@ bool penetrationRoundedHull(const RoundedCore<T>& core, const ConvexMeshGeometry
     }
     if (node.leaf()) {
       for (std::uint32_t f = node.faceBegin; f < node.faceEnd && bestDistance > gap; ++f)
-        if (!bestIsFace || f != bestFace) visit(f);
+        if (!bestHasFace || f != bestFace) visit(f);
     } else {
       s.stack.push_back(node.child[1]);
       s.stack.push_back(node.child[0]);

@@ -13,9 +13,12 @@
 //  - Otherwise the core is outside: the hull point closest to it lies on a face that some core point sees (s > 0;
 //    the offset between the closest points is a non-negative combination of the normals of the faces there), so
 //    only those faces are searched (an endpoint's projection inside the polygon, or the polygon's edges; for a point,
-//    only the edges whose line its projection is outside of), skipping
-//    nodes whose cap and ball show that no face sees the core or that every face is farther than the best distance
-//    found; the search ends once a distance equals the separating gap. Radius less that distance.
+//    only the edges whose line its projection is outside of). The face of the separating gap (or one beside the
+//    gap's edge) is measured first; its closest pair is the answer when the plane through the hull's point
+//    perpendicular to the pair's offset has the hull on one side (one support call) and the core on the other.
+//    Otherwise the search goes on over the faces, skipping nodes whose cap and ball show that no face sees the core
+//    or that every face is farther than the best distance found; it ends once a distance equals the separating gap.
+//    Radius less that distance.
 // These are the same minima as the SAT and closest-point search over the posed polytope (overlap/polytope.h),
 // which answers what this does not take (a scaled hull, a non-manifold hull, one not made by cookConvexMesh).
 #include "gq/geometry.h"
