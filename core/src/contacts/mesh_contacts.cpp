@@ -62,6 +62,11 @@ std::optional<MeshContact<T>> crossingContact(const Triangle<T>& a, std::uint32_
   return c;
 }
 
+// Coordinates near the scalar's range can overflow the push (vertex + depth * normal): such a pair is not reported.
+template <class T> bool isFiniteContact(const MeshContact<T>& c) {
+  return c.position.allFinite() && c.normal.allFinite() && std::isfinite(c.depth);
+}
+
 bool isSurface(GeometryType t) { return t == GeometryType::TriangleMesh || t == GeometryType::HeightField; }
 
 template <class T> using Report = MeshContactCallback<T>;
@@ -78,9 +83,10 @@ bool meshMeshContacts(const Report<T>& report, const TriangleMeshGeometry<T>& me
     if (!detail::overlapTriangleTriangle(ta, tb)) return false;
     auto c = crossingContact(ta, a.inputIndex(ka), tb, b.inputIndex(kb));
     if (!c) return false;
-    found = true;
     c->position = pose0.transform(c->position);
     c->normal = pose0.rotate(c->normal);
+    if (!isFiniteContact(*c)) return false;
+    found = true;
     return !report(*c);
   });
   return found;
@@ -94,7 +100,7 @@ bool surfacePairContacts(const Report<T>& report, const SurfaceA& a, const Surfa
   detail::forEachSurfacePair(a, b, T(0), [&](std::uint32_t ia, const Triangle<T>& ta, std::uint32_t ib,
                                              const Triangle<T>& tb) {
     const auto c = swapped ? crossingContact(tb, ib, ta, ia) : crossingContact(ta, ia, tb, ib);
-    if (!c) return false;
+    if (!c || !isFiniteContact(*c)) return false;
     found = true;
     return !report(*c);
   });
