@@ -10,7 +10,6 @@ the runs of each run's CPU-time median (ms per iteration), the items per second,
 lowest body below the ground, the stack's largest height error) and contacts per pair call, with the run's date,
 machine and commit.
 """
-import argparse
 import json
 import os
 import statistics
@@ -56,11 +55,7 @@ def build_of(run):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs="+")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "bullet_adapter.csv"))
-    ap.add_argument("--machine")
-    args = ap.parse_args()
+    args = results_csv.script_args("bullet_adapter.csv")
     samples = {}
     for path in args.runs:
         with open(path) as f:

@@ -7,7 +7,6 @@ One row per detector: the median over the runs of each run's CPU-time median (ms
 detector's speed relative to DART's bullet detector (bullet's time / this one's) and to fcl, with the run's date,
 machine and commit; --note says how loaded the machine was.
 """
-import argparse
 import os
 import statistics
 import sys
@@ -22,12 +21,7 @@ COMMENTS = ["# bench_dart: a 27-body pile (boxes, spheres, capsules) dropped on 
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs="+")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "dart.csv"))
-    ap.add_argument("--machine")
-    ap.add_argument("--note", default="")
-    args = ap.parse_args()
+    args = results_csv.script_args("dart.csv", note=True)
     runs = results_csv.median_aggregates(args.runs, key=lambda name: name[len("stepPile/"):].split("_")[0])
     samples = {d: [b["cpu_time"] * results_csv.TO_MS[b.get("time_unit", "ns")] for b in v] for d, v in runs.items()}
     med = {d: statistics.median(v) for d, v in samples.items()}

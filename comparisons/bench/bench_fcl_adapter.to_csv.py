@@ -7,7 +7,6 @@ and commit, FCL and gq::fcl CPU and real time medians (ns; us for the broadphase
 (> 1: gq::fcl is faster). --append adds the rows as another run (e.g. "--note 'full run 2 of 3'") instead of
 replacing the file; --machine replaces the detected CPU description (e.g. to say the machine was idle).
 """
-import argparse
 import json
 import os
 import sys
@@ -20,13 +19,7 @@ HEADER = ["date", "machine", "commit", "query", "family", "fcl_cpu", "gq_fcl_cpu
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("json")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "fcl_adapter.csv"))
-    ap.add_argument("--append", action="store_true")
-    ap.add_argument("--machine")
-    ap.add_argument("--note", default="")
-    a = ap.parse_args()
+    a = results_csv.script_args("fcl_adapter.csv", inputs="json", nargs=None, note=True, append=True, doc=__doc__)
     with open(a.json) as f:
         data = json.load(f)
     medians = {}

@@ -7,7 +7,6 @@ probe and query; the MoveIt-like 100 new models x 3 collides) with the run's dat
 gq::fcl's median time (us, manual time around the queries only) and the ratio gq::fcl / FCL (<= 3 is the target of
 the first query).
 """
-import argparse
 import json
 import os
 import sys
@@ -19,12 +18,7 @@ HEADER = ["date", "machine", "commit", "case", "args", "fcl_us", "gq_fcl_us", "r
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("json")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "fcl_new_mesh.csv"))
-    ap.add_argument("--machine")
-    ap.add_argument("--note", default="")
-    a = ap.parse_args()
+    a = results_csv.script_args("fcl_new_mesh.csv", inputs="json", nargs=None, note=True, doc=__doc__)
     with open(a.json) as f:
         data = json.load(f)
     medians = {}

@@ -8,7 +8,6 @@ One row per query and pair: CPU-time medians per query (ns) of gq on prepared sh
 median over the runs of each run's ratio; the note gives the prepared ratio's range over the runs), and the pairs each backend reported overlapping
 (counter hits, which must agree), with the run's date, machine and commit.
 """
-import argparse
 import json
 import os
 import statistics
@@ -31,12 +30,7 @@ COMMENTS = [
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("json", nargs="+")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "primitives.csv"))
-    ap.add_argument("--machine")
-    ap.add_argument("--note", default="")
-    a = ap.parse_args()
+    a = results_csv.script_args("primitives.csv", inputs="json", note=True, doc=__doc__)
     runs = []
     for path in a.json:
         with open(path) as f:

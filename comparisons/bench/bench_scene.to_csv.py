@@ -8,7 +8,6 @@ each run's median time (CPU time; wall time for the threaded batches, whose work
 second, the answer counter (hits or pairs) and the comparison the row is read against (speed = the other row's time /
 this row's), with the run's date, machine and commit.
 """
-import argparse
 import json
 import os
 import statistics
@@ -49,11 +48,7 @@ def key(name):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs="+")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "scene.csv"))
-    ap.add_argument("--machine")
-    args = ap.parse_args()
+    args = results_csv.script_args("scene.csv")
     samples = {}
     for path in args.runs:
         with open(path) as f:

@@ -7,7 +7,6 @@ Each run: bench_urdf_batch --benchmark_repetitions=3 --benchmark_enable_random_i
 each run's median wall time for 100k Panda configurations, checks per second, and the speed against the row it is
 read with (the loop for 1 thread, 1 thread for 2 threads), with the run's date, machine and commit.
 """
-import argparse
 import os
 import statistics
 import sys
@@ -30,12 +29,7 @@ def key(name):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("runs", nargs="+")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "urdf_batch.csv"))
-    ap.add_argument("--machine")
-    ap.add_argument("--note", default="")
-    args = ap.parse_args()
+    args = results_csv.script_args("urdf_batch.csv", note=True)
     samples = results_csv.median_aggregates(args.runs, key=key)
     med = {k: (statistics.median(b["real_time"] * results_csv.TO_MS[b.get("time_unit", "ns")] for b in v),
                statistics.median(b.get("items_per_second", 0.0) for b in v)) for k, v in samples.items()}

@@ -6,7 +6,6 @@ One row per scene where DART's fcl or bullet detector answers collide differentl
 closed-form signed distance for pairs with a sphere; for the others a long-double brute force: the distance when
 apart, 0 for an overlap of at least 1e-9) and gq's signed distance (minus the depth), and one summary row, with the run's date, machine and commit.
 """
-import argparse
 import os
 import re
 import sys
@@ -23,10 +22,7 @@ SUMMARY = re.compile(r"^scenes (\d+) \(colliding (\d+), .*\): fcl wrong (\d+), b
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("output")
-    ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "dart_agreement.csv"))
-    args = ap.parse_args()
+    args = results_csv.script_args("dart_agreement.csv", inputs="output", nargs=None, machine=False)
     cols = results_csv.run_columns()
     rows = []
     with open(args.output) as f:

@@ -4,6 +4,7 @@ Every row starts with date, machine and commit (the commit of the code measured;
 uncommitted changes). Writing replaces the file (git keeps the earlier runs); append=True adds another run of the
 same benchmark (for example a second run to show the spread).
 """
+import argparse
 import csv
 import datetime
 import json
@@ -41,6 +42,23 @@ def commit():
         return "unknown"
     dirty = subprocess.run(["git", "-C", REPO, "diff", "--quiet", "HEAD", "--"], capture_output=True).returncode
     return head + ("+dirty" if dirty else "")
+
+
+def script_args(default_csv, inputs="runs", nargs="+", note=False, append=False, machine=True, doc=None):
+    """The command line of a *.to_csv.py script: the positional `inputs` (nargs as argparse's; None: exactly one),
+    --out (default comparisons/results/<default_csv>), --machine (replaces the detected CPU description, e.g. to say
+    how loaded the machine was) unless machine=False, and --note / --append when asked. doc: the script's docstring,
+    whose first line describes it in --help."""
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0] if doc else None)
+    ap.add_argument(inputs, nargs=nargs)
+    ap.add_argument("--out", default=os.path.join(RESULTS, default_csv))
+    if machine:
+        ap.add_argument("--machine")
+    if note:
+        ap.add_argument("--note", default="")
+    if append:
+        ap.add_argument("--append", action="store_true")
+    return ap.parse_args()
 
 
 # Google Benchmark time units in milliseconds.

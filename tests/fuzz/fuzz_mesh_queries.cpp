@@ -1,7 +1,7 @@
 // libFuzzer target: the mesh queries (getTriangle, findOverlapTriangleMesh/HeightField with paging,
-// findOverlapTriangleMeshPairs, computeTriangleMeshPenetration/HeightFieldPenetration, sweepTriangles,
-// generateTriangleContacts) on fuzzed meshes, heightfields, shapes and parameters. Contract: ok -> finite outputs and
-// indices in range; error -> outputs untouched.
+// findOverlapTriangleMeshPairs, generateMeshContacts, computeTriangleMeshPenetration/HeightFieldPenetration,
+// sweepTriangles, generateTriangleContacts) on fuzzed meshes, heightfields, shapes and parameters. Contract: ok ->
+// finite outputs and indices in range; error -> outputs untouched.
 #include "fuzz_decode.h"
 
 namespace {
@@ -100,6 +100,16 @@ template <class T> void run(gq::fuzz::Bytes& in) {
         },
         mesh, meshPose, other, otherPose, found, tolerance);
     if (!s.ok()) fuzz::require(found && pairs == 0);
+    bool contactFound = true;
+    std::uint32_t contacts = 0;
+    const Status c = generateMeshContacts<T>(
+        [&](const MeshContact<T>& m) {
+          fuzz::require(m.triangle0 < meshTriangles && m.triangle1 < otherTriangles && isFinite(m.position) &&
+                        isFinite(m.normal) && std::isfinite(m.depth) && m.depth >= T(0));
+          return ++contacts < 64;
+        },
+        Geometry<T>(mesh), meshPose, Geometry<T>(other), otherPose, contactFound);
+    if (!c.ok()) fuzz::require(contactFound && contacts == 0);
   }
 }
 

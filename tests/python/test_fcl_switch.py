@@ -110,6 +110,40 @@ def test_mesh_contacts_carry_triangle_indices():
     assert (result.contacts[0].b1, result.contacts[0].b2) == (0, 0)
 
 
+def _box_model(half):
+    """A closed, outward-wound box mesh of half extents `half` as a BVHModel."""
+    signs = np.array([[(1 if i & 1 else -1), (1 if i & 2 else -1), (1 if i & 4 else -1)] for i in range(8)], float)
+    tris = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                     [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]])
+    m = fcl.BVHModel()
+    m.beginModel(8, 12)
+    m.addSubModel(signs * np.asarray(half, float), tris)
+    m.endModel()
+    return m
+
+
+def test_mesh_mesh_contacts_carry_the_overlap_depth():
+    # Box A (half 1) at the origin, box B (half 1, 0.5, 0.5) at x = 1.8: B enters A by 0.2 through A's +x face, and
+    # every crossing triangle pair is pushed out through that face (B's side faces lie 0.5 inside A's).
+    a, b = _box_model([1.0, 1.0, 1.0]), _box_model([1.0, 0.5, 0.5])
+    oa = fcl.CollisionObject(a)
+    ob = fcl.CollisionObject(b, fcl.Transform(np.array([1.8, 0.0, 0.0])))
+    result = fcl.CollisionResult()
+    n = fcl.collide(oa, ob, fcl.CollisionRequest(num_max_contacts=100, enable_contact=True), result)
+    assert n == len(result.contacts) > 0
+    for c in result.contacts:
+        assert c.penetration_depth == pytest.approx(0.2, abs=1e-12)
+        assert np.allclose(c.normal, [1.0, 0.0, 0.0], atol=1e-12)  # python-fcl's: from o1 towards o2
+        assert c.pos[0] == pytest.approx(0.9, abs=1e-12)
+        assert 0 <= c.b1 < 12 and 0 <= c.b2 < 12 and c.o1 is a and c.o2 is b
+    # Swapped objects: the same depth, the normal turned.
+    result = fcl.CollisionResult()
+    assert fcl.collide(ob, oa, fcl.CollisionRequest(num_max_contacts=3, enable_contact=True), result) == 3
+    for c in result.contacts:
+        assert c.penetration_depth == pytest.approx(0.2, abs=1e-12)
+        assert np.allclose(c.normal, [-1.0, 0.0, 0.0], atol=1e-12)
+
+
 def test_readme_broadphase():
     box, sphere = fcl.Box(1, 2, 3), fcl.Sphere(4)
     cone, cyl = fcl.Cone(5, 6), fcl.Cylinder(2, 8)

@@ -273,80 +273,24 @@ bool planeSurfaceContacts(const CollisionObject& plane, const CollisionObject& s
 
 // ---- two surfaces (mesh against mesh or heightmap) -----------------------------------------------------------------
 
-// `flat` (a surface triangle as a flat convex shape centred on its centroid) against triangle `other`: faceContact's
-// contact along other's face normal, turned towards flat's centroid.
-std::optional<PairContact> flatOnTriangle(const Triangle<double>& flat, const Triangle<double>& other,
-                                          std::uint32_t otherIndex) {
-  const Vec c = (flat.verts[0] + flat.verts[1] + flat.verts[2]) / 3.0;
-  CustomGeometry<double> shape;
-  if (!makeTriangle(Vec(flat.verts[0] - c), Vec(flat.verts[1] - c), Vec(flat.verts[2] - c), shape).ok()) {
-    return std::nullopt;
-  }
-  return faceContact(Geometry<double>(shape), Transform<double>(c), other, otherIndex);
-}
-
-// Triangle a of object 1's surface against triangle b of object 2's: when they overlap, the shallower of the two
-// face contacts (a pushed out along b's face normal, or b along a's), normal from object 2 towards object 1.
-void crossingContact(const Triangle<double>& a, std::uint32_t ia, const Triangle<double>& b, std::uint32_t ib,
-                     std::vector<PairContact>& out) {
-  auto alongB = flatOnTriangle(a, b, ib);  // normal from b towards a: object 2 towards object 1
-  if (!alongB) return;
-  auto alongA = flatOnTriangle(b, a, ia);  // normal from a towards b: turned below
-  PairContact c = *alongB;
-  if (alongA && alongA->depth < alongB->depth) {
-    c = *alongA;
-    c.normal = -c.normal;
-  }
-  c.tri1 = int(ia);
-  c.tri2 = int(ib);
-  out.push_back(c);
-}
-
-// Object 1's mesh triangles under object 2's bounds, each against object 2's triangles under its own box.
-template <class Surface2>
-void meshSurfaceContacts(const TriangleMeshGeometry<double>& mesh1, const CollisionObject& o1, const Surface2& surface2,
-                         const CollisionObject& o2, std::vector<PairContact>& out) {
-  Bounds3<double> bounds2;
-  if (!computeGeomBounds(bounds2, o2.shape(), o2.pose()).ok()) return;
-  std::vector<std::uint32_t> near1;
-  trianglesUnder(Geometry<double>(BoxGeometry<double>(bounds2.extents().cwiseMax(Vec::Constant(1e-12)))),
-                 Transform<double>(bounds2.center()), mesh1, o1.pose(), near1);
-  std::vector<std::uint32_t> near2;
-  for (std::uint32_t i1 : near1) {
-    Triangle<double> a;
-    if (!getTriangle(mesh1, o1.pose(), i1, a).ok()) continue;
-    Bounds3<double> box;
-    for (const Vec& v : a.verts) box.include(v);
-    near2.clear();
-    trianglesUnder(Geometry<double>(BoxGeometry<double>(box.extents().cwiseMax(Vec::Constant(1e-12)))),
-                   Transform<double>(box.center()), surface2, o2.pose(), near2);
-    for (std::uint32_t i2 : near2) {
-      Triangle<double> b;
-      if (getTriangle(surface2, o2.pose(), i2, b).ok()) crossingContact(a, i1, b, i2, out);
-    }
-  }
-}
-
-// Mesh against mesh or heightmap (either order): the crossing triangle pairs, reduced to the deepest and the points
-// farthest apart. Two heightmaps give none.
+// gq::generateMeshContacts: each crossing triangle pair along the shallower of its two face normals (normal from
+// object 2 towards object 1), reduced to the deepest and the points farthest apart. Two heightmaps give none.
 bool surfaceSurfaceContacts(const CollisionObject& o1, const CollisionObject& o2, std::vector<PairContact>& out) {
-  const Geometry<double>& g1 = o1.shape().geometry();
-  const Geometry<double>& g2 = o2.shape().geometry();
+  if (o1.shape().type() == GeometryType::HeightField && o2.shape().type() == GeometryType::HeightField) return false;
   std::vector<PairContact> found;
-  if (const auto* m1 = g1.getIf<TriangleMeshGeometry<double>>()) {
-    if (const auto* m2 = g2.getIf<TriangleMeshGeometry<double>>()) {
-      meshSurfaceContacts(*m1, o1, *m2, o2, found);
-    } else {
-      meshSurfaceContacts(*m1, o1, g2.get<HeightFieldGeometry<double>>(), o2, found);
-    }
-  } else if (const auto* m2 = g2.getIf<TriangleMeshGeometry<double>>()) {
-    // Object 2 is the mesh: its triangles go first, then every contact is turned to object 1's side.
-    meshSurfaceContacts(*m2, o2, g1.get<HeightFieldGeometry<double>>(), o1, found);
-    for (PairContact& c : found) {
-      c.normal = -c.normal;
-      std::swap(c.tri1, c.tri2);
-    }
-  }
+  bool any = false;
+  const MeshContactCallback<double> keep = [&](const MeshContact<double>& m) {
+    PairContact c;
+    c.point = m.position;
+    c.normal = m.normal;
+    c.depth = m.depth;
+    c.tri1 = int(m.triangle0);
+    c.tri2 = int(m.triangle1);
+    found.push_back(c);
+    return true;
+  };
+  if (!generateMeshContacts(keep, o1.shape().geometry(), o1.pose(), o2.shape().geometry(), o2.pose(), any).ok())
+    return false;
   reduce(found);
   out.insert(out.end(), found.begin(), found.end());
   return !found.empty();

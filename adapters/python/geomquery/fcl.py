@@ -498,12 +498,6 @@ class DistanceData:
         self.done = False
 
 
-def _triangle_normal(mesh, pose, index):
-    tri = _gq.get_triangle(mesh, pose, int(index))
-    n = np.cross(tri[1] - tri[0], tri[2] - tri[0])
-    return tri, n / (np.linalg.norm(n) or 1.0)
-
-
 def _pair_contacts(o1, o2, limit):
     """Contacts of two collision objects (at most `limit`), in python-fcl's form."""
     g1, g2 = o1.geom, o2.geom
@@ -528,12 +522,10 @@ def _pair_contacts(o1, o2, limit):
     for ga, pa in o1._parts():
         for gb, pb in o2._parts():
             if g1._is_mesh and g2._is_mesh:
-                pairs = _gq.mesh_triangle_pairs(ga, pa, gb, pb)
-                for i, j in pairs[:limit]:
-                    ta, na = _triangle_normal(ga, pa, i)
-                    tb, _ = _triangle_normal(gb, pb, j)
-                    pos = (ta.mean(axis=0) + tb.mean(axis=0)) * 0.5
-                    contacts.append(Contact(g1, g2, int(i), int(j), -na, pos, 0.0))
+                # One contact per crossing triangle pair, along the shallower of its two face normals (gq's normal
+                # points from mesh 2 to mesh 1; python-fcl's from o1 to o2).
+                for c in _gq.mesh_contacts(ga, pa, gb, pb, max_contacts=limit):
+                    contacts.append(Contact(g1, g2, c.triangle0, c.triangle1, -c.normal, c.position, c.depth))
                 continue
             if not _gq.overlap(ga, pa, gb, pb):
                 continue
@@ -645,12 +637,18 @@ def _translation_contact_time(o1, o2, motion):
     return earliest([_part_contact_time(ga, pa, gb, pb, motion) for ga, pa in o1._parts() for gb, pb in o2._parts()])
 
 
+def _aligned_half_angle(a, b):
+    """b's quaternion turned to a's hemisphere (the same rotation) and the half angle between them, arccos(qa . qb)."""
+    qa, qb = a.getQuatRotation(), b.getQuatRotation()
+    dot = float(np.dot(qa, qb))
+    if dot < 0:
+        qb, dot = -qb, -dot
+    return qb, np.arccos(min(1.0, dot))
+
+
 def _slerp_transform(a, b, t):
     """The transform at t in [0, 1] of the linear motion from a to b (translation lerp, rotation slerp)."""
-    qa, qb = a.getQuatRotation(), b.getQuatRotation()
-    if np.dot(qa, qb) < 0:
-        qb = -qb
-    angle = np.arccos(min(1.0, abs(float(np.dot(qa, qb)))))
+    qa, (qb, angle) = a.getQuatRotation(), _aligned_half_angle(a, b)
     if angle < 1e-12:
         q = qa
     else:
@@ -659,8 +657,8 @@ def _slerp_transform(a, b, t):
 
 
 def _rotation_angle(a, b):
-    qa, qb = a.getQuatRotation(), b.getQuatRotation()
-    return 2.0 * np.arccos(min(1.0, abs(float(np.dot(qa, qb)))))
+    """The angle of the rotation taking transform a's orientation to b's."""
+    return 2.0 * _aligned_half_angle(a, b)[1]
 
 
 def _conservative_advancement(o1, tf1_end, o2, tf2_end, request):

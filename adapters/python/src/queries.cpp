@@ -35,6 +35,12 @@ struct PyContact {
   std::int64_t triangleIndex = -1;
 };
 
+struct PyMeshContact {
+  gq::Vec3<double> position, normal;
+  double depth = 0;
+  std::int64_t triangle0 = -1, triangle1 = -1;
+};
+
 // The triangles (K, 3, 3) of an array in the scalar type T.
 template <class T> std::vector<gq::Triangle<T>> triangles(const py::handle& obj) {
   const auto arr = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(obj);
@@ -140,6 +146,13 @@ void bindQueries(py::module_& m) {
       .def_readonly("normal", &PyContact::normal)
       .def_readonly("separation", &PyContact::separation)
       .def_readonly("triangle_index", &PyContact::triangleIndex);
+  py::class_<PyMeshContact>(m, "MeshContact",
+                            "One crossing triangle pair: depth >= 0 along the unit normal from surface 1 to surface 0.")
+      .def_readonly("position", &PyMeshContact::position)
+      .def_readonly("normal", &PyMeshContact::normal)
+      .def_readonly("depth", &PyMeshContact::depth)
+      .def_readonly("triangle0", &PyMeshContact::triangle0)
+      .def_readonly("triangle1", &PyMeshContact::triangle1);
 
   m.def("_overlap",
         [](const GeometryObject& g0, const py::handle& p0, const GeometryObject& g1, const py::handle& p1) {
@@ -350,6 +363,34 @@ void bindQueries(py::module_& m) {
         },
         py::arg("mesh0"), py::arg("pose0"), py::arg("mesh1"), py::arg("pose1"), py::arg("tolerance") = 0.0,
         "(K, 2) pairs of intersecting triangles (tolerance > 0: pairs within that distance).");
+
+  m.def("mesh_contacts",
+        [](const GeometryObject& s0, const py::handle& p0, const GeometryObject& s1, const py::handle& p1,
+           std::size_t maxContacts) {
+          requireSameDtype(s0, s1, "mesh_contacts");
+          return byGeometry(s0, [&](auto t) {
+            using T = decltype(t);
+            std::vector<PyMeshContact> out;
+            bool found = false;
+            const auto q0 = pose<T>(p0, "pose0");
+            const auto q1 = pose<T>(p1, "pose1");
+            const gq::MeshContactCallback<T> keep = [&](const gq::MeshContact<T>& c) {
+              out.push_back({c.position.template cast<double>(), c.normal.template cast<double>(), double(c.depth),
+                             faceIndex(c.triangle0), faceIndex(c.triangle1)});
+              return maxContacts == 0 || out.size() < maxContacts;
+            };
+            gq::Status s;
+            {
+              py::gil_scoped_release release;  // the callback only appends to `out`
+              s = gq::generateMeshContacts(keep, s0.geometry<T>(), q0, s1.geometry<T>(), q1, found);
+            }
+            check(s, "mesh_contacts");
+            return out;
+          });
+        },
+        py::arg("surface0"), py::arg("pose0"), py::arg("surface1"), py::arg("pose1"), py::arg("max_contacts") = 0,
+        "Contacts of two triangle meshes or heightfields, one per crossing triangle pair (at most max_contacts; 0: "
+        "all), each along the shallower of the pair's two face normals, from surface 1 towards surface 0.");
 
   m.def("mesh_penetration",
         [](const GeometryObject& g, const py::handle& p, const GeometryObject& mesh, const py::handle& meshPose,

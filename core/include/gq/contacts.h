@@ -1,8 +1,10 @@
 #pragma once
 // Contact generation: a convex geometry against one triangle (the spec's PxGeometryQuery::generateTriangleContacts),
-// and the contact set of a convex pair (generateContacts).
+// the contact set of a convex pair (generateContacts), and the contacts of two triangle surfaces
+// (generateMeshContacts).
 #include <array>
 #include <cstdint>
+#include <functional>
 
 #include "gq/geometry.h"
 #include "gq/math.h"
@@ -122,5 +124,32 @@ template <class T>
 Status generateContacts(const Shape<T>& shape0, const Transform<T>& pose0, const Shape<T>& shape1,
                         const Transform<T>& pose1, ContactSet<T>& out,
                         const ContactSetSettings<T>& settings = ContactSetSettings<T>()) noexcept;
+
+// ---- Contacts of two triangle surfaces (mesh or heightfield against mesh or heightfield) ----------------------
+
+// One crossing triangle pair. Each triangle is pushed out through the other's face: triangle 0 along triangle 1's
+// face normal (turned towards triangle 0's centroid) by as far as its deepest vertex lies below triangle 1's plane,
+// and triangle 1 likewise along triangle 0's; the contact is the shallower of the two (a surface is pushed out of
+// through a face, never sideways through an edge).
+template <class T> struct MeshContact {
+  Vec3<T> position = Vec3<T>::Zero();  // world: the pushed triangle's deepest vertex moved half the depth along normal
+  Vec3<T> normal = Vec3<T>::Zero();    // unit, from surface 1 towards surface 0 (moving surface 0 along it separates)
+  T depth = T(0);                      // >= 0
+  std::uint32_t triangle0 = kInvalidFaceIndex;  // input triangle index (heightfield: 2*cell or 2*cell+1)
+  std::uint32_t triangle1 = kInvalidFaceIndex;
+};
+
+// Receives each crossing pair's contact; return false to stop the query.
+template <class T> using MeshContactCallback = std::function<bool(const MeshContact<T>&)>;
+
+// The contacts of two surfaces, each a triangle mesh or a heightfield (other types: Unsupported): one per pair of
+// intersecting (touching counts) triangles, found as findOverlapTriangleMeshPairs finds them (exact
+// triangle-triangle test), in unspecified order. `contactFound` says whether any contact was reported. A pair whose
+// triangles both lack a face normal (zero area) is skipped.
+// Invalid input (non-finite or non-unit poses, invalid geometry, empty callback): InvalidArgument, nothing reported.
+template <class T>
+Status generateMeshContacts(const MeshContactCallback<T>& callback, const Geometry<T>& surface0,
+                            const Transform<T>& pose0, const Geometry<T>& surface1, const Transform<T>& pose1,
+                            bool& contactFound) noexcept;
 
 }  // namespace gq
