@@ -77,7 +77,10 @@ template <class T> class TriangleMeshRays {
   std::uint32_t cast(const RayQuery<T>& ray, RaycastHit<T>* hits) const;
 
  private:
-  Vec3<T> toMesh(const Vec3<T>& v) const { return scaled_ ? Vec3<T>(invScale_ * v) : v; }
+  Vec3<T> toMesh(const Vec3<T>& v) const {
+    if (!scaled_) return v;
+    return diagonal_ ? Vec3<T>(v.cwiseProduct(invScaleDiagonal_)) : Vec3<T>(invScale_ * v);
+  }
   RaycastHit<T> hit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri) const;
 
   const TriangleMeshGeometry<T>& g_;
@@ -85,7 +88,9 @@ template <class T> class TriangleMeshRays {
   bool scaled_;
   bool rotated_;
   bool flips_;
+  bool diagonal_ = true;  // S^-1 is diag(invScaleDiagonal_)
   int walk_;
+  Vec3<T> invScaleDiagonal_;
   Mat3<T> invScale_;
 };
 

@@ -221,15 +221,22 @@ template <class Walk, class... Args> auto withLanes(MeshWalk w, Args&&... args) 
 // products; an identity pose rotation (a mesh placed in the world as cooked, the common case for static meshes) skips
 // the quaternion products, whose result would be the same vectors.
 template <class T>
-TriangleMeshRays<T>::TriangleMeshRays(const TriangleMeshGeometry<T>& g, const Transform<T>& pose)
+[[gnu::always_inline]] inline TriangleMeshRays<T>::TriangleMeshRays(const TriangleMeshGeometry<T>& g,
+                                                                    const Transform<T>& pose)
     : g_(g), pose_(pose), scaled_(!g.scale.isIdentity()),
       rotated_(!(pose.q.w() == T(1) && pose.q.x() == T(0) && pose.q.y() == T(0) && pose.q.z() == T(0))),
       flips_(false), walk_(int(meshWalk())) {
   if (!scaled_) return;
-  // MeshInstance's S^-1 and mirror flag, without its S (rays need only the inverse).
-  const Mat3<T> r = g.scale.rotation.toRotationMatrix();
-  invScale_ = r * g.scale.scale.cwiseInverse().asDiagonal() * r.transpose();
   flips_ = g.scale.flipsWinding();
+  invScaleDiagonal_ = g.scale.scale.cwiseInverse();
+  // An axis-aligned scale (identity scale rotation, the common case) keeps S^-1 diagonal: no rotation matrix, and
+  // three products per vector instead of a matrix product.
+  const Quat<T>& q = g.scale.rotation;
+  diagonal_ = q.w() == T(1) && q.x() == T(0) && q.y() == T(0) && q.z() == T(0);
+  if (diagonal_) return;
+  // MeshInstance's S^-1 = R diag(1/scale) R^T, without its S (rays need only the inverse).
+  const Mat3<T> r = q.toRotationMatrix();
+  invScale_ = r * invScaleDiagonal_.asDiagonal() * r.transpose();
 }
 
 // The requested fields of one hit. The world normal of the (reported-order) triangle is S^-1 n_mesh rotated by the
@@ -264,7 +271,9 @@ RaycastHit<T> TriangleMeshRays<T>::hit(const RayQuery<T>& ray, std::uint32_t coo
   return hit;
 }
 
-template <class T> std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray, RaycastHit<T>* hits) const {
+template <class T>
+[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
+                                                                      RaycastHit<T>* hits) const {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
   const Vec3<T> org = toMesh(rotated_ ? pose_.transformInv(ray.origin) : Vec3<T>(ray.origin - pose_.p));
   const Vec3<T> dir = toMesh(rotated_ ? pose_.rotateInv(ray.dir) : ray.dir);
