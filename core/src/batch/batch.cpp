@@ -2,6 +2,8 @@
 // loop for one thread). Items write only their own output entries, so any schedule gives the same bytes.
 #include "gq/batch.h"
 
+#include "raycast/raycast.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
@@ -94,6 +96,32 @@ inline bool record(Status* statuses, std::size_t i, Status&& s) {
   return ok;
 }
 
+// The rays of a batch against a mesh shape whose pose, maxDist and flags passed the façade's checks: the mesh frame
+// and the node test are found once (detail::TriangleMeshRays), each ray takes the façade's own checks and then the
+// kernel of the single raycast, so its hit and Status are the single query's bit for bit. A ray failing its checks
+// takes the single query, whose Status names the problem.
+template <class T>
+std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose,
+                             RaycastHit<T>* hits, std::uint8_t* hasHit, Status* statuses,
+                             const BatchSettings& settings) {
+  const detail::TriangleMeshRays<T> mesh(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose);
+  return runItems(rays.origins.count, settings, [&](std::size_t i) {
+    const Vec3<T>& origin = rays.origins[i];
+    const Vec3<T>& dir = rays.unitDirs[i];
+    std::uint32_t count = 0;
+    if (detail::rayIsValid(origin, dir, pose.p)) {
+      count = mesh.cast(detail::rayQuery(origin, dir, rays.maxDist, rays.hitFlags, 1u), hits + i);  // written on a hit
+    } else {
+      RaycastHit<T> h;
+      Status s = raycast(origin, dir, shape, pose, rays.maxDist, rays.hitFlags, 1u, &h, count);
+      if (!s.ok()) return record(statuses, i, std::move(s));
+      if (count > 0) hits[i] = h;
+    }
+    hasHit[i] = count > 0 ? 1 : 0;
+    return record(statuses, i, Status());
+  });
+}
+
 }  // namespace
 
 template <class T>
@@ -103,6 +131,11 @@ Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transf
   if (shape.empty()) return emptyShape();
   const std::size_t n = rays.origins.count;
   if (n > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
+  RaycastHit<T> probe;
+  if (shape.type() == GeometryType::TriangleMesh &&
+      detail::raySettingsAreValid(pose, rays.maxDist, rays.hitFlags, 1u, &probe)) {
+    return batchResult(raycastMeshItems(rays, shape, pose, hits, hasHit, statuses, settings));
+  }
   return batchResult(runItems(n, settings, [&](std::size_t i) {
     RaycastHit<T> h;
     std::uint32_t count = 0;

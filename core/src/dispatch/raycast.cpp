@@ -55,20 +55,12 @@ template <class T> Status validateRayPose(const Vec3<T>& origin, const Transform
   return Status();
 }
 
-// validateRay and validateRayPose on the success path of a prepared shape, as one predicate of a few compares (the
-// façade's whole per-ray cost): a failing input takes the full checks, which name the problem. A finite origin - p
-// proves both finite (an infinite or NaN coordinate on either side makes the difference infinite or NaN); a NaN or
-// infinite direction fails the squared-norm bounds; maxDist >= 0 admits +inf and rejects NaN and -inf, as
-// checkMaxDist does.
+// validateRay and validateRayPose on the success path of a prepared shape (the façade's whole per-ray cost).
 template <class T>
 [[gnu::always_inline]] inline bool rayInputsAreValid(const Vec3<T>& origin, const Vec3<T>& dir,
                                                      const Transform<T>& pose, T maxDist, HitFlags flags,
                                                      std::uint32_t maxHits, const RaycastHit<T>* hits) {
-  const Vec3<T> offset = origin - pose.p;
-  const HitFlags sweepOnly = HitFlag::Mtd | HitFlag::PreciseSweep | HitFlag::AssumeNoInitialOverlap;
-  return (T(0) * offset.x() + T(0) * offset.y() + T(0) * offset.z() == T(0)) &
-         detail::squaredNormIsUnit(double(dir.squaredNorm()), tol::kUnitDirection) & (maxDist >= T(0)) &
-         (maxHits != 0) & (hits != nullptr) & ((flags & sweepOnly).bits() == 0) & detail::isUnitQuaternion(pose.q);
+  return detail::rayIsValid(origin, dir, pose.p) & detail::raySettingsAreValid(pose, maxDist, flags, maxHits, hits);
 }
 
 // The kernel call of both overloads once every input is valid.
@@ -77,13 +69,7 @@ template <class T>
                                                          const Geometry<T>& geom, const Transform<T>& pose, T maxDist,
                                                          HitFlags hitFlags, std::uint32_t maxHits,
                                                          RaycastHit<T>* hits) {
-  // Several hits only with MeshMultiple (the spec); solids cap themselves at one.
-  const std::uint32_t cap = hitFlags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
-  // A hit has a finite distance: an entry parameter that overflows T (a far ray all but parallel to a box face or
-  // a plane, found by fuzz_raycast) lies beyond every representable distance, so maxDist = inf means the largest
-  // finite T and every kernel's "t > maxDist" test rejects it.
-  const T reach = std::min(maxDist, std::numeric_limits<T>::max());
-  const detail::RayQuery<T> ray{origin, unitDir, reach, hitFlags, cap};
+  const detail::RayQuery<T> ray = detail::rayQuery(origin, unitDir, maxDist, hitFlags, maxHits);
   return kRaycastTable<T>[static_cast<std::size_t>(geom.type())](geom, pose, ray, hits);
 }
 

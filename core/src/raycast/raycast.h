@@ -5,6 +5,10 @@
 // sets each hit's flags to what it filled.
 #include <cstdint>
 
+#include <algorithm>
+#include <limits>
+
+#include "common/validate.h"
 #include "gq/custom.h"
 #include "gq/geometry.h"
 #include "gq/hit.h"
@@ -20,6 +24,37 @@ template <class T> struct RayQuery {
   std::uint32_t maxHits;
 };
 
+// The query a kernel receives for valid inputs. Several hits only with MeshMultiple (the spec); solids cap
+// themselves at one. A hit has a finite distance: an entry parameter that overflows T (a far ray all but parallel to
+// a box face or a plane, found by fuzz_raycast) lies beyond every representable distance, so maxDist = inf means the
+// largest finite T and every kernel's "t > maxDist" test rejects it.
+template <class T>
+[[gnu::always_inline]] inline RayQuery<T> rayQuery(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist,
+                                                   HitFlags flags, std::uint32_t maxHits) {
+  const std::uint32_t cap = flags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
+  return RayQuery<T>{origin, unitDir, std::min(maxDist, std::numeric_limits<T>::max()), flags, cap};
+}
+
+// The façade's checks on its success path as predicates of a few compares; a failing input takes the full checks,
+// which name the problem. What does not depend on the ray (checked once for a batch): maxDist >= 0 admits +inf and
+// rejects NaN and -inf, as checkMaxDist does; the flags are raycast flags; the pose rotation is a unit quaternion.
+template <class T>
+[[gnu::always_inline]] inline bool raySettingsAreValid(const Transform<T>& pose, T maxDist, HitFlags flags,
+                                                       std::uint32_t maxHits, const RaycastHit<T>* hits) {
+  const HitFlags sweepOnly = HitFlag::Mtd | HitFlag::PreciseSweep | HitFlag::AssumeNoInitialOverlap;
+  return (maxDist >= T(0)) & (maxHits != 0) & (hits != nullptr) & ((flags & sweepOnly).bits() == 0) &
+         isUnitQuaternion(pose.q);
+}
+
+// The ray's own checks: a finite origin - p proves both finite (an infinite or NaN coordinate on either side makes
+// the difference infinite or NaN); a NaN or infinite direction fails the squared-norm bounds.
+template <class T>
+[[gnu::always_inline]] inline bool rayIsValid(const Vec3<T>& origin, const Vec3<T>& dir, const Vec3<T>& poseP) {
+  const Vec3<T> offset = origin - poseP;
+  return (T(0) * offset.x() + T(0) * offset.y() + T(0) * offset.z() == T(0)) &
+         squaredNormIsUnit(double(dir.squaredNorm()), tol::kUnitDirection);
+}
+
 template <class T>
 std::uint32_t raycastSphere(const SphereGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
 template <class T>
@@ -32,6 +67,33 @@ template <class T>
 std::uint32_t raycastConvex(const ConvexMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
 template <class T>
 std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
+template <class T> struct TriangleRayHit;
+
+// Raycasts against one mesh at one pose (a single raycast, or a batch's rays): the mesh frame and the node test the
+// CPU runs are found once; cast() is raycastTriangleMesh's kernel for one ray. Holds references to g and pose.
+template <class T> class TriangleMeshRays {
+ public:
+  TriangleMeshRays(const TriangleMeshGeometry<T>& g, const Transform<T>& pose);
+  std::uint32_t cast(const RayQuery<T>& ray, RaycastHit<T>* hits) const;
+
+ private:
+  Vec3<T> toMesh(const Vec3<T>& v) const {
+    if (!scaled_) return v;
+    return diagonal_ ? Vec3<T>(v.cwiseProduct(invScaleDiagonal_)) : Vec3<T>(invScale_ * v);
+  }
+  RaycastHit<T> hit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri) const;
+
+  const TriangleMeshGeometry<T>& g_;
+  const Transform<T>& pose_;
+  bool scaled_;
+  bool rotated_;
+  bool flips_;
+  bool diagonal_ = true;  // S^-1 is diag(invScaleDiagonal_)
+  int walk_;
+  Vec3<T> invScaleDiagonal_;
+  Mat3<T> invScale_;
+};
+
 // Mesh raycasts walk 8-wide nodes with AVX2 where the CPU has it; true makes them use the SSE4.2 baseline (two 4-lane
 // halves per node) on any CPU, so tests can compare both walks on one machine. Not for use while rays are cast.
 void setMeshRaycastBaselineOnly(bool baselineOnly);

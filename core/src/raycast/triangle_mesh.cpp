@@ -180,126 +180,129 @@ MeshWalk meshWalk() {
 #endif
 }
 
-#ifdef GQ_SSE42
-template <class T>
-__attribute__((target("avx2"), flatten)) bool closestAvx2(const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
-  return c.template closest<Bvh8LanesAvx2>(maxDist, best);
-}
-template <class T>
-__attribute__((target("avx2"), flatten)) bool anyAvx2(const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
-  return c.template any<Bvh8LanesAvx2>(maxDist, best);
-}
-template <class T>
-__attribute__((target("avx2"), flatten)) std::uint32_t multipleAvx2(const MeshRaycaster<T>& c, T maxDist,
-                                                                    std::uint32_t cap,
-                                                                    std::vector<RawHit<T>>& hits) {
-  return c.template multiple<Bvh8LanesAvx2>(maxDist, cap, hits);
-}
-#endif
-
-template <class T> bool walkClosest(MeshWalk w, const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
-#ifdef GQ_SSE42
-  if (w == MeshWalk::Avx2) return closestAvx2(c, maxDist, best);
-#endif
-  (void)w;
-  return c.template closest<Bvh8LanesBaseline>(maxDist, best);
-}
-template <class T> bool walkAny(MeshWalk w, const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
-#ifdef GQ_SSE42
-  if (w == MeshWalk::Avx2) return anyAvx2(c, maxDist, best);
-#endif
-  (void)w;
-  return c.template any<Bvh8LanesBaseline>(maxDist, best);
-}
-template <class T>
-std::uint32_t walkMultiple(MeshWalk w, const MeshRaycaster<T>& c, T maxDist, std::uint32_t cap,
-                           std::vector<RawHit<T>>& hits) {
-#ifdef GQ_SSE42
-  if (w == MeshWalk::Avx2) return multipleAvx2(c, maxDist, cap, hits);
-#endif
-  (void)w;
-  return c.template multiple<Bvh8LanesBaseline>(maxDist, cap, hits);
-}
-
-// Mesh-space frame of the instance: S^-1 and the mirror flag; the identity scale (the common case) skips the
-// matrix products of MeshInstance.
-// An identity pose rotation (a mesh placed in the world as cooked, the common case for static meshes) skips the
-// quaternion products, whose result would be the same vectors.
-template <class T> struct MeshRayFrame {
-  bool scaled;
-  Mat3<T> invScale;
-  bool flips;
-  bool rotated;
-  MeshRayFrame(const TriangleMeshGeometry<T>& g, const Transform<T>& pose)
-      : scaled(!g.scale.isIdentity()), flips(false),
-        rotated(!(pose.q.w() == T(1) && pose.q.x() == T(0) && pose.q.y() == T(0) && pose.q.z() == T(0))) {
-    if (!scaled) return;
-    const MeshInstance<T> inst(g, Transform<T>());
-    invScale = inst.invScale;
-    flips = inst.flips;
+// The three walks as types, for withLanes: Walk::run<Lanes>(caster, args...) calls one of MeshRaycaster's walks.
+struct ClosestWalk {
+  template <class Lanes, class T> static bool run(const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
+    return c.template closest<Lanes>(maxDist, best);
   }
-  Vec3<T> toMesh(const Vec3<T>& v) const { return scaled ? Vec3<T>(invScale * v) : v; }
+};
+struct AnyWalk {
+  template <class Lanes, class T> static bool run(const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
+    return c.template any<Lanes>(maxDist, best);
+  }
+};
+struct MultipleWalk {
+  template <class Lanes, class T>
+  static std::uint32_t run(const MeshRaycaster<T>& c, T maxDist, std::uint32_t cap, std::vector<RawHit<T>>& hits) {
+    return c.template multiple<Lanes>(maxDist, cap, hits);
+  }
 };
 
-// Fills the requested fields of one hit. The world normal of the (reported-order) triangle is S^-1 n_mesh rotated by
-// the pose, with S^-1 = S^-T: under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way.
+// Runs Walk with the node test the CPU runs. The AVX2 instantiation is compiled for AVX2 as a whole (flatten inlines
+// the walk into it). (Arguments passed through, not captured by a lambda: the walk read the ray constants through the
+// closure's pointers, measured 105 instructions more per bunny ray.)
+#ifdef GQ_SSE42
+template <class Walk, class... Args>
+__attribute__((target("avx2"), flatten)) auto withAvx2Lanes(Args&&... args) {
+  return Walk::template run<Bvh8LanesAvx2>(args...);
+}
+#endif
+template <class Walk, class... Args> auto withLanes(MeshWalk w, Args&&... args) {
+#ifdef GQ_SSE42
+  if (w == MeshWalk::Avx2) return withAvx2Lanes<Walk>(args...);
+#endif
+  (void)w;
+  return Walk::template run<Bvh8LanesBaseline>(args...);
+}
+
+}  // namespace
+
+// Mesh space of the instance: S^-1 and the mirror flag. The identity scale (the common case) skips the matrix
+// products; an identity pose rotation (a mesh placed in the world as cooked, the common case for static meshes) skips
+// the quaternion products, whose result would be the same vectors.
 template <class T>
-RaycastHit<T> makeHit(const TriangleMesh<T>& mesh, const Transform<T>& pose, const MeshRayFrame<T>& frame,
-                      const RayQuery<T>& ray, bool doubleSided, const RawHit<T>& raw) {
+[[gnu::always_inline]] inline TriangleMeshRays<T>::TriangleMeshRays(const TriangleMeshGeometry<T>& g,
+                                                                    const Transform<T>& pose)
+    : g_(g), pose_(pose), scaled_(!g.scale.isIdentity()),
+      rotated_(!(pose.q.w() == T(1) && pose.q.x() == T(0) && pose.q.y() == T(0) && pose.q.z() == T(0))),
+      flips_(false), walk_(int(meshWalk())) {
+  if (!scaled_) return;
+  flips_ = g.scale.flipsWinding();
+  invScaleDiagonal_ = g.scale.scale.cwiseInverse();
+  // An axis-aligned scale (identity scale rotation, the common case) keeps S^-1 diagonal: no rotation matrix, and
+  // three products per vector instead of a matrix product.
+  const Quat<T>& q = g.scale.rotation;
+  diagonal_ = q.w() == T(1) && q.x() == T(0) && q.y() == T(0) && q.z() == T(0);
+  if (diagonal_) return;
+  // MeshInstance's S^-1 = R diag(1/scale) R^T, without its S (rays need only the inverse).
+  const Mat3<T> r = q.toRotationMatrix();
+  invScale_ = r * invScaleDiagonal_.asDiagonal() * r.transpose();
+}
+
+// The requested fields of one hit. The world normal of the (reported-order) triangle is S^-1 n_mesh rotated by the
+// pose, with S^-1 = S^-T: under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way.
+template <class T>
+RaycastHit<T> TriangleMeshRays<T>::hit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri) const {
+  const TriangleMesh<T>& mesh = *g_.mesh;
   RaycastHit<T> hit;
-  hit.distance = raw.tri.t;
-  hit.faceIndex = mesh.inputIndex[raw.cooked];
+  hit.distance = tri.t;
+  hit.faceIndex = mesh.inputIndex[cooked];
   HitFlags flags = HitFlag::FaceIndex;
   if (ray.flags.has(HitFlag::Position)) {
-    hit.position = ray.origin + ray.dir * raw.tri.t;
+    hit.position = ray.origin + ray.dir * tri.t;
     flags |= HitFlag::Position;
   }
   if (ray.flags.has(HitFlag::Normal)) {
-    const Vec3<T>* v = &mesh.triangleVertices[3 * std::size_t(raw.cooked)];
+    const Vec3<T>* v = &mesh.triangleVertices[3 * std::size_t(cooked)];
     const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
-    Vec3<T> n = frame.toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
-    if (frame.rotated) n = pose.rotate(n);
+    Vec3<T> n = toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
+    if (rotated_) n = pose_.rotate(n);
     n = unitOr(n, Vec3<T>(-ray.dir));
-    if (doubleSided && !raw.tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
+    if (g_.doubleSided() && !tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
     hit.normal = n;
     flags |= HitFlag::Normal;
   }
   if (ray.flags.has(HitFlag::UV)) {
-    hit.u = frame.flips ? raw.tri.v : raw.tri.u;
-    hit.v = frame.flips ? raw.tri.u : raw.tri.v;
+    hit.u = flips_ ? tri.v : tri.u;
+    hit.v = flips_ ? tri.u : tri.v;
     flags |= HitFlag::UV;
   }
   hit.flags = flags;
   return hit;
 }
 
-}  // namespace
-
 template <class T>
-std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray,
-                                  RaycastHit<T>* hits) {
+[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
+                                                                      RaycastHit<T>* hits) const {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
-  const TriangleMesh<T>& mesh = *g.mesh;
-  const MeshRayFrame<T> frame(g, pose);
-  const Vec3<T> org = frame.toMesh(frame.rotated ? pose.transformInv(ray.origin) : Vec3<T>(ray.origin - pose.p));
-  const Vec3<T> dir = frame.toMesh(frame.rotated ? pose.rotateInv(ray.dir) : ray.dir);
-  const bool cull = !(g.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
-  const MeshRaycaster<T> caster(mesh, org, dir, cull);
-  const MeshWalk walk = meshWalk();
+  const Vec3<T> org = toMesh(rotated_ ? pose_.transformInv(ray.origin) : Vec3<T>(ray.origin - pose_.p));
+  const Vec3<T> dir = toMesh(rotated_ ? pose_.rotateInv(ray.dir) : ray.dir);
+  const bool cull = !(g_.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
+  const MeshRaycaster<T> caster(*g_.mesh, org, dir, cull);
+  const MeshWalk walk = MeshWalk(walk_);
   if (ray.maxHits > 1) {
     // Kept per thread (a mesh raycast runs no user code): no allocation once it holds the most hits a call kept.
     thread_local std::vector<RawHit<T>> raw;
     raw.clear();
-    const std::uint32_t n = walkMultiple(walk, caster, ray.maxDist, ray.maxHits, raw);
-    for (std::uint32_t i = 0; i < n; ++i) hits[i] = makeHit(mesh, pose, frame, ray, g.doubleSided(), raw[i]);
+    const std::uint32_t n = withLanes<MultipleWalk>(walk, caster, ray.maxDist, ray.maxHits, raw);
+    for (std::uint32_t i = 0; i < n; ++i) hits[i] = hit(ray, raw[i].cooked, raw[i].tri);
     return n;
   }
   RawHit<T> best;
-  const bool found = ray.flags.has(HitFlag::AnyHit) ? walkAny(walk, caster, ray.maxDist, best)
-                                                    : walkClosest(walk, caster, ray.maxDist, best);
+  const bool found = ray.flags.has(HitFlag::AnyHit) ? withLanes<AnyWalk>(walk, caster, ray.maxDist, best)
+                                                    : withLanes<ClosestWalk>(walk, caster, ray.maxDist, best);
   if (!found) return 0;
-  hits[0] = makeHit(mesh, pose, frame, ray, g.doubleSided(), best);
+  hits[0] = hit(ray, best.cooked, best.tri);
   return 1;
+}
+
+template class TriangleMeshRays<float>;
+template class TriangleMeshRays<double>;
+
+template <class T>
+std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray,
+                                  RaycastHit<T>* hits) {
+  return TriangleMeshRays<T>(g, pose).cast(ray, hits);
 }
 
 template std::uint32_t raycastTriangleMesh<float>(const TriangleMeshGeometry<float>&, const Transform<float>&,
