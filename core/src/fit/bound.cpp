@@ -491,23 +491,34 @@ bool halfBallInside(const Solid& s, const Vec3d& c, double r, const Vec3d& n, in
   return true;
 }
 
+// Whether p is deeper than `margin` inside the part (a polytope stops at the first face plane it is not behind).
+bool insideBy(const Solid& s, const Vec3d& p, double margin) {
+  if (s.kind == Solid::Kind::Polytope) {
+    for (const Face& f : s.faces)
+      if (f.normal.dot(p) + f.d >= -margin) return false;
+    return true;
+  }
+  Vec3d g;
+  return signedDistance(s, p, g) < -margin;
+}
+
 // A flat patch of one part whose ball is covered by the union: the inner half ball inside its own part and the
 // outer half inside another (a cut face shared by two parts of a decomposition), the whole ball inside another, or
 // (flat) its corners inside another.
-bool buried(const Union& parts, const Patch& p, const Vec3d& c, double r, double size) {
-  Vec3d g;
+// `depth[j]`: part j's signed distance at c where its ball holds c, else +infinity (c not inside it).
+bool buried(const Union& parts, const Patch& p, const Vec3d& c, double r, double size, const std::vector<double>& depth) {
   for (std::uint32_t j = 0; j < parts.size(); ++j)
-    if (j != p.part && parts.below(j, c) <= -r && signedDistance(parts[j], c, g) <= -r) return true;
+    if (j != p.part && depth[j] <= -r) return true;
   // A flat patch is the convex hull of its corners: with the corners in the interior of a convex part, all of it is.
   const double margin = 1e-9 * size;
   if (p.kind == Patch::Kind::Flat)
     for (std::uint32_t j = 0; j < parts.size(); ++j)
-      if (j != p.part && parts.below(j, c) < -margin && signedDistance(parts[j], p.a, g) < -margin &&
-          signedDistance(parts[j], p.b, g) < -margin && signedDistance(parts[j], p.c, g) < -margin)
+      if (j != p.part && depth[j] < -margin && insideBy(parts[j], p.a, margin) && insideBy(parts[j], p.b, margin) &&
+          insideBy(parts[j], p.c, margin))
         return true;
   if (p.kind != Patch::Kind::Flat || !halfBallInside(parts[p.part], c, r, p.normal, -1)) return false;
   for (std::uint32_t j = 0; j < parts.size(); ++j)
-    if (j != p.part && parts.below(j, c) <= 0 && halfBallInside(parts[j], c, r, p.normal, 1)) return true;
+    if (j != p.part && depth[j] <= 0 && halfBallInside(parts[j], c, r, p.normal, 1)) return true;
   return false;
 }
 
@@ -579,15 +590,20 @@ void fitToMesh(const Surface& surface, const Union& parts, double target, Budget
   target = std::max(target, out.upper);
   std::priority_queue<Scored> heap;
   double lower = 0;
+  std::vector<double> depth(parts.size());
   const auto push = [&](const Patch& p) {
     Vec3d c = Vec3d::Zero();
     double r = 0;
     centreOf(p, parts[p.part], c, r);
-    if (parts.size() > 1 && buried(parts, p, c, r, surface.size)) return;  // not on the union's boundary
     bool onBoundary = true;
-    for (std::uint32_t j = 0; j < parts.size() && onBoundary; ++j) {
+    if (parts.size() > 1) {
       Vec3d g;
-      if (j != p.part && parts.below(j, c) < 0 && signedDistance(parts[j], c, g) < 0) onBoundary = false;
+      for (std::uint32_t j = 0; j < parts.size(); ++j) {
+        depth[j] = j != p.part && parts.below(j, c) < 0 ? signedDistance(parts[j], c, g)
+                                                        : std::numeric_limits<double>::infinity();
+        if (depth[j] < 0) onBoundary = false;
+      }
+      if (buried(parts, p, c, r, surface.size, depth)) return;  // not on the union's boundary
     }
     std::uint32_t nearest = 0;
     const double d = surface.distance(c, nearest);
