@@ -46,6 +46,30 @@ TEST_P(FitShapeData, BoundNeverBelowDenseSampling) {
   }
 }
 
+// The bunny (69k triangles) split into up to 16 parts at 1 % of its size: the decomposition finishes within the
+// bound's patch budget and its certified bound still holds against dense sampling.
+TEST(FitShapeDecompositionData, BunnySixteenPartsBoundNeverBelowDenseSampling) {
+  const std::string path = gqtest::sharedPath("meshes/stanford-bunny.obj");
+  GQ_REQUIRE_SHARED_FILE(path);
+  MeshData<double> mesh;
+  ASSERT_TRUE(loadMeshFile(path, mesh).ok());
+  const double size = sizeOf(mesh);
+  FitOptions<double> o;
+  o.tolerance = 0.01 * size;
+  o.allowed = fitBit(FitRepresentation::ConvexDecomposition);
+  o.contain = true;
+  o.measureCost = false;
+  o.maxParts = 16;
+  FitResult<double> fit;
+  const Status s = fitShape(mesh, o, fit);
+  ASSERT_TRUE(s.ok() || s.code == StatusCode::Warning) << s.toString();
+  ASSERT_EQ(fit.representation, FitRepresentation::ConvexDecomposition);
+  EXPECT_GT(fit.parts.size(), 1u);
+  EXPECT_LE(fit.parts.size(), 16u);
+  EXPECT_GE(double(fit.errorBound), fittest::sampledHausdorff(mesh, fit.parts, 20000));
+  EXPECT_TRUE(fittest::containsVertices(mesh, fit.parts, 1e-9 * size));
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Meshes, FitShapeData,
     ::testing::Values("meshes/stanford-bunny.obj", "meshes/spot.obj", "meshes/teapot.obj", "meshes/fandisk.obj",

@@ -15,6 +15,9 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <unordered_map>
+#include <cstdio>
+#include <cstdlib>
 
 #include "fit/fit_internal.h"
 #include "gq/query.h"
@@ -41,6 +44,20 @@ Status makeSurface(const std::vector<Vec3d>& vertices, const std::vector<Triangl
   out.vertices = vertices;
   out.triangles.clear();
   for (const TriangleIndices& t : out.cooked->triangles) out.triangles.push_back(t);
+  out.neighbours.assign(out.triangles.size(), {Surface::kNoNeighbour, Surface::kNoNeighbour, Surface::kNoNeighbour});
+  std::unordered_map<std::uint64_t, std::pair<std::uint32_t, int>> open;  // undirected edge -> (triangle, edge)
+  for (std::uint32_t t = 0; t < out.triangles.size(); ++t)
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t i = out.triangles[t][e], j = out.triangles[t][(e + 1) % 3];
+      const std::uint64_t key = (std::uint64_t(std::min(i, j)) << 32) | std::max(i, j);
+      const auto [it, inserted] = open.try_emplace(key, t, e);
+      if (inserted) continue;
+      const auto [u, f] = it->second;
+      if (out.neighbours[u][f] == Surface::kNoNeighbour) {  // on an edge of more than two triangles, the first two
+        out.neighbours[u][f] = t;
+        out.neighbours[t][e] = u;
+      }
+    }
   Bounds3<double> b;
   for (const auto& t : out.triangles)
     for (std::uint32_t i : t) b.include(vertices[i]);
@@ -63,14 +80,46 @@ struct Budget {
 
 bool acceptable(double upper, double target, double lower) { return upper <= std::max(target, 1.02 * lower); }
 
+// The parts with a ball about each that holds it: a point at distance e from a ball's centre is at least e - R from
+// the part, so most parts are skipped without their exact signed distance.
+struct Union {
+  struct Ball {
+    Vec3d centre;
+    double radius;
+  };
+  const std::vector<Solid>& solids;
+  std::vector<Ball> balls;
+
+  explicit Union(const std::vector<Solid>& s) : solids(s) {
+    for (const Solid& p : s) balls.push_back({p.centre, reach(p)});
+  }
+  static double reach(const Solid& p) {
+    switch (p.kind) {
+      case Solid::Kind::Sphere: return p.radius;
+      case Solid::Kind::Capsule: return p.halfHeight + p.radius;
+      case Solid::Kind::Box: return p.halfExtents.norm();
+      case Solid::Kind::Cylinder: return std::hypot(p.halfHeight, p.radius);
+      case Solid::Kind::Polytope: break;
+    }
+    double r = 0;
+    for (const Vec3d& v : p.vertices) r = std::max(r, (v - p.centre).norm());
+    return r;
+  }
+  std::size_t size() const { return solids.size(); }
+  const Solid& operator[](std::size_t i) const { return solids[i]; }
+  // A lower bound of part i's signed distance at x.
+  double below(std::size_t i, const Vec3d& x) const { return (x - balls[i].centre).norm() - balls[i].radius; }
+};
+
 // ---- mesh surface to the boundary of the union -------------------------------------------------------------
 
 // Distance from p to the boundary of the union, from above: exact outside; inside, a walk along +-dir out of the
 // union (each step to the exit of a part containing the point) and the distance from there.
-double outsideDistance(const std::vector<Solid>& parts, const Vec3d& p) {
+double outsideDistance(const Union& parts, const Vec3d& p) {
   double best = std::numeric_limits<double>::infinity();
   Vec3d g;
-  for (const Solid& s : parts) best = std::min(best, signedDistance(s, p, g));
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    if (parts.below(i, p) < best) best = std::min(best, signedDistance(parts[i], p, g));
   return best;
 }
 
@@ -93,7 +142,7 @@ double exitAlong(const Solid& s, const Vec3d& p, const Vec3d& dir) {
   return t;
 }
 
-double walkOut(const std::vector<Solid>& parts, const Vec3d& p, const Vec3d& dir, double size) {
+double walkOut(const Union& parts, const Vec3d& p, const Vec3d& dir, double size) {
   double t = 0;
   for (std::size_t step = 0; step < parts.size() + 8; ++step) {
     const Vec3d x = p + t * dir;
@@ -101,14 +150,15 @@ double walkOut(const std::vector<Solid>& parts, const Vec3d& p, const Vec3d& dir
     if (out >= 0) return t + out;
     double next = t;
     Vec3d g;
-    for (const Solid& s : parts)
-      if (signedDistance(s, x, g) < 0) next = std::max(next, t + exitAlong(s, x, dir));
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      if (parts.below(i, x) < 0 && signedDistance(parts[i], x, g) < 0)
+        next = std::max(next, t + exitAlong(parts[i], x, dir));
     t = next + 1e-9 * size;
   }
   return std::numeric_limits<double>::infinity();
 }
 
-double unionBoundaryDistance(const std::vector<Solid>& parts, const Vec3d& p, const Vec3d& normal, double size) {
+double unionBoundaryDistance(const Union& parts, const Vec3d& p, const Vec3d& normal, double size) {
   const double out = outsideDistance(parts, p);
   if (out >= 0) return out;
   return std::min(walkOut(parts, p, normal, size), walkOut(parts, p, -normal, size));
@@ -139,15 +189,15 @@ bool beyondAFace(const Solid& q, const Vec3d (&corners)[3], const Vec3d& dir, do
 // from the image triangle (corners p + beta(p) u) with a normal not against u, points just past the image are
 // outside every part, so the distance from p to the union's boundary is at most beta(p): at most the largest beta
 // at a corner. Polytopes only (a decomposition's parts); infinity when the test does not apply.
-double exitThroughFace(const std::vector<Solid>& parts, const Tri& t, const Vec3d& q, const Vec3d& u, double size) {
+double exitThroughFace(const Union& parts, const Tri& t, const Vec3d& q, const Vec3d& u, double size) {
   const double inf = std::numeric_limits<double>::infinity();
   const double slack = 1e-9 * size;
-  for (const Solid& s : parts)
+  for (const Solid& s : parts.solids)
     if (s.kind != Solid::Kind::Polytope) return inf;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const Solid& p = parts[k];
     Vec3d g;
-    if (signedDistance(p, q, g) > slack) continue;
+    if (parts.below(k, q) > slack || signedDistance(p, q, g) > slack) continue;
     const Face* exit = nullptr;
     double nearest = inf;
     for (const Face& f : p.faces) {
@@ -181,21 +231,49 @@ double exitThroughFace(const std::vector<Solid>& parts, const Tri& t, const Vec3
 }
 
 // Bounds a mesh triangle's distance to the boundary of the union from above; `lower` gets a distance attained.
-double boundTriangle(const std::vector<Solid>& parts, const Tri& t, double size, double& lower) {
+// The distance from the triangle to the boundary of one convex part, from above, and one attained.
+double boundToPart(const Solid& part, const Tri& t, const Vec3d& q, double& lower) {
+  Vec3d g, gv;
+  const double sq = signedDistance(part, q, g);
+  const double sa = signedDistance(part, t.a, gv), sb = signedDistance(part, t.b, gv), sc = signedDistance(part, t.c, gv);
+  const double outside = std::max({sa, sb, sc});
+  const double depth = std::max({-sq - g.dot(t.a - q), -sq - g.dot(t.b - q), -sq - g.dot(t.c - q)});
+  lower = std::max({std::abs(sa), std::abs(sb), std::abs(sc), std::abs(sq)});
+  return std::max({outside, depth, 0.0});
+}
+
+double boundTriangle(const Union& parts, const Tri& t, double size, double& lower) {
   const Vec3d q = (t.a + t.b + t.c) / 3.0;
-  if (parts.size() == 1) {
-    Vec3d g, gv;
-    const double sq = signedDistance(parts[0], q, g);
-    const double sa = signedDistance(parts[0], t.a, gv), sb = signedDistance(parts[0], t.b, gv),
-                 sc = signedDistance(parts[0], t.c, gv);
-    const double outside = std::max({sa, sb, sc});
-    const double depth = std::max({-sq - g.dot(t.a - q), -sq - g.dot(t.b - q), -sq - g.dot(t.c - q)});
-    lower = std::max({std::abs(sa), std::abs(sb), std::abs(sc), std::abs(sq)});
-    return std::max({outside, depth, 0.0});
+  if (parts.size() == 1) return boundToPart(parts[0], t, q, lower);
+  const double r = std::max({(t.a - q).norm(), (t.b - q).norm(), (t.c - q).norm()});
+  // One part P alone: with B its bound, each point x of the triangle has a point y of P's boundary within B, and
+  // when every other part is farther than r + B from the centroid, y is outside them all, so on the union's
+  // boundary (and x, outside the union, is at most sd_P(x) <= B from it): B bounds the union too. P is the part
+  // nearest the centroid.
+  {
+    std::size_t nearest = 0;
+    double nearestDistance = std::numeric_limits<double>::infinity();
+    Vec3d g;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      if (std::abs(parts.below(i, q)) >= nearestDistance && parts.below(i, q) > 0) continue;
+      const double d = std::abs(signedDistance(parts[i], q, g));
+      if (d < nearestDistance) {
+        nearestDistance = d;
+        nearest = i;
+      }
+    }
+    double single = 0;
+    const double bound = boundToPart(parts[nearest], t, q, single);
+    bool alone = true;
+    for (std::size_t i = 0; i < parts.size() && alone; ++i)
+      if (i != nearest && parts.below(i, q) <= r + bound) alone = signedDistance(parts[i], q, g) > r + bound;
+    if (alone) {
+      lower = std::max(0.0, outsideDistance(parts, q));
+      return bound;
+    }
   }
   const Vec3d n = (t.b - t.a).cross(t.c - t.a);
   const Vec3d normal = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::UnitX();
-  const double r = std::max({(t.a - q).norm(), (t.b - q).norm(), (t.c - q).norm()});
   lower = std::max(0.0, outsideDistance(parts, q));  // exact where q is outside the union
   const double walked = unionBoundaryDistance(parts, q, normal, size) + r;
   if (n.norm() > 0) return std::min(walked, exitThroughFace(parts, t, q, normal, size));
@@ -204,7 +282,7 @@ double boundTriangle(const std::vector<Solid>& parts, const Tri& t, double size,
 
 // Best first: the triangle of largest bound is split until it is acceptable or the budget is spent; the bound is
 // then the largest left.
-void meshToFit(const Surface& surface, const std::vector<Solid>& parts, double target, Budget& budget, Bound& out) {
+void meshToFit(const Surface& surface, const Union& parts, double target, Budget& budget, Bound& out) {
   std::priority_queue<Tri> heap;
   double lower = 0;
   const auto push = [&](Tri t) {
@@ -413,15 +491,34 @@ bool halfBallInside(const Solid& s, const Vec3d& c, double r, const Vec3d& n, in
   return true;
 }
 
-// A flat patch of one part whose ball is covered by the union: the inner half ball inside its own part and the
-// outer half inside another (a cut face shared by two parts of a decomposition), or the whole ball inside another.
-bool buried(const std::vector<Solid>& parts, const Patch& p, const Vec3d& c, double r) {
+// Whether p is deeper than `margin` inside the part (a polytope stops at the first face plane it is not behind).
+bool insideBy(const Solid& s, const Vec3d& p, double margin) {
+  if (s.kind == Solid::Kind::Polytope) {
+    for (const Face& f : s.faces)
+      if (f.normal.dot(p) + f.d >= -margin) return false;
+    return true;
+  }
   Vec3d g;
+  return signedDistance(s, p, g) < -margin;
+}
+
+// A flat patch of one part whose ball is covered by the union: the inner half ball inside its own part and the
+// outer half inside another (a cut face shared by two parts of a decomposition), the whole ball inside another, or
+// (flat) its corners inside another.
+// `depth[j]`: part j's signed distance at c where its ball holds c, else +infinity (c not inside it).
+bool buried(const Union& parts, const Patch& p, const Vec3d& c, double r, double size, const std::vector<double>& depth) {
   for (std::uint32_t j = 0; j < parts.size(); ++j)
-    if (j != p.part && signedDistance(parts[j], c, g) <= -r) return true;
+    if (j != p.part && depth[j] <= -r) return true;
+  // A flat patch is the convex hull of its corners: with the corners in the interior of a convex part, all of it is.
+  const double margin = 1e-9 * size;
+  if (p.kind == Patch::Kind::Flat)
+    for (std::uint32_t j = 0; j < parts.size(); ++j)
+      if (j != p.part && depth[j] < -margin && insideBy(parts[j], p.a, margin) && insideBy(parts[j], p.b, margin) &&
+          insideBy(parts[j], p.c, margin))
+        return true;
   if (p.kind != Patch::Kind::Flat || !halfBallInside(parts[p.part], c, r, p.normal, -1)) return false;
   for (std::uint32_t j = 0; j < parts.size(); ++j)
-    if (j != p.part && halfBallInside(parts[j], c, r, p.normal, 1)) return true;
+    if (j != p.part && depth[j] <= 0 && halfBallInside(parts[j], c, r, p.normal, 1)) return true;
   return false;
 }
 
@@ -447,9 +544,39 @@ double nearTriangleBound(const Surface& surface, const Solid& s, const Patch& p,
     if (!(n.norm() > 0)) return std::numeric_limits<double>::infinity();
     bulge = s.radius - std::abs(n.normalized().dot(corner[0] - centre));
   }
-  double worst = 0;
-  for (const Vec3d& v : corner) worst = std::max(worst, (v - detail::closestPointOnTriangle(v, ta, tb, tc)).norm());
-  return worst + bulge;
+  const auto farthest = [&](const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+    double worst = 0;
+    for (const Vec3d& v : corner) worst = std::max(worst, (v - detail::closestPointOnTriangle(v, a, b, c)).norm());
+    return worst;
+  };
+  double best = farthest(ta, tb, tc);
+  // T and a coplanar neighbour N whose union is a convex quadrilateral Q: min(d(x, T), d(x, N)) = d(x, Q) is convex
+  // too, so over the flat triangle it peaks at a corner. A patch straddling the diagonal of a flat quad (a box face,
+  // a hull face of two mesh triangles) is then proven to round-off instead of refined along the whole diagonal.
+  const Vec3d normal = (tb - ta).cross(tc - ta);
+  const double area2 = normal.norm();
+  for (int e = 0; e < 3 && best > 0 && area2 > 0; ++e) {
+    const std::uint32_t n = surface.neighbours[cooked][e];
+    if (n == Surface::kNoNeighbour) continue;
+    const Vec3d& p = surface.vertices[t[e]];
+    const Vec3d& q = surface.vertices[t[(e + 1) % 3]];
+    const Vec3d& r = surface.vertices[t[(e + 2) % 3]];
+    const TriangleIndices& u = surface.cooked->triangles[n];
+    const std::uint32_t far = u[0] != t[e] && u[0] != t[(e + 1) % 3] ? u[0] : u[1] != t[e] && u[1] != t[(e + 1) % 3] ? u[1] : u[2];
+    const Vec3d& s = surface.vertices[far];
+    const Vec3d un = normal / area2;
+    if (std::abs(un.dot(s - p)) > 1e-12 * surface.size) continue;  // not coplanar
+    // Convex: r and s on opposite sides of the line pq, and p and q not on the same side of the line rs.
+    const double sideR = un.dot((q - p).cross(r - p)), sideS = un.dot((q - p).cross(s - p));
+    const double sideP = un.dot((s - r).cross(p - r)), sideQ = un.dot((s - r).cross(q - r));
+    if (!(sideR * sideS < 0) || sideP * sideQ > 0) continue;
+    double worst = 0;
+    for (const Vec3d& v : corner)
+      worst = std::max(worst, std::min((v - detail::closestPointOnTriangle(v, ta, tb, tc)).norm(),
+                                       (v - detail::closestPointOnTriangle(v, p, q, s)).norm()));
+    best = std::min(best, worst);
+  }
+  return best + bulge;
 }
 
 struct Scored {
@@ -458,18 +585,25 @@ struct Scored {
   bool operator<(const Scored& o) const { return upper < o.upper; }
 };
 
-void fitToMesh(const Surface& surface, const std::vector<Solid>& parts, double target, Budget& budget, Bound& out) {
+// `out` holds the other direction's bound: refining this one below it would not lower the maximum.
+void fitToMesh(const Surface& surface, const Union& parts, double target, Budget& budget, Bound& out) {
+  target = std::max(target, out.upper);
   std::priority_queue<Scored> heap;
   double lower = 0;
+  std::vector<double> depth(parts.size());
   const auto push = [&](const Patch& p) {
     Vec3d c = Vec3d::Zero();
     double r = 0;
     centreOf(p, parts[p.part], c, r);
-    if (parts.size() > 1 && buried(parts, p, c, r)) return;  // not on the union's boundary
     bool onBoundary = true;
-    for (std::uint32_t j = 0; j < parts.size() && onBoundary; ++j) {
+    if (parts.size() > 1) {
       Vec3d g;
-      if (j != p.part && signedDistance(parts[j], c, g) < 0) onBoundary = false;
+      for (std::uint32_t j = 0; j < parts.size(); ++j) {
+        depth[j] = j != p.part && parts.below(j, c) < 0 ? signedDistance(parts[j], c, g)
+                                                        : std::numeric_limits<double>::infinity();
+        if (depth[j] < 0) onBoundary = false;
+      }
+      if (buried(parts, p, c, r, surface.size, depth)) return;  // not on the union's boundary
     }
     std::uint32_t nearest = 0;
     const double d = surface.distance(c, nearest);
@@ -501,9 +635,10 @@ Bound certifiedBound(const Surface& surface, const std::vector<Solid>& parts, do
     return b;
   }
   Budget first{maxPatches};
-  meshToFit(surface, parts, target, first, b);
+  const Union solids(parts);
+  meshToFit(surface, solids, target, first, b);
   Budget second{maxPatches};
-  fitToMesh(surface, parts, target, second, b);
+  fitToMesh(surface, solids, target, second, b);
 
   // Rounding: hull faces merged by qhull are planar within 1e-9 of the hull size, distances are computed in double.
   b.upper += 1e-8 * surface.size;

@@ -107,9 +107,20 @@ void measureConcavity(const Surface& surface, Piece& piece) {
   if (n.norm() > 0) piece.deepestPlane = {n.normalized(), n.normalized().dot(m.vertices[t[0]])};
 }
 
+// Each point once (a mesh vertex is a corner of about six triangles): qhull's work is in the points.
+void keepUnique(std::vector<Vec3d>& pts) {
+  const auto less = [](const Vec3d& a, const Vec3d& b) {
+    return a.x() != b.x() ? a.x() < b.x() : a.y() != b.y() ? a.y() < b.y() : a.z() < b.z();
+  };
+  std::sort(pts.begin(), pts.end(), less);
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+}
+
 // The piece's hull holds its triangles and each of their points on a cut pushed across it by kOverlap of the mesh
-// size: the two halves of a cut overlap in a thin slab, so their union has no crack along it.
-bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& surface, Piece& out) {
+// size: the two halves of a cut overlap in a thin slab, so their union has no crack along it. A trial piece (one
+// half of a candidate cut, only scored) takes qhull's hull as it is; a kept piece's hull is grown to hold every point
+// (enclosingHull), which costs a pass over the points per face.
+bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& surface, bool kept, Piece& out) {
   if (tris.size() < 12) return false;
   // The points themselves stay too: pushing a corner where a cut meets a slanted face can leave it just outside.
   std::vector<Vec3d> points = tris;
@@ -120,9 +131,16 @@ bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& 
       if (std::abs(c.normal.dot(p) - c.offset) <= eps) pushed += overlap * c.normal;
     if (pushed != p) points.push_back(pushed);
   }
+  keepUnique(points);
   out.triangles = std::move(tris);
   out.cuts = std::move(cuts);
-  if (!hullOf(points, out.hull).ok()) return false;
+  if (kept) {
+    if (!hullOf(points, out.hull).ok()) return false;
+  } else {
+    std::shared_ptr<const ConvexMesh<double>> hull;
+    if (!cookConvexMesh(points, hull).ok()) return false;
+    out.hull = polytopeOf(*hull);
+  }
   measureConcavity(surface, out);
   return true;
 }
@@ -153,23 +171,25 @@ std::vector<Plane> candidatePlanes(const Piece& piece) {
 // (nearly) nothing on one side is skipped.
 bool splitPiece(const Piece& piece, const Surface& surface, Piece& a, Piece& b) {
   double best = std::numeric_limits<double>::infinity();
-  bool found = false;
-  for (const Plane& plane : candidatePlanes(piece)) {
+  const Plane* chosen = nullptr;
+  const std::vector<Plane> candidates = candidatePlanes(piece);
+  const auto halves = [&](const Plane& plane, bool kept, Piece& pa, Piece& pb) {
     std::vector<Plane> cutsA = piece.cuts, cutsB = piece.cuts;
     cutsA.push_back(plane);
     cutsB.push_back({-plane.normal, -plane.offset});
+    return makePiece(clip(piece.triangles, cutsA.back(), surface.size), cutsA, surface, kept, pa) &&
+           makePiece(clip(piece.triangles, cutsB.back(), surface.size), cutsB, surface, kept, pb);
+  };
+  for (const Plane& plane : candidates) {
     Piece pa, pb;
-    if (!makePiece(clip(piece.triangles, cutsA.back(), surface.size), cutsA, surface, pa)) continue;
-    if (!makePiece(clip(piece.triangles, cutsB.back(), surface.size), cutsB, surface, pb)) continue;
+    if (!halves(plane, false, pa, pb)) continue;
     const double score = std::max(pa.concavity, pb.concavity);
     if (score < best) {
       best = score;
-      a = std::move(pa);
-      b = std::move(pb);
-      found = true;
+      chosen = &plane;
     }
   }
-  return found;
+  return chosen != nullptr && halves(*chosen, true, a, b);
 }
 
 }  // namespace
@@ -181,7 +201,7 @@ Status decompose(const Surface& surface, double tolerance, std::uint32_t maxPart
   for (const auto& t : surface.triangles)
     for (std::uint32_t i : t) tris.push_back(surface.vertices[i]);
   std::vector<Piece> pieces(1);
-  if (!makePiece(std::move(tris), {}, surface, pieces[0])) return Status::degenerate("mesh has no convex hull");
+  if (!makePiece(std::move(tris), {}, surface, true, pieces[0])) return Status::degenerate("mesh has no convex hull");
   while (pieces.size() < maxParts) {
     std::size_t worst = 0;
     for (std::size_t i = 1; i < pieces.size(); ++i)

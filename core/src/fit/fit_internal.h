@@ -1,6 +1,7 @@
 #pragma once
 // Fitting internals, in double whatever the scalar of the mesh: the solids a fit is made of, their signed distance,
 // surface patches for the bound, and the fitters.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <utility>
@@ -40,7 +41,10 @@ double signedDistance(const Solid& s, const Vec3d& p, Vec3d& gradient);
 // The mesh in double, with its surface cooked for point distances.
 struct Surface {
   std::vector<Vec3d> vertices;
-  std::vector<TriangleIndices> triangles;  // triangles of positive area only
+  std::vector<TriangleIndices> triangles;  // triangles of positive area only (the cooked mesh's order)
+  // Per triangle, a triangle across its edge (i, i + 1), or kNoNeighbour on a border.
+  std::vector<std::array<std::uint32_t, 3>> neighbours;
+  static constexpr std::uint32_t kNoNeighbour = 0xffffffffu;
   std::shared_ptr<const TriangleMesh<double>> cooked;
   double size = 0;  // bounding-box diagonal
   double distance(const Vec3d& p) const;

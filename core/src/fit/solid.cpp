@@ -55,7 +55,9 @@ double polytopeDistance(const Solid& s, const Vec3d& p, Vec3d& gradient) {
   double best = std::numeric_limits<double>::infinity();
   Vec3d bestPoint = p;
   for (const Face& f : s.faces) {
-    if (f.normal.dot(p) + f.d <= 0) continue;
+    // A face is no nearer than its plane.
+    const double v = f.normal.dot(p) + f.d;
+    if (v <= 0 || v >= best) continue;
     const Vec3d c = closestOnPolygon(s, f, p);
     const double d = (p - c).norm();
     if (d < best) {
