@@ -178,4 +178,28 @@ TestShape makeShape(Kind k, std::mt19937& rng) {
   return s;
 }
 
+// Whether FCL 0.7 has a collide / distance function for the pair (it prints "not supported" and answers nothing
+// otherwise: TriangleP against most shapes). FCL looks a shape-vs-BVHModel pair up with the BVHModel first.
+namespace {
+template <class Table> bool fclHas(const Table& table, const TestShape& a, const TestShape& b) {
+  const auto ta = a.geometry->getNodeType(), tb = b.geometry->getNodeType();
+  if (a.geometry->getObjectType() == ::fcl::OT_GEOM && b.geometry->getObjectType() == ::fcl::OT_BVH) return table[tb][ta] != nullptr;
+  return table[ta][tb] != nullptr;
+}
+}  // namespace
+
+// FCL 0.7's collide crashes the same way (libccd's MPR on a Plane: SIGSEGV in ccdMPRIntersect) for Convex-Plane and
+// TriangleP against Halfspace/Plane: those are not asked either.
+bool fclHasCollide(const TestShape& a, const TestShape& b) {
+  const auto is = [&](Kind x, Kind y) { return (a.kind == x && b.kind == y) || (a.kind == y && b.kind == x); };
+  if (is(Kind::Convex, Kind::Plane) || is(Kind::TriangleP, Kind::Plane) || is(Kind::TriangleP, Kind::Halfspace)) return false;
+  return fclHas(::fcl::getCollisionFunctionLookTable<::fcl::detail::GJKSolver_libccdd>().collision_matrix, a, b);
+}
+// FCL 0.7's distance with a Halfspace or Plane has a table entry but crashes: libccd's GJK calls a null support
+// function (observed: SIGSEGV in __ccdSupport), so those pairs are not asked.
+bool fclHasDistance(const TestShape& a, const TestShape& b) {
+  if (isPlaneLike(a.kind) || isPlaneLike(b.kind)) return false;
+  return fclHas(::fcl::getDistanceFunctionLookTable<::fcl::detail::GJKSolver_libccdd>().distance_matrix, a, b);
+}
+
 }  // namespace gq::fcltest

@@ -48,4 +48,9 @@ std::shared_ptr<::fcl::Convexd> convexGeometry(const std::vector<::fcl::Vector3d
 // A closed convex polytope: the hull of `count` points on an ellipsoid, as vertices + CCW faces (triangulated).
 void randomHull(std::mt19937& rng, int count, std::vector<::fcl::Vector3d>& vertices, std::vector<std::vector<int>>& faces);
 
+// Whether FCL 0.7 (Debian 0.7.0, libccd solver) can be asked this pair: it has a function for it and does not crash
+// on it (libccd's MPR/GJK on a Plane or Halfspace: SIGSEGV in ccdMPRIntersect / __ccdSupport).
+bool fclHasCollide(const TestShape& a, const TestShape& b);
+bool fclHasDistance(const TestShape& a, const TestShape& b);
+
 }  // namespace gq::fcltest
