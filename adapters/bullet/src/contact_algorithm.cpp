@@ -1,6 +1,7 @@
 #include "contact_algorithm.h"
 
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <new>
 
@@ -41,15 +42,26 @@ class ManifoldSink final : public ContactSink {
 bool pairHasGqPath(ShapeKind a, ShapeKind b) { return a == ShapeKind::Convex || b == ShapeKind::Convex; }
 
 // Every parameter a view of a primitive, hull or plane is made of (the hull's points by their buffer and count,
-// which change when points are added). Equal keys (bytewise, so a NaN matches itself) give equal views.
+// which change when points are added). Equal keys (bytewise, so a NaN matches itself) give equal views. No padding:
+// the key is compared as whole words, inline (it is checked for both shapes of every pair every frame).
 struct ShapeKey {
   const btCollisionShape* shape = nullptr;
-  int type = -1;
   const void* points = nullptr;
-  int ints[2] = {0, 0};
-  btScalar values[12] = {};
-  bool operator==(const ShapeKey& o) const { return std::memcmp(this, &o, sizeof(ShapeKey)) == 0; }
+  int type = -1;
+  int count = 0;  // an up axis, or a hull's point count
+  btScalar values[8] = {};
+  bool operator==(const ShapeKey& o) const {
+    std::uint64_t a[sizeof(ShapeKey) / 8], b[sizeof(ShapeKey) / 8];
+    std::memcpy(a, this, sizeof a);
+    std::memcpy(b, &o, sizeof b);
+    std::uint64_t differ = 0;
+    for (std::size_t i = 0; i < sizeof a / 8; ++i) differ |= a[i] ^ b[i];
+    return differ == 0;
+  }
 };
+static_assert(sizeof(ShapeKey) == 2 * sizeof(void*) + 2 * sizeof(int) + 8 * sizeof(btScalar) &&
+                  sizeof(ShapeKey) % 8 == 0,
+              "ShapeKey has no padding");
 
 void putVector(btScalar* v, const btVector3& x) { v[0] = x.x(), v[1] = x.y(), v[2] = x.z(); }
 
@@ -68,22 +80,22 @@ bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
       return true;
     case CAPSULE_SHAPE_PROXYTYPE:
       putVector(key.values + 4, static_cast<const btConvexInternalShape*>(shape)->getImplicitShapeDimensions());
-      key.ints[0] = static_cast<const btCapsuleShape*>(shape)->getUpAxis();
+      key.count = static_cast<const btCapsuleShape*>(shape)->getUpAxis();
       return true;
     case CYLINDER_SHAPE_PROXYTYPE:
       putVector(key.values + 4, static_cast<const btConvexInternalShape*>(shape)->getImplicitShapeDimensions());
-      key.ints[0] = static_cast<const btCylinderShape*>(shape)->getUpAxis();
+      key.count = static_cast<const btCylinderShape*>(shape)->getUpAxis();
       return true;
     case CONE_SHAPE_PROXYTYPE: {
       const auto* cone = static_cast<const btConeShape*>(shape);
       key.values[4] = cone->getRadius(), key.values[5] = cone->getHeight();
-      key.ints[0] = cone->getConeUpIndex();
+      key.count = cone->getConeUpIndex();
       return true;
     }
     case CONVEX_HULL_SHAPE_PROXYTYPE: {
       const auto* hull = static_cast<const btConvexHullShape*>(shape);
       key.points = hull->getUnscaledPoints();
-      key.ints[0] = hull->getNumPoints();
+      key.count = hull->getNumPoints();
       return true;
     }
     case STATIC_PLANE_PROXYTYPE: {
@@ -184,6 +196,16 @@ Real reuseSize(const ShapeView& va, const ShapeView& vb) {
   return std::min(va.size, vb.size);
 }
 
+// The world pose of a view's geometry (Bullet's pose times the view's local pose, skipped when that is the identity,
+// as for boxes and spheres: the product would be the same numbers).
+Pose worldPose(const btTransform& tr, const ShapeView& v) {
+  const Pose& local = v.localPose;
+  const bool identity = local.q.w() == Real(1) && local.q.x() == Real(0) && local.q.y() == Real(0) &&
+                        local.q.z() == Real(0) && local.p.x() == Real(0) && local.p.y() == Real(0) &&
+                        local.p.z() == Real(0);
+  return identity ? toGq(tr) : toGq(tr) * local;
+}
+
 }  // namespace
 
 ContactAlgorithm::ContactAlgorithm(btPersistentManifold* sharedManifold, const btCollisionAlgorithmConstructionInfo& ci,
@@ -232,46 +254,49 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
   const btTransform& trB = body1->getWorldTransform();
   const bool reusable = state_ && ownManifold_ && result->m_closestPointDistanceThreshold == Real(0) &&
                         state_->side[0].versioned() && state_->side[1].versioned();
-  if (reusable && reuseContacts(va, vb, trA, trB, threshold, body1->getCollisionObject())) {
+  // B's pose in A's frame, for the reuse test and for the next frame's (computed once: both need it).
+  btTransform relative;
+  if (reusable) relative = trA.inverseTimes(trB);
+  const btTransform& poseB = manifoldB(*manifold_, trA, trB, body1->getCollisionObject());
+  if (reusable && reuseContacts(va, vb, relative, threshold, poseB)) {
     result->refreshContactPoints();
     return;
   }
-  const PlacedShape a{&va, toGq(trA) * va.localPose};
-  const PlacedShape b{&vb, toGq(trB) * vb.localPose};
+  const PlacedShape a{&va, worldPose(trA, va)};
+  const PlacedShape b{&vb, worldPose(trB, vb)};
   ManifoldSink sink(*result);
   pairContacts(a, b, threshold, sink, state_ ? &state_->memory : nullptr);
   if (ownManifold_) result->refreshContactPoints();
-  if (reusable) rememberContacts(trA, trB, threshold, body1->getCollisionObject());
+  if (reusable) rememberContacts(relative, threshold, poseB);
 }
 
-bool ContactAlgorithm::reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& trA,
-                                     const btTransform& trB, Real threshold, const btCollisionObject* objectB) {
+bool ContactAlgorithm::reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& relative,
+                                     Real threshold, const btTransform& manifoldPoseB) {
   ReusedFrame& r = state_->reused;
   if (!r.valid || r.threshold != threshold || r.versions[0] != state_->side[0].version ||
       r.versions[1] != state_->side[1].version || manifold_->getNumContacts() != r.points)
     return false;
-  const btTransform relative = trA.inverseTimes(trB);
   const Real length = kReuseLength * reuseSize(va, vb);
   if ((relative.getOrigin() - r.relative.getOrigin()).length2() > length * length) return false;
   const btMatrix3x3& now = relative.getBasis();
   const btMatrix3x3& then = r.relative.getBasis();
   const Real turn2 = (now[0] - then[0]).length2() + (now[1] - then[1]).length2() + (now[2] - then[2]).length2();
   if (turn2 > kReuseAngle * kReuseAngle) return false;
-  const btMatrix3x3& basisB = manifoldB(*manifold_, trA, trB, objectB).getBasis();
+  const btMatrix3x3& basisB = manifoldPoseB.getBasis();
   for (int i = 0; i < r.points; ++i) manifold_->getContactPoint(i).m_normalWorldOnB = basisB * r.normalInB[i];
   return true;
 }
 
-void ContactAlgorithm::rememberContacts(const btTransform& trA, const btTransform& trB, Real threshold,
-                                        const btCollisionObject* objectB) {
+void ContactAlgorithm::rememberContacts(const btTransform& relative, Real threshold,
+                                        const btTransform& manifoldPoseB) {
   ReusedFrame& r = state_->reused;
   r.valid = true;
-  r.relative = trA.inverseTimes(trB);
+  r.relative = relative;
   r.threshold = threshold;
   r.versions[0] = state_->side[0].version;
   r.versions[1] = state_->side[1].version;
   r.points = manifold_->getNumContacts();
-  const btMatrix3x3& basisB = manifoldB(*manifold_, trA, trB, objectB).getBasis();
+  const btMatrix3x3& basisB = manifoldPoseB.getBasis();
   for (int i = 0; i < r.points; ++i)
     r.normalInB[i] = manifold_->getContactPoint(i).m_normalWorldOnB * basisB;  // basisB^T n
 }

@@ -35,12 +35,12 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
   void collide(bool answerable, const ShapeView& va, const ShapeView& vb, const btCollisionObjectWrapper* body0,
                const btCollisionObjectWrapper* body1, btManifoldResult* result);
 
-  // True when B's pose relative to A is close enough to the last exact frame's that the manifold's points are kept
-  // (their normals turned with B); false when they must be recomputed.
-  bool reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& trA, const btTransform& trB,
-                     btScalar threshold, const btCollisionObject* objectB);
-  void rememberContacts(const btTransform& trA, const btTransform& trB, btScalar threshold,
-                        const btCollisionObject* objectB);
+  // True when B's pose relative to A (`relative`) is close enough to the last exact frame's that the manifold's
+  // points are kept (their normals turned with the manifold's B, at `manifoldPoseB`); false when they must be
+  // recomputed.
+  bool reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& relative, btScalar threshold,
+                     const btTransform& manifoldPoseB);
+  void rememberContacts(const btTransform& relative, btScalar threshold, const btTransform& manifoldPoseB);
 
   btPersistentManifold* manifold_;
   bool ownManifold_;
