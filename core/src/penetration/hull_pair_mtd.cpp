@@ -153,15 +153,23 @@ template <class T> class PairSearch {
     for (std::uint32_t k = 0; k < 2; ++k) start(k);
     while (!s_.heap.empty() && best_.depth >= T(0)) {
       std::pop_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
-      const HeapEntry<T> e = s_.heap.back();
+      HeapEntry<T> e = s_.heap.back();
       s_.heap.pop_back();
       if (!(e.bound - margin_ < best_.depth)) break;
       const typename GaussTree<T>::Node& node = sides_[e.side]->tree->nodes[e.node];
       if (e.lazy) {
+        // Its support bound; refined at once while that is still the smallest bound left.
         Vec3<T> w;
-        const T bound = std::max(e.bound, supportBound(e.side, node, w));
-        push(e.side, e.node, bound, &w);
-      } else if (node.leaf()) {
+        e.bound = std::max(e.bound, supportBound(e.side, node, w));
+        if (!(e.bound - margin_ < best_.depth)) continue;
+        if (!s_.heap.empty() && s_.heap.front().bound < e.bound) {
+          push(e.side, e.node, e.bound, &w);
+          continue;
+        }
+        e.support = std::uint32_t(s_.support.size());
+        s_.support.push_back(w);
+      }
+      if (node.leaf()) {
         evaluateLeaf(e.side, e.node, s_.support[e.support]);
       } else {
         enqueue(e.side, node.child[0], e.bound);
