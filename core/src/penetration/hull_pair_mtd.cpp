@@ -26,6 +26,8 @@ template <class T> struct Side {
   bool cold = true;
   Vec3<T> halfExtents = Vec3<T>::Zero();
   T scale = T(1);
+  Vec3<T> innerCentre = Vec3<T>::Zero();  // a ball inside the shape (own frame)
+  T innerRadius = T(0);
   Mat3<T> rot;    // own frame -> other frame: x_other = rot * x_own + trans
   Vec3<T> trans;
   bool first = true;  // geom0 (its frame is the search's)
@@ -83,7 +85,7 @@ template <class T> T arcMinimum(T e1, T e2, T halfCos) {
 // (PairScratch::support, own frame).
 template <class T> struct HeapEntry {
   T bound;
-  std::uint32_t side : 1, node : 31;
+  std::uint32_t side : 1, lazy : 1, node : 30;  // lazy: `bound` is the inner-ball bound (no support point yet)
   std::uint32_t support;
   bool operator>(const HeapEntry& o) const { return bound > o.bound; }
 };
@@ -134,7 +136,10 @@ inline constexpr std::size_t kStartNodes = 32;
 
 template <class T> class PairSearch {
  public:
-  PairSearch(Side<T>& a, Side<T>& b, T margin) : sides_{&a, &b}, margin_(margin), s_(pairScratch<T>()) {}
+  PairSearch(Side<T>& a, Side<T>& b, T margin) : sides_{&a, &b}, margin_(margin), s_(pairScratch<T>()) {
+    for (int k = 0; k < 2; ++k)
+      innerCentre_[k] = sides_[k]->rot.transpose() * (sides_[1 - k]->innerCentre - sides_[k]->trans);
+  }
 
   // The minimum push-out; `best.depth` < 0 when a separating axis was found (the search then stops).
   Best<T> run() {
@@ -148,10 +153,22 @@ template <class T> class PairSearch {
     for (std::uint32_t k = 0; k < 2; ++k) start(k);
     while (!s_.heap.empty() && best_.depth >= T(0)) {
       std::pop_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
-      const HeapEntry<T> e = s_.heap.back();
+      HeapEntry<T> e = s_.heap.back();
       s_.heap.pop_back();
       if (!(e.bound - margin_ < best_.depth)) break;
       const typename GaussTree<T>::Node& node = sides_[e.side]->tree->nodes[e.node];
+      if (e.lazy) {
+        // Its support bound; refined at once while that is still the smallest bound left.
+        Vec3<T> w;
+        e.bound = std::max(e.bound, supportBound(e.side, node, w));
+        if (!(e.bound - margin_ < best_.depth)) continue;
+        if (!s_.heap.empty() && s_.heap.front().bound < e.bound) {
+          push(e.side, e.node, e.bound, &w);
+          continue;
+        }
+        e.support = std::uint32_t(s_.support.size());
+        s_.support.push_back(w);
+      }
       if (node.leaf()) {
         evaluateLeaf(e.side, e.node, s_.support[e.support]);
       } else {
@@ -164,16 +181,27 @@ template <class T> class PairSearch {
   }
 
  private:
-  // The node's bound against the other side's support point along -axis (written to w, own frame).
-  T nodeBound(std::uint32_t k, const typename GaussTree<T>::Node& node, Vec3<T>& w) {
-    Side<T>& own = *sides_[k];
-    w = otherNearSupport(own, *sides_[1 - k], Vec3<T>(-node.axis));
+  // The node's bound from a point w of the other side (own frame), less `inner` when the other side's support
+  // function over the cap is at least inner above w's (a ball of that radius about w inside the other side).
+  T nodeBound(std::uint32_t k, const typename GaussTree<T>::Node& node, const Vec3<T>& w, T inner) const {
+    const Side<T>& own = *sides_[k];
     const Vec3<T> z = w - node.centre * own.scale;
     const T zc = node.axis.dot(z), z2 = z.squaredNorm();
     const T zp = std::sqrt(std::max(z2 - zc * zc, T(0)));
     const T reach = (zc > T(0) && zp * node.cosAngle <= zc * node.sinAngle) ? std::sqrt(z2)
                                                                             : zc * node.cosAngle + zp * node.sinAngle;
-    return node.radius * own.scale - reach;
+    return node.radius * own.scale + inner - reach;
+  }
+
+  // The node's bound from the other side's inner ball: no support call.
+  T innerBound(std::uint32_t k, const typename GaussTree<T>::Node& node) const {
+    return nodeBound(k, node, innerCentre_[k], sides_[1 - k]->innerRadius);
+  }
+
+  // The node's bound against the other side's support point along -axis (written to w, own frame).
+  T supportBound(std::uint32_t k, const typename GaussTree<T>::Node& node, Vec3<T>& w) {
+    w = otherNearSupport(*sides_[k], *sides_[1 - k], Vec3<T>(-node.axis));
+    return nodeBound(k, node, w, T(0));
   }
 
   // An unbounded leaf of a hull (its cap too wide for a ball bound) bounded over its faces and edges from one point
@@ -222,21 +250,37 @@ template <class T> class PairSearch {
         split = true;
       }
     }
-    for (const std::uint32_t i : cut) enqueue(k, i, -std::numeric_limits<T>::max());
+    for (const std::uint32_t i : cut) {
+      const typename GaussTree<T>::Node& node = tree.nodes[i];
+      if (node.bounded) push(k, i, innerBound(k, node), nullptr);
+      else enqueue(k, i, -std::numeric_limits<T>::max());
+    }
   }
 
-  // A node queued under its own bound (one support call; at least `floor`, its parent's, which bounds every facet
-  // of the parent), unless that bound is not below the best push-out.
+  // Queues a node under `bound` with the support point w its bound came from, or lazily (w null: `bound` from the
+  // inner ball, the support point taken when the node is first popped), unless the bound is not below the best.
+  void push(std::uint32_t k, std::uint32_t index, T bound, const Vec3<T>* w) {
+    if (!(bound - margin_ < best_.depth)) return;
+    s_.heap.push_back({bound, k, w == nullptr, index, std::uint32_t(s_.support.size())});
+    if (w) s_.support.push_back(*w);
+    std::push_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
+  }
+
+  // A node queued under its own bound (at least `floor`, its parent's, which bounds every facet of the parent),
+  // unless that bound is not below the best push-out: first from the other side's inner ball, then from one support
+  // call.
   void enqueue(std::uint32_t k, std::uint32_t index, T floor) {
     const typename GaussTree<T>::Node& node = sides_[k]->tree->nodes[index];
     Vec3<T> w = Vec3<T>::Zero();
     T bound = floor;
-    if (node.bounded) bound = std::max(floor, nodeBound(k, node, w));
-    else if (node.leaf() && sides_[k]->mesh) bound = std::max(floor, leafBound(k, node, w));
-    if (!(bound - margin_ < best_.depth)) return;
-    s_.heap.push_back({bound, k, index, std::uint32_t(s_.support.size())});
-    s_.support.push_back(w);
-    std::push_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
+    if (node.bounded) {
+      bound = std::max(floor, innerBound(k, node));
+      if (!(bound - margin_ < best_.depth)) return;
+      bound = std::max(bound, supportBound(k, node, w));
+    } else if (node.leaf() && sides_[k]->mesh) {
+      bound = std::max(floor, leafBound(k, node, w));
+    }
+    push(k, index, bound, &w);
   }
 
   // Faces exactly; the leaf kept for its edges.
@@ -360,6 +404,7 @@ template <class T> class PairSearch {
   }
 
   Side<T>* sides_[2];
+  Vec3<T> innerCentre_[2];  // the other side's inner ball centre in each side's frame
   T margin_;
   PairScratch<T>& s_;
   Best<T> best_;
@@ -379,6 +424,8 @@ template <class T> bool setHull(Side<T>& side, const ConvexMeshGeometry<T>& g) {
   side.tree = hullGaussTree(g.mesh);
   if (!side.tree || !side.tree->usable) return false;
   side.mesh = g.mesh.get();
+  side.innerCentre = side.mesh->center * side.scale;
+  side.innerRadius = side.mesh->innerRadius * side.scale;
   side.table = supportStartTable(g.mesh);
   side.climb = side.mesh->vertices.size() > kHillClimbMinVertices && hasAdjacency(*side.mesh);
   return true;
@@ -439,6 +486,7 @@ bool penetrationBoxHullInFrame(const BoxGeometry<T>& g0, const Transform<T>& p0,
   boxGaussTree(g0.halfExtents, box);
   a.tree = &box;
   a.halfExtents = g0.halfExtents;
+  a.innerRadius = g0.halfExtents.cwiseAbs().minCoeff();
   return searchPair(a, p0, b, p1, penetrating, direction, depth);
 }
 
