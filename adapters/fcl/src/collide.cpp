@@ -6,6 +6,7 @@
 #include "fallback.h"
 #include "fcl_tree.h"
 #include "gq/fcl/collision.h"
+#include "mesh_fitting.h"
 #include "pair_kernels.h"
 #include "solid_pairs.h"
 
@@ -108,6 +109,7 @@ std::size_t collide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transfor
                     const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
                     const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
                     const Options& options) {
+  if (options.meshFitting) return internal::collideFitted(o1, tf1, o2, tf2, request, result, options);
   return collidePair(o1, tf1, o2, tf2, request, result, options);
 }
 
@@ -131,6 +133,9 @@ std::size_t collide(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionO
                     const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result,
                     const Options& options) {
   if (!o1 || !o2) return 0;  // bad input: nothing written
+  if (options.meshFitting)
+    return internal::collideFitted(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
+                                   o2->getTransform(), request, result, options);
   return collidePair(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
                      o2->getTransform(), request, result, options);
 }
@@ -160,9 +165,15 @@ template std::size_t collide<double>(const ::fcl::CollisionGeometry<double>*, co
                                      const ::fcl::CollisionRequest<double>&, ::fcl::CollisionResult<double>&,
                                      const Options&);
 
-template <typename S> void forgetGeometry(const ::fcl::CollisionGeometry<S>* geometry) { internal::forget(geometry); }
+template <typename S> void forgetGeometry(const ::fcl::CollisionGeometry<S>* geometry) {
+  internal::forget(geometry);
+  internal::forgetFits(geometry);
+}
 template void forgetGeometry<float>(const ::fcl::CollisionGeometry<float>*);
 template void forgetGeometry<double>(const ::fcl::CollisionGeometry<double>*);
-void clearGeometryCache() { internal::clearCache(); }
+void clearGeometryCache() {
+  internal::clearCache();
+  internal::clearFits();
+}
 
 }  // namespace gq::fcl

@@ -17,6 +17,7 @@
 #include "fallback.h"
 #include "fcl_tree.h"
 #include "gq/fcl/collision.h"
+#include "mesh_fitting.h"
 #include "pair_kernels.h"
 #include "solid_pairs.h"
 
@@ -134,14 +135,18 @@ S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>*
 
 template <typename S>
 S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
-           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options&) {
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options& options) {
+  if (options.meshFitting && o1 && o2)
+    return internal::distanceFitted(o1->collisionGeometry().get(), o1->getTransform(), o2->collisionGeometry().get(),
+                                    o2->getTransform(), request, result, options);
   return distance(o1, o2, request, result);
 }
 
 template <typename S>
 S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
            const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
-           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options&) {
+           const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options& options) {
+  if (options.meshFitting) return internal::distanceFitted(o1, tf1, o2, tf2, request, result, options);
   return distancePair(o1, tf1, o2, tf2, request, result);
 }
 

@@ -22,6 +22,8 @@
 
 namespace gq::fcl {
 
+struct MeshFitting;  // gq/fcl/fit.h
+
 // Opt-in corrections. By default a contact (enable_contact) is FCL's own for the pairs FCL computes with libccd's
 // MPR or its box-box routine, so hosts tuned to FCL's numbers see no change; booleans and distances are always gq's.
 struct Options {
@@ -31,6 +33,9 @@ struct Options {
   // Box-box contacts from gq's exact MTD: FCL's box-box routine reports 1.0 or 0 for a box inside another box with
   // touching faces depending on the boxes' lengths (FCL bug fcl#628).
   bool exactContainedBoxDepth = false;
+  // Triangle BVHModel<OBBRSS> sides answered by their gq::fitShape fit under these settings (gq/fcl/fit.h); null:
+  // by their triangles.
+  const MeshFitting* meshFitting = nullptr;
 };
 
 template <typename S>
@@ -58,8 +63,7 @@ template <typename S>
 S distance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
            const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2,
            const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result);
-// Options are accepted by distance for symmetry with collide; distances and nearest points are the same in every
-// mode (gq's own in every mode), so they change nothing there.
+// Of the options distance reads only meshFitting: distances and nearest points are gq's own in every contact mode.
 template <typename S>
 S distance(const ::fcl::CollisionObject<S>* o1, const ::fcl::CollisionObject<S>* o2,
            const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result, const Options& options);
