@@ -55,8 +55,15 @@ std::shared_ptr<Model> torusModel() {
 
 class MeshFittingTest : public ::testing::Test {
  protected:
+  void SetUp() override {
+    fitting.tolerance = 1.0;  // the torus's hull is 0.74 off (the hole)
+    fitting.allowed = gq::fitBit(gq::FitRepresentation::ConvexHull);
+    on.meshFitting = &fitting;
+  }
   void TearDown() override { gq::fcl::clearGeometryCache(); }
   std::shared_ptr<Model> model = torusModel();
+  gq::fcl::MeshFitting fitting;  // the hull within 1.0, what the tests with fitting on use
+  gq::fcl::Options on;
   std::shared_ptr<::fcl::Sphere<double>> ball = std::make_shared<::fcl::Sphere<double>>(0.2);
   ::fcl::Transform3<double> modelPose = ::fcl::Transform3<double>(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()));
 };
@@ -76,7 +83,6 @@ double distanceOf(const ::fcl::CollisionGeometry<double>* a, const ::fcl::Transf
 }
 
 TEST_F(MeshFittingTest, FitIsFitShapesFitOfTheModelsTriangles) {
-  gq::fcl::MeshFitting fitting;
   fitting.tolerance = 1.0;  // the torus's box and hull are 0.74 off (the hole), its capsule 1.35
   fitting.allowed = gq::fitBit(gq::FitRepresentation::Capsule) | gq::fitBit(gq::FitRepresentation::Box) |
                     gq::fitBit(gq::FitRepresentation::ConvexHull);
@@ -105,11 +111,6 @@ TEST_F(MeshFittingTest, FitIsFitShapesFitOfTheModelsTriangles) {
 }
 
 TEST_F(MeshFittingTest, WithFittingOnAnswersAreThoseOfTheFitsParts) {
-  gq::fcl::MeshFitting fitting;
-  fitting.tolerance = 1.0;
-  fitting.allowed = gq::fitBit(gq::FitRepresentation::ConvexHull);
-  gq::fcl::Options on;
-  on.meshFitting = &fitting;
   const gq::fcl::MeshFit<double>& fit = gq::fcl::meshFit<double>(model.get(), fitting);
   ASSERT_EQ(fit.status.code, gq::StatusCode::Ok);
   std::mt19937 rng(47);
@@ -132,11 +133,6 @@ TEST_F(MeshFittingTest, WithFittingOnAnswersAreThoseOfTheFitsParts) {
 }
 
 TEST_F(MeshFittingTest, ContactsNameTheModelWithNoTriangle) {
-  gq::fcl::MeshFitting fitting;
-  fitting.tolerance = 1.0;
-  fitting.allowed = gq::fitBit(gq::FitRepresentation::ConvexHull);
-  gq::fcl::Options on;
-  on.meshFitting = &fitting;
   ::fcl::CollisionRequest<double> request(4, true);
   ::fcl::CollisionResult<double> result;
   // The ball in the torus's hole: clear of the triangles, inside their convex hull.
@@ -163,10 +159,7 @@ TEST_F(MeshFittingTest, WithFittingOffAnswersAreTheTriangles) {
 }
 
 TEST_F(MeshFittingTest, RejectedSettingsLeaveTheTrianglesAnswering) {
-  gq::fcl::MeshFitting fitting;
   fitting.tolerance = -1.0;
-  gq::fcl::Options on;
-  on.meshFitting = &fitting;
   EXPECT_EQ(gq::fcl::meshFit<double>(model.get(), fitting).status.code, gq::StatusCode::InvalidArgument);
   EXPECT_EQ(gq::fcl::meshFit<double>(ball.get(), fitting).status.code, gq::StatusCode::InvalidArgument);
   const ::fcl::Transform3<double> centre = ::fcl::Transform3<double>::Identity();
