@@ -503,7 +503,8 @@ void runOncePenetration(int n) {
 
 // `--once-penetration-shapes N`: a sphere, a capsule and a box (geom0 at pose0) against the N-point hull (at pose1)
 // on the overlapping scene's poses, computePenetration and distance, each through its own runner (each makes its
-// own shape, so that the linker cannot fold them into one).
+// own shape, so that the linker cannot fold them into one); then the same in float (the hull's points cooked in
+// float, the poses cast).
 [[gnu::noinline]] int runSphereHullPenetration(const Scene& s, const gq::Geometry<double>& hull) {
   return runGqPenetration(s, gq::SphereGeometry<double>(0.5), hull);
 }
@@ -521,6 +522,46 @@ void runOncePenetration(int n) {
 }
 [[gnu::noinline]] int runBoxHullDistance(const Scene& s, const gq::Geometry<double>& hull) {
   return runGqDistance(s, gq::BoxGeometry<double>(gq::Vec3<double>(0.9, 0.6, 0.4)), hull, nullptr);
+}
+
+// The same shapes and poses in float, against the hull's points cooked in float.
+[[gnu::noinline]] int runSphereHullPenetrationFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
+  return runGqPenetrationFloat(f, gq::SphereGeometry<float>(0.5f), hull);
+}
+[[gnu::noinline]] int runSphereHullDistanceFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
+  return runGqDistanceFloat(f, gq::SphereGeometry<float>(0.5f), hull);
+}
+[[gnu::noinline]] int runCapsuleHullPenetrationFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
+  return runGqPenetrationFloat(f, gq::CapsuleGeometry<float>(0.3f, 0.7f), hull);
+}
+[[gnu::noinline]] int runCapsuleHullDistanceFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
+  return runGqDistanceFloat(f, gq::CapsuleGeometry<float>(0.3f, 0.7f), hull);
+}
+[[gnu::noinline]] int runBoxHullPenetrationFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
+  return runGqPenetrationFloat(f, gq::BoxGeometry<float>(gq::Vec3<float>(0.9f, 0.6f, 0.4f)), hull);
+}
+[[gnu::noinline]] int runBoxHullDistanceFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
+  return runGqDistanceFloat(f, gq::BoxGeometry<float>(gq::Vec3<float>(0.9f, 0.6f, 0.4f)), hull);
+}
+
+void runOncePenetrationShapesFloat(const Scene& s) {
+  const FloatScene f = floatScene(s);
+  if (!f.hull) return;
+  const gq::Geometry<float> hull = gq::ConvexMeshGeometry<float>(f.hull);
+  gq::PenetrationResult<float> pr;
+  gq::DistanceResult<float> dr;
+  (void)gq::computePenetration(pr, gq::Geometry<float>(gq::CapsuleGeometry<float>(0.3f, 0.7f)), f.pose0[0], hull, f.pose1[0]);
+  (void)gq::computePenetration(pr, hull, f.pose0[0], hull, f.pose1[0]);
+  (void)gq::distance(dr, gq::Geometry<float>(gq::SphereGeometry<float>(0.5f)), f.pose0[0], hull, f.pose1[0]);
+  int counts[6];
+  counts[0] = runSphereHullPenetrationFloat(f, hull);
+  counts[1] = runSphereHullDistanceFloat(f, hull);
+  counts[2] = runCapsuleHullPenetrationFloat(f, hull);
+  counts[3] = runCapsuleHullDistanceFloat(f, hull);
+  counts[4] = runBoxHullPenetrationFloat(f, hull);
+  counts[5] = runBoxHullDistanceFloat(f, hull);
+  std::printf("float: overlapping of %d: sphere %d (distance %d), capsule %d (%d), box %d (%d)\n", kPairs, counts[0],
+              counts[1], counts[2], counts[3], counts[4], counts[5]);
 }
 
 void runOncePenetrationShapes(int n) {
@@ -541,6 +582,7 @@ void runOncePenetrationShapes(int n) {
   counts[5] = runBoxHullDistance(s, hull);
   std::printf("overlapping of %d: sphere %d (distance %d), capsule %d (%d), box %d (%d)\n", kPairs, counts[0],
               counts[1], counts[2], counts[3], counts[4], counts[5]);
+  runOncePenetrationShapesFloat(s);
 }
 
 void runOnce(const std::vector<int>& args) {
