@@ -71,7 +71,8 @@ template <class T> class TreeBuilder {
     for (const std::uint32_t e : edgeOrder) {
       const BuildEdge& be = edgesIn_[e];
       const double c = faces_[be.f1].normal.dot(faces_[be.f2].normal);
-      out.edges.push_back({be.v0, be.v1, rank[be.f1], rank[be.f2], T(std::sqrt(std::max((1.0 + c) / 2.0, 0.0)))});
+      out.edges.push_back(
+          {be.v0, be.v1, rank[be.f1], rank[be.f2], T(std::sqrt(std::max((1.0 + c) / 2.0, 0.0))), false});
     }
     // Edge ranges per node: a leaf's are the edges whose first face it holds.
     for (typename GaussTree<T>::Node& node : out.nodes) {
@@ -86,10 +87,47 @@ template <class T> class TreeBuilder {
       node.edgeEnd = firstAt(node.faceEnd);
     }
     for (typename GaussTree<T>::Node& node : out.nodes) bound(out, node);
+    leafRings(out);
+    cutTopLevels(out);
     out.usable = true;
   }
 
  private:
+  // Each leaf's ring (the faces outside it beside its edges) and which of its edges have both faces inside.
+  static void leafRings(GaussTree<T>& out) {
+    out.ringFaces.clear();
+    for (typename GaussTree<T>::Node& node : out.nodes) {
+      node.ringBegin = node.ringEnd = std::uint32_t(out.ringFaces.size());
+      if (!node.leaf()) continue;
+      for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
+        typename GaussTree<T>::Edge& edge = out.edges[e];
+        edge.face2InLeaf = edge.face2 >= node.faceBegin && edge.face2 < node.faceEnd;
+        if (edge.face2InLeaf) continue;
+        const auto ring = out.ringFaces.begin() + node.ringBegin;
+        if (std::find(ring, out.ringFaces.end(), edge.face2) == out.ringFaces.end()) out.ringFaces.push_back(edge.face2);
+      }
+      node.ringEnd = std::uint32_t(out.ringFaces.size());
+    }
+  }
+
+  // The top levels of the tree, a level at a time, while the cut stays within kGaussStartNodes nodes.
+  static void cutTopLevels(GaussTree<T>& out) {
+    std::vector<std::uint32_t>& cut = out.startCut;
+    cut.assign(1, 0);
+    for (;;) {
+      std::size_t inner = 0;
+      for (const std::uint32_t i : cut) inner += !out.nodes[i].leaf();
+      if (inner == 0 || cut.size() + inner > kGaussStartNodes) break;
+      const std::size_t n = cut.size();
+      for (std::size_t j = 0; j < n; ++j) {
+        const typename GaussTree<T>::Node& node = out.nodes[cut[j]];
+        if (node.leaf()) continue;
+        cut[j] = node.child[0];
+        cut.push_back(node.child[1]);
+      }
+    }
+  }
+
   // Splits order_[begin, end) into the subtree of node `index`.
   void split(GaussTree<T>& out, std::uint32_t index, std::uint32_t begin, std::uint32_t end) {
     out.nodes[index].faceBegin = begin;
@@ -339,7 +377,10 @@ template <class T> void boxGaussTree(const Vec3<T>& h, GaussTree<T>& out) {
   const T halfCos = std::sqrt(T(0.5));
   for (std::uint32_t i = 0; i < 8; ++i)
     for (std::uint32_t k = 0; k < 3; ++k)
-      if (!(i & (1u << k))) out.edges.push_back({i, i | (1u << k), faceOf(i, (k + 1) % 3), faceOf(i, (k + 2) % 3), halfCos});
+      if (!(i & (1u << k)))
+        out.edges.push_back({i, i | (1u << k), faceOf(i, (k + 1) % 3), faceOf(i, (k + 2) % 3), halfCos, true});
+  out.ringFaces.clear();
+  out.startCut.assign(1, 0);
   out.nodes.resize(1);
   typename GaussTree<T>::Node& root = out.nodes[0];
   root.axis = Vec3<T>::UnitX();
@@ -353,6 +394,7 @@ template <class T> void boxGaussTree(const Vec3<T>& h, GaussTree<T>& out) {
   root.edgeBegin = 0;
   root.edgeEnd = 12;
   root.child[0] = root.child[1] = 0;
+  root.ringBegin = root.ringEnd = 0;
   root.bounded = false;
   out.usable = true;
 }

@@ -101,7 +101,6 @@ template <class T> struct Arc {
 template <class T> struct PairScratch {
   std::vector<HeapEntry<T>> heap;
   std::vector<Vec3<T>> support;         // the queued nodes' support points
-  std::vector<std::uint32_t> cut;        // the first nodes of a tree
   std::vector<Vec3<T>> faceSupport[2];  // per tree face: the other side's support point against it (own frame)
   std::vector<T> faceLow[2];  // per face of an evaluated bounded leaf: its push-out bound from the leaf's support point
   struct Leaf {
@@ -130,9 +129,6 @@ template <class T> struct Best {
     if (push < depth) depth = push, direction = d;
   }
 };
-
-// The search's first cut of each tree has at most this many nodes.
-inline constexpr std::size_t kStartNodes = 32;
 
 template <class T> class PairSearch {
  public:
@@ -222,7 +218,7 @@ template <class T> class PairSearch {
     }
     for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
       const typename GaussTree<T>::Edge& edge = tree.edges[e];
-      const T low2 = edge.face2 >= node.faceBegin && edge.face2 < node.faceEnd
+      const T low2 = edge.face2InLeaf
                          ? s_.faceLow[k][edge.face2]
                          : -tree.faceOffset[edge.face2] * own.scale - tree.faceNormal[edge.face2].dot(w);
       bound = std::min(bound, arcMinimum(s_.faceLow[k][edge.face1], low2, edge.halfCos));
@@ -230,27 +226,11 @@ template <class T> class PairSearch {
     return bound;
   }
 
-  // The search starts from the tree's top levels cut at up to kStartNodes nodes (the caps there are too wide to
-  // prune: bounding them costs support calls and saves none).
+  // The search starts from the tree's cut of its top levels (the caps there are too wide to prune: bounding them
+  // costs support calls and saves none).
   void start(std::uint32_t k) {
     const GaussTree<T>& tree = *sides_[k]->tree;
-    std::vector<std::uint32_t>& cut = s_.cut;
-    cut.assign(1, 0);
-    for (bool split = true; split;) {
-      split = false;
-      std::size_t inner = 0;
-      for (const std::uint32_t i : cut) inner += !tree.nodes[i].leaf();
-      if (inner == 0 || cut.size() + inner > kStartNodes) break;
-      const std::size_t n = cut.size();
-      for (std::size_t j = 0; j < n; ++j) {
-        const typename GaussTree<T>::Node& node = tree.nodes[cut[j]];
-        if (node.leaf()) continue;
-        cut[j] = node.child[0];
-        cut.push_back(node.child[1]);
-        split = true;
-      }
-    }
-    for (const std::uint32_t i : cut) {
+    for (const std::uint32_t i : tree.startCut) {
       const typename GaussTree<T>::Node& node = tree.nodes[i];
       if (node.bounded) push(k, i, innerBound(k, node), nullptr);
       else enqueue(k, i, -std::numeric_limits<T>::max());
@@ -290,6 +270,7 @@ template <class T> class PairSearch {
     const GaussTree<T>& tree = *own.tree;
     const typename GaussTree<T>::Node& node = tree.nodes[index];
     const bool supported = node.bounded || own.mesh;  // a hull's leaf was queued with a point of the other shape
+    bool closed = supported;  // every face bounded out from the leaf's point
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
       const Vec3<T>& n = tree.faceNormal[f];
       // The leaf's support point bounds the face's push-out from below: no support call when that is enough.
@@ -301,12 +282,26 @@ template <class T> class PairSearch {
           continue;
         }
       }
+      closed = false;
       const Vec3<T> w = otherSupport(own, other, Vec3<T>(-n));
       s_.faceSupport[k][f] = w;
       const T push = -tree.faceOffset[f] * own.scale - n.dot(w);
       if (push < best_.depth) best_.consider(push, own.first ? Vec3<T>(-n) : own.vectorToFirst(n));
     }
+    // Its edges are paired only when the leaf's point leaves one of their arc ends below the best push-out: with
+    // every face and every ring face bounded out from it, none is (the best push-out only decreases).
+    if (closed && ringBoundedOut(own, node, leafSupport)) return;
     s_.leaves.push_back({k, index, supported, leafSupport});
+  }
+
+  // Whether every face of a leaf's ring is bounded out by its push-out bound from the point w (own frame).
+  bool ringBoundedOut(const Side<T>& own, const typename GaussTree<T>::Node& node, const Vec3<T>& w) const {
+    const GaussTree<T>& tree = *own.tree;
+    for (std::uint32_t r = node.ringBegin; r < node.ringEnd; ++r) {
+      const std::uint32_t f = tree.ringFaces[r];
+      if (-tree.faceOffset[f] * own.scale - tree.faceNormal[f].dot(w) - margin_ < best_.depth) return false;
+    }
+    return true;
   }
 
   // Edges of evaluated leaves whose bound is below the best push-out, as arcs in geom0's frame.
@@ -323,7 +318,7 @@ template <class T> class PairSearch {
       const T* low = s_.faceLow[leaf.side].data();
       for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
         const typename GaussTree<T>::Edge& edge = tree.edges[e];
-        const bool face2Here = edge.face2 >= node.faceBegin && edge.face2 < node.faceEnd;
+        const bool face2Here = edge.face2InLeaf;
         const Vec3<T>& n2 = tree.faceNormal[edge.face2];
         // First from the leaf's support point w alone, with the faces' bounds from it: the edge's vertex lies on
         // both faces' planes (within the cooking's plane tolerance, inside the margin), so n.(v - w) at either end is
