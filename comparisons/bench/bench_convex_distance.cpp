@@ -505,74 +505,52 @@ void runOncePenetration(int n) {
 // on the overlapping scene's poses, computePenetration and distance, each through its own runner (each makes its
 // own shape, so that the linker cannot fold them into one); then the same in float (the hull's points cooked in
 // float, the poses cast).
-[[gnu::noinline]] int runSphereHullPenetration(const Scene& s, const gq::Geometry<double>& hull) {
-  return runGqPenetration(s, gq::SphereGeometry<double>(0.5), hull);
+int penetrationPass(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  return runGqPenetration(s, g0, g1);
 }
-[[gnu::noinline]] int runSphereHullDistance(const Scene& s, const gq::Geometry<double>& hull) {
-  return runGqDistance(s, gq::SphereGeometry<double>(0.5), hull, nullptr);
+int penetrationPass(const FloatScene& s, const gq::Geometry<float>& g0, const gq::Geometry<float>& g1) {
+  return runGqPenetrationFloat(s, g0, g1);
 }
-[[gnu::noinline]] int runCapsuleHullPenetration(const Scene& s, const gq::Geometry<double>& hull) {
-  return runGqPenetration(s, gq::CapsuleGeometry<double>(0.3, 0.7), hull);
+int distancePass(const Scene& s, const gq::Geometry<double>& g0, const gq::Geometry<double>& g1) {
+  return runGqDistance(s, g0, g1, nullptr);
 }
-[[gnu::noinline]] int runCapsuleHullDistance(const Scene& s, const gq::Geometry<double>& hull) {
-  return runGqDistance(s, gq::CapsuleGeometry<double>(0.3, 0.7), hull, nullptr);
-}
-[[gnu::noinline]] int runBoxHullPenetration(const Scene& s, const gq::Geometry<double>& hull) {
-  return runGqPenetration(s, gq::BoxGeometry<double>(gq::Vec3<double>(0.9, 0.6, 0.4)), hull);
-}
-[[gnu::noinline]] int runBoxHullDistance(const Scene& s, const gq::Geometry<double>& hull) {
-  return runGqDistance(s, gq::BoxGeometry<double>(gq::Vec3<double>(0.9, 0.6, 0.4)), hull, nullptr);
+int distancePass(const FloatScene& s, const gq::Geometry<float>& g0, const gq::Geometry<float>& g1) {
+  return runGqDistanceFloat(s, g0, g1);
 }
 
-// The same shapes and poses in float, against the hull's points cooked in float.
-[[gnu::noinline]] int runSphereHullPenetrationFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
-  return runGqPenetrationFloat(f, gq::SphereGeometry<float>(0.5f), hull);
+template <class T> gq::Geometry<T> sphereShape() { return gq::SphereGeometry<T>(T(0.5)); }
+template <class T> gq::Geometry<T> capsuleShape() { return gq::CapsuleGeometry<T>(T(0.3), T(0.7)); }
+template <class T> gq::Geometry<T> boxShape() { return gq::BoxGeometry<T>(gq::Vec3<T>(T(0.9), T(0.6), T(0.4))); }
+
+template <class S, class T> [[gnu::noinline]] int runSphereHullPenetration(const S& s, const gq::Geometry<T>& hull) {
+  return penetrationPass(s, sphereShape<T>(), hull);
 }
-[[gnu::noinline]] int runSphereHullDistanceFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
-  return runGqDistanceFloat(f, gq::SphereGeometry<float>(0.5f), hull);
+template <class S, class T> [[gnu::noinline]] int runSphereHullDistance(const S& s, const gq::Geometry<T>& hull) {
+  return distancePass(s, sphereShape<T>(), hull);
 }
-[[gnu::noinline]] int runCapsuleHullPenetrationFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
-  return runGqPenetrationFloat(f, gq::CapsuleGeometry<float>(0.3f, 0.7f), hull);
+template <class S, class T> [[gnu::noinline]] int runCapsuleHullPenetration(const S& s, const gq::Geometry<T>& hull) {
+  return penetrationPass(s, capsuleShape<T>(), hull);
 }
-[[gnu::noinline]] int runCapsuleHullDistanceFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
-  return runGqDistanceFloat(f, gq::CapsuleGeometry<float>(0.3f, 0.7f), hull);
+template <class S, class T> [[gnu::noinline]] int runCapsuleHullDistance(const S& s, const gq::Geometry<T>& hull) {
+  return distancePass(s, capsuleShape<T>(), hull);
 }
-[[gnu::noinline]] int runBoxHullPenetrationFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
-  return runGqPenetrationFloat(f, gq::BoxGeometry<float>(gq::Vec3<float>(0.9f, 0.6f, 0.4f)), hull);
+template <class S, class T> [[gnu::noinline]] int runBoxHullPenetration(const S& s, const gq::Geometry<T>& hull) {
+  return penetrationPass(s, boxShape<T>(), hull);
 }
-[[gnu::noinline]] int runBoxHullDistanceFloat(const FloatScene& f, const gq::Geometry<float>& hull) {
-  return runGqDistanceFloat(f, gq::BoxGeometry<float>(gq::Vec3<float>(0.9f, 0.6f, 0.4f)), hull);
+template <class S, class T> [[gnu::noinline]] int runBoxHullDistance(const S& s, const gq::Geometry<T>& hull) {
+  return distancePass(s, boxShape<T>(), hull);
 }
 
-void runOncePenetrationShapesFloat(const Scene& s) {
-  const FloatScene f = floatScene(s);
-  if (!f.hull) return;
-  const gq::Geometry<float> hull = gq::ConvexMeshGeometry<float>(f.hull);
-  gq::PenetrationResult<float> pr;
-  gq::DistanceResult<float> dr;
-  (void)gq::computePenetration(pr, gq::Geometry<float>(gq::CapsuleGeometry<float>(0.3f, 0.7f)), f.pose0[0], hull, f.pose1[0]);
-  (void)gq::computePenetration(pr, hull, f.pose0[0], hull, f.pose1[0]);
-  (void)gq::distance(dr, gq::Geometry<float>(gq::SphereGeometry<float>(0.5f)), f.pose0[0], hull, f.pose1[0]);
-  int counts[6];
-  counts[0] = runSphereHullPenetrationFloat(f, hull);
-  counts[1] = runSphereHullDistanceFloat(f, hull);
-  counts[2] = runCapsuleHullPenetrationFloat(f, hull);
-  counts[3] = runCapsuleHullDistanceFloat(f, hull);
-  counts[4] = runBoxHullPenetrationFloat(f, hull);
-  counts[5] = runBoxHullDistanceFloat(f, hull);
-  std::printf("float: overlapping of %d: sphere %d (distance %d), capsule %d (%d), box %d (%d)\n", kPairs, counts[0],
-              counts[1], counts[2], counts[3], counts[4], counts[5]);
-}
-
-void runOncePenetrationShapes(int n) {
-  const Scene& s = overlappingScene(n);
-  const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
-  // The hull's per-mesh caches (support start table, topology) are built here, outside the counted runners.
-  gq::PenetrationResult<double> pr;
-  gq::DistanceResult<double> dr;
-  (void)gq::computePenetration(pr, gq::Geometry<double>(gq::CapsuleGeometry<double>(0.3, 0.7)), s.pose0[0], hull, s.pose1[0]);
+// The six runners on one scene (S: Scene or FloatScene, with its cooked hull); `label` prefixes the printed counts.
+template <class S, class T> void runShapesAgainstHull(const S& s, const std::shared_ptr<const gq::ConvexMesh<T>>& mesh,
+                                                      const char* label) {
+  const gq::Geometry<T> hull = gq::ConvexMeshGeometry<T>(mesh);
+  // The hull's per-mesh caches (support start table, topology, Gauss tree) are built here, outside the counted runners.
+  gq::PenetrationResult<T> pr;
+  gq::DistanceResult<T> dr;
+  (void)gq::computePenetration(pr, capsuleShape<T>(), s.pose0[0], hull, s.pose1[0]);
   (void)gq::computePenetration(pr, hull, s.pose0[0], hull, s.pose1[0]);
-  (void)gq::distance(dr, gq::Geometry<double>(gq::SphereGeometry<double>(0.5)), s.pose0[0], hull, s.pose1[0]);
+  (void)gq::distance(dr, sphereShape<T>(), s.pose0[0], hull, s.pose1[0]);
   int counts[6];
   counts[0] = runSphereHullPenetration(s, hull);
   counts[1] = runSphereHullDistance(s, hull);
@@ -580,9 +558,15 @@ void runOncePenetrationShapes(int n) {
   counts[3] = runCapsuleHullDistance(s, hull);
   counts[4] = runBoxHullPenetration(s, hull);
   counts[5] = runBoxHullDistance(s, hull);
-  std::printf("overlapping of %d: sphere %d (distance %d), capsule %d (%d), box %d (%d)\n", kPairs, counts[0],
+  std::printf("%soverlapping of %d: sphere %d (distance %d), capsule %d (%d), box %d (%d)\n", label, kPairs, counts[0],
               counts[1], counts[2], counts[3], counts[4], counts[5]);
-  runOncePenetrationShapesFloat(s);
+}
+
+void runOncePenetrationShapes(int n) {
+  const Scene& s = overlappingScene(n);
+  runShapesAgainstHull(s, s.hull, "");
+  const FloatScene f = floatScene(s);
+  if (f.hull) runShapesAgainstHull(f, f.hull, "float: ");
 }
 
 void runOnce(const std::vector<int>& args) {
