@@ -25,8 +25,9 @@ template <int W> struct BvhRay {
   alignas(16) float org[3];
   float invDir[3];
   float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |invDir|
-  // Per axis, the float offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
-  // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis.
+  // Per axis, the byte offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
+  // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis. (In
+  // bytes, so a node test adds them without a scaling per walk restart.)
   std::uint32_t nearOffset[3], farOffset[3];
   // Relative padding on [tNear, tFar] covering the rounding of the slab arithmetic and of the float direction.
   static constexpr float kRelPad = 16.0f * std::numeric_limits<float>::epsilon();
@@ -48,7 +49,8 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
     }
     // minX, minY, minZ, maxX, maxY, maxZ: W floats each.
-    const std::uint32_t minPlane = std::uint32_t(W * i), maxPlane = std::uint32_t(W * (3 + i));
+    constexpr std::uint32_t kPlaneBytes = W * sizeof(float);
+    const std::uint32_t minPlane = kPlaneBytes * std::uint32_t(i), maxPlane = kPlaneBytes * std::uint32_t(3 + i);
     r.nearOffset[i] = r.invDir[i] >= 0.0f ? minPlane : maxPlane;
     r.farOffset[i] = r.invDir[i] >= 0.0f ? maxPlane : minPlane;
   }
@@ -77,13 +79,18 @@ template <int W> inline BvhRaySse broadcastSse(const BvhRay<W>& ray) {
 }
 
 // Lanes [lane0, lane0 + 4) of a node's slab test (SSE): the 4-bit hit mask, entry distances stored to tNear + lane0.
+// The plane `byteOffset` bytes past `base` (BvhRay's near and far offsets).
+inline const float* planeAt(const float* base, std::uint32_t byteOffset) {
+  return reinterpret_cast<const float*>(reinterpret_cast<const char*>(base) + byteOffset);
+}
+
 template <bool kSlack, int W>
 inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lane0, float tMax, float* tNear) {
   // With a positive (negative) inverse the min (max) plane gives the smaller slab distance, and rounding keeps that
   // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
   const float* base = node.minX + lane0;
   auto slab = [&](std::uint32_t offset, int axis) {
-    return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + offset), ray.org[axis]), ray.invDir[axis]);
+    return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(planeAt(base, offset)), ray.org[axis]), ray.invDir[axis]);
   };
   __m128 nearX = slab(ray.nearOffset[0], 0), nearY = slab(ray.nearOffset[1], 1), nearZ = slab(ray.nearOffset[2], 2);
   __m128 farX = slab(ray.farOffset[0], 0), farY = slab(ray.farOffset[1], 1), farZ = slab(ray.farOffset[2], 2);
@@ -119,10 +126,12 @@ template <bool kSlack>
 __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
                                                             float* tNear) {
   const float* base = node.minX;
-  __m256 nearX = slab8(base + ray.nearOffset[0], ray, 0), nearY = slab8(base + ray.nearOffset[1], ray, 1);
-  __m256 nearZ = slab8(base + ray.nearOffset[2], ray, 2);
-  __m256 farX = slab8(base + ray.farOffset[0], ray, 0), farY = slab8(base + ray.farOffset[1], ray, 1);
-  __m256 farZ = slab8(base + ray.farOffset[2], ray, 2);
+  __m256 nearX = slab8(planeAt(base, ray.nearOffset[0]), ray, 0);
+  __m256 nearY = slab8(planeAt(base, ray.nearOffset[1]), ray, 1);
+  __m256 nearZ = slab8(planeAt(base, ray.nearOffset[2]), ray, 2);
+  __m256 farX = slab8(planeAt(base, ray.farOffset[0]), ray, 0);
+  __m256 farY = slab8(planeAt(base, ray.farOffset[1]), ray, 1);
+  __m256 farZ = slab8(planeAt(base, ray.farOffset[2]), ray, 2);
   if constexpr (kSlack) {
     nearX = _mm256_sub_ps(nearX, _mm256_broadcast_ss(&ray.slack[0]));
     nearY = _mm256_sub_ps(nearY, _mm256_broadcast_ss(&ray.slack[1]));
