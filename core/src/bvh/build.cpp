@@ -219,6 +219,9 @@ class Collapser {
       for (int lane = 0; lane < 4; ++lane)
         if (open.child[lane] != Bvh4Node::kEmpty) slots[n++] = Slot{open.child[lane], laneBox(open, lane)};
     }
+    // Largest surface area first (stable: equal areas keep their order, so cooking stays deterministic).
+    std::stable_sort(slots.begin(), slots.begin() + n,
+                     [](const Slot& a, const Slot& b) { return halfArea(a.box) > halfArea(b.box); });
     const auto index = std::uint32_t(out_.nodes.size());
     out_.nodes.emplace_back();
     std::array<std::uint32_t, 8> refs;

@@ -14,6 +14,7 @@ Bvh4 buildBvh4(const std::vector<Bounds3<float>>& primBounds, std::vector<std::u
 
 // The same leaves under 8-wide nodes: each 8-wide node takes a 4-wide node's children and opens its inner children
 // (largest surface area first) while their children fit in 8 lanes. Child boxes are copied, so they stay conservative.
+// A node's children are stored largest surface area first (the order the unordered any-hit walk takes them in).
 Bvh8 collapseToBvh8(const Bvh4& bvh);
 
 // Float box that contains the exact box [lo, hi] of type T (rounded outward with nextafter).

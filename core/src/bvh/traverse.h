@@ -25,13 +25,10 @@ template <int W> struct BvhRay {
   alignas(16) float org[3];
   float invDir[3];
   float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |invDir|
-  // Per axis, the float offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
-  // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis.
+  // Per axis, the byte offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
+  // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis. (In
+  // bytes, so a node test adds them without a scaling per walk restart.)
   std::uint32_t nearOffset[3], farOffset[3];
-#ifdef GQ_SSE42
-  // org, invDir and slack broadcast to 4 lanes once per ray, so a node test loads them instead of splatting them.
-  __m128 org4[3], invDir4[3], slack4[3];
-#endif
   // Relative padding on [tNear, tFar] covering the rounding of the slab arithmetic and of the float direction.
   static constexpr float kRelPad = 16.0f * std::numeric_limits<float>::epsilon();
 };
@@ -52,37 +49,58 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
     }
     // minX, minY, minZ, maxX, maxY, maxZ: W floats each.
-    const std::uint32_t minPlane = std::uint32_t(W * i), maxPlane = std::uint32_t(W * (3 + i));
+    constexpr std::uint32_t kPlaneBytes = W * sizeof(float);
+    const std::uint32_t minPlane = kPlaneBytes * std::uint32_t(i), maxPlane = kPlaneBytes * std::uint32_t(3 + i);
     r.nearOffset[i] = r.invDir[i] >= 0.0f ? minPlane : maxPlane;
     r.farOffset[i] = r.invDir[i] >= 0.0f ? maxPlane : minPlane;
-#ifdef GQ_SSE42
-    r.org4[i] = _mm_set1_ps(r.org[i]);
-    r.invDir4[i] = _mm_set1_ps(r.invDir[i]);
-    r.slack4[i] = _mm_set1_ps(r.slack[i]);
-#endif
   }
   return r;
 }
 
 #ifdef GQ_SSE42
+// The SSE node test's ray constants: org, invDir and slack broadcast to 4 lanes once per walk, so a node test loads
+// them instead of splatting them, and the plane offsets. (The AVX2 test broadcasts from BvhRay as it loads: holding
+// 8-lane copies in the walk was measured 68 instructions more per bunny ray, spilled around the leaf tests.)
+struct BvhRaySse {
+  __m128 org[3], invDir[3], slack[3];
+  std::uint32_t nearOffset[3], farOffset[3];
+};
+
+template <int W> inline BvhRaySse broadcastSse(const BvhRay<W>& ray) {
+  BvhRaySse r;
+  for (int i = 0; i < 3; ++i) {
+    r.org[i] = _mm_set1_ps(ray.org[i]);
+    r.invDir[i] = _mm_set1_ps(ray.invDir[i]);
+    r.slack[i] = _mm_set1_ps(ray.slack[i]);
+    r.nearOffset[i] = ray.nearOffset[i];
+    r.farOffset[i] = ray.farOffset[i];
+  }
+  return r;
+}
+
 // Lanes [lane0, lane0 + 4) of a node's slab test (SSE): the 4-bit hit mask, entry distances stored to tNear + lane0.
+// The plane `byteOffset` bytes past `base` (BvhRay's near and far offsets).
+inline const float* planeAt(const float* base, std::uint32_t byteOffset) {
+  return reinterpret_cast<const float*>(reinterpret_cast<const char*>(base) + byteOffset);
+}
+
 template <bool kSlack, int W>
-inline int intersectLanes4(const BvhNode<W>& node, const BvhRay<W>& ray, int lane0, float tMax, float* tNear) {
+inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lane0, float tMax, float* tNear) {
   // With a positive (negative) inverse the min (max) plane gives the smaller slab distance, and rounding keeps that
   // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
   const float* base = node.minX + lane0;
   auto slab = [&](std::uint32_t offset, int axis) {
-    return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(base + offset), ray.org4[axis]), ray.invDir4[axis]);
+    return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(planeAt(base, offset)), ray.org[axis]), ray.invDir[axis]);
   };
   __m128 nearX = slab(ray.nearOffset[0], 0), nearY = slab(ray.nearOffset[1], 1), nearZ = slab(ray.nearOffset[2], 2);
   __m128 farX = slab(ray.farOffset[0], 0), farY = slab(ray.farOffset[1], 1), farZ = slab(ray.farOffset[2], 2);
   if constexpr (kSlack) {
-    nearX = _mm_sub_ps(nearX, ray.slack4[0]);
-    nearY = _mm_sub_ps(nearY, ray.slack4[1]);
-    nearZ = _mm_sub_ps(nearZ, ray.slack4[2]);
-    farX = _mm_add_ps(farX, ray.slack4[0]);
-    farY = _mm_add_ps(farY, ray.slack4[1]);
-    farZ = _mm_add_ps(farZ, ray.slack4[2]);
+    nearX = _mm_sub_ps(nearX, ray.slack[0]);
+    nearY = _mm_sub_ps(nearY, ray.slack[1]);
+    nearZ = _mm_sub_ps(nearZ, ray.slack[2]);
+    farX = _mm_add_ps(farX, ray.slack[0]);
+    farY = _mm_add_ps(farY, ray.slack[1]);
+    farZ = _mm_add_ps(farZ, ray.slack[2]);
   }
   __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
   __m128 tf = _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax)));
@@ -108,10 +126,12 @@ template <bool kSlack>
 __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
                                                             float* tNear) {
   const float* base = node.minX;
-  __m256 nearX = slab8(base + ray.nearOffset[0], ray, 0), nearY = slab8(base + ray.nearOffset[1], ray, 1);
-  __m256 nearZ = slab8(base + ray.nearOffset[2], ray, 2);
-  __m256 farX = slab8(base + ray.farOffset[0], ray, 0), farY = slab8(base + ray.farOffset[1], ray, 1);
-  __m256 farZ = slab8(base + ray.farOffset[2], ray, 2);
+  __m256 nearX = slab8(planeAt(base, ray.nearOffset[0]), ray, 0);
+  __m256 nearY = slab8(planeAt(base, ray.nearOffset[1]), ray, 1);
+  __m256 nearZ = slab8(planeAt(base, ray.nearOffset[2]), ray, 2);
+  __m256 farX = slab8(planeAt(base, ray.farOffset[0]), ray, 0);
+  __m256 farY = slab8(planeAt(base, ray.farOffset[1]), ray, 1);
+  __m256 farZ = slab8(planeAt(base, ray.farOffset[2]), ray, 2);
   if constexpr (kSlack) {
     nearX = _mm256_sub_ps(nearX, _mm256_broadcast_ss(&ray.slack[0]));
     nearY = _mm256_sub_ps(nearY, _mm256_broadcast_ss(&ray.slack[1]));
@@ -134,9 +154,12 @@ __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node,
 // Node tests for the walk below: the hit mask of a node's children for t in [0, tMax] (empty lanes never set) and
 // their entry distances in tNear. kSlack = false for rays whose origin is exactly the float one (float queries:
 // slack is 0), which skips the padding adds.
+// Lanes::Ray is the ray as the node test reads it, made by Lanes::prepare once per walk.
 template <int W> struct BvhLanesScalar {
   static constexpr int kWidth = W;
-  template <bool kSlack> static int test(const BvhNode<W>& node, const BvhRay<W>& ray, float tMax, float* tNear) {
+  using Ray = BvhRay<W>;
+  static const Ray& prepare(const BvhRay<W>& ray) { return ray; }
+  template <bool kSlack> static int test(const BvhNode<W>& node, const Ray& ray, float tMax, float* tNear) {
     const float* lo[3] = {node.minX, node.minY, node.minZ};
     const float* hi[3] = {node.maxX, node.maxY, node.maxZ};
     int mask = 0;
@@ -161,7 +184,9 @@ template <int W> struct BvhLanesScalar {
 // 8-wide nodes on the SSE4.2 baseline: two 4-lane halves.
 struct Bvh8LanesSse {
   static constexpr int kWidth = 8;
-  template <bool kSlack> static int test(const Bvh8Node& node, const BvhRay<8>& ray, float tMax, float* tNear) {
+  using Ray = BvhRaySse;
+  static Ray prepare(const BvhRay<8>& ray) { return broadcastSse(ray); }
+  template <bool kSlack> static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
     return intersectLanes4<kSlack>(node, ray, 0, tMax, tNear) | intersectLanes4<kSlack>(node, ray, 4, tMax, tNear) << 4;
   }
 };
@@ -169,9 +194,10 @@ struct Bvh8LanesSse {
 // 8-wide nodes with AVX2 (only on CPUs that have it: callers check hasAvx2()).
 struct Bvh8LanesAvx2 {
   static constexpr int kWidth = 8;
+  using Ray = BvhRay<8>;
+  static const Ray& prepare(const BvhRay<8>& ray) { return ray; }
   template <bool kSlack>
-  __attribute__((target("avx2"))) static int test(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
-                                                  float* tNear) {
+  __attribute__((target("avx2"))) static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
     return intersectLanes8<kSlack>(node, ray, tMax, tNear);
   }
 };
@@ -198,9 +224,10 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
   constexpr int W = Lanes::kWidth;
   using Node = BvhNode<W>;
   struct Entry { std::uint32_t ref; float tNear; };
+  if (bvh.rootChild == Node::kEmpty) return;
+  const auto& lanesRay = Lanes::prepare(ray);  // a reference to `ray`, or a copy the node test reads faster
   Entry stack[kBvhStackSize];
   int top = 0;
-  if (bvh.rootChild == Node::kEmpty) return;
   stack[top++] = {bvh.rootChild, 0.0f};
   while (top > 0) {
     Entry e = stack[--top];
@@ -210,7 +237,7 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
     while (!Node::isLeaf(e.ref)) {
       const Node& node = bvh.nodes[e.ref];
       alignas(32) float tn[W];
-      int mask = Lanes::template test<kSlack>(node, ray, tMax, tn);  // empty lanes never set
+      int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);  // empty lanes never set
       if (mask == 0) { missed = true; break; }
       int i = __builtin_ctz(unsigned(mask));
       mask &= mask - 1;
