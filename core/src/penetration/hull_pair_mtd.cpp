@@ -94,7 +94,7 @@ template <class T> struct HeapEntry {
 template <class T> struct Arc {
   Vec3<T> n1, n2, plane, mid;  // plane = n2 x n1; mid = normalised n1 + n2
   Vec3<T> vertex, direction;   // a vertex of the edge; the edge's unit direction
-  T halfCos;
+  T halfCos, halfSin;          // cos and sin of half the angle between n1 and n2 (the arc's cap about mid)
   bool flat;
 };
 
@@ -342,6 +342,7 @@ template <class T> class PairSearch {
         arc.mid = (arc.n1 + arc.n2).stableNormalized();
         arc.vertex = own.pointToFirst(v);
         arc.halfCos = edge.halfCos;
+        arc.halfSin = std::sqrt(std::max(T(1) - edge.halfCos * edge.halfCos, T(0)));
         arc.flat = isFlat(arc.plane);
         arc.direction = arc.flat ? Vec3<T>(own.vectorToFirst(Vec3<T>(own.vertex(edge.vertex1) - v)).stableNormalized())
                                  : Vec3<T>::Zero();
@@ -367,8 +368,9 @@ template <class T> class PairSearch {
     // Arcs whose caps (about mid, half-angle acos(halfCos)) are apart by more than this cannot cross.
     const T capSlack = T(64) * std::numeric_limits<T>::epsilon();
     for (const Arc<T>& ea : s_.arcs[0]) {
-      const T sinA = std::sqrt(std::max(T(1) - ea.halfCos * ea.halfCos, T(0)));
       for (const Arc<T>& eb : s_.arcs[1]) {
+        // A flat arc's facets lie in its cap too: pairs of caps apart are skipped whether or not an arc is flat.
+        if (ea.mid.dot(eb.mid) < ea.halfCos * eb.halfCos - ea.halfSin * eb.halfSin - capSlack) continue;
         if (ea.flat || eb.flat) {
           const Vec3<T> da = ea.flat ? ea.direction : Vec3<T>(ea.plane.normalized());
           const Vec3<T> db = eb.flat ? eb.direction : Vec3<T>(eb.plane.normalized());
@@ -377,8 +379,6 @@ template <class T> class PairSearch {
           if (len2 > eps * eps) axisBothSigns(Vec3<T>(c / std::sqrt(len2)));
           continue;
         }
-        const T sinB = std::sqrt(std::max(T(1) - eb.halfCos * eb.halfCos, T(0)));
-        if (ea.mid.dot(eb.mid) < ea.halfCos * eb.halfCos - sinA * sinB - capSlack) continue;
         const T cba = eb.n1.dot(ea.plane), dba = eb.n2.dot(ea.plane);
         const T adc = ea.n1.dot(eb.plane), bdc = ea.n2.dot(eb.plane);
         const bool undecided =
