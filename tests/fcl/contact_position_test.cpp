@@ -5,13 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "deliberate_differences.h"
 #include "gq/fcl/fcl.h"
 
 namespace {
@@ -183,29 +183,8 @@ TYPED_TEST(FclContactPosition, ConcentricSpheresKeepAUnitNormalWhereFclsIsZero) 
   EXPECT_NEAR(gq.getContact(0).pos.norm(), S(0), S(1e-6));  // FCL's point, c1
 }
 
-// The deliberate differences from FCL (tests/fcl/deliberate_differences.txt: id | pair | FCL 0.7 answers |
-// gq::fcl answers | test); docs/fcl.md's table is generated from it by scripts/fcl-differences.
-struct Difference {
-  std::string id, pair, fcl, gq, test;
-};
-
-std::vector<Difference> readDifferences() {
-  std::ifstream in(std::string(GQ_SOURCE_DIR) + "/tests/fcl/deliberate_differences.txt");
-  std::vector<Difference> list;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    for (std::size_t at = 0;;) {
-      const std::size_t bar = line.find(" | ", at);
-      f.push_back(line.substr(at, bar == std::string::npos ? std::string::npos : bar - at));
-      if (bar == std::string::npos) break;
-      at = bar + 3;
-    }
-    if (f.size() == 5) list.push_back({f[0], f[1], f[2], f[3], f[4]});
-  }
-  return list;
-}
+using gq::fcltest::Difference;
+using gq::fcltest::readDifferences;
 
 // Each listed difference names the test that checks it, and that test exists in this program.
 TEST(FclDeliberateDifferences, EachListedDifferenceNamesAnExistingTest) {

@@ -23,6 +23,7 @@
 
 #include "exact_reference.h"
 #include "fcl_scenes.h"
+#include "scalar_scenes.h"
 #include "gq/fcl/fcl.h"
 
 namespace gq::fcltest {
@@ -42,82 +43,6 @@ bool isCurved(Kind k) { return k == Kind::Cylinder || k == Kind::Cone || k == Ki
 double floatCertificateTolerance(const Pair& p, double distance) {
   return (isCurved(p.first) || isCurved(p.second) ? kFloatCurvedCertificate : kFloatCertificate) +
          kFloatWitnessRounding / distance;
-}
-
-double toFloatAndBack(double x) { return double(float(x)); }
-::fcl::Vector3d toFloatAndBack(const ::fcl::Vector3d& v) { return v.cast<float>().cast<double>(); }
-
-// The FCL geometry of a test shape in scalar S, from its recorded parameters.
-template <class S> std::shared_ptr<::fcl::CollisionGeometry<S>> fclGeometry(const TestShape& s) {
-  using V = ::fcl::Vector3<S>;
-  const auto vec = [](const ::fcl::Vector3d& v) { return V(v.cast<S>()); };
-  std::shared_ptr<::fcl::CollisionGeometry<S>> g;
-  switch (s.kind) {
-    case Kind::Sphere: g = std::make_shared<::fcl::Sphere<S>>(S(s.size.x())); break;
-    case Kind::Box: g = std::make_shared<::fcl::Box<S>>(vec(s.size)); break;
-    case Kind::Capsule: g = std::make_shared<::fcl::Capsule<S>>(S(s.size.x()), S(s.size.y())); break;
-    case Kind::Cylinder: g = std::make_shared<::fcl::Cylinder<S>>(S(s.size.x()), S(s.size.y())); break;
-    case Kind::Cone: g = std::make_shared<::fcl::Cone<S>>(S(s.size.x()), S(s.size.y())); break;
-    case Kind::Ellipsoid: g = std::make_shared<::fcl::Ellipsoid<S>>(vec(s.size)); break;
-    case Kind::Convex: {
-      auto vertices = std::make_shared<std::vector<V>>();
-      for (const auto& v : s.vertices) vertices->push_back(vec(v));
-      auto faces = std::make_shared<std::vector<int>>();
-      for (const auto& f : s.faces) {
-        faces->push_back(int(f.size()));
-        faces->insert(faces->end(), f.begin(), f.end());
-      }
-      g = std::make_shared<::fcl::Convex<S>>(vertices, int(s.faces.size()), faces);
-      break;
-    }
-    case Kind::TriangleP:
-      g = std::make_shared<::fcl::TriangleP<S>>(vec(s.vertices[0]), vec(s.vertices[1]), vec(s.vertices[2]));
-      break;
-    case Kind::Halfspace: g = std::make_shared<::fcl::Halfspace<S>>(vec(s.planeNormal), S(s.planeOffset)); break;
-    case Kind::Plane: g = std::make_shared<::fcl::Plane<S>>(vec(s.planeNormal), S(s.planeOffset)); break;
-    case Kind::Mesh: {
-      auto model = std::make_shared<::fcl::BVHModel<::fcl::OBBRSS<S>>>();
-      model->beginModel();
-      for (const auto& f : s.faces) model->addTriangle(vec(s.vertices[f[0]]), vec(s.vertices[f[1]]), vec(s.vertices[f[2]]));
-      model->endModel();
-      g = model;
-      break;
-    }
-  }
-  g->computeLocalAABB();
-  return g;
-}
-
-// A test shape whose every parameter is a float, with its double geometry rebuilt from those values. FCL normalises
-// plane normals in the geometry's own scalar: the reference takes the normal FCL's float Halfspace/Plane holds.
-TestShape roundedToFloat(const TestShape& s) {
-  TestShape r = s;
-  r.size = toFloatAndBack(s.size);
-  for (auto& v : r.vertices) v = toFloatAndBack(v);
-  r.planeNormal = toFloatAndBack(s.planeNormal);
-  r.planeOffset = toFloatAndBack(s.planeOffset);
-  if (isPlaneLike(s.kind)) {
-    const auto f = fclGeometry<float>(r);
-    const auto* h = dynamic_cast<const ::fcl::Halfspacef*>(f.get());
-    const auto* p = dynamic_cast<const ::fcl::Planef*>(f.get());
-    r.planeNormal = (h ? h->n : p->n).cast<double>();
-    r.planeOffset = double(h ? h->d : p->d);
-  }
-  r.geometry = fclGeometry<double>(r);
-  return r;
-}
-
-::fcl::Transform3f toFloat(const ::fcl::Transform3d& tf) {
-  ::fcl::Transform3f f = ::fcl::Transform3f::Identity();
-  f.linear() = tf.linear().cast<float>();
-  f.translation() = tf.translation().cast<float>();
-  return f;
-}
-::fcl::Transform3d toDouble(const ::fcl::Transform3f& tf) {
-  ::fcl::Transform3d d = ::fcl::Transform3d::Identity();
-  d.linear() = tf.linear().cast<double>();
-  d.translation() = tf.translation().cast<double>();
-  return d;
 }
 
 // FCL 0.7's float tables, with the pairs it crashes on left out (as in the double test: libccd's MPR/GJK on a
@@ -150,8 +75,8 @@ TEST_P(FclFloatEquivalence, FloatCollideAndDistanceMatchTheExactAnswerAndFcl) {
   double maxExactError = 0, maxCertificateError = 0, maxFclDistanceDiff = 0;
   std::ostringstream fclWrongList;
   for (int i = 0; i < kPoses; ++i) {
-    const ::fcl::Transform3f ta = toFloat(randomPose(rng, kPoseExtent)), tb = toFloat(randomPose(rng, kPoseExtent));
-    const ::fcl::Transform3d pa = toDouble(ta), pb = toDouble(tb);
+    const ::fcl::Transform3f ta = poseIn<float>(randomPose(rng, kPoseExtent)), tb = poseIn<float>(randomPose(rng, kPoseExtent));
+    const ::fcl::Transform3d pa = poseInDouble(ta), pb = poseInDouble(tb);
     const ExactAnswer exact = exactAnswer(a, pa, b, pb);
 
     ::fcl::CollisionResultf fromGq;

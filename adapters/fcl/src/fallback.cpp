@@ -1,5 +1,6 @@
 #include "fallback.h"
 
+#include <algorithm>
 #include <exception>
 
 #include <fcl/narrowphase/collision.h>
@@ -13,6 +14,16 @@ AdapterCounters adapterCounters() { return internal::tCounters; }
 void resetAdapterCounters() { internal::tCounters = AdapterCounters(); }
 
 namespace internal {
+namespace {
+
+// FCL 0.7 answers a shape (o1) against a BVHModel (o2) as the BVHModel against the shape and reports that order:
+// Contact::o1/b1 name the model, the normal points from the model to the shape, nearest_points[0] lies on the model.
+// gq keeps the caller's order on every path, so such a pair is asked in FCL's order and its answer turned back.
+template <class S> bool answersSwapped(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::CollisionGeometry<S>* o2) {
+  return o1->getObjectType() == ::fcl::OT_GEOM && o2->getObjectType() == ::fcl::OT_BVH;
+}
+
+}  // namespace
 
 // FCL reports its own errors on std::cerr and returns; an exception (rare: Eigen or allocation) must not cross the
 // adapter's API, so it is swallowed and the result left as FCL left it.
@@ -22,7 +33,16 @@ std::size_t fclCollide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Trans
                        const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
   countFallback();
   try {
-    return ::fcl::collide(o1, tf1, o2, tf2, request, result);
+    if (!answersSwapped(o1, o2) || request.enable_cost) return ::fcl::collide(o1, tf1, o2, tf2, request, result);
+    ::fcl::CollisionRequest<S> room = request;
+    room.num_max_contacts = request.num_max_contacts - std::min(request.num_max_contacts, result.numContacts());
+    ::fcl::CollisionResult<S> swapped;
+    if (room.num_max_contacts > 0) ::fcl::collide(o2, tf2, o1, tf1, room, swapped);
+    for (std::size_t i = 0; i < swapped.numContacts(); ++i) {
+      const ::fcl::Contact<S>& c = swapped.getContact(i);
+      result.addContact(::fcl::Contact<S>(c.o2, c.o1, c.b2, c.b1, c.pos, -c.normal, c.penetration_depth));
+    }
+    return result.numContacts();
   } catch (const std::exception&) {
     return result.numContacts();
   }
@@ -34,7 +54,14 @@ S fclDistance(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>&
               const ::fcl::DistanceRequest<S>& request, ::fcl::DistanceResult<S>& result) {
   countFallback();
   try {
-    return ::fcl::distance(o1, tf1, o2, tf2, request, result);
+    if (!answersSwapped(o1, o2)) return ::fcl::distance(o1, tf1, o2, tf2, request, result);
+    ::fcl::DistanceResult<S> swapped;
+    swapped.min_distance = result.min_distance;
+    ::fcl::distance(o2, tf2, o1, tf1, request, swapped);
+    if (swapped.min_distance < result.min_distance)
+      result.update(swapped.min_distance, swapped.o2, swapped.o1, swapped.b2, swapped.b1, swapped.nearest_points[1],
+                    swapped.nearest_points[0]);
+    return result.min_distance;
   } catch (const std::exception&) {
     return result.min_distance;
   }
