@@ -12,10 +12,12 @@
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleMeshShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include "contacts.h"
 #include "gq/bullet/collision_configuration.h"
+#include "shape_cache.h"
 
 namespace gq::bullet {
 namespace {
@@ -41,9 +43,9 @@ class ManifoldSink final : public ContactSink {
 
 bool pairHasGqPath(ShapeKind a, ShapeKind b) { return a == ShapeKind::Convex || b == ShapeKind::Convex; }
 
-// Every parameter a view of a primitive, hull or plane is made of (the hull's points by their buffer and count,
-// which change when points are added). Equal keys (bytewise, so a NaN matches itself) give equal views. No padding:
-// the key is compared as whole words, inline (it is checked for both shapes of every pair every frame).
+// Every parameter a view of a primitive, hull, BVH mesh or plane is made of (the hull's points by their buffer and
+// count, which change when points are added). Equal keys (bytewise, so a NaN matches itself) give equal views. No
+// padding: the key is compared as whole words, inline (it is checked for both shapes of every pair every frame).
 struct ShapeKey {
   const btCollisionShape* shape = nullptr;
   const void* points = nullptr;
@@ -65,8 +67,8 @@ static_assert(sizeof(ShapeKey) == 2 * sizeof(void*) + 2 * sizeof(int) + 8 * size
 
 void putVector(btScalar* v, const btVector3& x) { v[0] = x.x(), v[1] = x.y(), v[2] = x.z(); }
 
-// False for the shapes whose views are rebuilt every frame (meshes, heightfields, multi-spheres: their cache
-// lookups check their own data).
+// False for the shapes whose views are rebuilt every frame (scaled meshes, heightfields, multi-spheres: their
+// cache lookups check their own data) and for a malformed mesh.
 bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
   std::memset(static_cast<void*>(&key), 0, sizeof key);
   key.shape = shape;
@@ -96,6 +98,15 @@ bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
       const auto* hull = static_cast<const btConvexHullShape*>(shape);
       key.points = hull->getUnscaledPoints();
       key.count = hull->getNumPoints();
+      return true;
+    }
+    case TRIANGLE_MESH_SHAPE_PROXYTYPE: {
+      // A BVH mesh by its interface and the fingerprint its cooked data is cached under (buffers, counts, types).
+      const btStridingMeshInterface* mesh = static_cast<const btTriangleMeshShape*>(shape)->getMeshInterface();
+      std::uint64_t fingerprint = 0;
+      if (!mesh || !meshFingerprint(*mesh, fingerprint)) return false;
+      key.points = mesh;
+      std::memcpy(static_cast<void*>(key.values + 4), &fingerprint, sizeof fingerprint);
       return true;
     }
     case STATIC_PLANE_PROXYTYPE: {

@@ -237,7 +237,7 @@ Support cachedMultiSphere(const btMultiSphereShape& shape, std::shared_ptr<const
   return Support::Gq;
 }
 
-Support cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
+bool meshFingerprint(const btStridingMeshInterface& mi, std::uint64_t& out) {
   Fingerprint fingerprint;
   fingerprint.add(mi.getNumSubParts());
   bool wellFormedParts = mi.getNumSubParts() > 0;
@@ -247,11 +247,21 @@ Support cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
     fingerprint.add(double(reinterpret_cast<std::uintptr_t>(p.vertexBase)))
         .add(double(reinterpret_cast<std::uintptr_t>(p.indexBase)))
         .add(p.vertexCount)
-        .add(p.triangleCount);
+        .add(p.triangleCount)
+        .add(p.vertexStride)
+        .add(p.indexStride)
+        .add(int(p.vertexType))
+        .add(int(p.indexType));
     mi.unLockReadOnlyVertexBase(part);
   }
-  if (!wellFormedParts) return Support::Invalid;
-  auto data = cache().get(&mi, fingerprint.value(), [&] { return cookMesh(mi); });
+  out = fingerprint.value();
+  return wellFormedParts;
+}
+
+Support cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
+  std::uint64_t fingerprint;
+  if (!meshFingerprint(mi, fingerprint)) return Support::Invalid;
+  auto data = cache().get(&mi, fingerprint, [&] { return cookMesh(mi); });
   if (!data) return Support::Invalid;
   out = *static_cast<const CookedMesh*>(data.get());
   return Support::Gq;

@@ -30,6 +30,9 @@ struct CookedMesh {
   std::shared_ptr<const TriangleMesh<Real>> mesh;              // unscaled vertices, all sub-parts concatenated
   std::shared_ptr<const std::vector<std::uint32_t>> partStarts;  // first triangle of each sub-part
 };
+// A hash of what a mesh's cooked data is made from (sub-part count; each part's buffers, counts, strides and types);
+// false for no sub-part or a malformed one. cachedMesh finds its data by it; a pair's side compares it every frame.
+bool meshFingerprint(const btStridingMeshInterface& meshInterface, std::uint64_t& out);
 // Invalid for a malformed sub-part (negative counts, null buffers, unknown types) and for every mesh gq's cooking
 // refuses: no triangles, all degenerate, an index past the vertex count, a non-finite vertex.
 Support cachedMesh(const btStridingMeshInterface& meshInterface, CookedMesh& out);
