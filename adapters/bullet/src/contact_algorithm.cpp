@@ -43,9 +43,10 @@ class ManifoldSink final : public ContactSink {
 
 bool pairHasGqPath(ShapeKind a, ShapeKind b) { return a == ShapeKind::Convex || b == ShapeKind::Convex; }
 
-// Every parameter a view of a primitive, hull, BVH mesh or plane is made of (the hull's points by their buffer and
-// count, which change when points are added). Equal keys (bytewise, so a NaN matches itself) give equal views. No
-// padding: the key is compared as whole words, inline (it is checked for both shapes of every pair every frame).
+// Every parameter a view of a primitive, hull, BVH mesh, heightfield or plane is made of (the hull's points by
+// their buffer and count, which change when points are added). Equal keys (bytewise, so a NaN matches itself) give
+// equal views. No padding: the key is compared as whole words, inline (it is checked for both shapes of every pair
+// every frame).
 struct ShapeKey {
   const btCollisionShape* shape = nullptr;
   const void* points = nullptr;
@@ -67,8 +68,8 @@ static_assert(sizeof(ShapeKey) == 2 * sizeof(void*) + 2 * sizeof(int) + 8 * size
 
 void putVector(btScalar* v, const btVector3& x) { v[0] = x.x(), v[1] = x.y(), v[2] = x.z(); }
 
-// False for the shapes whose views are rebuilt every frame (scaled meshes, heightfields, multi-spheres: their
-// cache lookups check their own data) and for a malformed mesh.
+// False for the shapes whose views are rebuilt every frame (scaled meshes, multi-spheres: their cache lookups
+// check their own data) and for a malformed mesh or heightfield.
 bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
   std::memset(static_cast<void*>(&key), 0, sizeof key);
   key.shape = shape;
@@ -106,6 +107,13 @@ bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
       std::uint64_t fingerprint = 0;
       if (!mesh || !meshFingerprint(*mesh, fingerprint)) return false;
       key.points = mesh;
+      std::memcpy(static_cast<void*>(key.values + 4), &fingerprint, sizeof fingerprint);
+      return true;
+    }
+    case TERRAIN_SHAPE_PROXYTYPE: {
+      // A heightfield by the fingerprint its cooked data is cached under (data pointer, sizes, axis, scaling).
+      std::uint64_t fingerprint = 0;
+      if (!heightFieldFingerprint(*static_cast<const btHeightfieldTerrainShape*>(shape), fingerprint)) return false;
       std::memcpy(static_cast<void*>(key.values + 4), &fingerprint, sizeof fingerprint);
       return true;
     }

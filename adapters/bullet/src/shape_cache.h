@@ -43,6 +43,9 @@ struct CookedHeightField {
   Pose localPose;              // gq grid frame in the Bullet shape frame (axis permutation + centring offset)
   bool rowsAreX = true;        // gq rows follow Bullet's first grid index
 };
+// A hash of what a heightfield's cooked data is made from (data pointer, sample counts, up axis, scaling, quad
+// layout), read without touching a sample; false for absurd dimensions, an up axis outside 0..2 or no data.
+bool heightFieldFingerprint(const btHeightfieldTerrainShape& shape, std::uint64_t& out);
 // Bullet for layouts gq's grid does not reproduce (flipped, diamond or zigzag quad edges; negative scaling).
 // Invalid, checked before any sample is read: fewer than 2 x 2 samples, more than kMaxHeightFieldSamples, an up
 // axis outside 0..2, no height data, a zero or non-finite scaling; and a non-finite height (found at cooking).
