@@ -243,22 +243,6 @@ Pose worldPose(const btTransform& tr, const ShapeView& v) {
   return identity ? toGq(tr) : toGq(tr) * local;
 }
 
-// Asks for every cache line of the state's hot part at once (the shape keys and the reuse test, read on every call):
-// in a pile of thousands of pairs the state is out of cache from one frame to the next, and the requests then
-// overlap instead of each load waiting for the one before.
-void prefetchBytes(const void* start, std::size_t bytes) {
-  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(start);
-  for (std::uintptr_t line = begin & ~std::uintptr_t(63); line < begin + bytes; line += 64)
-    __builtin_prefetch(reinterpret_cast<const void*>(line));
-}
-void prefetchHot(const PairState& s) { prefetchBytes(&s, sizeof(s.key) + sizeof(s.reused)); }
-// What a frame that recomputes its contacts reads next (the cull reads both views and the pair's memory).
-void prefetchViews(const PairState& s) {
-  prefetchBytes(&s.side[0].view, sizeof(ShapeView));
-  prefetchBytes(&s.side[1].view, sizeof(ShapeView));
-  prefetchBytes(&s.memory, sizeof(PairMemory));
-}
-
 }  // namespace
 
 ContactAlgorithm::ContactAlgorithm(btPersistentManifold* sharedManifold, const btCollisionAlgorithmConstructionInfo& ci,
@@ -274,7 +258,6 @@ ContactAlgorithm::~ContactAlgorithm() {
 
 void ContactAlgorithm::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                         const btDispatcherInfo&, btManifoldResult* result) {
-  if (state_) prefetchHot(*state_);
   const bool finite = isFinite(body0->getWorldTransform()) && isFinite(body1->getWorldTransform());
   if (state_) {
     PairState& st = *state_;
@@ -317,7 +300,6 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
     result->refreshContactPoints();
     return;
   }
-  if (state_) prefetchViews(*state_);
   const PlacedShape a{&va, worldPose(trA, va)};
   const PlacedShape b{&vb, worldPose(trB, vb)};
   ManifoldSink sink(*result);
