@@ -110,5 +110,41 @@ TEST_F(RestingBox, ShapeEditedInPlaceGetsFreshContacts) {
   EXPECT_NEAR(deepest, -0.02, kTol);
 }
 
+
+// A box above an empty spot of a BVH mesh has no contact; triangles added under it afterwards (new buffer contents
+// and counts, so the mesh is cooked anew) reach the pair's existing algorithm on its next frame.
+TEST(MeshSide, TrianglesAddedToTheMeshReachAnExistingPair) {
+  TestWorld world(Backend::Gq);
+  btBoxShape box(kHalf);
+  btTriangleMesh triangles;
+  triangles.addTriangle(btVector3(10, 0, 10), btVector3(11, 0, 10), btVector3(10, 0, 11));
+  btBvhTriangleMeshShape mesh(&triangles, true);
+  btCollisionObject a, b;
+  a.setCollisionShape(&box);
+  b.setCollisionShape(&mesh);
+  a.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, btScalar(0.49), 0)));
+  btCollisionObjectWrapper wa(nullptr, &box, &a, a.getWorldTransform(), -1, -1);
+  btCollisionObjectWrapper wb(nullptr, &mesh, &b, b.getWorldTransform(), -1, -1);
+  btDispatcher* dispatcher = world.world().getDispatcher();
+  btCollisionAlgorithm* algorithm = dispatcher->findAlgorithm(&wa, &wb, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+  const auto frame = [&]() -> const btPersistentManifold* {
+    btManifoldResult result(&wa, &wb);
+    algorithm->processCollision(&wa, &wb, world.world().getDispatchInfo(), &result);
+    return result.getPersistentManifold();
+  };
+  const btPersistentManifold* before = frame();
+  EXPECT_TRUE(before == nullptr || before->getNumContacts() == 0);
+  triangles.addTriangle(btVector3(-2, 0, -2), btVector3(-2, 0, 2), btVector3(2, 0, -2));
+  triangles.addTriangle(btVector3(2, 0, -2), btVector3(-2, 0, 2), btVector3(2, 0, 2));
+  const btPersistentManifold* after = frame();
+  ASSERT_NE(after, nullptr);
+  ASSERT_GE(after->getNumContacts(), 1);
+  btScalar deepest = 0;
+  for (int i = 0; i < after->getNumContacts(); ++i) deepest = std::min(deepest, after->getContactPoint(i).getDistance());
+  EXPECT_NEAR(deepest, -0.01, kTol);
+  algorithm->~btCollisionAlgorithm();
+  dispatcher->freeCollisionAlgorithm(algorithm);
+}
+
 }  // namespace
 }  // namespace gq::bullet::test

@@ -12,10 +12,12 @@
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleMeshShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include "contacts.h"
 #include "gq/bullet/collision_configuration.h"
+#include "shape_cache.h"
 
 namespace gq::bullet {
 namespace {
@@ -41,9 +43,10 @@ class ManifoldSink final : public ContactSink {
 
 bool pairHasGqPath(ShapeKind a, ShapeKind b) { return a == ShapeKind::Convex || b == ShapeKind::Convex; }
 
-// Every parameter a view of a primitive, hull or plane is made of (the hull's points by their buffer and count,
-// which change when points are added). Equal keys (bytewise, so a NaN matches itself) give equal views. No padding:
-// the key is compared as whole words, inline (it is checked for both shapes of every pair every frame).
+// Every parameter a view of a primitive, hull, BVH mesh, heightfield or plane is made of (the hull's points by
+// their buffer and count, which change when points are added). Equal keys (bytewise, so a NaN matches itself) give
+// equal views. No padding: the key is compared as whole words, inline (it is checked for both shapes of every pair
+// every frame).
 struct ShapeKey {
   const btCollisionShape* shape = nullptr;
   const void* points = nullptr;
@@ -65,8 +68,8 @@ static_assert(sizeof(ShapeKey) == 2 * sizeof(void*) + 2 * sizeof(int) + 8 * size
 
 void putVector(btScalar* v, const btVector3& x) { v[0] = x.x(), v[1] = x.y(), v[2] = x.z(); }
 
-// False for the shapes whose views are rebuilt every frame (meshes, heightfields, multi-spheres: their cache
-// lookups check their own data).
+// False for the shapes whose views are rebuilt every frame (scaled meshes, multi-spheres: their cache lookups
+// check their own data) and for a malformed mesh or heightfield.
 bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
   std::memset(static_cast<void*>(&key), 0, sizeof key);
   key.shape = shape;
@@ -98,6 +101,22 @@ bool keyOf(const btCollisionShape* shape, ShapeKey& key) {
       key.count = hull->getNumPoints();
       return true;
     }
+    case TRIANGLE_MESH_SHAPE_PROXYTYPE: {
+      // A BVH mesh by its interface and the fingerprint its cooked data is cached under (buffers, counts, types).
+      const btStridingMeshInterface* mesh = static_cast<const btTriangleMeshShape*>(shape)->getMeshInterface();
+      std::uint64_t fingerprint = 0;
+      if (!mesh || !meshFingerprint(*mesh, fingerprint)) return false;
+      key.points = mesh;
+      std::memcpy(static_cast<void*>(key.values + 4), &fingerprint, sizeof fingerprint);
+      return true;
+    }
+    case TERRAIN_SHAPE_PROXYTYPE: {
+      // A heightfield by the fingerprint its cooked data is cached under (data pointer, sizes, axis, scaling).
+      std::uint64_t fingerprint = 0;
+      if (!heightFieldFingerprint(*static_cast<const btHeightfieldTerrainShape*>(shape), fingerprint)) return false;
+      std::memcpy(static_cast<void*>(key.values + 4), &fingerprint, sizeof fingerprint);
+      return true;
+    }
     case STATIC_PLANE_PROXYTYPE: {
       const auto* plane = static_cast<const btStaticPlaneShape*>(shape);
       putVector(key.values + 4, plane->getPlaneNormal());
@@ -117,46 +136,61 @@ const void* surfaceData(const Geometry<Real>& g) {
 
 }  // namespace
 
-// One side of a pair: the view of its shape (and the prepared geometry) as of `key`.
-struct PairSide {
+// One side of a pair, in two parts: what every call reads (the shape's key, checked each frame) and what only an
+// exact frame reads (the view and the prepared geometry). The pair's state keeps the first parts of both sides and
+// the reuse test's data together at its front, so a call that keeps its contacts touches a few cache lines of it:
+// a pile has thousands of pairs whose states do not stay in cache from one frame to the next.
+struct SideKey {
   ShapeKey key;
-  bool keyed = false;
-  Support support = Support::Invalid;
-  ShapeView view;
-  Shape<Real> prepared;
   // Changes whenever the view may have changed (a keyed shape rebuilt, a surface re-cooked or rescaled).
   std::uint32_t version = 0;
+  bool keyed = false;
+  // Whether `version` tracks every change of the view (keyed shapes and surfaces; not multi-spheres).
+  bool versioned = false;
+  Support support = Support::Invalid;
+};
+
+struct SideView {
+  ShapeView view;
+  Shape<Real> prepared;
   const void* surface = nullptr;
   btVector3 surfaceScaling{0, 0, 0};
-
-  // The shape's view, rebuilt only when the shape's parameters changed since the last frame.
-  Support refresh(const btCollisionShape* shape) {
-    ShapeKey now;
-    if (shape && keyOf(shape, now)) {
-      if (keyed && now == key) return support;
-      key = now;
-      keyed = true;
-    } else {
-      keyed = false;
-    }
-    ++version;
-    support = viewShape(shape, view);
-    view.prepared = nullptr;
-    // Only convex pairs read the prepared shape; a mesh or heightfield is not prepared (making a Shape bounds every
-    // vertex, which cost a pair with a large ground more than its contacts).
-    const GeometryType type = view.geom.type();
-    const bool isSurface = type == GeometryType::TriangleMesh || type == GeometryType::HeightField;
-    if (support == Support::Gq && !isSurface && Shape<Real>::make(view.geom, prepared).ok()) view.prepared = &prepared;
-    if (isSurface && support == Support::Gq && surfaceData(view.geom) == surface &&
-        shape->getLocalScaling() == surfaceScaling)
-      --version;  // the same cooked surface at the same scaling: the view is unchanged
-    surface = isSurface ? surfaceData(view.geom) : nullptr;
-    if (shape) surfaceScaling = shape->getLocalScaling();
-    return support;
-  }
-  // Whether `version` tracks every change of the view (keyed shapes and surfaces; not multi-spheres).
-  bool versioned() const { return keyed || surface != nullptr; }
 };
+
+namespace {
+
+// Rebuilds the side's view from the shape (whose key is `now` when `keyed`).
+Support rebuildSide(SideKey& k, SideView& s, const btCollisionShape* shape, const ShapeKey& now, bool keyed) {
+  if (keyed) k.key = now;
+  k.keyed = keyed;
+  ++k.version;
+  k.support = viewShape(shape, s.view);
+  s.view.prepared = nullptr;
+  // Only convex pairs read the prepared shape; a mesh or heightfield is not prepared (making a Shape bounds every
+  // vertex, which cost a pair with a large ground more than its contacts).
+  const GeometryType type = s.view.geom.type();
+  const bool isSurface = type == GeometryType::TriangleMesh || type == GeometryType::HeightField;
+  if (k.support == Support::Gq && !isSurface && Shape<Real>::make(s.view.geom, s.prepared).ok())
+    s.view.prepared = &s.prepared;
+  if (isSurface && k.support == Support::Gq && surfaceData(s.view.geom) == s.surface &&
+      shape->getLocalScaling() == s.surfaceScaling)
+    --k.version;  // the same cooked surface at the same scaling: the view is unchanged
+  s.surface = isSurface ? surfaceData(s.view.geom) : nullptr;
+  if (shape) s.surfaceScaling = shape->getLocalScaling();
+  k.versioned = k.keyed || s.surface != nullptr;
+  return k.support;
+}
+
+// The shape's view, rebuilt only when the shape's parameters changed since the last frame (the unchanged case,
+// every frame of every pair, reads the key only).
+inline Support refreshSide(SideKey& k, SideView& s, const btCollisionShape* shape) {
+  ShapeKey now;
+  const bool keyed = shape && keyOf(shape, now);
+  if (keyed && k.keyed && now == k.key) return k.support;
+  return rebuildSide(k, s, shape, now, keyed);
+}
+
+}  // namespace
 
 // The contact set of a pair is a function of the shapes and of B's pose relative to A. A frame whose relative pose
 // is within kReuseLength (times the smaller convex size) and kReuseAngle (radians) of the pose of the last exact
@@ -167,18 +201,21 @@ constexpr Real kReuseLength = Real(1e-3);
 constexpr Real kReuseAngle = Real(1e-3);
 
 struct ReusedFrame {
-  bool valid = false;
   btTransform relative;  // B's pose in A's frame at the last exact frame
+  std::array<btVector3, MANIFOLD_CACHE_SIZE> normalInB;
   Real threshold = 0;
+  Real length = 0;  // the reuse tolerance on the relative origin
   std::uint32_t versions[2] = {0, 0};
   int points = 0;
-  std::array<btVector3, MANIFOLD_CACHE_SIZE> normalInB;
+  bool valid = false;
 };
 
-struct PairState {
-  PairSide side[2];
-  PairMemory memory;
+// 64-byte aligned: the hot part starts a cache line.
+struct alignas(64) PairState {
+  SideKey key[2];
   ReusedFrame reused;
+  SideView side[2];
+  PairMemory memory;
 };
 
 namespace {
@@ -223,8 +260,9 @@ void ContactAlgorithm::processCollision(const btCollisionObjectWrapper* body0, c
                                         const btDispatcherInfo&, btManifoldResult* result) {
   const bool finite = isFinite(body0->getWorldTransform()) && isFinite(body1->getWorldTransform());
   if (state_) {
-    const bool answerable = finite && state_->side[0].refresh(body0->getCollisionShape()) == Support::Gq &&
-                            state_->side[1].refresh(body1->getCollisionShape()) == Support::Gq;
+    PairState& st = *state_;
+    const bool answerable = finite && refreshSide(st.key[0], st.side[0], body0->getCollisionShape()) == Support::Gq &&
+                            refreshSide(st.key[1], st.side[1], body1->getCollisionShape()) == Support::Gq;
     collide(answerable, state_->side[0].view, state_->side[1].view, body0, body1, result);
     return;
   }
@@ -253,12 +291,12 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
   const btTransform& trA = body0->getWorldTransform();
   const btTransform& trB = body1->getWorldTransform();
   const bool reusable = state_ && ownManifold_ && result->m_closestPointDistanceThreshold == Real(0) &&
-                        state_->side[0].versioned() && state_->side[1].versioned();
+                        state_->key[0].versioned && state_->key[1].versioned;
   // B's pose in A's frame, for the reuse test and for the next frame's (computed once: both need it).
   btTransform relative;
   if (reusable) relative = trA.inverseTimes(trB);
   const btTransform& poseB = manifoldB(*manifold_, trA, trB, body1->getCollisionObject());
-  if (reusable && reuseContacts(va, vb, relative, threshold, poseB)) {
+  if (reusable && reuseContacts(relative, threshold, poseB)) {
     result->refreshContactPoints();
     return;
   }
@@ -267,17 +305,15 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
   ManifoldSink sink(*result);
   pairContacts(a, b, threshold, sink, state_ ? &state_->memory : nullptr);
   if (ownManifold_) result->refreshContactPoints();
-  if (reusable) rememberContacts(relative, threshold, poseB);
+  if (reusable) rememberContacts(reuseSize(va, vb), relative, threshold, poseB);
 }
 
-bool ContactAlgorithm::reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& relative,
-                                     Real threshold, const btTransform& manifoldPoseB) {
+bool ContactAlgorithm::reuseContacts(const btTransform& relative, Real threshold, const btTransform& manifoldPoseB) {
   ReusedFrame& r = state_->reused;
-  if (!r.valid || r.threshold != threshold || r.versions[0] != state_->side[0].version ||
-      r.versions[1] != state_->side[1].version || manifold_->getNumContacts() != r.points)
+  if (!r.valid || r.threshold != threshold || r.versions[0] != state_->key[0].version ||
+      r.versions[1] != state_->key[1].version || manifold_->getNumContacts() != r.points)
     return false;
-  const Real length = kReuseLength * reuseSize(va, vb);
-  if ((relative.getOrigin() - r.relative.getOrigin()).length2() > length * length) return false;
+  if ((relative.getOrigin() - r.relative.getOrigin()).length2() > r.length * r.length) return false;
   const btMatrix3x3& now = relative.getBasis();
   const btMatrix3x3& then = r.relative.getBasis();
   const Real turn2 = (now[0] - then[0]).length2() + (now[1] - then[1]).length2() + (now[2] - then[2]).length2();
@@ -287,14 +323,15 @@ bool ContactAlgorithm::reuseContacts(const ShapeView& va, const ShapeView& vb, c
   return true;
 }
 
-void ContactAlgorithm::rememberContacts(const btTransform& relative, Real threshold,
+void ContactAlgorithm::rememberContacts(Real size, const btTransform& relative, Real threshold,
                                         const btTransform& manifoldPoseB) {
   ReusedFrame& r = state_->reused;
   r.valid = true;
   r.relative = relative;
   r.threshold = threshold;
-  r.versions[0] = state_->side[0].version;
-  r.versions[1] = state_->side[1].version;
+  r.length = kReuseLength * size;
+  r.versions[0] = state_->key[0].version;
+  r.versions[1] = state_->key[1].version;
   r.points = manifold_->getNumContacts();
   const btMatrix3x3& basisB = manifoldPoseB.getBasis();
   for (int i = 0; i < r.points; ++i)

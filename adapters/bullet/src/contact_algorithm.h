@@ -38,9 +38,10 @@ class ContactAlgorithm final : public btActivatingCollisionAlgorithm {
   // True when B's pose relative to A (`relative`) is close enough to the last exact frame's that the manifold's
   // points are kept (their normals turned with the manifold's B, at `manifoldPoseB`); false when they must be
   // recomputed.
-  bool reuseContacts(const ShapeView& va, const ShapeView& vb, const btTransform& relative, btScalar threshold,
-                     const btTransform& manifoldPoseB);
-  void rememberContacts(const btTransform& relative, btScalar threshold, const btTransform& manifoldPoseB);
+  bool reuseContacts(const btTransform& relative, btScalar threshold, const btTransform& manifoldPoseB);
+  // Remembers this exact frame for the reuse test; `size` is the length its tolerance is relative to.
+  void rememberContacts(btScalar size, const btTransform& relative, btScalar threshold,
+                        const btTransform& manifoldPoseB);
 
   btPersistentManifold* manifold_;
   bool ownManifold_;

@@ -237,7 +237,7 @@ Support cachedMultiSphere(const btMultiSphereShape& shape, std::shared_ptr<const
   return Support::Gq;
 }
 
-Support cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
+bool meshFingerprint(const btStridingMeshInterface& mi, std::uint64_t& out) {
   Fingerprint fingerprint;
   fingerprint.add(mi.getNumSubParts());
   bool wellFormedParts = mi.getNumSubParts() > 0;
@@ -247,20 +247,29 @@ Support cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
     fingerprint.add(double(reinterpret_cast<std::uintptr_t>(p.vertexBase)))
         .add(double(reinterpret_cast<std::uintptr_t>(p.indexBase)))
         .add(p.vertexCount)
-        .add(p.triangleCount);
+        .add(p.triangleCount)
+        .add(p.vertexStride)
+        .add(p.indexStride)
+        .add(int(p.vertexType))
+        .add(int(p.indexType));
     mi.unLockReadOnlyVertexBase(part);
   }
-  if (!wellFormedParts) return Support::Invalid;
-  auto data = cache().get(&mi, fingerprint.value(), [&] { return cookMesh(mi); });
+  out = fingerprint.value();
+  return wellFormedParts;
+}
+
+Support cachedMesh(const btStridingMeshInterface& mi, CookedMesh& out) {
+  std::uint64_t fingerprint;
+  if (!meshFingerprint(mi, fingerprint)) return Support::Invalid;
+  auto data = cache().get(&mi, fingerprint, [&] { return cookMesh(mi); });
   if (!data) return Support::Invalid;
   out = *static_cast<const CookedMesh*>(data.get());
   return Support::Gq;
 }
 
-Support cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out) {
+bool heightFieldFingerprint(const btHeightfieldTerrainShape& shape, std::uint64_t& out) {
+  if (!sizedSensibly(shape)) return false;
   const btVector3& s = shape.getLocalScaling();
-  if (!sizedSensibly(shape) || !isUsableScaling(s)) return Support::Invalid;
-  if (!HeightFieldFields::plainQuads(shape) || !(s.x() > 0 && s.y() > 0 && s.z() > 0)) return Support::Bullet;
   Fingerprint fingerprint;
   fingerprint.add(double(reinterpret_cast<std::uintptr_t>(HeightFieldFields::data(shape))))
       .add(HeightFieldFields::width(shape))
@@ -268,8 +277,18 @@ Support cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightFi
       .add(shape.getUpAxis())
       .add(s.x())
       .add(s.y())
-      .add(s.z());
-  auto data = cache().get(&shape, fingerprint.value(), [&] { return cookHeightFieldShape(shape); });
+      .add(s.z())
+      .add(HeightFieldFields::plainQuads(shape) ? 1 : 0);
+  out = fingerprint.value();
+  return true;
+}
+
+Support cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightField& out) {
+  const btVector3& s = shape.getLocalScaling();
+  std::uint64_t fingerprint;
+  if (!heightFieldFingerprint(shape, fingerprint) || !isUsableScaling(s)) return Support::Invalid;
+  if (!HeightFieldFields::plainQuads(shape) || !(s.x() > 0 && s.y() > 0 && s.z() > 0)) return Support::Bullet;
+  auto data = cache().get(&shape, fingerprint, [&] { return cookHeightFieldShape(shape); });
   if (!data) return Support::Invalid;  // a non-finite height (cooking checks every sample)
   out = *static_cast<const CookedHeightField*>(data.get());
   return Support::Gq;

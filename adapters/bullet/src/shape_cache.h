@@ -30,6 +30,9 @@ struct CookedMesh {
   std::shared_ptr<const TriangleMesh<Real>> mesh;              // unscaled vertices, all sub-parts concatenated
   std::shared_ptr<const std::vector<std::uint32_t>> partStarts;  // first triangle of each sub-part
 };
+// A hash of what a mesh's cooked data is made from (sub-part count; each part's buffers, counts, strides and types);
+// false for no sub-part or a malformed one. cachedMesh finds its data by it; a pair's side compares it every frame.
+bool meshFingerprint(const btStridingMeshInterface& meshInterface, std::uint64_t& out);
 // Invalid for a malformed sub-part (negative counts, null buffers, unknown types) and for every mesh gq's cooking
 // refuses: no triangles, all degenerate, an index past the vertex count, a non-finite vertex.
 Support cachedMesh(const btStridingMeshInterface& meshInterface, CookedMesh& out);
@@ -40,6 +43,9 @@ struct CookedHeightField {
   Pose localPose;              // gq grid frame in the Bullet shape frame (axis permutation + centring offset)
   bool rowsAreX = true;        // gq rows follow Bullet's first grid index
 };
+// A hash of what a heightfield's cooked data is made from (data pointer, sample counts, up axis, scaling, quad
+// layout), read without touching a sample; false for absurd dimensions, an up axis outside 0..2 or no data.
+bool heightFieldFingerprint(const btHeightfieldTerrainShape& shape, std::uint64_t& out);
 // Bullet for layouts gq's grid does not reproduce (flipped, diamond or zigzag quad edges; negative scaling).
 // Invalid, checked before any sample is read: fewer than 2 x 2 samples, more than kMaxHeightFieldSamples, an up
 // axis outside 0..2, no height data, a zero or non-finite scaling; and a non-finite height (found at cooking).
