@@ -47,8 +47,9 @@ TEST_P(FitShapeData, BoundNeverBelowDenseSampling) {
 }
 
 // The bunny (69k triangles) split into up to 16 parts at 1 % of its size: the decomposition finishes within the
-// bound's patch budget and its certified bound still holds against dense sampling.
-TEST(FitShapeDecompositionData, BunnySixteenPartsBoundNeverBelowDenseSampling) {
+// bound's patch budget, its certified bound still holds against dense sampling, and it is well below the single
+// hull's (0.042).
+TEST(FitShapeDecompositionData, BunnySixteenPartsBelowItsHullAndNeverBelowDenseSampling) {
   const std::string path = gqtest::sharedPath("meshes/stanford-bunny.obj");
   GQ_REQUIRE_SHARED_FILE(path);
   MeshData<double> mesh;
@@ -68,6 +69,10 @@ TEST(FitShapeDecompositionData, BunnySixteenPartsBoundNeverBelowDenseSampling) {
   EXPECT_LE(fit.parts.size(), 16u);
   EXPECT_GE(double(fit.errorBound), fittest::sampledHausdorff(mesh, fit.parts, 20000));
   EXPECT_TRUE(fittest::containsVertices(mesh, fit.parts, 1e-9 * size));
+  o.allowed = fitBit(FitRepresentation::ConvexHull);
+  FitResult<double> hull;
+  ASSERT_EQ(fitShape(mesh, o, hull).code, StatusCode::Warning);
+  EXPECT_LT(fit.errorBound, 0.7 * hull.errorBound);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -160,6 +160,21 @@ TEST(FitShapeDecomposition, AnLOfTwoBoxesSplitsAlongItsConcaveEdgeIntoTheTwoBoxe
   }
 }
 
+// The hull of a torus spans its hole (0.74 from the surface for R = 1, r = 0.3); the splitting measures each
+// piece's concavity over the whole of its hull faces, so eight parts already come well below the hull.
+TEST(FitShapeDecomposition, TorusAtEightPartsIsWellBelowItsHull) {
+  const MeshData<double> torus = fittest::torusMesh(1.0, 0.3, 32, 12);
+  FitOptions<double> o = only(FitRepresentation::ConvexDecomposition, 0.01, true);
+  o.maxParts = 8;
+  FitResult<double> fit, hull;
+  EXPECT_EQ(fitShape(torus, o, fit).code, StatusCode::Warning);
+  ASSERT_EQ(fit.parts.size(), 8u);
+  ASSERT_EQ(fitShape(torus, only(FitRepresentation::ConvexHull, 0.01, true), hull).code, StatusCode::Warning);
+  EXPECT_LT(fit.errorBound, 0.4 * hull.errorBound);
+  EXPECT_TRUE(fittest::containsVertices(torus, fit.parts, 1e-9));
+  EXPECT_GE(double(fit.errorBound), fittest::sampledHausdorff(torus, fit.parts, 20000));
+}
+
 template <class T> std::vector<double> fingerprint(const FitResult<T>& fit) {
   std::vector<double> f = {double(fit.errorBound), double(fit.representation), double(fit.parts.size())};
   for (const auto& [g, pose] : fit.parts) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "contact_algorithm.h"
+#include "mesh_fitting.h"
 #include "shape_view.h"
 
 namespace gq::bullet {
@@ -20,11 +21,13 @@ btDefaultCollisionConstructionInfo withGqElementSize(btDefaultCollisionConstruct
 CollisionConfiguration::CollisionConfiguration(const btDefaultCollisionConstructionInfo& info)
     : btDefaultCollisionConfiguration(withGqElementSize(info)),
       contactCreateFunc_(new ContactCreateFunc(*this, false)),
-      closestPointsCreateFunc_(new ContactCreateFunc(*this, true)) {}
+      closestPointsCreateFunc_(new ContactCreateFunc(*this, true)),
+      fittedMeshCreateFunc_{newFittedMeshCreateFunc(*this, false), newFittedMeshCreateFunc(*this, true)} {}
 
 CollisionConfiguration::~CollisionConfiguration() {
   delete contactCreateFunc_;
   delete closestPointsCreateFunc_;
+  for (btCollisionAlgorithmCreateFunc* f : fittedMeshCreateFunc_) delete f;
 }
 
 bool CollisionConfiguration::routesToGq(int proxyType0, int proxyType1) {
@@ -34,12 +37,14 @@ bool CollisionConfiguration::routesToGq(int proxyType0, int proxyType1) {
 
 btCollisionAlgorithmCreateFunc* CollisionConfiguration::getCollisionAlgorithmCreateFunc(int proxyType0,
                                                                                         int proxyType1) {
+  if (isFittedMeshPair(proxyType0, proxyType1)) return fittedMeshCreateFunc_[0];
   return routesToGq(proxyType0, proxyType1) ? contactCreateFunc_
                                             : bulletCreateFunc(proxyType0, proxyType1, false);
 }
 
 btCollisionAlgorithmCreateFunc* CollisionConfiguration::getClosestPointsAlgorithmCreateFunc(int proxyType0,
                                                                                             int proxyType1) {
+  if (isFittedMeshPair(proxyType0, proxyType1)) return fittedMeshCreateFunc_[1];
   return routesToGq(proxyType0, proxyType1) ? closestPointsCreateFunc_
                                             : bulletCreateFunc(proxyType0, proxyType1, true);
 }

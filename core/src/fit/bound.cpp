@@ -158,16 +158,35 @@ double walkOut(const Union& parts, const Vec3d& p, const Vec3d& dir, double size
   return std::numeric_limits<double>::infinity();
 }
 
-double unionBoundaryDistance(const Union& parts, const Vec3d& p, const Vec3d& normal, double size) {
-  const double out = outsideDistance(parts, p);
+// Inside, along +-normal; `thorough`, also along the six axis directions and out through the nearest face of each
+// polytope holding p (the normal can run along a buried sheet of the mesh while the boundary is near the other way).
+// `out`: outsideDistance at p.
+double unionBoundaryDistance(const Union& parts, const Vec3d& p, double out, const Vec3d& normal, double size,
+                             bool thorough) {
   if (out >= 0) return out;
-  return std::min(walkOut(parts, p, normal, size), walkOut(parts, p, -normal, size));
+  double best = std::min(walkOut(parts, p, normal, size), walkOut(parts, p, -normal, size));
+  if (!thorough) return best;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double sign : {-1.0, 1.0}) best = std::min(best, walkOut(parts, p, sign * Vec3d::Unit(axis), size));
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (parts[i].kind != Solid::Kind::Polytope || parts.below(i, p) >= 0) continue;
+    const Face* nearest = nullptr;
+    double depth = std::numeric_limits<double>::infinity();
+    for (const Face& f : parts[i].faces)
+      if (-(f.normal.dot(p) + f.d) < depth) {
+        depth = -(f.normal.dot(p) + f.d);
+        nearest = &f;
+      }
+    if (nearest && depth > 0) best = std::min(best, walkOut(parts, p, nearest->normal, size));
+  }
+  return best;
 }
 
 struct Tri {
   Vec3d a, b, c;
   int depth;
   double upper;
+  bool thorough = false;  // walked out of the union in every direction tried, not only along the normal
   bool operator<(const Tri& o) const { return upper < o.upper; }
 };
 
@@ -242,23 +261,25 @@ double boundToPart(const Solid& part, const Tri& t, const Vec3d& q, double& lowe
   return std::max({outside, depth, 0.0});
 }
 
-double boundTriangle(const Union& parts, const Tri& t, double size, double& lower) {
+double boundTriangle(const Union& parts, const Tri& t, double size, double target, double& lower) {
   const Vec3d q = (t.a + t.b + t.c) / 3.0;
   if (parts.size() == 1) return boundToPart(parts[0], t, q, lower);
   const double r = std::max({(t.a - q).norm(), (t.b - q).norm(), (t.c - q).norm()});
   // One part P alone: with B its bound, each point x of the triangle has a point y of P's boundary within B, and
   // when every other part is farther than r + B from the centroid, y is outside them all, so on the union's
   // boundary (and x, outside the union, is at most sd_P(x) <= B from it): B bounds the union too. P is the part
-  // nearest the centroid.
+  // nearest the centroid. Inside it, the centroid's depth is at most its distance to the union's boundary: a
+  // distance attained, from below.
+  std::size_t nearest = 0;
+  double nearestDistance = std::numeric_limits<double>::infinity(), nearestSigned = 0;
   {
-    std::size_t nearest = 0;
-    double nearestDistance = std::numeric_limits<double>::infinity();
     Vec3d g;
     for (std::size_t i = 0; i < parts.size(); ++i) {
       if (std::abs(parts.below(i, q)) >= nearestDistance && parts.below(i, q) > 0) continue;
-      const double d = std::abs(signedDistance(parts[i], q, g));
-      if (d < nearestDistance) {
-        nearestDistance = d;
+      const double sd = signedDistance(parts[i], q, g);
+      if (std::abs(sd) < nearestDistance) {
+        nearestDistance = std::abs(sd);
+        nearestSigned = sd;
         nearest = i;
       }
     }
@@ -268,16 +289,19 @@ double boundTriangle(const Union& parts, const Tri& t, double size, double& lowe
     for (std::size_t i = 0; i < parts.size() && alone; ++i)
       if (i != nearest && parts.below(i, q) <= r + bound) alone = signedDistance(parts[i], q, g) > r + bound;
     if (alone) {
-      lower = std::max(0.0, outsideDistance(parts, q));
+      lower = nearestSigned < 0 ? -nearestSigned : std::max(0.0, outsideDistance(parts, q));
       return bound;
     }
   }
   const Vec3d n = (t.b - t.a).cross(t.c - t.a);
   const Vec3d normal = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::UnitX();
-  lower = std::max(0.0, outsideDistance(parts, q));  // exact where q is outside the union
-  const double walked = unionBoundaryDistance(parts, q, normal, size) + r;
-  if (n.norm() > 0) return std::min(walked, exitThroughFace(parts, t, q, normal, size));
-  return walked;
+  const double out = outsideDistance(parts, q);  // exact where q is outside the union
+  lower = out >= 0 ? out : std::max(0.0, -nearestSigned);
+  // A triangle on a flat face of the union is proven by the exit through that face; the walks only where not.
+  const double exit = out < 0 && n.norm() > 0 ? exitThroughFace(parts, t, q, normal, size)
+                                              : std::numeric_limits<double>::infinity();
+  if (exit <= target) return exit;
+  return std::min(exit, unionBoundaryDistance(parts, q, out, normal, size, t.thorough) + r);
 }
 
 // Best first: the triangle of largest bound is split until it is acceptable or the budget is spent; the bound is
@@ -287,7 +311,7 @@ void meshToFit(const Surface& surface, const Union& parts, double target, Budget
   double lower = 0;
   const auto push = [&](Tri t) {
     double l = 0;
-    t.upper = boundTriangle(parts, t, surface.size, l);
+    t.upper = boundTriangle(parts, t, surface.size, target, l);
     lower = std::max(lower, l);
     heap.push(t);
   };
@@ -295,8 +319,18 @@ void meshToFit(const Surface& surface, const Union& parts, double target, Budget
     push({surface.vertices[tri[0]], surface.vertices[tri[1]], surface.vertices[tri[2]], 0, 0});
   while (!heap.empty()) {
     const Tri t = heap.top();
-    if (acceptable(t.upper, target, lower) || t.depth >= kMaxDepth || !budget.take(4)) break;
+    if (acceptable(t.upper, target, lower) || t.depth >= kMaxDepth) break;
     heap.pop();
+    if (!t.thorough && parts.size() > 1) {  // the other walks first, for the few triangles that decide the bound
+      Tri again = t;
+      again.thorough = true;
+      push(again);
+      continue;
+    }
+    if (!budget.take(4)) {
+      heap.push(t);
+      break;
+    }
     const Vec3d ab = (t.a + t.b) / 2, bc = (t.b + t.c) / 2, ca = (t.c + t.a) / 2;
     const int d = t.depth + 1;
     push({t.a, ab, ca, d, 0});

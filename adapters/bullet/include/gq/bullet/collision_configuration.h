@@ -11,6 +11,8 @@
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 
+#include "gq/fit.h"
+
 namespace gq::bullet {
 
 class CollisionConfiguration : public btDefaultCollisionConfiguration {
@@ -32,9 +34,14 @@ class CollisionConfiguration : public btDefaultCollisionConfiguration {
   // multi-sphere against each other, and against static planes, BVH triangle meshes (also scaled) and heightfields.
   static bool routesToGq(int proxyType0, int proxyType1);
 
+  // Opt-in, off by default (null): btGImpactMeshShape sides answered by their gq::fitShape fit under these settings
+  // (a compound of the fit's parts, fitted once per mesh; docs/bullet.md). Read when a pair's algorithm is created.
+  const FitOptions<double>* meshFitting = nullptr;
+
  private:
   btCollisionAlgorithmCreateFunc* contactCreateFunc_;
   btCollisionAlgorithmCreateFunc* closestPointsCreateFunc_;
+  btCollisionAlgorithmCreateFunc* fittedMeshCreateFunc_[2];  // contacts, closest points
 };
 
 // A btCollisionDispatcher over any configuration. Nothing is overridden: registerCollisionCreateFunc and
