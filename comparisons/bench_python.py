@@ -8,13 +8,21 @@
            difference is the Python overhead of a call.
 
 Usage: PYTHONPATH=<build>/python /usr/bin/python3 comparisons/bench_python.py [--csv comparisons/results/python.csv]
-Medians of --repeats runs; the CSV gets one row per figure with the date, machine, commit and load average.
+Medians of --repeats runs; the CSV gets one row per figure with the date, machine, commit and load average. Writing
+keeps the CSV's instruction rows (unit "instructions"); --instructions re-measures the ray row with callgrind:
+instructions a ray = (I refs of a process casting 40000 rays - one casting 20000, the same rays) / 20000, for
+intersects_first and for the C++ call that times the batch (PYTHONHASHSEED fixed, so both processes do the same
+setup work).
 """
 
 import argparse
 import os
+import csv
+import re
 import statistics
+import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -75,6 +83,45 @@ def bench_rays(n, repeats):
     return name, len(f), statistics.median(py_times), statistics.median(cpp_times), hits
 
 
+def rays_for_instructions():
+    """The bunny (or icosphere), its cooked intersector and 40000 rays, as bench_rays draws them."""
+    shared = os.environ.get("GQ_SHARED_DIR") or os.path.join(HERE, "..", "..", "shared")
+    bunny = os.path.join(shared, "meshes", "stanford-bunny.obj")
+    v, f = load_obj(bunny) if os.path.exists(bunny) else icosphere(5)
+    rng = np.random.default_rng(1)
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    origins = rng.uniform(lo - (hi - lo) * 0.25, hi + (hi - lo) * 0.25, (40000, 3))
+    dirs = rng.normal(size=(40000, 3)) * 2.5
+    unit = dirs / np.linalg.norm(dirs, axis=1)[:, None]
+    mesh = Mesh(v, f)
+    ray = gtm.RayMeshIntersector(mesh)
+    ray.intersects_first(origins[:10], dirs[:10])
+    cooked = gtm.cooked_mesh(mesh).mesh
+    gq._geomquery._time_raycast_batch_faces(origins[:10], unit[:10], cooked, 0)
+    return ray, cooked, origins, dirs, unit
+
+
+def cast_once(side, n):
+    """The process callgrind counts: the setup, then one call on the first n rays."""
+    ray, cooked, origins, dirs, unit = rays_for_instructions()
+    if side == "python":
+        ray.intersects_first(origins[:n], dirs[:n])
+    else:
+        gq._geomquery._time_raycast_batch_faces(origins[:n], unit[:n], cooked, 0)
+
+
+def ray_instructions():
+    """Callgrind instructions a ray: (python, c++)."""
+    def refs(side, n):
+        with tempfile.TemporaryDirectory() as tmp:
+            env = dict(os.environ, PYTHONHASHSEED="0")
+            run = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + os.path.join(tmp, "cg"),
+                                  sys.executable, os.path.abspath(__file__), "--cast-once", side, str(n)],
+                                 env=env, capture_output=True, text=True, check=True)
+            return int(re.search(r"Collected : (\d+)", run.stderr).group(1))
+    return tuple((refs(side, 40000) - refs(side, 20000)) / 20000 for side in ("python", "cpp"))
+
+
 def bench_overlap(calls, repeats):
     sphere, box = gq.Sphere(0.5), gq.Box((1.0, 1.0, 1.0))
     p0, p1 = gq.Pose((1.2, 0.3, 0.0)), gq.Pose()
@@ -101,7 +148,11 @@ def main():
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--csv", help="append the figures to this CSV (written with a header if new)")
     parser.add_argument("--note", default="", help="a note for every row (e.g. the machine's load)")
+    parser.add_argument("--instructions", action="store_true", help="re-measure the ray instruction row (callgrind)")
+    parser.add_argument("--cast-once", nargs=2, metavar=("SIDE", "N"), help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.cast_once:
+        return cast_once(args.cast_once[0], int(args.cast_once[1]))
 
     name, tris, py_s, cpp_s, hits = bench_rays(args.rays, args.repeats)
     py_ns, cpp_ns, loop_ns = bench_overlap(args.calls, args.repeats)
@@ -117,6 +168,21 @@ def main():
     print("%-26s %12s %12s %6s %7s  %s" % ("figure", "python", "c++", "unit", "ratio", "what"))
     for fig, what, py_v, cpp_v, unit, ratio in rows:
         print("%-26s %12.2f %12.2f %6s %7.3f  %s" % (fig, py_v, cpp_v, unit, ratio, what))
+    instruction_rows = []
+    if args.csv and os.path.exists(args.csv):
+        with open(args.csv) as f:
+            instruction_rows = [r for r in csv.DictReader(f) if r.get("unit") == "instructions"]
+    if args.instructions:
+        py_i, cpp_i = ray_instructions()
+        print("%-26s %12.0f %12.0f %6s %7.3f" % ("intersects_first_ray_instr", py_i, cpp_i, "instr", py_i / cpp_i))
+        ray_row = dict(results_csv.run_columns(), load_1min="", figure="intersects_first_ray_instructions",
+                       python="%.0f" % py_i, cpp="%.0f" % cpp_i, unit="instructions",
+                       ratio_python_vs_cpp="%.3f" % (py_i / cpp_i),
+                       what="callgrind, per ray: (I refs at 40000 rays - at 20000) / 20000, %s, the same rays; c++ = "
+                            "the whole _time_raycast_batch_faces call (its input copy and result buffers included)"
+                            % name,
+                       note="instruction counts do not depend on the load")
+        instruction_rows = [ray_row] + [r for r in instruction_rows if r["figure"] != ray_row["figure"]]
     if args.csv:
         header = ["date", "machine", "commit", "load_1min", "figure", "python", "cpp", "unit", "ratio_python_vs_cpp",
                   "what", "note"]
@@ -124,7 +190,7 @@ def main():
         results_csv.write(args.csv, header, [
             dict(cols, load_1min="%.1f" % load, figure=fig, python="%.2f" % py_v, cpp="%.2f" % cpp_v, unit=unit,
                  ratio_python_vs_cpp="%.3f" % ratio, what=what, note=args.note)
-            for fig, what, py_v, cpp_v, unit, ratio in rows])
+            for fig, what, py_v, cpp_v, unit, ratio in rows] + instruction_rows)
 
 if __name__ == "__main__":
     sys.exit(main())

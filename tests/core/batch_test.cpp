@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <string>
 
 #include "scene_test_support.h"
 
@@ -91,6 +92,95 @@ TYPED_TEST(Batch, RaysAgainstOneMeshEqualSingleRaycastsForAnyThreadCount) {
       }
     }
     EXPECT_GT(hitCount, rays.size() / 4);
+  }
+}
+
+// A prepared icosphere mesh of radius 1.
+template <class T> Shape<T> icosphereShape() {
+  const auto ico = meshtest::icosphere<T>(2);
+  Shape<T> mesh;
+  EXPECT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles)), mesh).ok());
+  return mesh;
+}
+
+TYPED_TEST(Batch, HitColumnsHoldTheClosestHitsFieldByField) {
+  using T = TypeParam;
+  Rng rng(66);
+  const Shape<T> mesh = icosphereShape<T>();
+  auto rays = randomRays<T>(rng, 500, 3);
+  rays[3].origin.x() = T(0);
+  rays[5].dir.normalize();
+  const RayBatch<T> batch = rayBatch(rays, T(10));
+  std::vector<RaycastHit<T>> hits(rays.size());
+  std::vector<std::uint8_t> has(rays.size(), 0);
+  ASSERT_TRUE(raycastBatch(batch, mesh, Transform<T>(), hits.data(), has.data()).ok());
+  std::vector<std::uint8_t> hit(rays.size(), 7);
+  std::vector<T> distance(rays.size()), position(3 * rays.size()), normal(3 * rays.size());
+  std::vector<std::int64_t> face(rays.size());
+  RayHitColumns<T> columns;
+  columns.hit = hit.data();
+  columns.distance = distance.data();
+  columns.position = position.data();
+  columns.normal = normal.data();
+  columns.faceIndex = face.data();
+  ASSERT_TRUE(raycastBatch(batch, mesh, Transform<T>(), columns).ok());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    ASSERT_EQ(hit[i], has[i]) << i;
+    if (has[i]) {
+      EXPECT_EQ(distance[i], hits[i].distance);
+      EXPECT_EQ(Vec3<T>(position[3 * i], position[3 * i + 1], position[3 * i + 2]), hits[i].position);
+      EXPECT_EQ(Vec3<T>(normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]), hits[i].normal);
+      EXPECT_EQ(face[i], std::int64_t(hits[i].faceIndex));
+    } else {
+      EXPECT_EQ(distance[i], std::numeric_limits<T>::infinity());
+      EXPECT_EQ(face[i], -1);
+      EXPECT_EQ(position[3 * i], T(0));
+    }
+  }
+  // Only the columns asked for are written.
+  RayHitColumns<T> facesOnly;
+  std::vector<std::int64_t> face2(rays.size(), 9);
+  facesOnly.faceIndex = face2.data();
+  ASSERT_TRUE(raycastBatch(batch, mesh, Transform<T>(), facesOnly).ok());
+  EXPECT_EQ(face2, face);
+}
+
+TYPED_TEST(Batch, NormalizedDirectionsAreDividedByTheirLengthAndZeroLengthFailsItsItem) {
+  using T = TypeParam;
+  Rng rng(67);
+  const Shape<T> mesh = icosphereShape<T>();
+  std::vector<Vec3<T>> origins, raw, unit;
+  for (int i = 0; i < 400; ++i) {
+    origins.push_back(rng.inBox<T>(3));
+    raw.push_back(rng.unitVector<T>() * T(0.01 + 50.0 * double(i % 7)));
+    const Vec3<T>& d = raw.back();
+    const T length = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
+    unit.emplace_back(d.x() / length, d.y() / length, d.z() / length);
+  }
+  raw[9] = Vec3<T>::Zero();
+  unit[9] = Vec3<T>::UnitX();
+  for (const BatchSettings& settings : kSettings) {
+    RayBatch<T> batch;
+    batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
+    batch.unitDirs = StridedArray<Vec3<T>>(raw.data(), raw.size());
+    batch.maxDist = T(10);
+    batch.normalizeDirections = true;
+    std::vector<std::int64_t> got(origins.size(), 5), expected(origins.size(), 5);
+    std::vector<Status> statuses(origins.size());
+    RayHitColumns<T> out;
+    out.faceIndex = got.data();
+    const Status s = raycastBatch(batch, mesh, Transform<T>(), out, statuses.data(), settings);
+    EXPECT_EQ(s.code, StatusCode::Warning);
+    EXPECT_EQ(s.index(), 1u);
+    EXPECT_EQ(statuses[9].code, StatusCode::InvalidArgument);
+    EXPECT_NE(std::string(statuses[9].message()).find("zero-length"), std::string::npos);
+    EXPECT_EQ(got[9], 5) << "the failed item is untouched";
+    batch.unitDirs = StridedArray<Vec3<T>>(unit.data(), unit.size());
+    batch.normalizeDirections = false;
+    out.faceIndex = expected.data();
+    ASSERT_TRUE(raycastBatch(batch, mesh, Transform<T>(), out, nullptr, settings).ok());
+    got[9] = expected[9];
+    EXPECT_EQ(got, expected);
   }
 }
 

@@ -43,6 +43,45 @@ def test_ray_batch_equals_single_rays(dtype):
 
 
 @pytest.mark.parametrize("dtype", DTYPES)
+def test_normalizing_ray_batches_equal_numpy_normalized_rays(dtype):
+    v, f = icosphere(2)
+    mesh = gq.TriangleMesh(v.astype(dtype), f)
+    rng = np.random.default_rng(9)
+    origins = rng.uniform(-2, 2, (400, 3)).astype(dtype)
+    dirs = (rng.normal(size=(400, 3)) * rng.uniform(1e-3, 1e3, (400, 1))).astype(dtype)
+    unit = dirs / np.linalg.norm(dirs, axis=1)[:, None]  # what the batch computes, bit for bit
+    expected = gq.raycast_batch(origins, unit, mesh, both_sides=True)
+    got = gq.raycast_batch(origins, dirs, mesh, both_sides=True, normalize=True)
+    assert all(np.array_equal(a, b) for a, b in zip(got, expected))
+    assert np.array_equal(gq.raycast_batch_faces(origins, dirs, mesh, both_sides=True, normalize=True), expected[4])
+    scene = gq.Scene(dtype=dtype)
+    scene.add(3, mesh)
+    assert all(np.array_equal(a, b) for a, b in zip(scene.raycast_batch(origins, dirs, normalize=True),
+                                                     scene.raycast_batch(origins, unit)))
+    assert all(np.array_equal(a, b) for a, b in zip(scene.raycast_all_batch(origins, dirs, normalize=True),
+                                                     scene.raycast_all_batch(origins, unit)))
+
+
+def test_normalizing_ray_batches_reject_zero_length_directions():
+    mesh = gq.TriangleMesh(*cube_mesh())
+    origins = np.zeros((5, 3)) - 5
+    dirs = np.tile([2.0, 0.0, 0.0], (5, 1))
+    dirs[3] = 0.0
+    for call in (lambda: gq.raycast_batch(origins, dirs, mesh, normalize=True),
+                 lambda: gq.raycast_batch_faces(origins, dirs, mesh, normalize=True),
+                 lambda: gq.raycast_batch_faces(origins, dirs, gq.Sphere(1.0), normalize=True)):
+        with pytest.raises(ValueError, match="item 3.*zero-length"):
+            call()
+    scene = gq.Scene()
+    scene.add(0, mesh)
+    with pytest.raises(ValueError, match="item 3.*zero-length"):
+        scene.raycast_all_batch(origins, dirs, normalize=True)
+    # Without normalize, a non-unit direction is the item's error, as in the single raycast.
+    with pytest.raises(ValueError, match="item 0"):
+        gq.raycast_batch(origins, dirs, mesh)
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
 def test_pose_batches_equal_single_queries(dtype):
     rng = np.random.default_rng(7)
     box = gq.Box((0.5, 0.7, 0.3), dtype=dtype)

@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+import geomquery as gq
 import geomquery.trimesh as gtm
 from conftest import brute_point_distance, brute_rays, cube_mesh, icosphere
 
@@ -87,6 +88,23 @@ def test_cooked_once_and_shared():
     ray = gtm.RayMeshIntersector(a)
     ray.intersects_first(np.zeros((1, 3)), np.ones((1, 3)))
     assert ray._cooked is gtm.ProximityQuery(b)._gq
+
+
+def test_rays_of_any_layout_answer_as_normalized_contiguous_rays(sphere):
+    ray = gtm.RayMeshIntersector(sphere)
+    origins, dirs = rays(300, seed=6)
+    unit = np.ascontiguousarray(dirs / np.linalg.norm(dirs, axis=1)[:, None])
+    expected = gq.raycast_batch_faces(origins, unit, gtm.cooked_mesh(sphere).mesh, None, float("inf"), True)
+    assert np.array_equal(ray.intersects_first(origins, dirs), expected)
+    both = np.hstack([origins, dirs])
+    assert np.array_equal(ray.intersects_first(both[:, :3], both[:, 3:]), expected)  # row-strided views
+    assert np.array_equal(ray.intersects_first(np.asfortranarray(origins), np.asfortranarray(dirs)), expected)
+    assert np.array_equal(ray.intersects_first(origins[::-1], dirs[::-1]), expected[::-1])
+    assert np.array_equal(ray.intersects_first(origins.tolist(), dirs.tolist()), expected)
+    o32, d32 = origins.astype(np.float32), dirs.astype(np.float32)
+    unit32 = o32.astype(np.float64), d32 / np.linalg.norm(d32.astype(np.float64), axis=1)[:, None]
+    assert np.array_equal(ray.intersects_first(o32, d32),
+                          gq.raycast_batch_faces(*unit32, gtm.cooked_mesh(sphere).mesh, None, float("inf"), True))
 
 
 def test_bad_inputs_raise():

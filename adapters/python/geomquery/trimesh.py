@@ -102,17 +102,25 @@ def cooked_mesh(mesh):
     return cooked
 
 
+def _float64_rows(array):
+    """``array`` as float64 rows gq reads in place (a contiguous last axis, rows stored forward): no copy when it
+    already is one, e.g. a C-ordered float64 array or a row-strided view of one."""
+    array = np.asarray(array, dtype=np.float64)
+    if array.ndim == 2 and not (array.strides[1] == 8 and array.strides[0] > 0 and array.flags.aligned):
+        array = np.ascontiguousarray(array)
+    return array
+
+
 def _rays(ray_origins, ray_directions):
-    origins = np.ascontiguousarray(ray_origins, dtype=np.float64)
-    directions = np.asarray(ray_directions, dtype=np.float64)
+    """Origins and directions as float64 (n, 3) rows; the directions are normalised by the batch (normalize=True),
+    which raises ValueError for a zero-length one."""
+    origins = _float64_rows(ray_origins)
+    directions = _float64_rows(ray_directions)
     if origins.ndim != 2 or origins.shape[1] != 3:
         raise ValueError("ray_origins: expected shape (n, 3), got %s" % (origins.shape,))
     if directions.shape != origins.shape:
         raise ValueError("ray_directions: expected shape %s, got %s" % (origins.shape, directions.shape))
-    length = np.linalg.norm(directions, axis=1)
-    if np.any(length == 0):
-        raise ValueError("ray_directions: zero-length direction (ray %d)" % int(np.argmin(length)))
-    return origins, np.ascontiguousarray(directions / length[:, None])
+    return origins, directions
 
 
 class RayMeshIntersector:
@@ -131,7 +139,7 @@ class RayMeshIntersector:
     def intersects_first(self, ray_origins, ray_directions, **kwargs):
         """Index of the first triangle each ray hits, -1 on a miss: (n,) int64."""
         origins, directions = _rays(ray_origins, ray_directions)
-        return _gq.raycast_batch_faces(origins, directions, self._gq.mesh, None, float("inf"), True)
+        return _gq.raycast_batch_faces(origins, directions, self._gq.mesh, None, float("inf"), True, 0, True)
 
     def intersects_any(self, ray_origins, ray_directions, **kwargs):
         """Whether each ray hits the mesh: (n,) bool."""
@@ -145,13 +153,13 @@ class RayMeshIntersector:
         cooked = self._gq
         if not multiple_hits or max_hits == 1:
             hit, distance, position, _, face = _gq.raycast_batch(origins, directions, cooked.mesh, None,
-                                                                  float("inf"), True)
+                                                                  float("inf"), True, 0, True)
             index_ray = np.nonzero(hit)[0].astype(np.int64)
             index_tri = face[index_ray]
             locations = position[index_ray]
         else:
             index_ray, _, _, locations, index_tri = cooked.scene.raycast_all_batch(
-                origins, directions, float("inf"), int(max_hits), True
+                origins, directions, float("inf"), int(max_hits), True, normalize=True
             )
         if return_locations:
             return index_tri, index_ray, locations

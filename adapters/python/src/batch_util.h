@@ -15,6 +15,7 @@ template <class T> gq::StridedArray<gq::Vec3<T>> strided(const py::array_t<T>& r
 }
 
 // A batch of rays over (N, 3) origin and direction rows; the rows are held here, so the batch's views stay valid.
+// normalize: directions of any non-zero length, normalized by the batch on its threads (RayBatch::normalizeDirections).
 template <class T> struct RayRows {
   py::array_t<T> origins, dirs;
   gq::RayBatch<T> batch;
@@ -23,7 +24,7 @@ template <class T> struct RayRows {
 
 template <class T>
 RayRows<T> rayRows(const py::handle& origins, const py::handle& dirs, double maxDistance, gq::HitFlags flags,
-                   const char* what) {
+                   bool normalize, const char* what) {
   RayRows<T> r;
   r.origins = rowsArray<T>(origins, 3, "origins");
   r.dirs = rowsArray<T>(dirs, 3, "directions");
@@ -35,6 +36,7 @@ RayRows<T> rayRows(const py::handle& origins, const py::handle& dirs, double max
   r.batch.unitDirs = strided(r.dirs);
   r.batch.maxDist = T(maxDistance);
   r.batch.hitFlags = flags;
+  r.batch.normalizeDirections = normalize;
   return r;
 }
 

@@ -20,60 +20,48 @@ template <class Fn> py::object byGeometry(const GeometryObject& g, Fn&& fn) {
 
 template <class T> py::array_t<T> vec3Out(std::size_t n) { return newArray<T>({py::ssize_t(n), 3}); }
 
+// Closest hit of each ray, written by the batch straight into the numpy arrays (gq::RayHitColumns).
 template <class T>
 py::tuple raycastBatch(const GeometryObject& g, const py::handle& origins, const py::handle& dirs, const py::handle& p,
-                       double maxDistance, bool bothSides, std::uint32_t threads) {
+                       double maxDistance, bool bothSides, std::uint32_t threads, bool normalize) {
   gq::HitFlags flags = gq::kDefaultHitFlags;
   if (bothSides) flags |= gq::HitFlag::MeshBothSides;
-  const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, "raycast_batch");
-  const gq::RayBatch<T>& rays = r.batch;
+  const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, normalize, "raycast_batch");
   const std::size_t n = r.count;
   const gq::Transform<T> tf = pose<T>(p, "pose");
-  std::vector<gq::RaycastHit<T>> hits(n);
   auto has = newArray<bool>({py::ssize_t(n)});
-  auto* hasPtr = reinterpret_cast<std::uint8_t*>(has.mutable_data());
-  std::fill(hasPtr, hasPtr + n, std::uint8_t(0));
-  runBatch([&](gq::Status* st) { return gq::raycastBatch(rays, g.shape<T>(), tf, hits.data(), hasPtr, st, batchSettings(threads)); },
-           n, "raycast_batch");
-  rethrowCallbackError(g);
   auto dist = newArray<T>({py::ssize_t(n)});
   auto pos = vec3Out<T>(n), nrm = vec3Out<T>(n);
   auto face = newArray<std::int64_t>({py::ssize_t(n)});
-  T* dp = dist.mutable_data();
-  T* pp = pos.mutable_data();
-  T* np_ = nrm.mutable_data();
-  std::int64_t* fp = face.mutable_data();
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool h = hasPtr[i] != 0;
-    dp[i] = h ? hits[i].distance : std::numeric_limits<T>::infinity();
-    for (int k = 0; k < 3; ++k) {
-      pp[3 * i + k] = h ? hits[i].position[k] : T(0);
-      np_[3 * i + k] = h ? hits[i].normal[k] : T(0);
-    }
-    fp[i] = h && hits[i].faceIndex != gq::kInvalidFaceIndex ? std::int64_t(hits[i].faceIndex) : -1;
-  }
+  gq::RayHitColumns<T> out;
+  out.hit = reinterpret_cast<std::uint8_t*>(has.mutable_data());
+  out.distance = dist.mutable_data();
+  out.position = pos.mutable_data();
+  out.normal = nrm.mutable_data();
+  out.faceIndex = face.mutable_data();
+  runBatch([&](gq::Status* st) { return gq::raycastBatch(r.batch, g.shape<T>(), tf, out, st, batchSettings(threads)); },
+           n, "raycast_batch");
+  rethrowCallbackError(g);
   return py::make_tuple(has, dist, pos, nrm, face);
 }
 
-// The face index of each ray's closest hit (-1: a miss or a shape without faces); only FaceIndex is asked for.
+// The face index of each ray's closest hit (-1: a miss or a shape without faces); only FaceIndex is asked for, and
+// the batch writes the int64 array directly.
 template <class T>
 py::array_t<std::int64_t> raycastFaces(const GeometryObject& g, const py::handle& origins, const py::handle& dirs,
-                                       const py::handle& p, double maxDistance, bool bothSides, std::uint32_t threads) {
+                                       const py::handle& p, double maxDistance, bool bothSides, std::uint32_t threads,
+                                       bool normalize) {
   gq::HitFlags flags = gq::HitFlags(gq::HitFlag::FaceIndex);
   if (bothSides) flags |= gq::HitFlag::MeshBothSides;
-  const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, "raycast_batch_faces");
-  const gq::RayBatch<T>& rays = r.batch;
+  const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, normalize, "raycast_batch_faces");
   const std::size_t n = r.count;
   const gq::Transform<T> tf = pose<T>(p, "pose");
-  std::vector<gq::RaycastHit<T>> hits(n);
-  std::vector<std::uint8_t> has(n, 0);
-  runBatch([&](gq::Status* st) { return gq::raycastBatch(rays, g.shape<T>(), tf, hits.data(), has.data(), st, batchSettings(threads)); },
+  auto face = newArray<std::int64_t>({py::ssize_t(n)});
+  gq::RayHitColumns<T> out;
+  out.faceIndex = face.mutable_data();
+  runBatch([&](gq::Status* st) { return gq::raycastBatch(r.batch, g.shape<T>(), tf, out, st, batchSettings(threads)); },
            n, "raycast_batch_faces");
   rethrowCallbackError(g);
-  auto face = newArray<std::int64_t>({py::ssize_t(n)});
-  std::int64_t* fp = face.mutable_data();
-  for (std::size_t i = 0; i < n; ++i)
-    fp[i] = has[i] && hits[i].faceIndex != gq::kInvalidFaceIndex ? std::int64_t(hits[i].faceIndex) : -1;
   return face;
 }
 
@@ -100,7 +88,7 @@ void bindBatches(py::module_& m) {
           if (g.f32) throw py::type_error("_time_raycast_batch_faces: float64 geometry expected");
           const RayRows<double> r =
               rayRows<double>(origins, dirs, std::numeric_limits<double>::infinity(),
-                              gq::HitFlag::FaceIndex | gq::HitFlag::MeshBothSides, "_time_raycast_batch_faces");
+                              gq::HitFlag::FaceIndex | gq::HitFlag::MeshBothSides, false, "_time_raycast_batch_faces");
           const gq::RayBatch<double>& rays = r.batch;
           const std::size_t n = r.count;
           std::vector<gq::RaycastHit<double>> hits(n);
@@ -129,25 +117,31 @@ void bindBatches(py::module_& m) {
 
   m.def("raycast_batch",
         [](const py::handle& origins, const py::handle& dirs, const GeometryObject& g, const py::handle& p,
-           double maxDistance, bool bothSides, std::uint32_t threads) {
+           double maxDistance, bool bothSides, std::uint32_t threads, bool normalize) {
           return byGeometry(g, [&](auto t) {
-            return py::object(raycastBatch<decltype(t)>(g, origins, dirs, p, maxDistance, bothSides, threads));
+            return py::object(
+                raycastBatch<decltype(t)>(g, origins, dirs, p, maxDistance, bothSides, threads, normalize));
           });
         },
         py::arg("origins"), py::arg("directions"), py::arg("geometry"), py::arg("pose") = py::none(),
         py::arg("max_distance") = kInf, py::arg("both_sides") = false, py::arg("threads") = 0,
+        py::arg("normalize") = false,
         "Closest hit of each ray (N, 3) along unit directions (N, 3): (hit (N,) bool, distance (N,) (inf on a miss),"
-        " position (N, 3), normal (N, 3), face_index (N,) int64 (-1: none)).");
+        " position (N, 3), normal (N, 3), face_index (N,) int64 (-1: none)). normalize: the directions may have any"
+        " non-zero length (each is divided by its length in the batch).");
   m.def("raycast_batch_faces",
         [](const py::handle& origins, const py::handle& dirs, const GeometryObject& g, const py::handle& p,
-           double maxDistance, bool bothSides, std::uint32_t threads) {
+           double maxDistance, bool bothSides, std::uint32_t threads, bool normalize) {
           return byGeometry(g, [&](auto t) {
-            return py::object(raycastFaces<decltype(t)>(g, origins, dirs, p, maxDistance, bothSides, threads));
+            return py::object(
+                raycastFaces<decltype(t)>(g, origins, dirs, p, maxDistance, bothSides, threads, normalize));
           });
         },
         py::arg("origins"), py::arg("directions"), py::arg("geometry"), py::arg("pose") = py::none(),
         py::arg("max_distance") = kInf, py::arg("both_sides") = false, py::arg("threads") = 0,
-        "Face index (N,) int64 of each ray's closest hit, -1 on a miss; computes nothing else.");
+        py::arg("normalize") = false,
+        "Face index (N,) int64 of each ray's closest hit, -1 on a miss; computes nothing else. normalize: as"
+        " raycast_batch.");
 
   m.def("overlap_batch",
         [](const GeometryObject& g0, const py::handle& poses0, const GeometryObject& g1, const py::handle& poses1,

@@ -207,10 +207,11 @@ void bindScene(py::module_& m) {
            py::arg("other") = nullptr, "(K, 2) uint64 ids of overlapping instance pairs, sorted.")
       .def("raycast_batch",
            [](PyScene& s, const py::handle& origins, const py::handle& dirs, double maxDistance, std::uint32_t mask,
-              std::uint32_t threads) {
+              std::uint32_t threads, bool normalize) {
              return s.with([&](auto& sc) {
                using T = ST<decltype(sc)>;
-               const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, gq::kDefaultHitFlags, "Scene.raycast_batch");
+               const RayRows<T> r =
+                   rayRows<T>(origins, dirs, maxDistance, gq::kDefaultHitFlags, normalize, "Scene.raycast_batch");
                const gq::RayBatch<T>& rays = r.batch;
                const std::size_t n = r.count;
                std::vector<gq::SceneRaycastHit<T>> hits(n);
@@ -240,17 +241,19 @@ void bindScene(py::module_& m) {
              });
            },
            py::arg("origins"), py::arg("directions"), py::arg("max_distance") = kInf, py::arg("mask") = 0xffffffffu,
-           py::arg("threads") = 0,
-           "Closest hit of each ray: (hit, id (-1: none), distance, position, normal, face_index).")
+           py::arg("threads") = 0, py::arg("normalize") = false,
+           "Closest hit of each ray: (hit, id (-1: none), distance, position, normal, face_index). normalize: the"
+           " directions may have any non-zero length.")
       .def("raycast_all_batch",
            [](PyScene& s, const py::handle& origins, const py::handle& dirs, double maxDistance, std::uint32_t maxHits,
-              bool bothSides, std::uint32_t mask, std::uint32_t threads) {
+              bool bothSides, std::uint32_t mask, std::uint32_t threads, bool normalize) {
              if (maxHits == 0) throw py::value_error("Scene.raycast_all_batch: max_hits must be >= 1");
              return s.with([&](auto& sc) {
                using T = ST<decltype(sc)>;
                gq::HitFlags flags = gq::kDefaultHitFlags | gq::HitFlag::MeshMultiple;
                if (bothSides) flags |= gq::HitFlag::MeshBothSides;
-               const RayRows<T> r = rayRows<T>(origins, dirs, maxDistance, flags, "Scene.raycast_all_batch");
+               const RayRows<T> r =
+                   rayRows<T>(origins, dirs, maxDistance, flags, normalize, "Scene.raycast_all_batch");
                const gq::RayBatch<T>& rays = r.batch;
                const std::size_t n = r.count;
                const gq::SceneFilter filter = maskFilter(mask);
@@ -288,7 +291,9 @@ void bindScene(py::module_& m) {
            },
            py::arg("origins"), py::arg("directions"), py::arg("max_distance") = kInf, py::arg("max_hits") = 16,
            py::arg("both_sides") = false, py::arg("mask") = 0xffffffffu, py::arg("threads") = 0,
-           "Up to max_hits hits of each ray, sorted per ray: (ray_index, id, distance, position, face_index), flat.");
+           py::arg("normalize") = false,
+           "Up to max_hits hits of each ray, sorted per ray: (ray_index, id, distance, position, face_index), flat."
+           " normalize: the directions may have any non-zero length.");
 }
 
 }  // namespace gqpy

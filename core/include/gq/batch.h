@@ -73,6 +73,21 @@ template <class T> struct RayBatch {
   StridedArray<Vec3<T>> unitDirs;
   T maxDist = T(0);
   HitFlags hitFlags = kDefaultHitFlags;
+  // true: unitDirs[i] may have any length; ray i runs along unitDirs[i] / sqrt(x*x + y*y + z*z) (summed in that
+  // order, divided per coordinate: numpy's `d / np.linalg.norm(d, axis=1)[:, None]`, bit for bit). A zero-length
+  // direction fails its item with InvalidArgument; a NaN or infinite one fails as the single raycast does.
+  bool normalizeDirections = false;
+};
+
+// Each ray's closest hit written field by field into caller arrays (numpy-style columns, entry i for ray i); a null
+// pointer skips its field. A miss writes hit 0, distance +inf, position and normal 0, faceIndex -1. A failed ray
+// leaves its entries untouched.
+template <class T> struct RayHitColumns {
+  std::uint8_t* hit = nullptr;         // 1: hit, 0: miss
+  T* distance = nullptr;
+  T* position = nullptr;               // 3 T per ray (x, y, z)
+  T* normal = nullptr;                 // 3 T per ray
+  std::int64_t* faceIndex = nullptr;   // -1: a miss, or a hit on a shape without faces
 };
 
 // Closest hit of each ray against one shape: raycast(..., maxHits 1). hasHit[i] says whether hits[i] was written.
@@ -82,6 +97,12 @@ Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transf
 template <class T>
 Status raycastBatch(const RayBatch<T>& rays, const Geometry<T>& geometry, const Transform<T>& pose, RaycastHit<T>* hits,
                     std::uint8_t* hasHit, Status* statuses = nullptr, const BatchSettings& settings = {}) noexcept;
+
+// The same closest hits written into columns (RayHitColumns): no RaycastHit array in between.
+template <class T>
+Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose,
+                    const RayHitColumns<T>& out, Status* statuses = nullptr,
+                    const BatchSettings& settings = {}) noexcept;
 
 // Closest hit of each ray in a scene: Scene::raycastClosest per ray (a Warning of one ray is its Status).
 template <class T>

@@ -11,8 +11,10 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <exception>
+#include <limits>
 #include <new>
 #include <vector>
 
@@ -96,30 +98,99 @@ inline bool record(Status* statuses, std::size_t i, Status&& s) {
   return ok;
 }
 
+// Ray i's direction: unitDirs[i], or, when the batch normalizes, unitDirs[i] over its length (numpy's norm and
+// division, bit for bit) stored in `scratch`. Null for a zero length.
+template <class T> const Vec3<T>* rayDirection(const RayBatch<T>& rays, std::size_t i, Vec3<T>& scratch) {
+  const Vec3<T>& d = rays.unitDirs[i];
+  if (!rays.normalizeDirections) return &d;
+  const T length = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
+  if (length == T(0)) return nullptr;
+  scratch = Vec3<T>(d.x() / length, d.y() / length, d.z() / length);
+  return &scratch;
+}
+
+Status zeroLengthDirection() { return Status::invalid("zero-length ray direction (it cannot be normalized)"); }
+
+// Where a batch puts ray i's closest hit: slot(i, local) is where the kernel writes a hit (Local: the storage the
+// output needs per ray), store() finishes the entry from the hit written there or elsewhere.
+// The caller's RaycastHit array: the kernel writes into it directly.
+template <class T> struct HitArrayOut {
+  struct Local {};
+  RaycastHit<T>* hits;
+  std::uint8_t* hasHit;
+  RaycastHit<T>* slot(std::size_t i, Local&) const { return hits + i; }
+  void store(std::size_t i, std::uint32_t count, const RaycastHit<T>& h) const {
+    if (count > 0 && &h != hits + i) hits[i] = h;
+    hasHit[i] = count > 0 ? 1 : 0;
+  }
+};
+
+// Columns (RayHitColumns): the kernel writes into a local hit, copied field by field.
+template <class T> struct HitColumnsOut {
+  using Local = RaycastHit<T>;
+  const RayHitColumns<T>& columns;
+  RaycastHit<T>* slot(std::size_t, Local& local) const { return &local; }
+  void store(std::size_t i, std::uint32_t count, const RaycastHit<T>& h) const {
+    const bool hit = count > 0;
+    if (columns.hit) columns.hit[i] = hit ? 1 : 0;
+    if (columns.distance) columns.distance[i] = hit ? h.distance : std::numeric_limits<T>::infinity();
+    for (int k = 0; k < 3; ++k) {
+      if (columns.position) columns.position[3 * i + std::size_t(k)] = hit ? h.position[k] : T(0);
+      if (columns.normal) columns.normal[3 * i + std::size_t(k)] = hit ? h.normal[k] : T(0);
+    }
+    if (columns.faceIndex)
+      columns.faceIndex[i] = hit && h.faceIndex != kInvalidFaceIndex ? std::int64_t(h.faceIndex) : std::int64_t(-1);
+  }
+};
+
 // The rays of a batch against a mesh shape whose pose, maxDist and flags passed the façade's checks: the mesh frame
 // and the node test are found once (detail::TriangleMeshRays), each ray takes the façade's own checks and then the
 // kernel of the single raycast, so its hit and Status are the single query's bit for bit. A ray failing its checks
 // takes the single query, whose Status names the problem.
-template <class T>
-std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose,
-                             RaycastHit<T>* hits, std::uint8_t* hasHit, Status* statuses,
-                             const BatchSettings& settings) {
+template <class T, class Out>
+std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, const Out& out,
+                             Status* statuses, const BatchSettings& settings) {
   const detail::TriangleMeshRays<T> mesh(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose);
   return runItems(rays.origins.count, settings, [&](std::size_t i) {
+    Vec3<T> scratch;
+    const Vec3<T>* dir = rayDirection(rays, i, scratch);
+    if (dir == nullptr) return record(statuses, i, zeroLengthDirection());
     const Vec3<T>& origin = rays.origins[i];
-    const Vec3<T>& dir = rays.unitDirs[i];
     std::uint32_t count = 0;
-    if (detail::rayIsValid(origin, dir, pose.p)) {
-      count = mesh.cast(detail::rayQuery(origin, dir, rays.maxDist, rays.hitFlags, 1u), hits + i);  // written on a hit
+    if (detail::rayIsValid(origin, *dir, pose.p)) {
+      typename Out::Local local;
+      RaycastHit<T>* slot = out.slot(i, local);
+      count = mesh.cast(detail::rayQuery(origin, *dir, rays.maxDist, rays.hitFlags, 1u), slot);  // written on a hit
+      out.store(i, count, *slot);
     } else {
       RaycastHit<T> h;
-      Status s = raycast(origin, dir, shape, pose, rays.maxDist, rays.hitFlags, 1u, &h, count);
+      Status s = raycast(origin, *dir, shape, pose, rays.maxDist, rays.hitFlags, 1u, &h, count);
       if (!s.ok()) return record(statuses, i, std::move(s));
-      if (count > 0) hits[i] = h;
+      out.store(i, count, h);
     }
-    hasHit[i] = count > 0 ? 1 : 0;
     return record(statuses, i, Status());
   });
+}
+
+// Closest hits of a batch against one shape: the mesh items above, else the single raycast per ray.
+template <class T, class Out>
+Status raycastShapeBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, const Out& out,
+                         Status* statuses, const BatchSettings& settings) {
+  RaycastHit<T> probe;
+  if (shape.type() == GeometryType::TriangleMesh &&
+      detail::raySettingsAreValid(pose, rays.maxDist, rays.hitFlags, 1u, &probe)) {
+    return batchResult(raycastMeshItems(rays, shape, pose, out, statuses, settings));
+  }
+  return batchResult(runItems(rays.origins.count, settings, [&](std::size_t i) {
+    Vec3<T> scratch;
+    const Vec3<T>* dir = rayDirection(rays, i, scratch);
+    if (dir == nullptr) return record(statuses, i, zeroLengthDirection());
+    RaycastHit<T> h;
+    std::uint32_t count = 0;
+    Status s = raycast(rays.origins[i], *dir, shape, pose, rays.maxDist, rays.hitFlags, 1u, &h, count);
+    if (s.ok()) out.store(i, count, h);
+    return record(statuses, i, std::move(s));
+  }));
 }
 
 }  // namespace
@@ -129,23 +200,16 @@ Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transf
                     std::uint8_t* hasHit, Status* statuses, const BatchSettings& settings) noexcept {
   if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
   if (shape.empty()) return emptyShape();
-  const std::size_t n = rays.origins.count;
-  if (n > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
-  RaycastHit<T> probe;
-  if (shape.type() == GeometryType::TriangleMesh &&
-      detail::raySettingsAreValid(pose, rays.maxDist, rays.hitFlags, 1u, &probe)) {
-    return batchResult(raycastMeshItems(rays, shape, pose, hits, hasHit, statuses, settings));
-  }
-  return batchResult(runItems(n, settings, [&](std::size_t i) {
-    RaycastHit<T> h;
-    std::uint32_t count = 0;
-    Status s = raycast(rays.origins[i], rays.unitDirs[i], shape, pose, rays.maxDist, rays.hitFlags, 1u, &h, count);
-    if (s.ok()) {
-      hasHit[i] = count > 0 ? 1 : 0;
-      if (count > 0) hits[i] = h;
-    }
-    return record(statuses, i, std::move(s));
-  }));
+  if (rays.origins.count > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
+  return raycastShapeBatch(rays, shape, pose, HitArrayOut<T>{hits, hasHit}, statuses, settings);
+}
+
+template <class T>
+Status raycastBatch(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose,
+                    const RayHitColumns<T>& out, Status* statuses, const BatchSettings& settings) noexcept {
+  if (Status s = checkArrays(rays.origins, rays.unitDirs); !s.ok()) return s;
+  if (shape.empty()) return emptyShape();
+  return raycastShapeBatch(rays, shape, pose, HitColumnsOut<T>{out}, statuses, settings);
 }
 
 template <class T>
@@ -163,9 +227,12 @@ Status raycastBatch(const RayBatch<T>& rays, const Scene<T>& scene, SceneRaycast
   const std::size_t n = rays.origins.count;
   if (n > 0 && (hits == nullptr || hasHit == nullptr)) return nullOutput();
   return batchResult(runItems(n, settings, [&](std::size_t i) {
+    Vec3<T> scratch;
+    const Vec3<T>* dir = rayDirection(rays, i, scratch);
+    if (dir == nullptr) return record(statuses, i, zeroLengthDirection());
     SceneRaycastHit<T> h;
     bool has = false;
-    Status s = scene.raycastClosest(rays.origins[i], rays.unitDirs[i], rays.maxDist, h, has, rays.hitFlags, filter);
+    Status s = scene.raycastClosest(rays.origins[i], *dir, rays.maxDist, h, has, rays.hitFlags, filter);
     if (s.ok()) {
       hasHit[i] = has ? 1 : 0;
       if (has) hits[i] = h;
@@ -186,11 +253,13 @@ Status raycastAllBatch(const RayBatch<T>& rays, const Scene<T>& scene, std::uint
   constexpr std::uint32_t kLocal = 8;
   return batchResult(runItems(n, settings, [&](std::size_t i) {
     // The fill pass writes straight into the caller's array; the count pass into a local buffer.
+    Vec3<T> scratch;
+    const Vec3<T>* dir = rayDirection(rays, i, scratch);
+    if (dir == nullptr) return record(statuses, i, zeroLengthDirection());
     std::uint32_t count = 0;
     Status s;
     auto cast = [&](SceneRaycastHit<T>* dst) {
-      return scene.raycastAll(rays.origins[i], rays.unitDirs[i], rays.maxDist, rays.hitFlags, maxHitsPerRay, dst, count,
-                              filter);
+      return scene.raycastAll(rays.origins[i], *dir, rays.maxDist, rays.hitFlags, maxHitsPerRay, dst, count, filter);
     };
     if (out.offsets != nullptr) {
       s = cast(out.hits + out.offsets[i]);
@@ -266,6 +335,8 @@ Status pointDistanceBatch(StridedArray<Vec3<T>> points, const Shape<T>& shape, c
 
 template Status raycastBatch(const RayBatch<float>&, const Shape<float>&, const Transform<float>&, RaycastHit<float>*,
                              std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<float>&, const Shape<float>&, const Transform<float>&,
+                             const RayHitColumns<float>&, Status*, const BatchSettings&) noexcept;
 template Status raycastBatch(const RayBatch<float>&, const Geometry<float>&, const Transform<float>&,
                              RaycastHit<float>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
 template Status raycastBatch(const RayBatch<float>&, const Scene<float>&, SceneRaycastHit<float>*, std::uint8_t*,
@@ -285,6 +356,8 @@ template Status pointDistanceBatch(StridedArray<Vec3<float>>, const Shape<float>
                                    PointDistanceResult<float>*, Status*, const BatchSettings&) noexcept;
 template Status raycastBatch(const RayBatch<double>&, const Shape<double>&, const Transform<double>&,
                              RaycastHit<double>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
+template Status raycastBatch(const RayBatch<double>&, const Shape<double>&, const Transform<double>&,
+                             const RayHitColumns<double>&, Status*, const BatchSettings&) noexcept;
 template Status raycastBatch(const RayBatch<double>&, const Geometry<double>&, const Transform<double>&,
                              RaycastHit<double>*, std::uint8_t*, Status*, const BatchSettings&) noexcept;
 template Status raycastBatch(const RayBatch<double>&, const Scene<double>&, SceneRaycastHit<double>*, std::uint8_t*,
