@@ -4,3 +4,4 @@ add_executable(bench_fit ${CMAKE_CURRENT_LIST_DIR}/bench_fit.cpp)
 target_link_libraries(bench_fit PRIVATE gq::core gq::io CLI11::CLI11)
 target_compile_definitions(bench_fit PRIVATE GQ_SHARED_DIR="${GQ_SHARED_DIR}")
 target_compile_options(bench_fit PRIVATE -Wall -Wextra)
+target_include_directories(bench_fit PRIVATE ${PROJECT_SOURCE_DIR}/tests)  # generated_meshes.h

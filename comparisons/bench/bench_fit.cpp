@@ -17,6 +17,7 @@
 #include "gq/fit.h"
 #include "gq/io.h"
 #include "gq/query.h"
+#include "generated_meshes.h"
 
 namespace {
 
@@ -92,24 +93,7 @@ gq::MeshData<double> lShape() {
   return m;
 }
 
-// A (u, v) grid on a surface of revolution about Z: radius R + r cos v, height r sin v (a torus), or a UV sphere
-// (R = 0, poles collapsed to one vertex each).
-gq::MeshData<double> torus(double R, double r, std::uint32_t nu, std::uint32_t nv) {
-  gq::MeshData<double> m;
-  for (std::uint32_t i = 0; i < nu; ++i)
-    for (std::uint32_t j = 0; j < nv; ++j) {
-      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
-      m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
-    }
-  const auto at = [&](std::uint32_t i, std::uint32_t j) { return (i % nu) * nv + j % nv; };
-  for (std::uint32_t i = 0; i < nu; ++i)
-    for (std::uint32_t j = 0; j < nv; ++j) {
-      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
-
+// A UV sphere of the given radius, poles collapsed to one vertex each.
 gq::MeshData<double> uvSphere(double radius, std::uint32_t nu, std::uint32_t nv) {
   gq::MeshData<double> m;
   m.vertices.emplace_back(0, 0, -radius);
@@ -165,7 +149,7 @@ int main(int argc, char** argv) {
   for (const std::string& file : files) {
     gq::MeshData<double> mesh;
     if (file == "generated/l-shape") mesh = lShape();
-    else if (file == "generated/torus") mesh = torus(1.0, 0.3, 48, 24);
+    else if (file == "generated/torus") mesh = gqtest::torusMesh(1.0, 0.3, 48, 24);
     else if (file == "generated/sphere") mesh = uvSphere(1.0, 48, 24);
     else if (!gq::loadMeshFile(shared + "/" + file, mesh).ok()) {
       std::cerr << "bench_fit: skipping " << file << " (not readable)\n";

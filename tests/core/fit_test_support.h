@@ -12,6 +12,7 @@
 #include "gq/custom_shapes.h"
 #include "gq/fit.h"
 #include "gq/query.h"
+#include "generated_meshes.h"
 
 namespace gq::fittest {
 
@@ -57,22 +58,7 @@ inline MeshData<double> boxMesh(const Vec3d& half, const Transform<double>& pose
   return m;
 }
 
-// A torus about Z (tube centre radius R, tube radius r) on an nu x nv grid, closed and outward-facing.
-inline MeshData<double> torusMesh(double R, double r, std::uint32_t nu, std::uint32_t nv) {
-  MeshData<double> m;
-  for (std::uint32_t i = 0; i < nu; ++i)
-    for (std::uint32_t j = 0; j < nv; ++j) {
-      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
-      m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
-    }
-  const auto at = [&](std::uint32_t i, std::uint32_t j) { return (i % nu) * nv + j % nv; };
-  for (std::uint32_t i = 0; i < nu; ++i)
-    for (std::uint32_t j = 0; j < nv; ++j) {
-      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
+using gqtest::torusMesh;
 
 // An L-shaped prism (not convex): the L polygon (0,0) (2,0) (2,0.5) (0.5,0.5) (0.5,1.5) (0,1.5) extruded over
 // z in [-0.25, 0.25], closed and outward-facing.
