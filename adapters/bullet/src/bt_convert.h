@@ -23,6 +23,10 @@ inline Pose toGq(const btTransform& t) {
   r.normalize();
   return Pose(toGq(t.getOrigin()), r);
 }
+template <class T> btTransform toBt(const Transform<T>& t) {
+  const btQuaternion q(Real(t.q.x()), Real(t.q.y()), Real(t.q.z()), Real(t.q.w()));
+  return btTransform(q, toBt(t.p.template cast<Real>()));
+}
 
 using gq::isFinite;  // gq's overloads for Eigen vectors stay visible beside Bullet's
 inline bool isFinite(const btVector3& v) {

@@ -9,6 +9,7 @@
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/Gimpact/btGImpactShape.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -27,11 +28,6 @@ struct FittedMesh {
   std::vector<std::unique_ptr<btCollisionShape>> children;
   std::unique_ptr<btCompoundShape> compound;
 };
-
-btTransform toBtPose(const Transform<double>& pose) {
-  return btTransform(btQuaternion(btScalar(pose.q.x()), btScalar(pose.q.y()), btScalar(pose.q.z()), btScalar(pose.q.w())),
-                     btVector3(btScalar(pose.p.x()), btScalar(pose.p.y()), btScalar(pose.p.z())));
-}
 
 // Bullet shapes for the parts of a fit, margins 0; false for a part Bullet has no shape for.
 bool addPart(const Geometry<double>& g, const Transform<double>& pose, FittedMesh& out) {
@@ -53,7 +49,7 @@ bool addPart(const Geometry<double>& g, const Transform<double>& pose, FittedMes
   }
   // A sphere's and a capsule's margin is their radius (Bullet's convention); the others get none.
   if (g.type() != GeometryType::Sphere && g.type() != GeometryType::Capsule) shape->setMargin(0);
-  out.compound->addChildShape(toBtPose(pose), shape.get());
+  out.compound->addChildShape(toBt(pose), shape.get());
   out.children.push_back(std::move(shape));
   return true;
 }
@@ -65,10 +61,11 @@ struct Key {
   double tolerance;
   FitRepresentationSet allowed;
   std::uint32_t maxParts;
+  std::uint32_t maxBoundPatches;
   bool contain;
   bool operator<(const Key& o) const {
-    return std::tie(mesh, sx, sy, sz, tolerance, allowed, maxParts, contain) <
-           std::tie(o.mesh, o.sx, o.sy, o.sz, o.tolerance, o.allowed, o.maxParts, o.contain);
+    return std::tie(mesh, sx, sy, sz, tolerance, allowed, maxParts, maxBoundPatches, contain) <
+           std::tie(o.mesh, o.sx, o.sy, o.sz, o.tolerance, o.allowed, o.maxParts, o.maxBoundPatches, o.contain);
   }
 };
 struct Entry {
@@ -91,15 +88,20 @@ std::shared_ptr<const FittedMesh> fittedMesh(const btGImpactMeshShape& shape, co
   CookedMesh cooked;
   if (cachedMesh(*shape.getMeshInterface(), cooked) != Support::Gq || !cooked.mesh) return nullptr;
   const btVector3 scaling = shape.getMeshPart(0)->getLocalScaling();  // what GImpact applies to the vertices
+  // Keys must order (no NaN): a scaling or tolerance fitShape would refuse leaves the pair to Bullet.
+  if (!isUsableScaling(scaling) || !std::isfinite(settings.tolerance) || !(settings.tolerance > 0)) return nullptr;
   FitOptions<double> options = settings;
   options.measureCost = false;
   // The compound takes convex parts only: not the mesh itself, nor the cylinder (a gq custom geometry).
   options.allowed &= ~(fitBit(FitRepresentation::Mesh) | fitBit(FitRepresentation::Cylinder));
   const Key key{cooked.mesh.get(), scaling.x(), scaling.y(), scaling.z(), options.tolerance,
-                options.allowed, options.maxParts, options.contain};
-  std::lock_guard<std::mutex> lock(cacheLock());
-  auto it = cache().find(key);
-  if (it != cache().end()) return it->second.fit;
+                options.allowed, options.maxParts, options.maxBoundPatches, options.contain};
+  {
+    std::lock_guard<std::mutex> lock(cacheLock());
+    auto it = cache().find(key);
+    if (it != cache().end()) return it->second.fit;
+  }
+  // Fitted outside the lock (a large mesh takes seconds); two threads fitting the same key keep the first entry.
   MeshData<double> mesh;
   for (const V3& v : cooked.mesh->vertices)
     mesh.vertices.push_back(v.cast<double>().cwiseProduct(Vec3<double>(scaling.x(), scaling.y(), scaling.z())));
@@ -116,9 +118,18 @@ std::shared_ptr<const FittedMesh> fittedMesh(const btGImpactMeshShape& shape, co
         break;
       }
   }
-  cache()[key] = {cooked.mesh, fit};
-  return fit;
+  std::lock_guard<std::mutex> lock(cacheLock());
+  return cache().try_emplace(key, Entry{cooked.mesh, fit}).first->second.fit;
 }
+
+}  // namespace
+
+void clearFittedMeshes() {
+  std::lock_guard<std::mutex> lock(cacheLock());
+  cache().clear();
+}
+
+namespace {
 
 // Answers a pair with either side a fitted GImpact mesh: that side stands as its compound, and the algorithm the
 // dispatcher has for the compound pair (Bullet's compound algorithm) does the rest.
@@ -154,6 +165,7 @@ class FittedMeshAlgorithm final : public btActivatingCollisionAlgorithm {
     result->setBody0Wrap(saved0);
     result->setBody1Wrap(saved1);
   }
+  // No time of impact, as Bullet's GImpact algorithm (its child would read the GImpact shape as a compound).
   btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
                                  btManifoldResult*) override {
     return btScalar(1);

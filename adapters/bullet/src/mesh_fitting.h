@@ -18,4 +18,7 @@ bool isFittedMeshPair(int proxyType0, int proxyType1);
 // Bullet's own algorithm for the pair (what btDefaultCollisionConfiguration answers). Owned by the caller.
 btCollisionAlgorithmCreateFunc* newFittedMeshCreateFunc(CollisionConfiguration& config, bool closestPoints);
 
+// Frees every cached fit (clearShapeCache calls it); pairs already made keep theirs.
+void clearFittedMeshes();
+
 }  // namespace gq::bullet

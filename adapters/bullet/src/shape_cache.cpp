@@ -7,6 +7,7 @@
 
 #include "gq/bullet/collision_configuration.h"
 #include "gq/tolerances.h"
+#include "mesh_fitting.h"
 
 namespace gq::bullet {
 namespace {
@@ -294,6 +295,9 @@ Support cachedHeightField(const btHeightfieldTerrainShape& shape, CookedHeightFi
   return Support::Gq;
 }
 
-void clearShapeCache() { cache().clear(); }
+void clearShapeCache() {
+  cache().clear();
+  clearFittedMeshes();
+}
 
 }  // namespace gq::bullet

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <vector>
 
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
@@ -33,7 +34,7 @@ std::size_t fclCollide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Trans
                        const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
   countFallback();
   try {
-    if (!answersSwapped(o1, o2) || request.enable_cost) return ::fcl::collide(o1, tf1, o2, tf2, request, result);
+    if (!answersSwapped(o1, o2)) return ::fcl::collide(o1, tf1, o2, tf2, request, result);
     ::fcl::CollisionRequest<S> room = request;
     room.num_max_contacts = request.num_max_contacts - std::min(request.num_max_contacts, result.numContacts());
     ::fcl::CollisionResult<S> swapped;
@@ -41,6 +42,11 @@ std::size_t fclCollide(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Trans
     for (std::size_t i = 0; i < swapped.numContacts(); ++i) {
       const ::fcl::Contact<S>& c = swapped.getContact(i);
       result.addContact(::fcl::Contact<S>(c.o2, c.o1, c.b2, c.b1, c.pos, -c.normal, c.penetration_depth));
+    }
+    if (request.enable_cost) {  // a cost source is a world box: the same whichever side comes first
+      std::vector<::fcl::CostSource<S>> sources;
+      swapped.getCostSources(sources);
+      for (const ::fcl::CostSource<S>& c : sources) result.addCostSource(c, request.num_max_cost_sources);
     }
     return result.numContacts();
   } catch (const std::exception&) {

@@ -75,7 +75,9 @@ template <class T> struct RayBatch {
   HitFlags hitFlags = kDefaultHitFlags;
   // true: unitDirs[i] may have any length; ray i runs along unitDirs[i] / sqrt(x*x + y*y + z*z) (summed in that
   // order, divided per coordinate: numpy's `d / np.linalg.norm(d, axis=1)[:, None]`, bit for bit). A zero-length
-  // direction fails its item with InvalidArgument; a NaN or infinite one fails as the single raycast does.
+  // direction fails its item with InvalidArgument; a NaN or infinite one fails as the single raycast does. The sum
+  // of squares is taken in T: a length whose square overflows or underflows T (float: above ~1.8e19 or below
+  // ~1e-19) does not give a unit direction, and the item fails as a non-unit direction.
   bool normalizeDirections = false;
 };
 

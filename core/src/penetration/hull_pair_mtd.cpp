@@ -49,6 +49,10 @@ template <class T> struct Side {
     if (!climb || !table || !table->hasClimbGraph()) return support(d);
     return mesh->vertices[table->lookup(d)] * scale;
   }
+  // How far face f must move the other shape's point w (own frame) to put it outside: -offset - n.w.
+  T pushOut(std::uint32_t f, const Vec3<T>& w) const {
+    return -tree->faceOffset[f] * scale - tree->faceNormal[f].dot(w);
+  }
   // An own-frame vector in geom0's frame.
   Vec3<T> vectorToFirst(const Vec3<T>& v) const { return first ? v : Vec3<T>(rot * v); }
   Vec3<T> pointToFirst(const Vec3<T>& p) const { return first ? p : Vec3<T>(rot * p + trans); }
@@ -212,15 +216,13 @@ template <class T> class PairSearch {
     w = otherNearSupport(own, *sides_[1 - k], Vec3<T>(-mean));
     T bound = std::numeric_limits<T>::max();
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
-      const T low = -tree.faceOffset[f] * own.scale - tree.faceNormal[f].dot(w);
+      const T low = own.pushOut(f, w);
       s_.faceLow[k][f] = low;
       bound = std::min(bound, low);
     }
     for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
       const typename GaussTree<T>::Edge& edge = tree.edges[e];
-      const T low2 = edge.face2InLeaf
-                         ? s_.faceLow[k][edge.face2]
-                         : -tree.faceOffset[edge.face2] * own.scale - tree.faceNormal[edge.face2].dot(w);
+      const T low2 = edge.face2InLeaf ? s_.faceLow[k][edge.face2] : own.pushOut(edge.face2, w);
       bound = std::min(bound, arcMinimum(s_.faceLow[k][edge.face1], low2, edge.halfCos));
     }
     return bound;
@@ -275,7 +277,7 @@ template <class T> class PairSearch {
       const Vec3<T>& n = tree.faceNormal[f];
       // The leaf's support point bounds the face's push-out from below: no support call when that is enough.
       if (supported) {
-        const T low = -tree.faceOffset[f] * own.scale - n.dot(leafSupport);
+        const T low = own.pushOut(f, leafSupport);
         s_.faceLow[k][f] = low;
         if (!(low - margin_ < best_.depth)) {
           s_.faceSupport[k][f] = leafSupport;
@@ -285,7 +287,7 @@ template <class T> class PairSearch {
       closed = false;
       const Vec3<T> w = otherSupport(own, other, Vec3<T>(-n));
       s_.faceSupport[k][f] = w;
-      const T push = -tree.faceOffset[f] * own.scale - n.dot(w);
+      const T push = own.pushOut(f, w);
       if (push < best_.depth) best_.consider(push, own.first ? Vec3<T>(-n) : own.vectorToFirst(n));
     }
     // Its edges are paired only when the leaf's point leaves one of their arc ends below the best push-out: with
@@ -299,7 +301,7 @@ template <class T> class PairSearch {
     const GaussTree<T>& tree = *own.tree;
     for (std::uint32_t r = node.ringBegin; r < node.ringEnd; ++r) {
       const std::uint32_t f = tree.ringFaces[r];
-      if (-tree.faceOffset[f] * own.scale - tree.faceNormal[f].dot(w) - margin_ < best_.depth) return false;
+      if (own.pushOut(f, w) - margin_ < best_.depth) return false;
     }
     return true;
   }
@@ -324,7 +326,7 @@ template <class T> class PairSearch {
         // both faces' planes (within the cooking's plane tolerance, inside the margin), so n.(v - w) at either end is
         // that face's bound.
         if (leaf.supported && low[edge.face1] >= cut &&
-            (face2Here ? low[edge.face2] : -tree.faceOffset[edge.face2] * own.scale - n2.dot(leaf.support)) >= cut)
+            (face2Here ? low[edge.face2] : own.pushOut(edge.face2, leaf.support)) >= cut)
           continue;
         const Vec3<T>& n1 = tree.faceNormal[edge.face1];
         const Vec3<T> v = own.vertex(edge.vertex0);

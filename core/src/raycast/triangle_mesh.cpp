@@ -51,7 +51,7 @@ template <class T> class MeshRaycaster {
   int candidates(std::uint32_t leafRef, T maxT, TriangleHits4<T>& hits) const {
     const std::uint32_t first = MeshBvhNode::leafFirst(leafRef), count = MeshBvhNode::leafCount(leafRef);
     TriangleVertices4<T> tris;
-    const std::size_t triangles = mesh_.inputIndex.size();  // one per cooked triangle (no division by 3)
+    const std::size_t triangles = mesh_.triangles.size();  // triangleVertices holds 3 per cooked triangle
     loadTriangles4(&mesh_.triangleVertices[3 * std::size_t(first)], count, std::size_t(first) + 4 <= triangles, tris);
     return exactTriangleHits(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
   }
