@@ -15,12 +15,16 @@ def random_poses(rng, n, dtype, spread=2.0):
     return np.hstack([rng.uniform(-spread, spread, (n, 3)), q]).astype(dtype)
 
 
+def icosphere_and_origins(dtype, seed, n):
+    """An icosphere mesh in dtype, the seeded generator, and n ray origins in [-2, 2]^3 drawn from it first."""
+    v, f = icosphere(2)
+    rng = np.random.default_rng(seed)
+    return gq.TriangleMesh(v.astype(dtype), f), rng, rng.uniform(-2, 2, (n, 3)).astype(dtype)
+
+
 @pytest.mark.parametrize("dtype", DTYPES)
 def test_ray_batch_equals_single_rays(dtype):
-    v, f = icosphere(2)
-    mesh = gq.TriangleMesh(v.astype(dtype), f)
-    rng = np.random.default_rng(5)
-    origins = rng.uniform(-2, 2, (300, 3)).astype(dtype)
+    mesh, rng, origins = icosphere_and_origins(dtype, 5, 300)
     dirs = rng.normal(size=(300, 3))
     dirs = (dirs / np.linalg.norm(dirs, axis=1)[:, None]).astype(dtype)
     hit, dist, pos, nrm, face = gq.raycast_batch(origins, dirs, mesh)
@@ -44,10 +48,7 @@ def test_ray_batch_equals_single_rays(dtype):
 
 @pytest.mark.parametrize("dtype", DTYPES)
 def test_normalizing_ray_batches_equal_numpy_normalized_rays(dtype):
-    v, f = icosphere(2)
-    mesh = gq.TriangleMesh(v.astype(dtype), f)
-    rng = np.random.default_rng(9)
-    origins = rng.uniform(-2, 2, (400, 3)).astype(dtype)
+    mesh, rng, origins = icosphere_and_origins(dtype, 9, 400)
     dirs = (rng.normal(size=(400, 3)) * rng.uniform(1e-3, 1e3, (400, 1))).astype(dtype)
     unit = dirs / np.linalg.norm(dirs, axis=1)[:, None]  # what the batch computes, bit for bit
     expected = gq.raycast_batch(origins, unit, mesh, both_sides=True)
