@@ -3,6 +3,7 @@
 // best-first closest-point traversal. They take the leaf handler as a callable, so they are inline templates.
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -16,7 +17,8 @@
 namespace gq::detail {
 
 // Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels; an
-// 8-wide node stands for at least one 4-wide level) times the 7 siblings an 8-wide node leaves behind, plus slack.
+// 8-wide node stands for at least one 4-wide level) times the 7 siblings an 8-wide node leaves behind, plus slack
+// (which also holds the 8 entries Bvh8LanesAvx2::sortHits writes past the top).
 inline constexpr int kBvhStackSize = 512;
 
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
@@ -33,26 +35,44 @@ template <int W> struct BvhRay {
   static constexpr float kRelPad = 16.0f * std::numeric_limits<float>::epsilon();
 };
 
+// The plane offsets of BvhRay for the 8 sign patterns of the direction (bit i: negative along axis i): near planes
+// x, y, z, then far planes x, y, z. Planes minX, minY, minZ, maxX, maxY, maxZ of a node hold W floats each.
+template <int W> struct BvhPlaneOffsets {
+  std::uint32_t bytes[8][6];
+  constexpr BvhPlaneOffsets() : bytes() {
+    constexpr std::uint32_t kPlaneBytes = W * sizeof(float);
+    for (std::uint32_t signs = 0; signs < 8; ++signs)
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t minPlane = kPlaneBytes * i, maxPlane = kPlaneBytes * (3 + i);
+        const bool negative = ((signs >> i) & 1u) != 0;
+        bytes[signs][i] = negative ? maxPlane : minPlane;
+        bytes[signs][3 + i] = negative ? minPlane : maxPlane;
+      }
+  }
+};
+template <int W> inline constexpr BvhPlaneOffsets<W> kBvhPlaneOffsets{};
+
 template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   // Components this small would give infinite inverses (and 0 * inf = NaN); clamping keeps slabs correct.
   constexpr float kTinyDir = 1e-20f;
   BvhRay<W> r;
+  int negative = 0;  // bit i: invDir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
   for (int i = 0; i < 3; ++i) {
     r.org[i] = static_cast<float>(org[i]);
     float d = static_cast<float>(dir[i]);
     if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
     r.invDir[i] = 1.0f / d;
+    negative |= int(r.invDir[i] < 0.0f) << i;
+  }
+  for (int i = 0; i < 3; ++i) {
     if constexpr (std::is_same_v<T, float>) {
       r.slack[i] = 0.0f;  // the origin is exactly the float one
     } else {
       const double originError = std::abs(double(org[i]) - double(r.org[i]));
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
     }
-    // minX, minY, minZ, maxX, maxY, maxZ: W floats each.
-    constexpr std::uint32_t kPlaneBytes = W * sizeof(float);
-    const std::uint32_t minPlane = kPlaneBytes * std::uint32_t(i), maxPlane = kPlaneBytes * std::uint32_t(3 + i);
-    r.nearOffset[i] = r.invDir[i] >= 0.0f ? minPlane : maxPlane;
-    r.farOffset[i] = r.invDir[i] >= 0.0f ? maxPlane : minPlane;
+    r.nearOffset[i] = kBvhPlaneOffsets<W>.bytes[negative][i];
+    r.farOffset[i] = kBvhPlaneOffsets<W>.bytes[negative][3 + i];
   }
   return r;
 }
@@ -151,12 +171,28 @@ __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node,
 }
 #endif
 
+// The order in which the ray walk takes a node's 3 or more hit children: by entry distance, whose bits order as
+// integers (it is never negative), with the low 3 bits replaced by the lane so that every key is distinct and the
+// order is the same however the keys are sorted. (Only the walk's speed depends on the order.)
+inline std::uint32_t bvhSortKey(float tNear, int lane) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &tNear, sizeof bits);
+  return (bits & ~7u) | std::uint32_t(lane);
+}
+
+// An entry of the ray walk's stack: a node or leaf reference and the distance at which the ray enters its box.
+struct BvhWalkEntry {
+  std::uint32_t ref;
+  float tNear;
+};
+
 // Node tests for the walk below: the hit mask of a node's children for t in [0, tMax] (empty lanes never set) and
 // their entry distances in tNear. kSlack = false for rays whose origin is exactly the float one (float queries:
 // slack is 0), which skips the padding adds.
 // Lanes::Ray is the ray as the node test reads it, made by Lanes::prepare once per walk.
 template <int W> struct BvhLanesScalar {
   static constexpr int kWidth = W;
+  static constexpr bool kSortsHits = false;  // the walk insertion-sorts 3 or more hit children
   using Ray = BvhRay<W>;
   static const Ray& prepare(const BvhRay<W>& ray) { return ray; }
   template <bool kSlack> static int test(const BvhNode<W>& node, const Ray& ray, float tMax, float* tNear) {
@@ -184,6 +220,7 @@ template <int W> struct BvhLanesScalar {
 // 8-wide nodes on the SSE4.2 baseline: two 4-lane halves.
 struct Bvh8LanesSse {
   static constexpr int kWidth = 8;
+  static constexpr bool kSortsHits = false;
   using Ray = BvhRaySse;
   static Ray prepare(const BvhRay<8>& ray) { return broadcastSse(ray); }
   template <bool kSlack> static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
@@ -191,14 +228,56 @@ struct Bvh8LanesSse {
   }
 };
 
+// One layer of a sorting network: each lane meets the lane `partner` holds; the lanes set in kMaxLanes keep the
+// larger key, the others the smaller.
+template <int kMaxLanes> __attribute__((target("avx2"))) inline __m256i sortLayer(__m256i v, __m256i partner) {
+  return _mm256_blend_epi32(_mm256_min_epi32(v, partner), _mm256_max_epi32(v, partner), kMaxLanes);
+}
+
 // 8-wide nodes with AVX2 (only on CPUs that have it: callers check hasAvx2()).
 struct Bvh8LanesAvx2 {
   static constexpr int kWidth = 8;
+  static constexpr bool kSortsHits = true;  // sortHits below
   using Ray = BvhRay<8>;
   static const Ray& prepare(const BvhRay<8>& ray) { return ray; }
   template <bool kSlack>
   __attribute__((target("avx2"))) static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
     return intersectLanes8<kSlack>(node, ray, tMax, tNear);
+  }
+
+  // A node's hit children (`mask`, 3 or more lanes) in entry order, by a sorting network on one register: returns
+  // the nearest and stores the others at `stack`, farthest first (the nearest of them last, popped first), advancing
+  // `top` by their count. Writes 8 entries from `stack` on (the stack bound leaves that room). Keys: bvhSortKey,
+  // missed lanes last.
+  __attribute__((target("avx2"))) static BvhWalkEntry sortHits(const Bvh8Node& node, const float* tNear, int mask,
+                                                              BvhWalkEntry* stack, int& top) {
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i laneBit = _mm256_sllv_epi32(_mm256_set1_epi32(1), lane);
+    const __m256i hit = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(mask), laneBit), laneBit);
+    const __m256i tBits = _mm256_castps_si256(_mm256_load_ps(tNear));
+    __m256i k = _mm256_or_si256(_mm256_andnot_si256(_mm256_set1_epi32(7), tBits), lane);
+    k = _mm256_blendv_epi8(_mm256_set1_epi32(0x7fffffff), k, hit);
+    // Comparators (i, j), i < j, i takes the minimum: (0,2)(1,3)(4,6)(5,7) (0,4)(1,5)(2,6)(3,7) (0,1)(2,3)(4,5)(6,7)
+    // (2,4)(3,5) (1,4)(3,6) (1,2)(3,4)(5,6), the 19-comparator network for 8 keys.
+    k = sortLayer<0xcc>(k, _mm256_shuffle_epi32(k, _MM_SHUFFLE(1, 0, 3, 2)));
+    k = sortLayer<0xf0>(k, _mm256_permute2x128_si256(k, k, 1));
+    k = sortLayer<0xaa>(k, _mm256_shuffle_epi32(k, _MM_SHUFFLE(2, 3, 0, 1)));
+    k = sortLayer<0x30>(k, _mm256_permute4x64_epi64(k, _MM_SHUFFLE(3, 1, 2, 0)));
+    k = sortLayer<0x50>(k, _mm256_permutevar8x32_epi32(k, _mm256_setr_epi32(0, 4, 2, 6, 1, 5, 3, 7)));
+    k = sortLayer<0x54>(k, _mm256_permutevar8x32_epi32(k, _mm256_setr_epi32(0, 2, 1, 4, 3, 6, 5, 7)));
+    // Entry j of the stack takes sorted key count - 1 - j (the farthest first).
+    const int count = __builtin_popcount(unsigned(mask));
+    const __m256i reversed = _mm256_permutevar8x32_epi32(k, _mm256_sub_epi32(_mm256_set1_epi32(count - 1), lane));
+    const __m256i lanes = _mm256_and_si256(reversed, _mm256_set1_epi32(7));
+    const __m256i refs = _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
+                                                     lanes);
+    const __m256i dists = _mm256_permutevar8x32_epi32(tBits, lanes);
+    const __m256i lo = _mm256_unpacklo_epi32(refs, dists), hi = _mm256_unpackhi_epi32(refs, dists);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack), _mm256_permute2x128_si256(lo, hi, 0x20));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack + 4), _mm256_permute2x128_si256(lo, hi, 0x31));
+    top += count - 1;
+    const int nearest = _mm_cvtsi128_si32(_mm256_castsi256_si128(k)) & 7;
+    return BvhWalkEntry{node.child[nearest], tNear[nearest]};
   }
 };
 
@@ -223,7 +302,7 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
                           LeafFn&& leaf) {
   constexpr int W = Lanes::kWidth;
   using Node = BvhNode<W>;
-  struct Entry { std::uint32_t ref; float tNear; };
+  using Entry = BvhWalkEntry;
   if (bvh.rootChild == Node::kEmpty) return;
   const auto& lanesRay = Lanes::prepare(ray);  // a reference to `ray`, or a copy the node test reads faster
   Entry stack[kBvhStackSize];
@@ -261,16 +340,29 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
         e = Entry{node.child[nearLane], tn[nearLane]};
         continue;
       }
-      // Push the hit children sorted by entry distance (insertion sort on the stack, nearest on top).
+      if constexpr (Lanes::kSortsHits) {
+        e = Lanes::sortHits(node, tn, mask | 1 << i, stack + top, top);
+        continue;
+      }
+      // Push the hit children sorted by bvhSortKey (insertion sort on the stack, nearest on top): the order of
+      // Bvh8LanesAvx2::sortHits, so both walks visit the same nodes in the same order.
       const int base = top;
+      std::uint32_t keys[W];  // keys[k - base]: the key of stack[k]
+      keys[0] = bvhSortKey(tn[i], i);
       stack[top++] = Entry{node.child[i], tn[i]};
       while (mask) {
         i = __builtin_ctz(unsigned(mask));
         mask &= mask - 1;
         const Entry c{node.child[i], tn[i]};
+        const std::uint32_t key = bvhSortKey(tn[i], i);
         int k = top++;
-        while (k > base && stack[k - 1].tNear < c.tNear) { stack[k] = stack[k - 1]; --k; }
+        while (k > base && keys[k - 1 - base] < key) {
+          stack[k] = stack[k - 1];
+          keys[k - base] = keys[k - 1 - base];
+          --k;
+        }
         stack[k] = c;
+        keys[k - base] = key;
       }
       e = stack[--top];
     }

@@ -29,8 +29,8 @@ template <class T> inline WatertightRay<T> makeWatertightRay(const Vec3<T>& org,
   r.org = org;
   const Vec3<T> a = dir.cwiseAbs();
   r.kz = (a.x() > a.y()) ? (a.x() > a.z() ? 0 : 2) : (a.y() > a.z() ? 1 : 2);
-  r.kx = (r.kz + 1) % 3;
-  r.ky = (r.kx + 1) % 3;
+  r.kx = r.kz == 2 ? 0 : r.kz + 1;  // (kz + 1) mod 3 without a division
+  r.ky = r.kx == 2 ? 0 : r.kx + 1;
   // Keep the winding: a negative dominant component mirrors the 2D frame, so swap the other two axes.
   if (dir[r.kz] < T(0)) std::swap(r.kx, r.ky);
   r.sx = dir[r.kx] / dir[r.kz];

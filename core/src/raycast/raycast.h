@@ -81,7 +81,8 @@ template <class T> class TriangleMeshRays {
     if (!scaled_) return v;
     return diagonal_ ? Vec3<T>(v.cwiseProduct(invScaleDiagonal_)) : Vec3<T>(invScale_ * v);
   }
-  RaycastHit<T> hit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri) const;
+  void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
+                RaycastHit<T>& hit) const;
 
   const TriangleMeshGeometry<T>& g_;
   const Transform<T>& pose_;

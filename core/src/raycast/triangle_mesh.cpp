@@ -166,16 +166,26 @@ template <class T> class MeshRaycaster {
 enum class MeshWalk { Avx2, Sse, Scalar };
 
 std::atomic<bool> gBaselineOnly{false};
+std::atomic<int> gWalk{-1};  // the MeshWalk in use, -1 until meshWalk() picks it
 
 }  // namespace
 
-void setMeshRaycastBaselineOnly(bool baselineOnly) { gBaselineOnly.store(baselineOnly); }
+void setMeshRaycastBaselineOnly(bool baselineOnly) {
+  gBaselineOnly.store(baselineOnly);
+  gWalk.store(-1);
+}
 
 namespace {
 
 MeshWalk meshWalk() {
 #ifdef GQ_SSE42
-  return hasAvx2() && !gBaselineOnly.load(std::memory_order_relaxed) ? MeshWalk::Avx2 : MeshWalk::Sse;
+  // One relaxed load per call: gWalk caches the choice (-1 until first asked, reset by setMeshRaycastBaselineOnly).
+  int w = gWalk.load(std::memory_order_relaxed);
+  if (w < 0) [[unlikely]] {
+    w = int(hasAvx2() && !gBaselineOnly.load(std::memory_order_relaxed) ? MeshWalk::Avx2 : MeshWalk::Sse);
+    gWalk.store(w, std::memory_order_relaxed);
+  }
+  return MeshWalk(w);
 #else
   return MeshWalk::Scalar;
 #endif
@@ -208,12 +218,16 @@ __attribute__((target("avx2"), flatten)) auto withAvx2Lanes(Args&&... args) {
   return Walk::template run<Bvh8LanesAvx2>(args...);
 }
 #endif
+// The baseline walk out of line too: inlined into the caller, its registers and stack frame were paid by every ray.
+template <class Walk, class... Args> [[gnu::noinline]] auto withBaselineLanes(Args&&... args) {
+  return Walk::template run<Bvh8LanesBaseline>(args...);
+}
 template <class Walk, class... Args> auto withLanes(MeshWalk w, Args&&... args) {
 #ifdef GQ_SSE42
   if (w == MeshWalk::Avx2) return withAvx2Lanes<Walk>(args...);
 #endif
   (void)w;
-  return Walk::template run<Bvh8LanesBaseline>(args...);
+  return withBaselineLanes<Walk>(args...);
 }
 
 }  // namespace
@@ -240,12 +254,14 @@ template <class T>
   invScale_ = r * invScaleDiagonal_.asDiagonal() * r.transpose();
 }
 
-// The requested fields of one hit. The world normal of the (reported-order) triangle is S^-1 n_mesh rotated by the
-// pose, with S^-1 = S^-T: under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way.
+// The requested fields of one hit, written in place (the others keep RaycastHit's defaults). The world normal of the
+// (reported-order) triangle is S^-1 n_mesh rotated by the pose, with S^-1 = S^-T: under a mirrored scale the 1<->2
+// swap cancels the mirror, so it is outward either way.
 template <class T>
-RaycastHit<T> TriangleMeshRays<T>::hit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri) const {
+void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
+                                   RaycastHit<T>& hit) const {
   const TriangleMesh<T>& mesh = *g_.mesh;
-  RaycastHit<T> hit;
+  hit = RaycastHit<T>();
   hit.distance = tri.t;
   hit.faceIndex = mesh.inputIndex[cooked];
   HitFlags flags = HitFlag::FaceIndex;
@@ -269,7 +285,6 @@ RaycastHit<T> TriangleMeshRays<T>::hit(const RayQuery<T>& ray, std::uint32_t coo
     flags |= HitFlag::UV;
   }
   hit.flags = flags;
-  return hit;
 }
 
 template <class T>
@@ -286,14 +301,14 @@ template <class T>
     thread_local std::vector<RawHit<T>> raw;
     raw.clear();
     const std::uint32_t n = withLanes<MultipleWalk>(walk, caster, ray.maxDist, ray.maxHits, raw);
-    for (std::uint32_t i = 0; i < n; ++i) hits[i] = hit(ray, raw[i].cooked, raw[i].tri);
+    for (std::uint32_t i = 0; i < n; ++i) writeHit(ray, raw[i].cooked, raw[i].tri, hits[i]);
     return n;
   }
   RawHit<T> best;
   const bool found = ray.flags.has(HitFlag::AnyHit) ? withLanes<AnyWalk>(walk, caster, ray.maxDist, best)
                                                     : withLanes<ClosestWalk>(walk, caster, ray.maxDist, best);
   if (!found) return 0;
-  hits[0] = hit(ray, best.cooked, best.tri);
+  writeHit(ray, best.cooked, best.tri, hits[0]);
   return 1;
 }
 
