@@ -4,7 +4,8 @@
 // normals and positions, distances and nearest points, signed distances. Every disagreement beyond the tolerance must
 // be a deliberate difference of tests/fcl/deliberate_differences.txt (by id), and there gq must give the exact answer
 // (exact_reference.h, long double) where one is known. Within the touch band of touching either boolean is right.
-// The two instantiations live in full_result_test.cpp (double) and full_result_float_test.cpp (float).
+// GQ_FCL_FULL_RESULT_TESTS (at the end) makes the four tests of one scalar; full_result_test.cpp (double) and
+// full_result_float_test.cpp (float) each instantiate it once, so FCL's templates compile in two units.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -190,20 +191,42 @@ template <class S> std::vector<::fcl::Contact<S>> inCallerOrder(const FullResult
   return v;
 }
 
-// What of a contact is compared with FCL's, per pair family. Positions: FCL's rule where gq::fcl follows it
-// (docs/fcl.md, "Conventions kept from FCL": sphere-sphere, shapes against a Halfspace, FCL's own MPR contacts); the
-// other closed-form pairs are placed midway between the deepest points. Two boxes: gq's set is FCL's size only for
-// resting faces (FclBoxContactSets), so the depth is checked against the exact minimum translation instead.
+// What of a contact is compared with FCL's, per pair family: everything (positions by FCL's rules, docs/fcl.md,
+// "Conventions kept from FCL") but two boxes, whose set is FCL's size only for resting faces (FclBoxContactSets): the
+// deepest depth is checked against the exact minimum translation instead.
 struct ContactFields {
   bool count = true, depthAndNormal = true, position = true;
 };
 inline ContactFields comparedContactFields(const Pair& p) {
   ContactFields f;
   if (isPair(p, Kind::Box, Kind::Box)) f.count = f.depthAndNormal = f.position = false;
-  if (isPair(p, Kind::Sphere, Kind::Mesh)) f.depthAndNormal = f.position = false;
-  if (isPair(p, Kind::Sphere, Kind::Capsule) || hasKind(p, Kind::Plane) || isPair(p, Kind::Halfspace, Kind::Mesh))
-    f.position = false;
   return f;
+}
+
+// A sphere against a BVHModel: each of gq's triangle contacts is the exact one (depth r - the distance to the
+// triangle's nearest point, placed at that point), whatever FCL answers.
+template <class S>
+void expectExactSphereTriangleContacts(const FullResultCase<S>& c, const PosePair<S>& p,
+                                       const std::vector<::fcl::Contact<S>>& gq, const std::string& where) {
+  const bool sphereFirst = c.pair.first == Kind::Sphere;
+  for (const ::fcl::Contact<S>& x : gq) {
+    ::fcl::Vector3d nearest;
+    long double depth = 0;
+    exactSphereTriangleContact(sphereFirst ? c.a : c.b, sphereFirst ? p.pa : p.pb, sphereFirst ? c.b : c.a,
+                               sphereFirst ? p.pb : p.pa, sphereFirst ? x.b2 : x.b1, nearest, depth);
+    EXPECT_NEAR(double(x.penetration_depth), double(depth), FullResultTolerances<S>().exact) << where;
+    EXPECT_NEAR((x.pos.template cast<double>() - nearest).norm(), 0.0, FullResultTolerances<S>().exact) << where;
+  }
+}
+
+// FCL 0.7's sphere-triangle contact carries minus the depth (listed "sphere-bvh-contact"): its contacts with the
+// sign turned, so that the rest is compared.
+template <class S> void turnSphereTriangleDepths(FullResultCase<S>& c, std::vector<::fcl::Contact<S>>& fcl,
+                                                 const std::string& where) {
+  bool turned = false;
+  for (::fcl::Contact<S>& y : fcl)
+    if (y.penetration_depth < 0) y.penetration_depth = -y.penetration_depth, turned = true;
+  if (turned) acceptListed(c, "sphere-bvh-contact", where);
 }
 
 // The listed difference that explains FCL's contact at a pose where gq's differs, or "unlisted".
@@ -215,6 +238,7 @@ std::string contactDifferenceId(const FullResultCase<S>& c, const PosePair<S>& p
     if (!gq.empty()) EXPECT_NEAR(double(gq[0].penetration_depth), -touch, FullResultTolerances<S>().exact) << c.label();
     return "cylinder-plane";
   }
+  if (isPair(c.pair, Kind::Sphere, Kind::Mesh)) return "sphere-bvh-contact";  // gq's checked exact by the caller
   if (isPair(c.pair, Kind::Cone, Kind::Halfspace)) {
     const bool coneFirst = c.pair.first == Kind::Cone;
     const ::fcl::Transform3<S>& cone = coneFirst ? p.ta : p.tb;
@@ -244,7 +268,12 @@ template <class S> void checkContacts(FullResultCase<S>& c, int poses, std::uint
     const std::string where = c.label() + " pose " + std::to_string(i) + " (signed distance " + std::to_string(touch) + ")";
     if (gq.isCollision() != fcl.isCollision()) continue;  // a boolean difference: checkCollideBooleans
     ++c.compared;
-    const auto g = sortedContacts(gq), f = inCallerOrder(c, sortedContacts(fcl));
+    const auto g = sortedContacts(gq);
+    auto f = inCallerOrder(c, sortedContacts(fcl));
+    if (isPair(c.pair, Kind::Sphere, Kind::Mesh)) {
+      expectExactSphereTriangleContacts(c, p, g, where);
+      turnSphereTriangleDepths(c, f, where);
+    }
     // gq's deepest contact is the exact depth where gq computes the contact (not FCL's MPR contacts, docs/fcl.md).
     long double depth = 0;
     const bool ownContact = hasKind(c.pair, Kind::Sphere) || isPair(c.pair, Kind::Box, Kind::Box);
@@ -360,4 +389,42 @@ template <class S> void checkDistances(FullResultCase<S>& c, int poses, std::uin
               << w.second << "\n";
 }
 
+// What one full-result test compares.
+enum class FullResultCheck { Booleans, Contacts, Distances, SignedDistances };
+
+// One full-result test of `pair` in S over `poses` seeded poses; seeds derive from `seedBase` and the pair. Every
+// disagreement with FCL must be a listed difference.
+template <class S> void runFullResultCheck(const Pair& pair, FullResultCheck check, std::uint32_t seedBase, int poses) {
+  const std::uint32_t seed = seedBase + 100u * std::uint32_t(pair.first) + std::uint32_t(pair.second);
+  FullResultCase<S> c = makeFullResultCase<S>(pair, seed);
+  switch (check) {
+    case FullResultCheck::Booleans: checkCollideBooleans(c, poses, seed + 1); printSummary(c, "booleans"); break;
+    case FullResultCheck::Contacts: checkContacts(c, poses, seed + 2); printSummary(c, "contacts"); break;
+    case FullResultCheck::Distances: checkDistances(c, poses, seed + 3, false); printSummary(c, "distances"); break;
+    case FullResultCheck::SignedDistances:
+      checkDistances(c, poses, seed + 4, true);
+      printSummary(c, "signed distances");
+      break;
+  }
+  EXPECT_EQ(c.listed.count("unlisted"), 0u);
+}
+
+inline constexpr int kFullResultPoses = 200;
+
 }  // namespace gq::fcltest
+
+// The four full-result tests of scalar S as the suite `Suite`, over every pair family (fullResultPairs), seeds from
+// `seedBase`. One body for float and double; each test file instantiates it once.
+#define GQ_FCL_FULL_RESULT_TESTS(Suite, S, seedBase)                                                                  \
+  class Suite : public ::testing::TestWithParam<::gq::fcltest::Pair> {                                              \
+   protected:                                                                                                       \
+    void run(::gq::fcltest::FullResultCheck check) {                                                                \
+      ::gq::fcltest::runFullResultCheck<S>(GetParam(), check, seedBase, ::gq::fcltest::kFullResultPoses);            \
+    }                                                                                                               \
+  };                                                                                                                \
+  TEST_P(Suite, CollideBooleansEqualFclsOutsideTheTouchBand) { run(::gq::fcltest::FullResultCheck::Booleans); }      \
+  TEST_P(Suite, ContactsEqualFcls) { run(::gq::fcltest::FullResultCheck::Contacts); }                               \
+  TEST_P(Suite, DistancesAndNearestPointsEqualFcls) { run(::gq::fcltest::FullResultCheck::Distances); }             \
+  TEST_P(Suite, SignedDistancesEqualFcls) { run(::gq::fcltest::FullResultCheck::SignedDistances); }                 \
+  INSTANTIATE_TEST_SUITE_P(AllFamilies, Suite, ::testing::ValuesIn(::gq::fcltest::fullResultPairs()),               \
+                           ::gq::fcltest::PairName())

@@ -27,6 +27,7 @@
 #include "gq/contacts.h"
 #include "gq/kernels.h"
 #include "pair_kernels.h"
+#include "plane_crossing.h"
 
 namespace gq::fcl::internal {
 namespace {
@@ -859,7 +860,8 @@ template <FS A, FS B> constexpr bool fclPositionRule() {
   constexpr auto halfspaceRule = [](FS x) {
     return x == FS::Sphere || x == FS::Box || x == FS::Capsule || x == FS::Cylinder || x == FS::Cone;
   };
-  return (A == FS::Sphere && B == FS::Sphere) || (B == FS::Halfspace && halfspaceRule(A)) ||
+  return (A == FS::Sphere && B == FS::Sphere) || (A == FS::Sphere && B == FS::Capsule) ||
+         (A == FS::Capsule && B == FS::Sphere) || (B == FS::Halfspace && halfspaceRule(A)) ||
          (A == FS::Halfspace && halfspaceRule(B));
 }
 
@@ -923,6 +925,17 @@ template <class S, FS A> Vec3<S> halfspaceContactPosition(Solid<S> shape, const 
   return deepest + n * (S(0.5) * depth);
 }
 
+// A sphere against a capsule, `depth` deep: FCL's point lies on the line from the nearest point of the capsule's axis
+// to the sphere's centre, `depth` from the axis (the axis point itself for a centre on the axis).
+template <class S> Vec3<S> sphereCapsulePosition(Solid<S> sphere, Solid<S> capsule, S depth) {
+  const auto* c = static_cast<const ::fcl::Capsule<S>*>(capsule.geometry);
+  const Vec3<S> centre = sphere.tf->translation(), t = capsule.tf->translation(), z = capsule.tf->linear().col(2);
+  const S along = std::clamp(z.dot(centre - t), -c->lz * S(0.5), c->lz * S(0.5));
+  const Vec3<S> axis = t + z * along, out = centre - axis;
+  const S len = out.norm();
+  return len > S(0) ? Vec3<S>(axis + out * (depth / len)) : axis;
+}
+
 template <class S> Vec3<S> halfspaceNormal(Solid<S> halfspace) {
   return halfspace.tf->linear() * static_cast<const ::fcl::Halfspace<S>*>(halfspace.geometry)->n;
 }
@@ -933,12 +946,60 @@ template <class S, FS A, FS B> Vec3<S> fclContactPosition(Solid<S> a, Solid<S> b
     const S ra = sphereRadius(a), rb = sphereRadius(b);
     const Vec3<S> ca = a.tf->translation(), cb = b.tf->translation();
     return ca + (cb - ca) * (ra / (ra + rb));
+  } else if constexpr (A == FS::Sphere && B == FS::Capsule) {
+    return sphereCapsulePosition(a, b, depth);
+  } else if constexpr (A == FS::Capsule && B == FS::Sphere) {
+    return sphereCapsulePosition(b, a, depth);
   } else if constexpr (B == FS::Halfspace) {
     return halfspaceContactPosition<S, A>(a, halfspaceNormal(b), depth);
   } else if constexpr (A == FS::Halfspace) {
     return halfspaceContactPosition<S, B>(b, halfspaceNormal(a), depth);
   } else {
     return midway;
+  }
+}
+
+// ---- a solid crossing FCL's two-sided Plane n.x = d: FCL 0.7 puts the contact on the plane ----
+// A sphere, box or cylinder: its half-space point (above) for the side its centre is not on, projected onto the
+// plane. A capsule: where its axis crosses the plane; else the projection of its centre when both ends are within
+// the radius of the plane, or of the end that is. A cone: the midpoint of the two points where the triangle (apex,
+// the two rim points in the plane of the axis and n) crosses the plane; the axis parallel to the plane (within
+// FCL's tolerance): the centre's projection moved from the base towards the apex by depth / radius of the length.
+template <class S> Vec3<S> ontoPlane(const Vec3<S>& p, const Vec3<S>& n, S d) { return p - n * (n.dot(p) - d); }
+
+template <class S> Vec3<S> capsulePlanePosition(Solid<S> shape, const Vec3<S>& n, S d) {
+  const auto* c = static_cast<const ::fcl::Capsule<S>*>(shape.geometry);
+  const Vec3<S> t = shape.tf->translation(), half = shape.tf->linear().col(2) * (c->lz * S(0.5));
+  const Vec3<S> p1 = t + half, p2 = t - half;
+  const S d1 = n.dot(p1) - d, d2 = n.dot(p2) - d;
+  if (d1 * d2 < -fclParallelTolerance<S>()) return planeCrossing(p1, d1, p2, d2);
+  const bool near1 = std::abs(d1) <= c->radius, near2 = std::abs(d2) <= c->radius;
+  return ontoPlane(near1 && near2 ? t : near1 ? p1 : p2, n, d);
+}
+
+template <class S> Vec3<S> conePlanePosition(Solid<S> shape, const Vec3<S>& n, S d) {
+  const auto* c = static_cast<const ::fcl::Cone<S>*>(shape.geometry);
+  const Vec3<S> t = shape.tf->translation(), z = shape.tf->linear().col(2);
+  const S tol = fclParallelTolerance<S>(), cosa = z.dot(n), centre = n.dot(t) - d;
+  if (std::abs(cosa) < tol) {
+    const S depth = c->radius - std::abs(centre);
+    return t - n * centre + z * (c->lz * (depth / c->radius - S(1)) * S(0.5));
+  }
+  Vec3<S> rim = z * cosa - n;
+  rim = std::abs(cosa + S(1)) < tol || std::abs(cosa - S(1)) < tol ? Vec3<S>::Zero()
+                                                                   : Vec3<S>(rim * (c->radius / rim.norm()));
+  const Vec3<S> base = t - z * (c->lz * S(0.5));
+  const Vec3<S> p[3] = {t + z * (c->lz * S(0.5)), base + rim, base - rim};
+  const S h[3] = {n.dot(p[0]) - d, n.dot(p[1]) - d, n.dot(p[2]) - d};
+  return straddleMidpoint(p, h, true);
+}
+
+template <class S, FS A> Vec3<S> planeContactPositionOf(Solid<S> shape, const Vec3<S>& n, S d) {
+  if constexpr (A == FS::Capsule) return capsulePlanePosition(shape, n, d);
+  else if constexpr (A == FS::Cone) return conePlanePosition(shape, n, d);
+  else {
+    const Vec3<S> away = n.dot(shape.tf->translation()) - d > S(0) ? n : Vec3<S>(-n);
+    return ontoPlane(halfspaceContactPosition<S, A>(shape, away, S(0)), n, d);
   }
 }
 
@@ -987,13 +1048,23 @@ template <class S, FS A, FS B>
   return result.numContacts();
 }
 
+// Whether `normal` (from a to b) is the direction of two boxes' exact minimum translation (to rounding).
+template <class S> bool isExactNormal(Solid<S> a, Solid<S> b, const Vec3<S>& normal) {
+  DistanceResult<S> d;
+  if (distanceEntry<S, FS::Box, FS::Box>(a, b, DistanceAsk{true, true}, d) != Answer::Done) return false;
+  return d.normal.dot(normal) >= S(1) - S(64) * std::numeric_limits<S>::epsilon();
+}
+
 // Two boxes under collide with contacts: gq's contact set (generateContacts, at most 4 points as FCL's box routine
 // keeps) in FCL's placement: the normal from o1 to o2, each point midway between the incident point and the
 // reference face with its own depth; when num_max_contacts leaves less room than the set, the deepest first (FCL
 // sorts them so). A pair gq finds apart writes nothing; a touching pair whose set is empty gets the exact contact.
+// With `minimumTranslation`, a set whose normal is a face's (FCL's placement, within ~8 degrees of the exact
+// direction) but not the exact minimum translation's gives way to the one exact contact.
 template <class S>
 [[gnu::noinline]] std::size_t collideBoxBoxContacts(Solid<S> a, Solid<S> b, const ::fcl::CollisionRequest<S>& request,
-                                                    ::fcl::CollisionResult<S>& result, std::size_t before) {
+                                                    ::fcl::CollisionResult<S>& result, std::size_t before,
+                                                    bool minimumTranslation) {
   bool hit = false;
   switch (overlapCall<S, FS::Box, FS::Box>(a, b, true, hit)) {
     case Answer::Invalid: return 0;  // bad input: nothing written
@@ -1006,7 +1077,8 @@ template <class S>
   const Transform<S> pa(a.tf->translation(), Quat<S>(a.tf->linear()).normalized());
   const Transform<S> pb(b.tf->translation(), Quat<S>(b.tf->linear()).normalized());
   ContactSet<S> set;
-  if (!generateContacts(ga, pa, gb, pb, set).ok() || set.count == 0) {
+  if (!generateContacts(ga, pa, gb, pb, set).ok() || set.count == 0 ||
+      (minimumTranslation && !isExactNormal<S>(a, b, Vec3<S>(-set.normal)))) {
     collideWithContact<S, FS::Box, FS::Box>(a.geometry, a.tf, b.geometry, b.tf, result);
     return result.numContacts();
   }
@@ -1051,8 +1123,10 @@ std::size_t fclCollideEntry(const FclGeometry<S>* ga, const Isometry<S>* ta, con
   const std::size_t before = result.numContacts();
   if (satisfiedBy(request, before)) return before;
   const bool fclContact = request.enable_contact && contactFromFcl(A, B, options);
+  // Two boxes' contacts are gq's contact set in every mode: its deepest point is the exact minimum translation that
+  // minimumTranslation and exactContainedBoxDepth ask for.
   if constexpr (A == FS::Box && B == FS::Box)
-    if (!request.enable_cost && fclContact) return collideBoxBoxContacts<S>(a, b, request, result, before);
+    if (!request.enable_cost && request.enable_contact) return collideBoxBoxContacts<S>(a, b, request, result, before, options.minimumTranslation);
   if (!request.enable_cost && fclContact) return collideWithFclContact<S, A, B>(a, b, request, result, before);
   if (!request.enable_cost && !fclContact) {
     const Collided c = collideSolids<S, A, B>(a, b, request.enable_contact, before > 0, result);
@@ -1071,6 +1145,19 @@ template <class S, std::size_t... I> constexpr std::array<PairEntry<S>, sizeof..
 }
 
 }  // namespace
+
+template <class S> bool fclPlaneContactPosition(FclShape shape, Solid<S> solid, const Vec3<S>& n, S d, Vec3<S>& out) {
+  switch (shape) {
+    case FS::Sphere: out = planeContactPositionOf<S, FS::Sphere>(solid, n, d); return true;
+    case FS::Box: out = planeContactPositionOf<S, FS::Box>(solid, n, d); return true;
+    case FS::Capsule: out = planeContactPositionOf<S, FS::Capsule>(solid, n, d); return true;
+    case FS::Cylinder: out = planeContactPositionOf<S, FS::Cylinder>(solid, n, d); return true;
+    case FS::Cone: out = planeContactPositionOf<S, FS::Cone>(solid, n, d); return true;
+    default: return false;
+  }
+}
+template bool fclPlaneContactPosition<float>(FclShape, Solid<float>, const Vec3<float>&, float, Vec3<float>&);
+template bool fclPlaneContactPosition<double>(FclShape, Solid<double>, const Vec3<double>&, double, Vec3<double>&);
 
 template <class S>
 const std::array<PairEntry<S>, kSolids * kSolids> SolidPairs<S>::table =
