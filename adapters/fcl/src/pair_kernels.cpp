@@ -8,7 +8,8 @@
 //    findOverlapTriangleMesh (exact for sphere/capsule/box; a bounding box or sphere otherwise, then core's exact
 //    shape-triangle test, prepared once per call); a triangle's depth and normal come from distance() against the
 //    triangle as a support shape.
-//  - BVHModel against BVHModel: findOverlapTriangleMeshPairs, one contact per intersecting triangle pair.
+//  - BVHModel against BVHModel: one contact per intersecting triangle pair (core's generateMeshContacts, or
+//    findOverlapTriangleMeshPairs without contact geometry).
 //  - BVHModel against Halfspace/Plane: distance by core's plane-mesh distance; contacts per triangle from its
 //    vertices' heights (FCL reports one a triangle, placed by its rule: fclTrianglePosition), after core's plane-mesh
 //    overlap rejects a mesh that cannot touch.
@@ -24,6 +25,7 @@
 
 #include "fcl_tree.h"
 #include "plane_crossing.h"
+#include "gq/contacts.h"
 #include "gq/cooking.h"
 #include "gq/kernels/mesh.h"
 #include "gq/mesh_query.h"
@@ -181,36 +183,46 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   }
 }
 
+// BVHModel against BVHModel: one contact per intersecting triangle pair (at most `room`, sorted by the pair's ids: a
+// fixed order whatever the traversal's). With geometry, core's generateMeshContacts (each pair pushed out through
+// the shallower of the two faces); without, core's pair overlap.
 template <class T>
 Status meshMeshContacts(const TriangleMeshGeometry<T>& m1, const Transform<T>& p1, const TriangleMeshGeometry<T>& m2,
                         const Transform<T>& p2, bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  const std::size_t first = out.size();
   bool found = false;
-  Status s = findOverlapTriangleMeshPairs<T>(
-      [&](std::uint32_t t1, std::uint32_t t2) {
-        pairs.emplace_back(t1, t2);
-        return pairs.size() < room;
-      },
-      m1, p1, m2, p2, found);
-  if (!s.ok()) return s;
-  std::sort(pairs.begin(), pairs.end());  // a fixed order whatever the traversal's
-  for (const auto& [t1, t2] : pairs) {
-    PairContact<T> c;
-    if (withGeometry) {
-      Triangle<T> a, b;
-      s = getTriangle(m1, p1, t1, a);
-      if (s.ok()) s = getTriangle(m2, p2, t2, b);
-      if (!s.ok()) return s;
-      const TriangleCallbacks<T> ca(a.verts[0], a.verts[1], a.verts[2]), cb(b.verts[0], b.verts[1], b.verts[2]);
-      DistanceResult<T> d;
-      s = distance(d, Geometry<T>(borrowed<T>(ca)), Transform<T>(), Geometry<T>(borrowed<T>(cb)), Transform<T>());
-      if (!s.ok()) return s;
-      c = contactFrom(d);
-    }
-    c.b1 = int(t1);
-    c.b2 = int(t2);
-    out.push_back(c);
+  Status s;
+  if (withGeometry) {
+    s = generateMeshContacts<T>(
+        [&](const MeshContact<T>& m) {
+          PairContact<T> c;
+          c.position = m.position;
+          c.normal = -m.normal;  // core's from surface 1 towards surface 0
+          c.depth = m.depth;
+          c.b1 = int(m.triangle0);
+          c.b2 = int(m.triangle1);
+          out.push_back(c);
+          return out.size() - first < room;
+        },
+        Geometry<T>(m1), p1, Geometry<T>(m2), p2, found);
+  } else {
+    s = findOverlapTriangleMeshPairs<T>(
+        [&](std::uint32_t t1, std::uint32_t t2) {
+          PairContact<T> c;
+          c.b1 = int(t1);
+          c.b2 = int(t2);
+          out.push_back(c);
+          return out.size() - first < room;
+        },
+        m1, p1, m2, p2, found);
   }
+  if (!s.ok()) {
+    out.resize(first);
+    return s;
+  }
+  std::sort(out.begin() + std::ptrdiff_t(first), out.end(), [](const PairContact<T>& x, const PairContact<T>& y) {
+    return std::make_pair(x.b1, x.b2) < std::make_pair(y.b1, y.b2);
+  });
   return s;
 }
 
