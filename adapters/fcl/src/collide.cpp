@@ -15,19 +15,22 @@
 namespace gq::fcl {
 namespace {
 
-// A solid against a two-sided Plane: the contact placed on the plane by FCL's rule for the solid (gq's depth and
-// normal are exact and FCL's; the position is FCL's choice).
+// A solid against a two-sided Plane: the contact placed on the plane by FCL's rule for the solid, and on a
+// symmetric tie FCL's side (gq's depth is exact and FCL's; the position and the side of a tie are FCL's choice).
 template <class S>
 void placeOnPlane(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1, internal::FclShape s1,
                   const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2, internal::FclShape s2,
                   internal::PairContact<S>& contact) {
   const bool planeFirst = s1 == internal::FclShape::Plane;
   const auto* plane = static_cast<const ::fcl::Plane<S>*>(planeFirst ? o1 : o2);
-  const ::fcl::Transform3<S>& planePose = planeFirst ? tf1 : tf2;
-  const Vec3<S> n = planePose.linear() * plane->n;
-  const S d = plane->d + n.dot(planePose.translation());
+  // The world plane as FCL forms it (renormalised), so that a tie is decided on FCL's rounded numbers.
+  const ::fcl::Plane<S> world = ::fcl::transform(*plane, planeFirst ? tf1 : tf2);
+  const Vec3<S> n = world.n;
+  const S d = world.d;
   const internal::Solid<S> solid{planeFirst ? o2 : o1, planeFirst ? &tf2 : &tf1};
-  internal::fclPlaneContactPosition(planeFirst ? s2 : s1, solid, n, d, contact.position);
+  Vec3<S> normal = planeFirst ? Vec3<S>(-contact.normal) : contact.normal;  // from the solid to the plane
+  if (internal::fclPlaneContact(planeFirst ? s2 : s1, solid, n, d, contact.depth, contact.position, normal))
+    contact.normal = planeFirst ? Vec3<S>(-normal) : normal;
 }
 
 // Meshes and two-sided planes: one contact per primitive (pair), gathered in a per-thread buffer.
