@@ -2,11 +2,11 @@
 // gq::fcl's full results against FCL 0.7's on seeded random poses, for every pair of Sphere, Box, Capsule, Cylinder,
 // Cone, Convex, Halfspace, Plane and BVHModel mesh, in float or double: collide booleans, contact counts, depths,
 // normals and positions (also on symmetric tie poses, where several directions are equally deep), distances and
-// nearest points, signed distances. Every disagreement beyond the tolerance must
-// be a deliberate difference of tests/fcl/deliberate_differences.txt (by id), and there gq must give the exact answer
-// (exact_reference.h, long double) where one is known. Within the touch band of touching either boolean is right.
-// GQ_FCL_FULL_RESULT_TESTS (at the end) makes the four tests of one scalar; full_result_test.cpp (double) and
-// full_result_float_test.cpp (float) each instantiate it once, so FCL's templates compile in two units.
+// nearest points, signed distances. Every disagreement beyond the tolerance must be a deliberate difference of
+// tests/fcl/deliberate_differences.txt (by id), and there gq must give the exact answer (exact_reference.h, long
+// double) where one is known. Within the touch band of touching either boolean is right. GQ_FCL_FULL_RESULT_TESTS (at
+// the end) makes the five tests of one scalar; full_result_test.cpp (double) and full_result_float_test.cpp (float)
+// each instantiate it once, so FCL's templates compile in two units.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -451,7 +451,7 @@ inline constexpr int kFullResultPoses = 200;
 
 }  // namespace gq::fcltest
 
-// The four full-result tests of scalar S as the suite `Suite`, over every pair family (fullResultPairs), seeds from
+// The five full-result tests of scalar S as the suite `Suite`, over every pair family (fullResultPairs), seeds from
 // `seedBase`. One body for float and double; each test file instantiates it once.
 #define GQ_FCL_FULL_RESULT_TESTS(Suite, S, seedBase)                                                                  \
   class Suite : public ::testing::TestWithParam<::gq::fcltest::Pair> {                                              \
