@@ -1,6 +1,7 @@
 // Box-box contact sets answered by gq against FCL 0.7's own box routine, float and double, on seeded poses of a box
-// resting on another box's face (both orders, ground turned at random): the same count for each num_max_contacts,
-// and each contact one of FCL's full set with the same depth, normal and position.
+// resting on another box's face (both orders, ground turned at random), by default and with each of Options'
+// corrections: the same count for each num_max_contacts, and each contact one of FCL's full set with the same depth,
+// normal and position.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,6 +74,15 @@ void expectSameContacts(const ::fcl::CollisionResult<S>& fcl, const ::fcl::Colli
   }
 }
 
+// The box-box contact set is the same with the opt-in corrections (its deepest point is already the exact minimum
+// translation they ask for).
+std::vector<gq::fcl::Options> boxOptions() {
+  std::vector<gq::fcl::Options> all(3);
+  all[1].minimumTranslation = true;
+  all[2].exactContainedBoxDepth = true;
+  return all;
+}
+
 TYPED_TEST(FclBoxContactSets, RestingBoxMatchesFclsFaceSet) {
   using S = TypeParam;
   std::mt19937 rng(2024);
@@ -93,25 +103,26 @@ TYPED_TEST(FclBoxContactSets, RestingBoxMatchesFclsFaceSet) {
     for (std::size_t maxContacts : {std::size_t(1), std::size_t(2), std::size_t(4), std::size_t(8)}) {
       const ::fcl::CollisionRequest<S> request(maxContacts, true);
       for (bool topFirst : {true, false}) {
-        ::fcl::CollisionResult<S> fcl, fullFcl, gq;
+        ::fcl::CollisionResult<S> fcl, fullFcl;
         const ::fcl::CollisionRequest<S> full(4, true);
-        if (topFirst) {
-          ::fcl::collide(top.get(), pt, ground.get(), pg, request, fcl);
-          ::fcl::collide(top.get(), pt, ground.get(), pg, full, fullFcl);
-          gq::fcl::collide(top.get(), pt, ground.get(), pg, request, gq);
-        } else {
-          ::fcl::collide(ground.get(), pg, top.get(), pt, request, fcl);
-          ::fcl::collide(ground.get(), pg, top.get(), pt, full, fullFcl);
-          gq::fcl::collide(ground.get(), pg, top.get(), pt, request, gq);
-        }
+        const auto* o1 = topFirst ? top.get() : ground.get();
+        const auto* o2 = topFirst ? ground.get() : top.get();
+        const Tf<S>& p1 = topFirst ? pt : pg;
+        const Tf<S>& p2 = topFirst ? pg : pt;
+        ::fcl::collide(o1, p1, o2, p2, request, fcl);
+        ::fcl::collide(o1, p1, o2, p2, full, fullFcl);
         ASSERT_EQ(fcl.numContacts(), std::min<std::size_t>(maxContacts, 4)) << "trial " << trial;
-        ASSERT_EQ(gq.numContacts(), fcl.numContacts()) << "trial " << trial;
-        expectSameContacts(fullFcl, gq, this->kTol, trial);
-        ++compared;
+        for (const gq::fcl::Options& options : boxOptions()) {
+          ::fcl::CollisionResult<S> gq;
+          gq::fcl::collide(o1, p1, o2, p2, request, gq, options);
+          ASSERT_EQ(gq.numContacts(), fcl.numContacts()) << "trial " << trial;
+          expectSameContacts(fullFcl, gq, this->kTol, trial);
+          ++compared;
+        }
       }
     }
   }
-  EXPECT_EQ(compared, 300 * 4 * 2);
+  EXPECT_EQ(compared, 300 * 4 * 2 * int(boxOptions().size()));
 }
 
 // Separated boxes: no contact, as FCL.

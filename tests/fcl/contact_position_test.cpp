@@ -1,9 +1,10 @@
 // Contact positions by FCL 0.7's rules, compared with FCL itself on seeded random and on axis-aligned poses (where
-// FCL's "equally deep face / side line / disc" rules apply), in float and double: sphere-sphere and sphere, box,
-// capsule, cylinder and cone against a half-space, both orders. Depths and normals agree too; the one deliberate
-// difference is listed (fclConeDepthIsWrong).
+// FCL's "equally deep face / side line / disc" rules apply), in float and double: sphere-sphere, sphere-capsule, and
+// sphere, box, capsule, cylinder and cone against a half-space and a plane, both orders. Depths and normals agree
+// too; the deliberate differences are listed (fclConeDepthIsWrong, FCL's cylinder-plane depths).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <memory>
@@ -145,6 +146,86 @@ TYPED_TEST(FclContactPosition, ARestingBoxTouchesAtItsFaceCentreAsFcl) {
   ASSERT_EQ(gq.numContacts(), 1u);
   EXPECT_NEAR((gq.getContact(0).pos - V3<S>(S(3), S(-1), S(-0.05))).norm(), S(0), S(1e-6));
   expectSameContact(gq.getContact(0), fcl.getContact(0), "resting box");
+}
+
+// A two-sided Plane: FCL puts the point on the plane, by its rule per shape. Aligned poses put the plane at identity
+// (faces, side lines and discs parallel to it). Where FCL's cylinder depth is not gq's (listed "cylinder-plane"),
+// the contact is not compared.
+TYPED_TEST(FclContactPosition, ShapeAgainstPlaneIsPlacedOnThePlaneAsFcl) {
+  using S = TypeParam;
+  std::mt19937 rng(4205);
+  const ::fcl::Plane<S> tilted(V3<S>(S(-0.4), S(0.5), S(1)).normalized(), S(-0.1)), flat(V3<S>(S(0), S(0), S(1)), S(0));
+  int compared = 0, aligned = 0;
+  for (Kind k : {Kind::Sphere, Kind::Box, Kind::Capsule, Kind::Cylinder, Kind::Cone}) {
+    const auto shape = makeShape<S>(k);
+    for (int i = 0; i < 400; ++i) {
+      const bool align = i % 2 == 1;
+      const Tf<S> ps = align ? alignedPose<S>(rng, 0.8) : randomPose<S>(rng, 0.8);
+      const Tf<S> pp = align ? Tf<S>::Identity() : randomPose<S>(rng, 0.3);
+      const ::fcl::Plane<S>& plane = align ? flat : tilted;
+      const V3<S> n = pp.linear() * plane.n;
+      const S d = plane.d + n.dot(pp.translation());
+      for (bool shapeFirst : {true, false}) {
+        const std::string what = std::string(name(k)) + (shapeFirst ? "-Plane" : " (Plane first)") + " pose " +
+                                 std::to_string(i);
+        const ::fcl::CollisionRequest<S> request(1, true);
+        ::fcl::CollisionResult<S> gq, fcl;
+        if (shapeFirst) {
+          gq::fcl::collide(shape.get(), ps, &plane, pp, request, gq);
+          ::fcl::collide(shape.get(), ps, &plane, pp, request, fcl);
+        } else {
+          gq::fcl::collide(&plane, pp, shape.get(), ps, request, gq);
+          ::fcl::collide(&plane, pp, shape.get(), ps, request, fcl);
+        }
+        if (gq.numContacts() == 0 || fcl.numContacts() == 0) continue;
+        const ::fcl::Contact<S>& g = gq.getContact(0);
+        EXPECT_NEAR(n.dot(g.pos) - d, S(0), tolerance<S>()) << what << ": not on the plane";
+        if (k == Kind::Cylinder &&
+            std::abs(g.penetration_depth - fcl.getContact(0).penetration_depth) > tolerance<S>())
+          continue;
+        expectSameContact(g, fcl.getContact(0), what);
+        ++compared;
+        aligned += align;
+      }
+    }
+  }
+  EXPECT_GT(compared, 800);
+  EXPECT_GT(aligned, 300);
+}
+
+// Sphere against capsule: FCL's point lies on the line from the nearest axis point to the sphere's centre, the
+// depth away from the axis.
+TYPED_TEST(FclContactPosition, SphereCapsulePointIsFcls) {
+  using S = TypeParam;
+  std::mt19937 rng(4206);
+  ::fcl::Sphere<S> sphere(S(0.5));
+  ::fcl::Capsule<S> capsule(S(0.3), S(1.4));
+  int compared = 0;
+  for (int i = 0; i < 500; ++i) {
+    const Tf<S> ps = randomPose<S>(rng, 0.6), pc = randomPose<S>(rng, 0.6);
+    for (bool sphereFirst : {true, false}) {
+      ::fcl::CollisionResult<S> gq, fcl;
+      const ::fcl::CollisionRequest<S> request(1, true);
+      if (sphereFirst) {
+        gq::fcl::collide(&sphere, ps, &capsule, pc, request, gq);
+        ::fcl::collide(&sphere, ps, &capsule, pc, request, fcl);
+      } else {
+        gq::fcl::collide(&capsule, pc, &sphere, ps, request, gq);
+        ::fcl::collide(&capsule, pc, &sphere, ps, request, fcl);
+      }
+      ASSERT_EQ(gq.numContacts(), fcl.numContacts()) << i;
+      if (gq.numContacts() == 0) continue;
+      // The exact point: the nearest axis point moved towards the centre by the depth.
+      const V3<S> z = pc.linear().col(2), t = pc.translation(), c = ps.translation();
+      const S along = std::clamp(z.dot(c - t), -capsule.lz / 2, capsule.lz / 2);
+      const V3<S> axis = t + z * along;
+      const V3<S> expected = axis + (c - axis).normalized() * gq.getContact(0).penetration_depth;
+      EXPECT_NEAR((gq.getContact(0).pos - expected).norm(), S(0), tolerance<S>()) << i;
+      expectSameContact(gq.getContact(0), fcl.getContact(0), "pose " + std::to_string(i));
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 100);
 }
 
 TYPED_TEST(FclContactPosition, SphereSpherePointIsFcls) {

@@ -225,6 +225,36 @@ TEST(FclConventions, NumMaxContactsCapsMeshContacts) {
   }
 }
 
+// Two BVHModels with the corrections: core's mesh contacts, one per crossing triangle pair, each pushing the shallower
+// triangle out through the other's face. A vertical triangle dips 0.1 below a flat plate of two triangles: pushed
+// up through the plate's face by 0.1 (through its own face the plate would move 2), at its lowest vertex moved half
+// the depth up; both plate triangles cross it.
+TEST(FclCorrections, MeshMeshContactsPushTheShallowerTriangleOutThroughTheOthersFace) {
+  auto plate = std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>();
+  plate->beginModel();
+  plate->addTriangle(Vector3d(-2, -2, 0), Vector3d(2, -2, 0), Vector3d(2, 2, 0));
+  plate->addTriangle(Vector3d(-2, -2, 0), Vector3d(2, 2, 0), Vector3d(-2, 2, 0));
+  plate->endModel();
+  auto fin = std::make_shared<::fcl::BVHModel<::fcl::OBBRSSd>>();
+  fin->beginModel();
+  fin->addTriangle(Vector3d(0, -0.5, -0.1), Vector3d(0, 0.5, -0.1), Vector3d(0, 0, 1));
+  fin->endModel();
+  gq::fcl::Options options;
+  options.minimumTranslation = true;
+  ::fcl::CollisionResultd result;
+  gq::fcl::collide<double>(plate.get(), at(0, 0, 0), fin.get(), at(0, 0, 0), ::fcl::CollisionRequestd(10, true), result,
+                           options);
+  ASSERT_EQ(result.numContacts(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const ::fcl::Contactd& c = result.getContact(i);
+    EXPECT_EQ(c.b1, int(i));  // sorted by triangle ids
+    EXPECT_EQ(c.b2, 0);
+    EXPECT_NEAR(c.penetration_depth, 0.1, 1e-12);
+    EXPECT_NEAR((c.normal - Vector3d::UnitZ()).norm(), 0, 1e-12);  // from the plate (o1) to the fin (o2)
+    EXPECT_NEAR((c.pos - Vector3d(0, -0.5, -0.05)).norm(), 0, 1e-12);
+  }
+}
+
 // FCL bug fcl#545: a small cube centred on the big cube's diagonal near its corner. The exact MTD pushes the small
 // cube out through one face: its far face at 0.2 must pass the big cube's face at 0.5, 0.3 along an axis; FCL's MPR
 // path returns the diagonal direction, sqrt(3) x deeper (0.52).

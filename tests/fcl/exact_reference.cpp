@@ -228,6 +228,17 @@ bool exactDepth(const TestShape& a, const ::fcl::Transform3d& pa, const TestShap
   return true;
 }
 
+void exactSphereTriangleContact(const TestShape& sphere, const ::fcl::Transform3d& ps, const TestShape& mesh,
+                                const ::fcl::Transform3d& pm, int triangle, ::fcl::Vector3d& nearest,
+                                long double& depth) {
+  const World w = worldOf(pm);
+  const std::vector<int>& f = mesh.faces.at(std::size_t(triangle));
+  const V c = ps.translation().cast<L>();
+  const V q = closestOnTriangle(c, w.apply(mesh.vertices[f[0]]), w.apply(mesh.vertices[f[1]]), w.apply(mesh.vertices[f[2]]));
+  nearest = q.cast<double>();
+  depth = L(sphere.size[0]) - (c - q).norm();
+}
+
 long double certifiedGap(const TestShape& a, const ::fcl::Transform3d& pa, const TestShape& b, const ::fcl::Transform3d& pb,
                          const ::fcl::Vector3d& direction) {
   const V n = direction.cast<L>().normalized();

@@ -31,4 +31,10 @@ long double certifiedGap(const TestShape& a, const ::fcl::Transform3d& pa, const
 bool exactDepth(const TestShape& a, const ::fcl::Transform3d& pa, const TestShape& b, const ::fcl::Transform3d& pb,
                 long double& depth);
 
+// A sphere's contact with one triangle (index into mesh.faces) of a mesh: the triangle's point nearest the centre
+// and the depth r - its distance (negative: apart).
+void exactSphereTriangleContact(const TestShape& sphere, const ::fcl::Transform3d& ps, const TestShape& mesh,
+                                const ::fcl::Transform3d& pm, int triangle, ::fcl::Vector3d& nearest,
+                                long double& depth);
+
 }  // namespace gq::fcltest

@@ -1,10 +1,12 @@
 #pragma once
 // gq::fcl's full results against FCL 0.7's on seeded random poses, for every pair of Sphere, Box, Capsule, Cylinder,
 // Cone, Convex, Halfspace, Plane and BVHModel mesh, in float or double: collide booleans, contact counts, depths,
-// normals and positions, distances and nearest points, signed distances. Every disagreement beyond the tolerance must
-// be a deliberate difference of tests/fcl/deliberate_differences.txt (by id), and there gq must give the exact answer
-// (exact_reference.h, long double) where one is known. Within the touch band of touching either boolean is right.
-// The two instantiations live in full_result_test.cpp (double) and full_result_float_test.cpp (float).
+// normals and positions (also on symmetric tie poses, where several directions are equally deep), distances and
+// nearest points, signed distances. Every disagreement beyond the tolerance must be a deliberate difference of
+// tests/fcl/deliberate_differences.txt (by id), and there gq must give the exact answer (exact_reference.h, long
+// double) where one is known. Within the touch band of touching either boolean is right. GQ_FCL_FULL_RESULT_TESTS (at
+// the end) makes the five tests of one scalar; full_result_test.cpp (double) and full_result_float_test.cpp (float)
+// each instantiate it once, so FCL's templates compile in two units.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -132,6 +134,32 @@ template <class S> PosePair<S> nextPoses(std::mt19937& rng) {
   return p;
 }
 
+// A symmetric tie: b centred where a is, its axes a's turned by one of the 24 rotations of the cube (several
+// directions of minimum translation are equally deep). A plane-like side passes through the other's centre.
+template <class S> PosePair<S> nextTiePoses(std::mt19937& rng, const FullResultCase<S>& c) {
+  const ::fcl::Transform3d base = randomPose(rng, 1.0);
+  const int k = std::uniform_int_distribution<int>(0, 23)(rng);
+  static const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {1, 0, 2}, {0, 2, 1}, {2, 1, 0}};
+  Eigen::Matrix3d turn = Eigen::Matrix3d::Zero();
+  turn(perms[k % 6][0], 0) = (k / 6) & 1 ? -1 : 1;
+  turn(perms[k % 6][1], 1) = (k / 12) & 1 ? -1 : 1;
+  turn.col(2) = turn.col(0).cross(turn.col(1));
+  ::fcl::Transform3d ta = base, tb = base;
+  tb.linear() = base.linear() * turn;
+  const auto throughCentre = [](const TestShape& plane, ::fcl::Transform3d& pose, const ::fcl::Vector3d& centre) {
+    const ::fcl::Vector3d n = pose.linear() * plane.planeNormal;
+    pose.translation() += n * (n.dot(centre - pose.translation()) - plane.planeOffset);
+  };
+  if (isPlaneLike(c.a.kind)) throughCentre(c.a, ta, tb.translation());
+  if (isPlaneLike(c.b.kind)) throughCentre(c.b, tb, ta.translation());
+  PosePair<S> p;
+  p.ta = poseIn<S>(ta);
+  p.tb = poseIn<S>(tb);
+  p.pa = poseInDouble(p.ta);
+  p.pb = poseInDouble(p.tb);
+  return p;
+}
+
 
 // Collide booleans (no contacts asked): FCL's, except within the touch band and where a listed difference shows FCL
 // wrong against the exact answer.
@@ -190,31 +218,61 @@ template <class S> std::vector<::fcl::Contact<S>> inCallerOrder(const FullResult
   return v;
 }
 
-// What of a contact is compared with FCL's, per pair family. Positions: FCL's rule where gq::fcl follows it
-// (docs/fcl.md, "Conventions kept from FCL": sphere-sphere, shapes against a Halfspace, FCL's own MPR contacts); the
-// other closed-form pairs are placed midway between the deepest points. Two boxes: gq's set is FCL's size only for
-// resting faces (FclBoxContactSets), so the depth is checked against the exact minimum translation instead.
+// What of a contact is compared with FCL's, per pair family: everything (positions by FCL's rules, docs/fcl.md,
+// "Conventions kept from FCL") but two boxes, whose set is FCL's size only for resting faces (FclBoxContactSets): the
+// deepest depth is checked against the exact minimum translation instead.
 struct ContactFields {
   bool count = true, depthAndNormal = true, position = true;
 };
 inline ContactFields comparedContactFields(const Pair& p) {
   ContactFields f;
   if (isPair(p, Kind::Box, Kind::Box)) f.count = f.depthAndNormal = f.position = false;
-  if (isPair(p, Kind::Sphere, Kind::Mesh)) f.depthAndNormal = f.position = false;
-  if (isPair(p, Kind::Sphere, Kind::Capsule) || hasKind(p, Kind::Plane) || isPair(p, Kind::Halfspace, Kind::Mesh))
-    f.position = false;
   return f;
+}
+
+// A sphere against a BVHModel: each of gq's triangle contacts is the exact one (depth r - the distance to the
+// triangle's nearest point, placed at that point), whatever FCL answers.
+template <class S>
+void expectExactSphereTriangleContacts(const FullResultCase<S>& c, const PosePair<S>& p,
+                                       const std::vector<::fcl::Contact<S>>& gq, const std::string& where) {
+  const bool sphereFirst = c.pair.first == Kind::Sphere;
+  for (const ::fcl::Contact<S>& x : gq) {
+    ::fcl::Vector3d nearest;
+    long double depth = 0;
+    exactSphereTriangleContact(sphereFirst ? c.a : c.b, sphereFirst ? p.pa : p.pb, sphereFirst ? c.b : c.a,
+                               sphereFirst ? p.pb : p.pa, sphereFirst ? x.b2 : x.b1, nearest, depth);
+    EXPECT_NEAR(double(x.penetration_depth), double(depth), FullResultTolerances<S>().exact) << where;
+    EXPECT_NEAR((x.pos.template cast<double>() - nearest).norm(), 0.0, FullResultTolerances<S>().exact) << where;
+  }
+}
+
+// FCL 0.7's sphere-triangle contact carries minus the depth (listed "sphere-bvh-contact"): its contacts with the
+// sign turned, so that the rest is compared.
+template <class S> void turnSphereTriangleDepths(FullResultCase<S>& c, std::vector<::fcl::Contact<S>>& fcl,
+                                                 const std::string& where) {
+  bool turned = false;
+  for (::fcl::Contact<S>& y : fcl)
+    if (y.penetration_depth < 0) y.penetration_depth = -y.penetration_depth, turned = true;
+  if (turned) acceptListed(c, "sphere-bvh-contact", where);
 }
 
 // The listed difference that explains FCL's contact at a pose where gq's differs, or "unlisted".
 template <class S>
 std::string contactDifferenceId(const FullResultCase<S>& c, const PosePair<S>& p, double touch,
-                                const std::vector<::fcl::Contact<S>>& gq) {
+                                const std::vector<::fcl::Contact<S>>& gq, const std::vector<::fcl::Contact<S>>& fcl) {
+  // A symmetric tie where FCL's normal is not a unit normal (zero: a sphere centred on the other sphere's centre or
+  // on a capsule's axis): gq keeps a unit one.
+  if (gq.size() == 1 && fcl.size() == 1 && fcl[0].normal.norm() < S(0.5)) {
+    EXPECT_NEAR(double(gq[0].normal.norm()), 1.0, FullResultTolerances<S>().exact) << c.label();
+    if (isPair(c.pair, Kind::Sphere, Kind::Sphere)) return "concentric-spheres";
+    if (isPair(c.pair, Kind::Sphere, Kind::Capsule)) return "sphere-on-capsule-axis";
+  }
   if (isPair(c.pair, Kind::Cylinder, Kind::Plane)) {
     EXPECT_EQ(gq.size(), 1u) << c.label();
     if (!gq.empty()) EXPECT_NEAR(double(gq[0].penetration_depth), -touch, FullResultTolerances<S>().exact) << c.label();
     return "cylinder-plane";
   }
+  if (isPair(c.pair, Kind::Sphere, Kind::Mesh)) return "sphere-bvh-contact";  // gq's checked exact by the caller
   if (isPair(c.pair, Kind::Cone, Kind::Halfspace)) {
     const bool coneFirst = c.pair.first == Kind::Cone;
     const ::fcl::Transform3<S>& cone = coneFirst ? p.ta : p.tb;
@@ -225,13 +283,13 @@ std::string contactDifferenceId(const FullResultCase<S>& c, const PosePair<S>& p
   return "unlisted";
 }
 
-template <class S> void checkContacts(FullResultCase<S>& c, int poses, std::uint32_t seed) {
+template <class S> void checkContacts(FullResultCase<S>& c, int poses, std::uint32_t seed, bool ties = false) {
   const FullResultTolerances<S> tol;
   const double within = fclClosedForm(c.pair) ? tol.closedForm : tol.iterative;
   const ContactFields fields = comparedContactFields(c.pair);
   std::mt19937 rng(seed);
   for (int i = 0; i < poses; ++i) {
-    const PosePair<S> p = nextPoses<S>(rng);
+    const PosePair<S> p = ties ? nextTiePoses<S>(rng, c) : nextPoses<S>(rng);
     if (!c.fclCollide) continue;
     const ::fcl::CollisionRequest<S> request(1000, true);  // room for every triangle
     ::fcl::CollisionResult<S> gq, fcl;
@@ -244,7 +302,12 @@ template <class S> void checkContacts(FullResultCase<S>& c, int poses, std::uint
     const std::string where = c.label() + " pose " + std::to_string(i) + " (signed distance " + std::to_string(touch) + ")";
     if (gq.isCollision() != fcl.isCollision()) continue;  // a boolean difference: checkCollideBooleans
     ++c.compared;
-    const auto g = sortedContacts(gq), f = inCallerOrder(c, sortedContacts(fcl));
+    const auto g = sortedContacts(gq);
+    auto f = inCallerOrder(c, sortedContacts(fcl));
+    if (isPair(c.pair, Kind::Sphere, Kind::Mesh)) {
+      expectExactSphereTriangleContacts(c, p, g, where);
+      turnSphereTriangleDepths(c, f, where);
+    }
     // gq's deepest contact is the exact depth where gq computes the contact (not FCL's MPR contacts, docs/fcl.md).
     long double depth = 0;
     const bool ownContact = hasKind(c.pair, Kind::Sphere) || isPair(c.pair, Kind::Box, Kind::Box);
@@ -276,7 +339,7 @@ template <class S> void checkContacts(FullResultCase<S>& c, int poses, std::uint
       what << "; first depth " << g[0].penetration_depth << " / " << f[0].penetration_depth << ", normal ("
            << g[0].normal.transpose() << ") / (" << f[0].normal.transpose() << "), pos (" << g[0].pos.transpose()
            << ") / (" << f[0].pos.transpose() << ")";
-    acceptListed(c, contactDifferenceId(c, p, touch, g), what.str());
+    acceptListed(c, contactDifferenceId(c, p, touch, g, f), what.str());
   }
 }
 
@@ -360,4 +423,47 @@ template <class S> void checkDistances(FullResultCase<S>& c, int poses, std::uin
               << w.second << "\n";
 }
 
+// What one full-result test compares.
+enum class FullResultCheck { Booleans, Contacts, TieContacts, Distances, SignedDistances };
+
+// One full-result test of `pair` in S over `poses` seeded poses; seeds derive from `seedBase` and the pair. Every
+// disagreement with FCL must be a listed difference.
+template <class S> void runFullResultCheck(const Pair& pair, FullResultCheck check, std::uint32_t seedBase, int poses) {
+  const std::uint32_t seed = seedBase + 100u * std::uint32_t(pair.first) + std::uint32_t(pair.second);
+  FullResultCase<S> c = makeFullResultCase<S>(pair, seed);
+  switch (check) {
+    case FullResultCheck::Booleans: checkCollideBooleans(c, poses, seed + 1); printSummary(c, "booleans"); break;
+    case FullResultCheck::Contacts: checkContacts(c, poses, seed + 2); printSummary(c, "contacts"); break;
+    case FullResultCheck::TieContacts:
+      checkContacts(c, poses / 4, seed + 5, true);
+      printSummary(c, "tie contacts");
+      break;
+    case FullResultCheck::Distances: checkDistances(c, poses, seed + 3, false); printSummary(c, "distances"); break;
+    case FullResultCheck::SignedDistances:
+      checkDistances(c, poses, seed + 4, true);
+      printSummary(c, "signed distances");
+      break;
+  }
+  EXPECT_EQ(c.listed.count("unlisted"), 0u);
+}
+
+inline constexpr int kFullResultPoses = 200;
+
 }  // namespace gq::fcltest
+
+// The five full-result tests of scalar S as the suite `Suite`, over every pair family (fullResultPairs), seeds from
+// `seedBase`. One body for float and double; each test file instantiates it once.
+#define GQ_FCL_FULL_RESULT_TESTS(Suite, S, seedBase)                                                                  \
+  class Suite : public ::testing::TestWithParam<::gq::fcltest::Pair> {                                              \
+   protected:                                                                                                       \
+    void run(::gq::fcltest::FullResultCheck check) {                                                                \
+      ::gq::fcltest::runFullResultCheck<S>(GetParam(), check, seedBase, ::gq::fcltest::kFullResultPoses);            \
+    }                                                                                                               \
+  };                                                                                                                \
+  TEST_P(Suite, CollideBooleansEqualFclsOutsideTheTouchBand) { run(::gq::fcltest::FullResultCheck::Booleans); }      \
+  TEST_P(Suite, ContactsEqualFcls) { run(::gq::fcltest::FullResultCheck::Contacts); }                               \
+  TEST_P(Suite, TieContactsEqualFcls) { run(::gq::fcltest::FullResultCheck::TieContacts); }                         \
+  TEST_P(Suite, DistancesAndNearestPointsEqualFcls) { run(::gq::fcltest::FullResultCheck::Distances); }             \
+  TEST_P(Suite, SignedDistancesEqualFcls) { run(::gq::fcltest::FullResultCheck::SignedDistances); }                 \
+  INSTANTIATE_TEST_SUITE_P(AllFamilies, Suite, ::testing::ValuesIn(::gq::fcltest::fullResultPairs()),               \
+                           ::gq::fcltest::PairName())

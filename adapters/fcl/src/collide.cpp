@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <vector>
 
+#include <fcl/geometry/shape/plane.h>
+
 #include "convert.h"
 #include "fallback.h"
 #include "fcl_tree.h"
@@ -13,15 +15,38 @@
 namespace gq::fcl {
 namespace {
 
+// A solid against a two-sided Plane: the contact placed on the plane by FCL's rule for the solid, and on a
+// symmetric tie FCL's side (gq's depth is exact and FCL's; the position and the side of a tie are FCL's choice).
+template <class S>
+void placeOnPlane(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1, internal::FclShape s1,
+                  const ::fcl::CollisionGeometry<S>* o2, const ::fcl::Transform3<S>& tf2, internal::FclShape s2,
+                  internal::PairContact<S>& contact) {
+  const bool planeFirst = s1 == internal::FclShape::Plane;
+  const auto* plane = static_cast<const ::fcl::Plane<S>*>(planeFirst ? o1 : o2);
+  // The world plane as FCL forms it (renormalised), so that a tie is decided on FCL's rounded numbers.
+  const ::fcl::Plane<S> world = ::fcl::transform(*plane, planeFirst ? tf1 : tf2);
+  const Vec3<S> n = world.n;
+  const S d = world.d;
+  const internal::Solid<S> solid{planeFirst ? o2 : o1, planeFirst ? &tf2 : &tf1};
+  Vec3<S> normal = planeFirst ? Vec3<S>(-contact.normal) : contact.normal;  // from the solid to the plane
+  if (internal::fclPlaneContact(planeFirst ? s2 : s1, solid, n, d, contact.depth, contact.position, normal))
+    contact.normal = planeFirst ? Vec3<S>(-normal) : normal;
+}
+
 // Meshes and two-sided planes: one contact per primitive (pair), gathered in a per-thread buffer.
 template <class S>
-bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const internal::Converted<S>& a, const Transform<S>& pa,
-                    const ::fcl::CollisionGeometry<S>* o2, const internal::Converted<S>& b, const Transform<S>& pb,
+bool collideGeneral(const ::fcl::CollisionGeometry<S>* o1, const ::fcl::Transform3<S>& tf1,
+                    const internal::Converted<S>& a, const Transform<S>& pa, const ::fcl::CollisionGeometry<S>* o2,
+                    const ::fcl::Transform3<S>& tf2, const internal::Converted<S>& b, const Transform<S>& pb,
                     const ::fcl::CollisionRequest<S>& request, ::fcl::CollisionResult<S>& result) {
   thread_local std::vector<internal::PairContact<S>> contacts;
   contacts.clear();
   const std::size_t room = request.num_max_contacts - std::min(request.num_max_contacts, result.numContacts());
   if (!internal::pairContacts(a, pa, b, pb, request.enable_contact, room, contacts).ok()) return false;
+  const bool solidPlane = (a.shape == internal::FclShape::Plane && b.isSolid()) ||
+                          (b.shape == internal::FclShape::Plane && a.isSolid());
+  if (solidPlane && request.enable_contact)
+    for (internal::PairContact<S>& c : contacts) placeOnPlane(o1, tf1, a.shape, o2, tf2, b.shape, c);
   for (const internal::PairContact<S>& c : contacts) {
     if (result.numContacts() >= request.num_max_contacts) break;
     if (request.enable_contact)
@@ -90,7 +115,8 @@ template <class S>
   if (ca == Conversion::NotModelled || cb == Conversion::NotModelled || request.enable_cost || fclContact ||
       (a.isSolid() && b.isSolid()))
     return fclCollide(o1, tf1, o2, tf2, request, result);
-  if (!collideGeneral(o1, a, pa, o2, b, pb, request, result)) return fclCollide(o1, tf1, o2, tf2, request, result);
+  if (!collideGeneral(o1, tf1, a, pa, o2, tf2, b, pb, request, result))
+    return fclCollide(o1, tf1, o2, tf2, request, result);
   countGq();
   return result.numContacts();
 }

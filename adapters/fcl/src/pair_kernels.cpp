@@ -8,9 +8,11 @@
 //    findOverlapTriangleMesh (exact for sphere/capsule/box; a bounding box or sphere otherwise, then core's exact
 //    shape-triangle test, prepared once per call); a triangle's depth and normal come from distance() against the
 //    triangle as a support shape.
-//  - BVHModel against BVHModel: findOverlapTriangleMeshPairs, one contact per intersecting triangle pair.
+//  - BVHModel against BVHModel: one contact per intersecting triangle pair (core's generateMeshContacts, or
+//    findOverlapTriangleMeshPairs without contact geometry).
 //  - BVHModel against Halfspace/Plane: distance by core's plane-mesh distance; contacts per triangle from its
-//    vertices' heights (FCL reports one a triangle), after core's plane-mesh overlap rejects a mesh that cannot touch.
+//    vertices' heights (FCL reports one a triangle, placed by its rule: fclTrianglePosition), after core's plane-mesh
+//    overlap rejects a mesh that cannot touch.
 #include "pair_kernels.h"
 
 #include <algorithm>
@@ -22,6 +24,8 @@
 #include <vector>
 
 #include "fcl_tree.h"
+#include "plane_crossing.h"
+#include "gq/contacts.h"
 #include "gq/cooking.h"
 #include "gq/kernels/mesh.h"
 #include "gq/mesh_query.h"
@@ -179,55 +183,75 @@ Status meshShapeContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   }
 }
 
+// BVHModel against BVHModel: one contact per intersecting triangle pair (at most `room`, sorted by the pair's ids: a
+// fixed order whatever the traversal's). With geometry, core's generateMeshContacts (each pair pushed out through
+// the shallower of the two faces); without, core's pair overlap.
 template <class T>
 Status meshMeshContacts(const TriangleMeshGeometry<T>& m1, const Transform<T>& p1, const TriangleMeshGeometry<T>& m2,
                         const Transform<T>& p2, bool withGeometry, std::size_t room, std::vector<PairContact<T>>& out) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  const std::size_t first = out.size();
   bool found = false;
-  Status s = findOverlapTriangleMeshPairs<T>(
-      [&](std::uint32_t t1, std::uint32_t t2) {
-        pairs.emplace_back(t1, t2);
-        return pairs.size() < room;
-      },
-      m1, p1, m2, p2, found);
-  if (!s.ok()) return s;
-  std::sort(pairs.begin(), pairs.end());  // a fixed order whatever the traversal's
-  for (const auto& [t1, t2] : pairs) {
-    PairContact<T> c;
-    if (withGeometry) {
-      Triangle<T> a, b;
-      s = getTriangle(m1, p1, t1, a);
-      if (s.ok()) s = getTriangle(m2, p2, t2, b);
-      if (!s.ok()) return s;
-      const TriangleCallbacks<T> ca(a.verts[0], a.verts[1], a.verts[2]), cb(b.verts[0], b.verts[1], b.verts[2]);
-      DistanceResult<T> d;
-      s = distance(d, Geometry<T>(borrowed<T>(ca)), Transform<T>(), Geometry<T>(borrowed<T>(cb)), Transform<T>());
-      if (!s.ok()) return s;
-      c = contactFrom(d);
-    }
-    c.b1 = int(t1);
-    c.b2 = int(t2);
-    out.push_back(c);
+  Status s;
+  if (withGeometry) {
+    s = generateMeshContacts<T>(
+        [&](const MeshContact<T>& m) {
+          PairContact<T> c;
+          c.position = m.position;
+          c.normal = -m.normal;  // core's from surface 1 towards surface 0
+          c.depth = m.depth;
+          c.b1 = int(m.triangle0);
+          c.b2 = int(m.triangle1);
+          out.push_back(c);
+          return out.size() - first < room;
+        },
+        Geometry<T>(m1), p1, Geometry<T>(m2), p2, found);
+  } else {
+    s = findOverlapTriangleMeshPairs<T>(
+        [&](std::uint32_t t1, std::uint32_t t2) {
+          PairContact<T> c;
+          c.b1 = int(t1);
+          c.b2 = int(t2);
+          out.push_back(c);
+          return out.size() - first < room;
+        },
+        m1, p1, m2, p2, found);
   }
+  if (!s.ok()) {
+    out.resize(first);
+    return s;
+  }
+  std::sort(out.begin() + std::ptrdiff_t(first), out.end(), [](const PairContact<T>& x, const PairContact<T>& y) {
+    return std::make_pair(x.b1, x.b2) < std::make_pair(y.b1, y.b2);
+  });
   return s;
 }
 
 // A triangle's heights above FCL's Halfspace / Plane (n.x = d, n = the gq plane frame's +X).
-template <class T> struct TriangleHeights {  // starts as no vertex seen
-  T lo = std::numeric_limits<T>::max(), hi = -std::numeric_limits<T>::max();
-  Vec3<T> lowest = Vec3<T>::Zero(), highest = Vec3<T>::Zero();  // world vertices
+template <class T> struct TriangleHeights {
+  Vec3<T> vertex[3];  // world vertices, in the triangle's order
+  T height[3];
+  int lowest = 0, highest = 0;  // the first vertex of least / greatest height (FCL's choice on a tie)
+  T lo() const { return height[lowest]; }
+  T hi() const { return height[highest]; }
 };
 template <class T>
 TriangleHeights<T> heightsOf(const TriangleMesh<T>& mesh, std::size_t cooked, const Transform<T>& meshPose,
                              const Vec3<T>& n, T d) {
   TriangleHeights<T> h;
-  for (std::uint32_t i : mesh.triangles[cooked]) {
-    const Vec3<T> v = meshPose.transform(mesh.vertices[i]);
-    const T height = n.dot(v) - d;
-    if (height < h.lo) h.lo = height, h.lowest = v;
-    if (height > h.hi) h.hi = height, h.highest = v;
+  for (int k = 0; k < 3; ++k) {
+    h.vertex[k] = meshPose.transform(mesh.vertices[mesh.triangles[cooked][k]]);
+    h.height[k] = n.dot(h.vertex[k]) - d;
+    if (h.height[k] < h.height[h.lowest]) h.lowest = k;
+    if (h.height[k] > h.height[h.highest]) h.highest = k;
   }
   return h;
+}
+
+// FCL 0.7's contact position of a triangle against its Halfspace (midway between the deepest vertex and the
+// boundary) or crossing its Plane (the midpoint of the two points where its edges cross the plane).
+template <class T> Vec3<T> fclTrianglePosition(const TriangleHeights<T>& h, const Vec3<T>& n, bool twoSided) {
+  if (twoSided) return straddleMidpoint(h.vertex, h.height, false);
+  return h.vertex[h.lowest] - n * (h.lo() * T(0.5));
 }
 
 // Whether any triangle can reach FCL's Halfspace (core's mesh-plane overlap) or cross its Plane (then the mesh
@@ -244,8 +268,8 @@ Status meshMayTouchPlane(const TriangleMeshGeometry<T>& mesh, const Transform<T>
 
 // BVHModel against Halfspace / Plane, mesh first: one contact per triangle reaching the solid side (half-space) or
 // crossing the plane, as FCL's mesh-shape traversal does; the whole mesh is first rejected by core's overlap when
-// it cannot touch. A triangle's contact: its deepest vertex, pushed out along -n (half-space; two-sided: towards
-// the side the triangle mostly lies on).
+// it cannot touch. A triangle's depth: its deepest vertex's (two-sided: towards the side the triangle mostly lies
+// on), the normal along -n (or n), the position FCL's.
 template <class T>
 Status meshPlaneContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>& meshPose, const Converted<T>& plane,
                          const Transform<T>& planePose, bool withGeometry, std::size_t room,
@@ -259,15 +283,14 @@ Status meshPlaneContacts(const TriangleMeshGeometry<T>& mesh, const Transform<T>
   const std::size_t first = out.size();
   for (std::size_t k = 0; k < m.triangles.size() && out.size() - first < room; ++k) {
     const TriangleHeights<T> h = heightsOf(m, k, meshPose, n, d);
-    const bool below = !twoSided || -h.lo <= h.hi;
-    const T signedDistance = below ? (twoSided ? std::max(h.lo, -h.hi) : h.lo) : -h.hi;
+    const bool below = !twoSided || -h.lo() <= h.hi();
+    const T signedDistance = below ? (twoSided ? std::max(h.lo(), -h.hi()) : h.lo()) : -h.hi();
     if (signedDistance > T(0)) continue;
     PairContact<T> c;
     if (withGeometry) {
       c.depth = -signedDistance;
       c.normal = below ? Vec3<T>(-n) : n;
-      // Midway between the deepest vertex and the plane.
-      c.position = (below ? h.lowest : h.highest) + c.normal * (c.depth / T(2));
+      c.position = fclTrianglePosition(h, n, twoSided);
     }
     c.b1 = int(m.inputIndex[k]);
     out.push_back(c);
@@ -312,7 +335,10 @@ Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const
   const Status s = distance(d, tri, Transform<T>(), shape, pose);
   if (!s.ok()) return s;
   hit = d.distance <= T(0);
-  if (hit) contact = contactFrom(d);
+  if (!hit) return s;
+  contact = contactFrom(d);
+  // A sphere: FCL's point, the triangle's point nearest the centre (the witness on the triangle).
+  if (shape.type() == GeometryType::Sphere) contact.position = d.point0;
   return s;
 }
 

@@ -32,7 +32,7 @@ template <class T> struct PairDistance {
 template <class T> Status candidateVolume(const Geometry<T>& g, CandidateVolume<T>& out);
 
 // Contact of `shape` with one world triangle (hit: distance <= 0); normal from the triangle to the shape, position
-// midway between the deepest points.
+// midway between the deepest points (a sphere: FCL's, the triangle's point nearest its centre).
 template <class T>
 Status triangleContact(const Geometry<T>& shape, const Transform<T>& pose, const Triangle<T>& triangle,
                        PairContact<T>& contact, bool& hit);

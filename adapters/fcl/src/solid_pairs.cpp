@@ -27,6 +27,7 @@
 #include "gq/contacts.h"
 #include "gq/kernels.h"
 #include "pair_kernels.h"
+#include "plane_crossing.h"
 
 namespace gq::fcl::internal {
 namespace {
@@ -859,7 +860,8 @@ template <FS A, FS B> constexpr bool fclPositionRule() {
   constexpr auto halfspaceRule = [](FS x) {
     return x == FS::Sphere || x == FS::Box || x == FS::Capsule || x == FS::Cylinder || x == FS::Cone;
   };
-  return (A == FS::Sphere && B == FS::Sphere) || (B == FS::Halfspace && halfspaceRule(A)) ||
+  return (A == FS::Sphere && B == FS::Sphere) || (A == FS::Sphere && B == FS::Capsule) ||
+         (A == FS::Capsule && B == FS::Sphere) || (B == FS::Halfspace && halfspaceRule(A)) ||
          (A == FS::Halfspace && halfspaceRule(B));
 }
 
@@ -923,6 +925,40 @@ template <class S, FS A> Vec3<S> halfspaceContactPosition(Solid<S> shape, const 
   return deepest + n * (S(0.5) * depth);
 }
 
+// A sphere against a capsule, `depth` deep, in the capsule's frame as FCL forms it: the centre's nearest point on
+// the axis segment (from the +z end towards the -z end) and the offset from it to the centre. FCL's point lies on
+// the line from that axis point to the centre, `depth` from the axis (the axis point itself for a centre on the
+// axis); its normal is the offset's direction, which a centre on the axis to rounding leaves to the rounding.
+template <class S> struct SphereOnCapsuleAxis {
+  Vec3<S> axisPoint, offset;  // capsule frame
+};
+template <class S> SphereOnCapsuleAxis<S> sphereOnCapsuleAxis(Solid<S> sphere, Solid<S> capsule) {
+  const S half = static_cast<const ::fcl::Capsule<S>*>(capsule.geometry)->lz * S(0.5);
+  const Vec3<S> centre = capsule.tf->inverse(Eigen::Isometry) * sphere.tf->translation();
+  const Vec3<S> top(S(0), S(0), half), down(S(0), S(0), S(-2) * half);
+  const S along = (centre - top).dot(down), length2 = down.dot(down);
+  SphereOnCapsuleAxis<S> r;
+  r.axisPoint = along <= S(0) ? top : length2 <= along ? Vec3<S>(-top) : Vec3<S>(top + down * (along / length2));
+  r.offset = centre - r.axisPoint;
+  return r;
+}
+
+template <class S> Vec3<S> sphereCapsulePosition(Solid<S> sphere, Solid<S> capsule, S depth) {
+  const SphereOnCapsuleAxis<S> r = sphereOnCapsuleAxis(sphere, capsule);
+  const S len = r.offset.norm();
+  return *capsule.tf * (len > S(0) ? Vec3<S>(r.axisPoint + r.offset * (depth / len)) : r.axisPoint);
+}
+
+// A sphere centred on a capsule's axis (to rounding: every direction perpendicular to the axis is as deep): FCL's
+// normal, from o1 to o2, where it is a unit one (a zero offset leaves gq's).
+template <class S> void sphereCapsuleTieNormal(Solid<S> sphere, Solid<S> capsule, bool sphereFirst, Vec3<S>& normal) {
+  const SphereOnCapsuleAxis<S> r = sphereOnCapsuleAxis(sphere, capsule);
+  const S len = r.offset.norm(), scale = std::max(S(1), r.axisPoint.norm());
+  if (!(len > S(0)) || len > S(64) * std::numeric_limits<S>::epsilon() * scale) return;
+  const Vec3<S> towardsAxis = capsule.tf->linear() * Vec3<S>(-r.offset / len);
+  normal = sphereFirst ? towardsAxis : Vec3<S>(-towardsAxis);
+}
+
 template <class S> Vec3<S> halfspaceNormal(Solid<S> halfspace) {
   return halfspace.tf->linear() * static_cast<const ::fcl::Halfspace<S>*>(halfspace.geometry)->n;
 }
@@ -933,12 +969,163 @@ template <class S, FS A, FS B> Vec3<S> fclContactPosition(Solid<S> a, Solid<S> b
     const S ra = sphereRadius(a), rb = sphereRadius(b);
     const Vec3<S> ca = a.tf->translation(), cb = b.tf->translation();
     return ca + (cb - ca) * (ra / (ra + rb));
+  } else if constexpr (A == FS::Sphere && B == FS::Capsule) {
+    return sphereCapsulePosition(a, b, depth);
+  } else if constexpr (A == FS::Capsule && B == FS::Sphere) {
+    return sphereCapsulePosition(b, a, depth);
   } else if constexpr (B == FS::Halfspace) {
     return halfspaceContactPosition<S, A>(a, halfspaceNormal(b), depth);
   } else if constexpr (A == FS::Halfspace) {
     return halfspaceContactPosition<S, B>(b, halfspaceNormal(a), depth);
   } else {
     return midway;
+  }
+}
+
+// ---- a solid crossing FCL's two-sided Plane n.x = d: FCL 0.7 puts the contact on the plane ----
+// A sphere or box: its half-space point (above) for the side its centre is not on, projected onto the plane; a
+// cylinder: the nearer to the plane of its two extreme rim points along n, projected (the centre's projection when
+// the axis is parallel to the plane). A capsule: where its axis crosses the plane; else the projection of its centre
+// when both ends are within the radius of the plane, or of the end that is. A cone: the midpoint of the two points
+// where the triangle (apex, the two rim points in the plane of the axis and n) crosses the plane; the axis parallel
+// to the plane (within FCL's tolerance): the centre's projection moved from the base towards the apex by depth /
+// radius of the length.
+template <class S> Vec3<S> ontoPlane(const Vec3<S>& p, const Vec3<S>& n, S d) { return p - n * (n.dot(p) - d); }
+
+template <class S> Vec3<S> capsulePlanePosition(Solid<S> shape, const Vec3<S>& n, S d) {
+  const auto* c = static_cast<const ::fcl::Capsule<S>*>(shape.geometry);
+  const Vec3<S> t = shape.tf->translation(), half = shape.tf->linear().col(2) * (c->lz * S(0.5));
+  const Vec3<S> p1 = t + half, p2 = t - half;
+  const S d1 = n.dot(p1) - d, d2 = n.dot(p2) - d;
+  if (d1 * d2 < -fclParallelTolerance<S>()) return planeCrossing(p1, d1, p2, d2);
+  const bool near1 = std::abs(d1) <= c->radius, near2 = std::abs(d2) <= c->radius;
+  return ontoPlane(near1 && near2 ? t : near1 ? p1 : p2, n, d);
+}
+
+// A cylinder's two rim points FCL compares with the plane (the axis not parallel to it): c[0] on the top disc, c[1]
+// on the bottom, the extreme points along n, with their heights h (FCL's arithmetic: a tie is decided as FCL does).
+template <class S> struct CylinderRims {
+  Vec3<S> c[2];
+  S h[2];
+  int nearer() const { return std::abs(h[0]) > std::abs(h[1]) ? 1 : 0; }
+};
+template <class S> CylinderRims<S> cylinderRims(Solid<S> shape, const Vec3<S>& n, S d) {
+  const auto* g = static_cast<const ::fcl::Cylinder<S>*>(shape.geometry);
+  const Vec3<S> t = shape.tf->translation(), z = shape.tf->linear().col(2);
+  const S tol = fclParallelTolerance<S>(), cosa = z.dot(n);
+  Vec3<S> rim = z * cosa - n;
+  rim = std::abs(cosa + S(1)) < tol || std::abs(cosa - S(1)) < tol ? Vec3<S>::Zero()
+                                                                   : Vec3<S>(rim * (g->radius / rim.norm()));
+  const Vec3<S> half = z * (g->lz * S(0.5)), turn = cosa > S(0) ? Vec3<S>(-rim) : rim;
+  CylinderRims<S> r;
+  r.c[0] = t + half + turn;
+  r.c[1] = t - half - turn;
+  for (int i = 0; i < 2; ++i) r.h[i] = n.dot(r.c[i]) - d;
+  return r;
+}
+
+template <class S> Vec3<S> cylinderPlanePosition(Solid<S> shape, const Vec3<S>& n, S d) {
+  const Vec3<S> t = shape.tf->translation();
+  if (std::abs(shape.tf->linear().col(2).dot(n)) < fclParallelTolerance<S>()) return ontoPlane(t, n, d);
+  const CylinderRims<S> r = cylinderRims(shape, n, d);
+  const int k = r.nearer();
+  return r.c[k] - n * r.h[k];
+}
+
+// A cone's apex and the two rim points in the plane of its axis and n (the axis not parallel to the plane), with
+// their heights (FCL's arithmetic).
+template <class S> struct ConeTriangle {
+  Vec3<S> p[3];
+  S h[3];
+};
+template <class S> ConeTriangle<S> coneTriangle(Solid<S> shape, const Vec3<S>& n, S d) {
+  const auto* c = static_cast<const ::fcl::Cone<S>*>(shape.geometry);
+  const Vec3<S> t = shape.tf->translation(), z = shape.tf->linear().col(2);
+  const S tol = fclParallelTolerance<S>(), cosa = z.dot(n);
+  Vec3<S> rim = z * cosa - n;
+  rim = std::abs(cosa + S(1)) < tol || std::abs(cosa - S(1)) < tol ? Vec3<S>::Zero()
+                                                                   : Vec3<S>(rim * (c->radius / rim.norm()));
+  const Vec3<S> base = t - z * (c->lz * S(0.5));
+  ConeTriangle<S> r{{t + z * (c->lz * S(0.5)), base + rim, base - rim}, {}};
+  for (int i = 0; i < 3; ++i) r.h[i] = n.dot(r.p[i]) - d;
+  return r;
+}
+
+template <class S> Vec3<S> conePlanePosition(Solid<S> shape, const Vec3<S>& n, S d) {
+  const auto* c = static_cast<const ::fcl::Cone<S>*>(shape.geometry);
+  const Vec3<S> t = shape.tf->translation(), z = shape.tf->linear().col(2);
+  const S tol = fclParallelTolerance<S>(), cosa = z.dot(n), centre = n.dot(t) - d;
+  if (std::abs(cosa) < tol) {
+    const S depth = c->radius - std::abs(centre);
+    return t - n * centre + z * (c->lz * (depth / c->radius - S(1)) * S(0.5));
+  }
+  const ConeTriangle<S> tri = coneTriangle(shape, n, d);
+  return straddleMidpoint(tri.p, tri.h, true);
+}
+
+template <class S, FS A> void extentAlong(Solid<S> shape, const Vec3<S>& n, S& lo, S& hi);
+
+// The normal (from the shape to the plane: +n or -n) FCL's rule gives a shape crossing the plane: the side of the
+// centre (sphere, box), of the nearer end or rim point (capsule, cylinder), of the smaller reach (cone).
+template <class S, FS A> Vec3<S> planeNormalOf(Solid<S> shape, const Vec3<S>& n, S d) {
+  const Vec3<S> t = shape.tf->translation(), z = shape.tf->linear().col(2);
+  const S tol = fclParallelTolerance<S>(), centre = n.dot(t) - d, cosa = z.dot(n);
+  const auto towards = [&](bool minus) { return minus ? Vec3<S>(-n) : n; };
+  if constexpr (A == FS::Capsule) {
+    const Vec3<S> half = z * (static_cast<const ::fcl::Capsule<S>*>(shape.geometry)->lz * S(0.5));
+    const S d1 = n.dot(t + half) - d, d2 = n.dot(t - half) - d;  // FCL's ends' heights, as FCL rounds them
+    if (d1 * d2 < -tol) return std::abs(d1) < std::abs(d2) ? towards(d1 < S(0)) : towards(d2 < S(0));
+    return towards(!(d1 < S(0)));
+  } else if constexpr (A == FS::Cylinder || A == FS::Cone) {
+    if (std::abs(cosa) < tol) return towards(!(centre < S(0)));
+    if constexpr (A == FS::Cylinder) {
+      const CylinderRims<S> r = cylinderRims(shape, n, d);  // the nearer rim point's side decides
+      return towards(r.h[r.nearer()] < S(0));
+    } else {
+      const ConeTriangle<S> c = coneTriangle(shape, n, d);  // the side reaching farther decides
+      S above = 0, below = 0;
+      for (S h : c.h) (h >= S(0) ? above : below) = std::max(h >= S(0) ? above : below, std::abs(h));
+      return towards(above > below);
+    }
+  } else {
+    return towards(centre > S(0));
+  }
+}
+
+// The shape's extent [lo, hi] along the unit n (world).
+template <class S, FS A> void extentAlong(Solid<S> shape, const Vec3<S>& n, S& lo, S& hi) {
+  const Mat3<S> r = shape.tf->linear();
+  const S c = n.dot(shape.tf->translation()), cosa = r.col(2).dot(n);
+  const S sina = std::sqrt(std::max(S(0), S(1) - cosa * cosa));
+  S reach = 0;
+  if constexpr (A == FS::Sphere) {
+    reach = sphereRadius(shape);
+  } else if constexpr (A == FS::Box) {
+    reach = (r.transpose() * n).cwiseAbs().dot(boxHalf(shape));
+  } else if constexpr (A == FS::Capsule) {
+    const auto* g = static_cast<const ::fcl::Capsule<S>*>(shape.geometry);
+    reach = std::abs(cosa) * g->lz * S(0.5) + g->radius;
+  } else if constexpr (A == FS::Cylinder) {
+    const auto* g = static_cast<const ::fcl::Cylinder<S>*>(shape.geometry);
+    reach = std::abs(cosa) * g->lz * S(0.5) + g->radius * sina;
+  } else if constexpr (A == FS::Cone) {
+    const auto* g = static_cast<const ::fcl::Cone<S>*>(shape.geometry);
+    const S apex = c + cosa * g->lz * S(0.5), base = c - cosa * g->lz * S(0.5), rim = g->radius * sina;
+    lo = std::min(apex, base - rim);
+    hi = std::max(apex, base + rim);
+    return;
+  }
+  lo = c - reach;
+  hi = c + reach;
+}
+
+template <class S, FS A> Vec3<S> planeContactPositionOf(Solid<S> shape, const Vec3<S>& n, S d) {
+  if constexpr (A == FS::Capsule) return capsulePlanePosition(shape, n, d);
+  else if constexpr (A == FS::Cylinder) return cylinderPlanePosition(shape, n, d);
+  else if constexpr (A == FS::Cone) return conePlanePosition(shape, n, d);
+  else {
+    const Vec3<S> away = n.dot(shape.tf->translation()) - d > S(0) ? n : Vec3<S>(-n);
+    return ontoPlane(halfspaceContactPosition<S, A>(shape, away, S(0)), n, d);
   }
 }
 
@@ -951,10 +1138,12 @@ template <class S, FS A, FS B>
   const Answer answer = distanceEntry<S, A, B>(Solid<S>{ga, ta}, Solid<S>{gb, tb}, DistanceAsk{true, true}, d);
   const bool added = answer == Answer::Done && d.distance <= S(0);
   if (added) {
-    Vec3<S> position = (d.point0 + d.point1) * S(0.5);
+    Vec3<S> position = (d.point0 + d.point1) * S(0.5), normal = d.normal;
     if constexpr (fclPositionRule<A, B>())
       position = fclContactPosition<S, A, B>(Solid<S>{ga, ta}, Solid<S>{gb, tb}, -d.distance, position);
-    result.addContact(::fcl::Contact<S>(ga, gb, kNoPrimitive, kNoPrimitive, position, d.normal, -d.distance));
+    if constexpr (A == FS::Sphere && B == FS::Capsule) sphereCapsuleTieNormal(Solid<S>{ga, ta}, Solid<S>{gb, tb}, true, normal);
+    if constexpr (A == FS::Capsule && B == FS::Sphere) sphereCapsuleTieNormal(Solid<S>{gb, tb}, Solid<S>{ga, ta}, false, normal);
+    result.addContact(::fcl::Contact<S>(ga, gb, kNoPrimitive, kNoPrimitive, position, normal, -d.distance));
   }
   return {answer, added};
 }
@@ -987,13 +1176,23 @@ template <class S, FS A, FS B>
   return result.numContacts();
 }
 
+// Whether `normal` (from a to b) is the direction of two boxes' exact minimum translation (to rounding).
+template <class S> bool isExactNormal(Solid<S> a, Solid<S> b, const Vec3<S>& normal) {
+  DistanceResult<S> d;
+  if (distanceEntry<S, FS::Box, FS::Box>(a, b, DistanceAsk{true, true}, d) != Answer::Done) return false;
+  return d.normal.dot(normal) >= S(1) - S(64) * std::numeric_limits<S>::epsilon();
+}
+
 // Two boxes under collide with contacts: gq's contact set (generateContacts, at most 4 points as FCL's box routine
 // keeps) in FCL's placement: the normal from o1 to o2, each point midway between the incident point and the
 // reference face with its own depth; when num_max_contacts leaves less room than the set, the deepest first (FCL
 // sorts them so). A pair gq finds apart writes nothing; a touching pair whose set is empty gets the exact contact.
+// With `minimumTranslation`, a set whose normal is a face's (FCL's placement, within ~8 degrees of the exact
+// direction) but not the exact minimum translation's gives way to the one exact contact.
 template <class S>
 [[gnu::noinline]] std::size_t collideBoxBoxContacts(Solid<S> a, Solid<S> b, const ::fcl::CollisionRequest<S>& request,
-                                                    ::fcl::CollisionResult<S>& result, std::size_t before) {
+                                                    ::fcl::CollisionResult<S>& result, std::size_t before,
+                                                    bool minimumTranslation) {
   bool hit = false;
   switch (overlapCall<S, FS::Box, FS::Box>(a, b, true, hit)) {
     case Answer::Invalid: return 0;  // bad input: nothing written
@@ -1006,7 +1205,8 @@ template <class S>
   const Transform<S> pa(a.tf->translation(), Quat<S>(a.tf->linear()).normalized());
   const Transform<S> pb(b.tf->translation(), Quat<S>(b.tf->linear()).normalized());
   ContactSet<S> set;
-  if (!generateContacts(ga, pa, gb, pb, set).ok() || set.count == 0) {
+  if (!generateContacts(ga, pa, gb, pb, set).ok() || set.count == 0 ||
+      (minimumTranslation && !isExactNormal<S>(a, b, Vec3<S>(-set.normal)))) {
     collideWithContact<S, FS::Box, FS::Box>(a.geometry, a.tf, b.geometry, b.tf, result);
     return result.numContacts();
   }
@@ -1051,8 +1251,10 @@ std::size_t fclCollideEntry(const FclGeometry<S>* ga, const Isometry<S>* ta, con
   const std::size_t before = result.numContacts();
   if (satisfiedBy(request, before)) return before;
   const bool fclContact = request.enable_contact && contactFromFcl(A, B, options);
+  // Two boxes' contacts are gq's contact set in every mode: its deepest point is the exact minimum translation that
+  // minimumTranslation and exactContainedBoxDepth ask for.
   if constexpr (A == FS::Box && B == FS::Box)
-    if (!request.enable_cost && fclContact) return collideBoxBoxContacts<S>(a, b, request, result, before);
+    if (!request.enable_cost && request.enable_contact) return collideBoxBoxContacts<S>(a, b, request, result, before, options.minimumTranslation);
   if (!request.enable_cost && fclContact) return collideWithFclContact<S, A, B>(a, b, request, result, before);
   if (!request.enable_cost && !fclContact) {
     const Collided c = collideSolids<S, A, B>(a, b, request.enable_contact, before > 0, result);
@@ -1071,6 +1273,38 @@ template <class S, std::size_t... I> constexpr std::array<PairEntry<S>, sizeof..
 }
 
 }  // namespace
+
+namespace {
+// The contact on the plane by FCL's rule; at a tie (FCL's side as deep as gq's, to rounding) FCL's normal.
+template <class S, FS A>
+void planeContactOf(Solid<S> solid, const Vec3<S>& n, S d, S depth, Vec3<S>& position, Vec3<S>& normal) {
+  position = planeContactPositionOf<S, A>(solid, n, d);
+  const Vec3<S> fcl = planeNormalOf<S, A>(solid, n, d);
+  if (fcl.dot(normal) > S(0)) return;
+  S lo, hi;
+  extentAlong<S, A>(solid, n, lo, hi);
+  const S fclDepth = fcl.dot(n) > S(0) ? hi - d : d - lo;  // pushed along -normal, clear of the plane
+  const S scale = std::max({S(1), std::abs(lo), std::abs(hi), std::abs(d)});
+  if (std::abs(fclDepth - depth) <= S(64) * std::numeric_limits<S>::epsilon() * scale) normal = fcl;
+}
+}  // namespace
+
+template <class S>
+bool fclPlaneContact(FclShape shape, Solid<S> solid, const Vec3<S>& n, S d, S depth, Vec3<S>& position,
+                     Vec3<S>& normal) {
+  switch (shape) {
+    case FS::Sphere: planeContactOf<S, FS::Sphere>(solid, n, d, depth, position, normal); return true;
+    case FS::Box: planeContactOf<S, FS::Box>(solid, n, d, depth, position, normal); return true;
+    case FS::Capsule: planeContactOf<S, FS::Capsule>(solid, n, d, depth, position, normal); return true;
+    case FS::Cylinder: planeContactOf<S, FS::Cylinder>(solid, n, d, depth, position, normal); return true;
+    case FS::Cone: planeContactOf<S, FS::Cone>(solid, n, d, depth, position, normal); return true;
+    default: return false;
+  }
+}
+template bool fclPlaneContact<float>(FclShape, Solid<float>, const Vec3<float>&, float, float, Vec3<float>&,
+                                     Vec3<float>&);
+template bool fclPlaneContact<double>(FclShape, Solid<double>, const Vec3<double>&, double, double, Vec3<double>&,
+                                      Vec3<double>&);
 
 template <class S>
 const std::array<PairEntry<S>, kSolids * kSolids> SolidPairs<S>::table =

@@ -171,6 +171,14 @@ inline std::size_t solidFclCollide(FclShape sa, Solid<S> a, FclShape sb, Solid<S
   return solidPair<S>(sa, sb).fclCollide(a.geometry, a.tf, b.geometry, b.tf, request, result, options);
 }
 
+// FCL 0.7's contact of a sphere, box, capsule, cylinder or cone crossing a two-sided Plane n.x = d (world normal and
+// offset; solid_pairs.cpp): `position` on the plane by FCL's per-shape rule; `normal` (from the solid to the plane,
+// gq's exact one on entry, `depth` deep) turned to FCL's side where both sides are equally deep to rounding (a
+// symmetric tie). False for another shape (nothing changed).
+template <class S>
+bool fclPlaneContact(FclShape shape, Solid<S> solid, const Vec3<S>& n, S d, S depth, Vec3<S>& position,
+                     Vec3<S>& normal);
+
 // gq::fcl::distance on two solids. Signed distance, normal from a to b. Without enable_signed_distance, a pair whose
 // depth needs EPA (a converted side other than a plane) or a witness search (two boxes) answers FCL's -1 when the
 // shapes overlap; other closed-form pairs keep their exact signed distance, which costs nothing more.

@@ -25,13 +25,15 @@ namespace gq::fcl {
 struct MeshFitting;  // gq/fcl/fit.h
 
 // Opt-in corrections. By default a contact (enable_contact) is FCL's own for the pairs FCL computes with libccd's
-// MPR or its box-box routine, so hosts tuned to FCL's numbers see no change; booleans and distances are always gq's.
+// MPR, so hosts tuned to FCL's numbers see no change; booleans and distances are always gq's. Two boxes' contacts
+// are gq's contact set in FCL's size and placement in every mode (its deepest point the exact minimum translation).
 struct Options {
   // The true minimum-translation penetration (exact SAT / EPA) for every pair. FCL's MPR path returns the portal
   // direction instead, wrong by up to sqrt(3) in depth for a cube corner (FCL bug fcl#545).
   bool minimumTranslation = false;
-  // Box-box contacts from gq's exact MTD: FCL's box-box routine reports 1.0 or 0 for a box inside another box with
-  // touching faces depending on the boxes' lengths (FCL bug fcl#628).
+  // Accepted for hosts that set it; box-box contacts are gq's in every mode, so a box inside another box with
+  // touching faces gets the exact depth, where FCL's box-box routine reports 1.0 or 0 depending on the boxes'
+  // lengths (FCL bug fcl#628).
   bool exactContainedBoxDepth = false;
   // Triangle BVHModel<OBBRSS> sides answered by their gq::fitShape fit under these settings (gq/fcl/fit.h); null:
   // by their triangles.
