@@ -269,7 +269,8 @@ template <class T> class PairSearch {
   // costs support calls and saves none).
   void start(std::uint32_t k) {
     const GaussTree<T>& tree = *sides_[k]->tree;
-    for (const std::uint32_t i : tree.startCut) {
+    const bool pair = sides_[0]->mesh && sides_[1]->mesh;  // two hulls (gauss_tree.h: kGaussPairStartNodes)
+    for (const std::uint32_t i : pair ? tree.pairStartCut : tree.startCut) {
       const typename GaussTree<T>::Node& node = tree.nodes[i];
       if (node.bounded) push(k, i, innerBound(k, node), nullptr);
       else enqueue(k, i, -std::numeric_limits<T>::max());

@@ -11,7 +11,7 @@
 // below). A leaf whose cap is too wide for its ball is bounded over its own faces and edge arcs from such a point.
 // The search's first best push-out is the one along the line between the shapes' inner centres (any direction's
 // push-out is at least the minimum). It starts from a cut of each tree's top levels (GaussTree::startCut, at most
-// kGaussStartNodes nodes: caps that wide prune nothing) and refines nodes in order of their bounds: a leaf's faces
+// kGaussStartNodes nodes, or pairStartCut between two hulls: caps that wide prune nothing) and refines nodes in order of their bounds: a leaf's faces
 // are evaluated exactly (h of the own face from its plane, of the other side by a hill-climbing support call), and
 // its edges get their own bound
 // (the linear n.(v - w) over the arc, for the other side's points w at the leaf's cap and at the edge's faces); a
