@@ -88,7 +88,8 @@ template <class T> class TreeBuilder {
     }
     for (typename GaussTree<T>::Node& node : out.nodes) bound(out, node);
     leafRings(out);
-    cutTopLevels(out);
+    cutTopLevels(out, kGaussStartNodes, out.startCut);
+    cutTopLevels(out, kGaussPairStartNodes, out.pairStartCut);
     out.usable = true;
   }
 
@@ -110,14 +111,13 @@ template <class T> class TreeBuilder {
     }
   }
 
-  // The top levels of the tree, a level at a time, while the cut stays within kGaussStartNodes nodes.
-  static void cutTopLevels(GaussTree<T>& out) {
-    std::vector<std::uint32_t>& cut = out.startCut;
+  // The top levels of the tree, a level at a time, while the cut stays within `limit` nodes.
+  static void cutTopLevels(const GaussTree<T>& out, std::size_t limit, std::vector<std::uint32_t>& cut) {
     cut.assign(1, 0);
     for (;;) {
       std::size_t inner = 0;
       for (const std::uint32_t i : cut) inner += !out.nodes[i].leaf();
-      if (inner == 0 || cut.size() + inner > kGaussStartNodes) break;
+      if (inner == 0 || cut.size() + inner > limit) break;
       const std::size_t n = cut.size();
       for (std::size_t j = 0; j < n; ++j) {
         const typename GaussTree<T>::Node& node = out.nodes[cut[j]];
@@ -381,6 +381,7 @@ template <class T> void boxGaussTree(const Vec3<T>& h, GaussTree<T>& out) {
         out.edges.push_back({i, i | (1u << k), faceOf(i, (k + 1) % 3), faceOf(i, (k + 2) % 3), halfCos, true});
   out.ringFaces.clear();
   out.startCut.assign(1, 0);
+  out.pairStartCut.assign(1, 0);
   out.nodes.resize(1);
   typename GaussTree<T>::Node& root = out.nodes[0];
   root.axis = Vec3<T>::UnitX();

@@ -15,6 +15,15 @@
 namespace gq::detail {
 namespace {
 
+// A tree's face planes through plain pointers, which the loops over faces keep in registers across their stores.
+template <class T> struct Planes {
+  const Vec3<T>* normal;
+  const T* offset;
+  T scale;
+  // How far face f must move the other shape's point w (own frame) to put it outside: -offset - n.w.
+  T pushOut(std::uint32_t f, const Vec3<T>& w) const { return -offset[f] * scale - normal[f].dot(w); }
+};
+
 // One shape in its own frame: its tree, vertices (times a uniform scale) and support map, and the map from its frame
 // to the other shape's.
 template <class T> struct Side {
@@ -49,10 +58,7 @@ template <class T> struct Side {
     if (!climb || !table || !table->hasClimbGraph()) return support(d);
     return mesh->vertices[table->lookup(d)] * scale;
   }
-  // How far face f must move the other shape's point w (own frame) to put it outside: -offset - n.w.
-  T pushOut(std::uint32_t f, const Vec3<T>& w) const {
-    return -tree->faceOffset[f] * scale - tree->faceNormal[f].dot(w);
-  }
+  Planes<T> planes() const { return {tree->faceNormal.data(), tree->faceOffset.data(), scale}; }
   // An own-frame vector in geom0's frame.
   Vec3<T> vectorToFirst(const Vec3<T>& v) const { return first ? v : Vec3<T>(rot * v); }
   Vec3<T> pointToFirst(const Vec3<T>& p) const { return first ? p : Vec3<T>(rot * p + trans); }
@@ -86,8 +92,9 @@ template <class T> T arcMinimum(T e1, T e2, T halfCos) {
 }
 
 // A node waiting in the search: its bound, and where the other side's support point it was computed from is kept
-// (PairScratch::support, own frame).
-template <class T> struct HeapEntry {
+// (PairScratch::support, own frame). 16 bytes in float too: the heap's moves and index arithmetic on 12-byte entries
+// were measured to cost 3% more instructions per 300-point hull query.
+template <class T> struct alignas(16) HeapEntry {
   T bound;
   std::uint32_t side : 1, lazy : 1, node : 30;  // lazy: `bound` is the inner-ball bound (no support point yet)
   std::uint32_t support;
@@ -102,8 +109,37 @@ template <class T> struct Arc {
   bool flat;
 };
 
+// The search's queue: two binary min-heaps on the bound. The start cut, queued lazily under its inner-ball bounds, is
+// heaped once and apart from the nodes queued during the search: a query takes about a third of the cut's nodes, and
+// the rest, left in one heap, would add levels to every sift.
+template <class T> struct NodeQueue {
+  std::vector<HeapEntry<T>> start, live;
+
+  void clear() { start.clear(), live.clear(); }
+  void seal() { std::make_heap(start.begin(), start.end(), std::greater<HeapEntry<T>>()); }
+  void push(const HeapEntry<T>& e) {
+    live.push_back(e);
+    std::push_heap(live.begin(), live.end(), std::greater<HeapEntry<T>>());
+  }
+  bool empty() const { return start.empty() && live.empty(); }
+  // The smallest bound queued (not empty).
+  T front() const {
+    if (start.empty()) return live.front().bound;
+    return live.empty() ? start.front().bound : std::min(start.front().bound, live.front().bound);
+  }
+  // Removes and returns an entry of the smallest bound (not empty).
+  HeapEntry<T> pop() {
+    const bool fromStart = live.empty() || (!start.empty() && start.front().bound < live.front().bound);
+    std::vector<HeapEntry<T>>& h = fromStart ? start : live;
+    std::pop_heap(h.begin(), h.end(), std::greater<HeapEntry<T>>());
+    const HeapEntry<T> e = h.back();
+    h.pop_back();
+    return e;
+  }
+};
+
 template <class T> struct PairScratch {
-  std::vector<HeapEntry<T>> heap;
+  NodeQueue<T> queue;
   std::vector<Vec3<T>> support;         // the queued nodes' support points
   std::vector<Vec3<T>> faceSupport[2];  // per tree face: the other side's support point against it (own frame)
   std::vector<T> faceLow[2];  // per face of an evaluated bounded leaf: its push-out bound from the leaf's support point
@@ -143,18 +179,18 @@ template <class T> class PairSearch {
 
   // The minimum push-out; `best.depth` < 0 when a separating axis was found (the search then stops).
   Best<T> run() {
-    s_.heap.clear();
+    s_.queue.clear();
     s_.support.clear();
     s_.leaves.clear();
     for (int k = 0; k < 2; ++k) {
       s_.faceSupport[k].resize(sides_[k]->tree->faceNormal.size());
       s_.faceLow[k].resize(sides_[k]->tree->faceNormal.size());
     }
+    seedFromCentres();
     for (std::uint32_t k = 0; k < 2; ++k) start(k);
-    while (!s_.heap.empty() && best_.depth >= T(0)) {
-      std::pop_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
-      HeapEntry<T> e = s_.heap.back();
-      s_.heap.pop_back();
+    s_.queue.seal();
+    while (!s_.queue.empty() && best_.depth >= T(0)) {
+      HeapEntry<T> e = s_.queue.pop();
       if (!(e.bound - margin_ < best_.depth)) break;
       const typename GaussTree<T>::Node& node = sides_[e.side]->tree->nodes[e.node];
       if (e.lazy) {
@@ -162,7 +198,7 @@ template <class T> class PairSearch {
         Vec3<T> w;
         e.bound = std::max(e.bound, supportBound(e.side, node, w));
         if (!(e.bound - margin_ < best_.depth)) continue;
-        if (!s_.heap.empty() && s_.heap.front().bound < e.bound) {
+        if (!s_.queue.empty() && s_.queue.front() < e.bound) {
           push(e.side, e.node, e.bound, &w);
           continue;
         }
@@ -214,16 +250,17 @@ template <class T> class PairSearch {
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) mean += tree.faceNormal[f];
     if (!(mean.squaredNorm() > T(1e-6))) mean = tree.faceNormal[node.faceBegin];
     w = otherNearSupport(own, *sides_[1 - k], Vec3<T>(-mean));
+    const Planes<T> planes = own.planes();
+    T* low = s_.faceLow[k].data();
     T bound = std::numeric_limits<T>::max();
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
-      const T low = own.pushOut(f, w);
-      s_.faceLow[k][f] = low;
-      bound = std::min(bound, low);
+      low[f] = planes.pushOut(f, w);
+      bound = std::min(bound, low[f]);
     }
     for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
       const typename GaussTree<T>::Edge& edge = tree.edges[e];
-      const T low2 = edge.face2InLeaf ? s_.faceLow[k][edge.face2] : own.pushOut(edge.face2, w);
-      bound = std::min(bound, arcMinimum(s_.faceLow[k][edge.face1], low2, edge.halfCos));
+      const T low2 = edge.face2InLeaf ? low[edge.face2] : planes.pushOut(edge.face2, w);
+      bound = std::min(bound, arcMinimum(low[edge.face1], low2, edge.halfCos));
     }
     return bound;
   }
@@ -232,7 +269,8 @@ template <class T> class PairSearch {
   // costs support calls and saves none).
   void start(std::uint32_t k) {
     const GaussTree<T>& tree = *sides_[k]->tree;
-    for (const std::uint32_t i : tree.startCut) {
+    const bool pair = sides_[0]->mesh && sides_[1]->mesh;  // two hulls (gauss_tree.h: kGaussPairStartNodes)
+    for (const std::uint32_t i : pair ? tree.pairStartCut : tree.startCut) {
       const typename GaussTree<T>::Node& node = tree.nodes[i];
       if (node.bounded) push(k, i, innerBound(k, node), nullptr);
       else enqueue(k, i, -std::numeric_limits<T>::max());
@@ -243,9 +281,10 @@ template <class T> class PairSearch {
   // inner ball, the support point taken when the node is first popped), unless the bound is not below the best.
   void push(std::uint32_t k, std::uint32_t index, T bound, const Vec3<T>* w) {
     if (!(bound - margin_ < best_.depth)) return;
-    s_.heap.push_back({bound, k, w == nullptr, index, std::uint32_t(s_.support.size())});
-    if (w) s_.support.push_back(*w);
-    std::push_heap(s_.heap.begin(), s_.heap.end(), std::greater<HeapEntry<T>>());
+    const HeapEntry<T> e{bound, k, w == nullptr, index, std::uint32_t(s_.support.size())};
+    if (!w) return s_.queue.start.push_back(e);  // heaped once the cut is queued (NodeQueue::seal)
+    s_.support.push_back(*w);
+    s_.queue.push(e);
   }
 
   // A node queued under its own bound (at least `floor`, its parent's, which bounds every facet of the parent),
@@ -273,21 +312,23 @@ template <class T> class PairSearch {
     const typename GaussTree<T>::Node& node = tree.nodes[index];
     const bool supported = node.bounded || own.mesh;  // a hull's leaf was queued with a point of the other shape
     bool closed = supported;  // every face bounded out from the leaf's point
+    const Planes<T> planes = own.planes();
+    T* low = s_.faceLow[k].data();
+    Vec3<T>* faceSupport = s_.faceSupport[k].data();
     for (std::uint32_t f = node.faceBegin; f < node.faceEnd; ++f) {
-      const Vec3<T>& n = tree.faceNormal[f];
+      const Vec3<T>& n = planes.normal[f];
       // The leaf's support point bounds the face's push-out from below: no support call when that is enough.
       if (supported) {
-        const T low = own.pushOut(f, leafSupport);
-        s_.faceLow[k][f] = low;
-        if (!(low - margin_ < best_.depth)) {
-          s_.faceSupport[k][f] = leafSupport;
+        low[f] = planes.pushOut(f, leafSupport);
+        if (!(low[f] - margin_ < best_.depth)) {
+          faceSupport[f] = leafSupport;
           continue;
         }
       }
       closed = false;
       const Vec3<T> w = otherSupport(own, other, Vec3<T>(-n));
-      s_.faceSupport[k][f] = w;
-      const T push = own.pushOut(f, w);
+      faceSupport[f] = w;
+      const T push = planes.pushOut(f, w);
       if (push < best_.depth) best_.consider(push, own.first ? Vec3<T>(-n) : own.vectorToFirst(n));
     }
     // Its edges are paired only when the leaf's point leaves one of their arc ends below the best push-out: with
@@ -298,10 +339,10 @@ template <class T> class PairSearch {
 
   // Whether every face of a leaf's ring is bounded out by its push-out bound from the point w (own frame).
   bool ringBoundedOut(const Side<T>& own, const typename GaussTree<T>::Node& node, const Vec3<T>& w) const {
-    const GaussTree<T>& tree = *own.tree;
+    const std::uint32_t* ring = own.tree->ringFaces.data();
+    const Planes<T> planes = own.planes();
     for (std::uint32_t r = node.ringBegin; r < node.ringEnd; ++r) {
-      const std::uint32_t f = tree.ringFaces[r];
-      if (own.pushOut(f, w) - margin_ < best_.depth) return false;
+      if (planes.pushOut(ring[r], w) - margin_ < best_.depth) return false;
     }
     return true;
   }
@@ -318,22 +359,26 @@ template <class T> class PairSearch {
       const typename GaussTree<T>::Node& node = tree.nodes[leaf.node];
       const T sign = own.first ? T(1) : T(-1);
       const T* low = s_.faceLow[leaf.side].data();
+      const Vec3<T>* faceSupport = s_.faceSupport[leaf.side].data();
+      const typename GaussTree<T>::Edge* edges = tree.edges.data();
+      const Planes<T> planes = own.planes();
+      std::vector<Arc<T>>& arcs = s_.arcs[leaf.side];
       for (std::uint32_t e = node.edgeBegin; e < node.edgeEnd; ++e) {
-        const typename GaussTree<T>::Edge& edge = tree.edges[e];
+        const typename GaussTree<T>::Edge& edge = edges[e];
         const bool face2Here = edge.face2InLeaf;
-        const Vec3<T>& n2 = tree.faceNormal[edge.face2];
+        const Vec3<T>& n2 = planes.normal[edge.face2];
         // First from the leaf's support point w alone, with the faces' bounds from it: the edge's vertex lies on
         // both faces' planes (within the cooking's plane tolerance, inside the margin), so n.(v - w) at either end is
         // that face's bound.
         if (leaf.supported && low[edge.face1] >= cut &&
-            (face2Here ? low[edge.face2] : own.pushOut(edge.face2, leaf.support)) >= cut)
+            (face2Here ? low[edge.face2] : planes.pushOut(edge.face2, leaf.support)) >= cut)
           continue;
-        const Vec3<T>& n1 = tree.faceNormal[edge.face1];
+        const Vec3<T>& n1 = planes.normal[edge.face1];
         const Vec3<T> v = own.vertex(edge.vertex0);
-        const Vec3<T> z1 = v - s_.faceSupport[leaf.side][edge.face1];
+        const Vec3<T> z1 = v - faceSupport[edge.face1];
         T bound = arcMinimum(n1.dot(z1), n2.dot(z1), edge.halfCos);
         if (face2Here && !(bound - margin_ >= best_.depth)) {
-          const Vec3<T> z = v - s_.faceSupport[leaf.side][edge.face2];
+          const Vec3<T> z = v - faceSupport[edge.face2];
           bound = std::max(bound, arcMinimum(n1.dot(z), n2.dot(z), edge.halfCos));
         }
         if (!(bound - margin_ < best_.depth)) continue;
@@ -348,9 +393,23 @@ template <class T> class PairSearch {
         arc.flat = isFlat(arc.plane);
         arc.direction = arc.flat ? Vec3<T>(own.vectorToFirst(Vec3<T>(own.vertex(edge.vertex1) - v)).stableNormalized())
                                  : Vec3<T>::Zero();
-        s_.arcs[leaf.side].push_back(arc);
+        arcs.push_back(arc);
       }
     }
+  }
+
+  // A first best push-out, before the start cut is queued, so that the cut's nodes it bounds out are never queued:
+  // the push-out along the line from the second shape's inner centre to the first's (two support calls). The push-out
+  // along any direction is at least the minimum over the facets, so the search's answer stays that minimum (this
+  // axis is kept only when no facet is below it; negative: a separating axis, and the search ends). On the 64
+  // overlapping pairs of 300-point hulls it removes about 7% of a query's instructions (most of the cut is never
+  // queued, and the heaps stay shallow).
+  void seedFromCentres() {
+    const Vec3<T> d = sides_[0]->innerCentre - innerCentre_[0];
+    const T len2 = d.squaredNorm();
+    if (!(len2 > T(0))) return;
+    const Vec3<T> axis = d / std::sqrt(len2);
+    best_.consider(supportValue(*sides_[1], axis) + supportValue(*sides_[0], Vec3<T>(-axis)), axis);
   }
 
   // Push-outs along both signs of a unit axis (geom0's frame), from support calls.

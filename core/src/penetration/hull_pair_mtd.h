@@ -9,9 +9,11 @@
 // every facet normal from its faces and arcs, from one point of the other side (gauss_tree.h): the vertex the
 // other side's support start table gives for minus the node's axis, without the climb (any point of it bounds from
 // below). A leaf whose cap is too wide for its ball is bounded over its own faces and edge arcs from such a point.
-// The search starts from a cut of each tree's top levels (GaussTree::startCut, at most kGaussStartNodes nodes: caps
-// that wide prune nothing) and refines nodes in order of their bounds: a leaf's faces are evaluated exactly (h of the
-// own face from its plane, of the other side by a hill-climbing support call), and its edges get their own bound
+// The search's first best push-out is the one along the line between the shapes' inner centres (any direction's
+// push-out is at least the minimum). It starts from a cut of each tree's top levels (GaussTree::startCut, at most
+// kGaussStartNodes nodes, or pairStartCut between two hulls: caps that wide prune nothing) and refines nodes in order of their bounds: a leaf's faces
+// are evaluated exactly (h of the own face from its plane, of the other side by a hill-climbing support call), and
+// its edges get their own bound
 // (the linear n.(v - w) over the arc, for the other side's points w at the leaf's cap and at the edge's faces); a
 // leaf whose faces and ring faces are all bounded out from its point keeps no edges. The search ends when the
 // smallest bound left is not below the best push-out found; then only the edges of evaluated leaves whose
