@@ -4,7 +4,8 @@
 //  - BruteRaycast: the same rays against every object through the single raycast (the first 2000 rays: the loop is
 //    slow); items_per_second of both are rays per second.
 //  - SceneRaycastBatch/threads: the 100k rays as one raycastBatch, 1 and 2 threads (the speedup is the ratio).
-//  - BunnyRaycastLoop, BunnyRaycastBatch/threads: 1M rays at the bunny, a loop of single raycasts vs a batch.
+//  - BunnyRaycastLoop, BunnyRaycastBatch/threads: 1M rays at the bunny, a loop of single raycasts vs a batch (in its
+//    coherent ray order); BunnyRaycastBatchInputOrder/1: the batch in input order (coherentRayOrder false).
 //  - SelfPairs: Scene::overlappingPairs over the 1000 objects; BruteSelfPairs: every pair through overlap().
 // Counters `hits` / `pairs` let the answers of the two forms be compared in the output.
 #include <benchmark/benchmark.h>
@@ -182,7 +183,8 @@ void BM_BunnyRaycastLoop(benchmark::State& state) {
   state.counters["hits"] = double(hits);
 }
 
-void BM_BunnyRaycastBatch(benchmark::State& state) {
+// The bunny's rays as one raycastBatch; coherent: the batch's coherent ray order (the default), else input order.
+void bunnyRaycastBatch(benchmark::State& state, bool coherent) {
   const Fixture& f = fixture();
   if (!f.ok) return state.SkipWithError("bunny not found or setup failed");
   gq::Shape<T> bunny;
@@ -192,6 +194,7 @@ void BM_BunnyRaycastBatch(benchmark::State& state) {
   std::vector<std::uint8_t> has(kBunnyRays);
   gq::BatchSettings settings;
   settings.threads = std::uint32_t(state.range(0));
+  settings.coherentRayOrder = coherent;
   gq::RayBatch<T> rays;
   rays.origins = gq::StridedArray<V>(f.bunnyOrigins.data(), kBunnyRays);
   rays.unitDirs = gq::StridedArray<V>(f.bunnyDirs.data(), kBunnyRays);
@@ -206,6 +209,9 @@ void BM_BunnyRaycastBatch(benchmark::State& state) {
   for (auto h : has) n += h;
   state.counters["hits"] = double(n);
 }
+
+void BM_BunnyRaycastBatch(benchmark::State& state) { bunnyRaycastBatch(state, true); }
+void BM_BunnyRaycastBatchInputOrder(benchmark::State& state) { bunnyRaycastBatch(state, false); }
 
 void BM_SelfPairs(benchmark::State& state) {
   const Fixture& f = fixture();
@@ -243,6 +249,7 @@ BENCHMARK(BM_BruteRaycast)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SceneRaycastBatch)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_BunnyRaycastLoop)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BunnyRaycastBatch)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_BunnyRaycastBatchInputOrder)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SelfPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BruteSelfPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

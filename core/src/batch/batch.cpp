@@ -2,6 +2,7 @@
 // loop for one thread). Items write only their own output entries, so any schedule gives the same bytes.
 #include "gq/batch.h"
 
+#include "batch/ray_order.h"
 #include "raycast/raycast.h"
 
 #include <tbb/blocked_range.h>
@@ -10,6 +11,7 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -46,16 +48,13 @@ int arenaThreads(const BatchSettings& settings) {
   return settings.threads == 0 || settings.threads > std::uint32_t(hardware) ? hardware : int(settings.threads);
 }
 
-// Runs item(i, slot) for i in [0, n), slot < arenaThreads(settings) the worker's index in the arena; item returns true
-// when item i succeeded. Returns the number of failed items.
-template <class Item> std::size_t runSlottedItems(std::size_t n, const BatchSettings& settings, const Item& item) {
-  const std::size_t grain = settings.grain == 0 ? 1 : settings.grain;
-  auto serial = [&](std::size_t begin, std::size_t end, std::uint32_t slot) {
-    std::size_t failed = 0;
-    for (std::size_t i = begin; i < end; ++i) failed += item(i, slot) ? 0 : 1;
-    return failed;
-  };
-  if (settings.threads == 1 || n <= grain) return serial(0, n, 0);
+// Runs range(begin, end, slot) over [0, n) in ranges of `grain` (the last may be shorter) on the pool, slot <
+// arenaThreads(settings) the worker's index in the arena; range returns how many of its items failed. Returns the
+// number of failed items.
+template <class Range>
+std::size_t runRanges(std::size_t n, std::size_t grain, const BatchSettings& settings, const Range& range) {
+  if (grain == 0) grain = 1;
+  if (settings.threads == 1 || n <= grain) return range(std::size_t(0), n, 0u);
   std::atomic<std::size_t> failed{0};
   try {
     tbb::task_arena arena(arenaThreads(settings));
@@ -64,7 +63,7 @@ template <class Item> std::size_t runSlottedItems(std::size_t n, const BatchSett
           tbb::blocked_range<std::size_t>(0, n, grain),
           [&](const tbb::blocked_range<std::size_t>& r) {
             const int index = tbb::this_task_arena::current_thread_index();
-            const std::size_t f = serial(r.begin(), r.end(), index < 0 ? 0u : std::uint32_t(index));
+            const std::size_t f = range(r.begin(), r.end(), index < 0 ? 0u : std::uint32_t(index));
             if (f) failed.fetch_add(f, std::memory_order_relaxed);
           },
           tbb::simple_partitioner());
@@ -72,9 +71,19 @@ template <class Item> std::size_t runSlottedItems(std::size_t n, const BatchSett
   } catch (...) {
     // The pool could not start (out of memory or threads): the loop on this thread gives the same answers. Items
     // are pure functions of their input, so recomputing those already done rewrites the same bytes.
-    return serial(0, n, 0);
+    return range(std::size_t(0), n, 0u);
   }
   return failed.load();
+}
+
+// Runs item(i, slot) for i in [0, n) in ranges of settings.grain; item returns true when item i succeeded. Returns
+// the number of failed items.
+template <class Item> std::size_t runSlottedItems(std::size_t n, const BatchSettings& settings, const Item& item) {
+  return runRanges(n, settings.grain, settings, [&](std::size_t begin, std::size_t end, std::uint32_t slot) {
+    std::size_t failed = 0;
+    for (std::size_t i = begin; i < end; ++i) failed += item(i, slot) ? 0 : 1;
+    return failed;
+  });
 }
 
 // runSlottedItems for items that keep no per-worker state: item(i).
@@ -100,16 +109,34 @@ inline bool record(Status* statuses, std::size_t i, Status&& s) {
 
 // Ray i's direction: unitDirs[i], or, when the batch normalizes, unitDirs[i] over its length (numpy's norm and
 // division, bit for bit) stored in `scratch`. Null for a zero length.
-template <class T> const Vec3<T>* rayDirection(const RayBatch<T>& rays, std::size_t i, Vec3<T>& scratch) {
-  const Vec3<T>& d = rays.unitDirs[i];
+template <class T> const Vec3<T>* directionOf(const RayBatch<T>& rays, const Vec3<T>& d, Vec3<T>& scratch) {
   if (!rays.normalizeDirections) return &d;
   const T length = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
   if (length == T(0)) return nullptr;
   scratch = Vec3<T>(d.x() / length, d.y() / length, d.z() / length);
   return &scratch;
 }
+template <class T> const Vec3<T>* rayDirection(const RayBatch<T>& rays, std::size_t i, Vec3<T>& scratch) {
+  return directionOf(rays, rays.unitDirs[i], scratch);
+}
 
 Status zeroLengthDirection() { return Status::invalid("zero-length ray direction (it cannot be normalized)"); }
+
+// Cache-line prefetches (no-ops where the compiler has no builtin).
+inline void prefetchRead(const void* p) {
+#if defined(__GNUC__)
+  __builtin_prefetch(p, 0, 3);
+#else
+  (void)p;
+#endif
+}
+inline void prefetchWrite(const void* p) {
+#if defined(__GNUC__)
+  __builtin_prefetch(p, 1, 3);
+#else
+  (void)p;
+#endif
+}
 
 // Where a batch puts ray i's closest hit: slot(i, local) is where the kernel writes a hit (Local: the storage the
 // output needs per ray), store() finishes the entry from the hit written there or elsewhere.
@@ -122,6 +149,11 @@ template <class T> struct HitArrayOut {
   void store(std::size_t i, std::uint32_t count, const RaycastHit<T>& h) const {
     if (count > 0 && &h != hits + i) hits[i] = h;
     hasHit[i] = count > 0 ? 1 : 0;
+  }
+  void prefetch(std::size_t i) const {
+    prefetchWrite(hits + i);
+    prefetchWrite(reinterpret_cast<const unsigned char*>(hits + i + 1) - 1);
+    prefetchWrite(hasHit + i);
   }
 };
 
@@ -141,17 +173,32 @@ template <class T> struct HitColumnsOut {
     if (columns.faceIndex)
       columns.faceIndex[i] = hit && h.faceIndex != kInvalidFaceIndex ? std::int64_t(h.faceIndex) : std::int64_t(-1);
   }
+  void prefetch(std::size_t i) const {
+    if (columns.hit) prefetchWrite(columns.hit + i);
+    if (columns.distance) prefetchWrite(columns.distance + i);
+    if (columns.position) prefetchWrite(columns.position + 3 * i);
+    if (columns.normal) prefetchWrite(columns.normal + 3 * i);
+    if (columns.faceIndex) prefetchWrite(columns.faceIndex + i);
+  }
 };
 
 // The rays of a batch against a mesh shape whose pose, maxDist and flags passed the façade's checks: the mesh frame
 // and the node test are found once (detail::TriangleMeshRays), each ray takes the façade's own checks and then the
 // kernel of the single raycast, so its hit and Status are the single query's bit for bit. A ray failing its checks
-// takes the single query, whose Status names the problem.
-template <class T, class Out>
-std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, const Out& out,
-                             Status* statuses, const BatchSettings& settings) {
-  const detail::TriangleMeshRays<T> mesh(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose);
-  return runItems(rays.origins.count, settings, [&](std::size_t i) {
+// takes the single query, whose Status names the problem. operator()(i) casts ray i; true when it succeeded.
+template <class T, class Out> struct MeshRayItems {
+  const RayBatch<T>& rays;
+  const Shape<T>& shape;
+  const Transform<T>& pose;
+  const Out& out;
+  Status* statuses;
+  detail::TriangleMeshRays<T> mesh;
+
+  MeshRayItems(const RayBatch<T>& r, const Shape<T>& s, const Transform<T>& p, const Out& o, Status* st)
+      : rays(r), shape(s), pose(p), out(o), statuses(st),
+        mesh(s.geometry().template get<TriangleMeshGeometry<T>>(), p) {}
+
+  bool operator()(std::size_t i) const {
     Vec3<T> scratch;
     const Vec3<T>* dir = rayDirection(rays, i, scratch);
     if (dir == nullptr) return record(statuses, i, zeroLengthDirection());
@@ -169,6 +216,119 @@ std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, con
       out.store(i, count, h);
     }
     return record(statuses, i, Status());
+  }
+};
+
+// One worker's arrays for castBlockInKeyOrder, kept from block to block (their first use costs page faults).
+template <class T> struct KeyOrderScratch {
+  std::vector<std::uint64_t> items;     // key << 32 | ray within the block, then the sort's scratch
+  std::vector<Vec3<T>> origins, dirs;   // the rays in key order
+  std::vector<RaycastHit<T>> hits;      // their hits in key order
+  std::vector<std::uint32_t> counts;    // their hit counts, or kByIndex
+  static constexpr std::uint32_t kByIndex = 0xffffffffu;  // a ray that takes the per-index path
+
+  bool reserve(std::size_t m) {
+    try {
+      if (counts.size() < m) {
+        items.resize(2 * m);
+        origins.resize(m);
+        dirs.resize(m);
+        hits.resize(m);
+        counts.resize(m);
+      }
+      return true;
+    } catch (const std::bad_alloc&) {
+      return false;
+    }
+  }
+};
+
+// Rays [begin, end) of a batch cast in key order (batch/ray_order.h); returns how many failed. Rays that miss the
+// mesh's bounds are cast at once in input order; the others in three passes, so that the scattered reads and writes
+// of the caller's arrays overlap one another instead of waiting behind a cast: gather the rays in key order, cast
+// them into the block's hit array, write each hit at its input index. A ray failing the quick checks takes the
+// per-index path (the single query's Status). Without memory for the scratch the block keeps input order.
+template <class T, class Out>
+std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
+                                KeyOrderScratch<T>& scratch, std::size_t begin, std::size_t end) {
+  constexpr std::size_t kPrefetchAhead = 16;  // rays (8 and 32 measured the same)
+  const RayBatch<T>& rays = items.rays;
+  std::size_t failed = 0;
+  if (!scratch.reserve(end - begin)) {
+    for (std::size_t i = begin; i < end; ++i) failed += items(i) ? 0 : 1;
+    return failed;
+  }
+  std::size_t m = 0;  // rays that enter the bounds
+  for (std::size_t i = begin; i < end; ++i) {
+    std::uint32_t k = 0;
+    if (key(rays.origins[i], rays.unitDirs[i], rays.maxDist, k)) {
+      scratch.items[m++] = std::uint64_t(k) << 32 | std::uint64_t(i - begin);
+    } else {
+      failed += items(i) ? 0 : 1;
+    }
+  }
+  const std::uint64_t* order = detail::sortByKey(scratch.items.data(), scratch.items.data() + m, m);
+  auto rayAt = [&](std::size_t k) { return begin + std::size_t(order[k] & 0xffffffffu); };
+  for (std::size_t k = 0; k < m; ++k) {
+    if (k + kPrefetchAhead < m) {
+      prefetchRead(&rays.origins[rayAt(k + kPrefetchAhead)]);
+      prefetchRead(&rays.unitDirs[rayAt(k + kPrefetchAhead)]);
+    }
+    scratch.origins[k] = rays.origins[rayAt(k)];
+    scratch.dirs[k] = rays.unitDirs[rayAt(k)];
+  }
+  for (std::size_t k = 0; k < m; ++k) {
+    Vec3<T> normalized;
+    const Vec3<T>& origin = scratch.origins[k];
+    const Vec3<T>* dir = directionOf(rays, scratch.dirs[k], normalized);
+    if (dir == nullptr || !detail::rayIsValid(origin, *dir, items.pose.p)) {
+      scratch.counts[k] = KeyOrderScratch<T>::kByIndex;
+      continue;
+    }
+    scratch.counts[k] =
+        items.mesh.cast(detail::rayQuery(origin, *dir, rays.maxDist, rays.hitFlags, 1u), &scratch.hits[k]);
+  }
+  for (std::size_t k = 0; k < m; ++k) {
+    if (k + kPrefetchAhead < m) items.out.prefetch(rayAt(k + kPrefetchAhead));
+    const std::size_t i = rayAt(k);
+    if (scratch.counts[k] == KeyOrderScratch<T>::kByIndex) {
+      failed += items(i) ? 0 : 1;
+      continue;
+    }
+    items.out.store(i, scratch.counts[k], scratch.hits[k]);
+    failed += record(items.statuses, i, Status()) ? 0 : 1;
+  }
+  return failed;
+}
+
+// Casts the mesh rays of a batch: in key order by blocks (RayOrderSettings) when the settings ask for it and every
+// worker gets at least minRays rays, else in input order. Blocks are at least as many as the workers.
+template <class T, class Out>
+std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, const Out& out,
+                             Status* statuses, const BatchSettings& settings) {
+  const MeshRayItems<T, Out> items(rays, shape, pose, out, statuses);
+  const std::size_t n = rays.origins.count;
+  const detail::RayOrderSettings order;
+  const std::size_t slots = batchSlots(settings);
+  Bounds3<T> box;
+  if (!settings.coherentRayOrder || n / slots < order.minRays || !computeGeomBounds(box, shape, pose).ok()) {
+    return runItems(n, settings, items);
+  }
+  const detail::RayOrderKey<T> key(box);
+  const std::size_t blocks = std::max((n + order.blockRays - 1) / order.blockRays, slots);
+  const std::size_t blockRays = (n + blocks - 1) / blocks;
+  std::vector<KeyOrderScratch<T>> scratch;
+  try {
+    scratch.resize(slots);
+  } catch (const std::bad_alloc&) {
+    return runItems(n, settings, items);
+  }
+  return runRanges(blocks, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t slot) {
+    std::size_t failed = 0;
+    for (std::size_t b = first; b < last; ++b) {
+      failed += castBlockInKeyOrder(items, key, scratch[slot], b * blockRays, std::min(n, (b + 1) * blockRays));
+    }
+    return failed;
   });
 }
 

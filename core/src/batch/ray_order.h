@@ -1,0 +1,45 @@
+#pragma once
+// A coherent order for the rays of a batch against one mesh: rays that enter the mesh's box near each other in
+// nearly the same direction walk the same nodes and triangles, so cast one after another they find them in cache.
+// The order changes only when each ray is cast, never its answer.
+#include <cstddef>
+#include <cstdint>
+
+#include "gq/math.h"
+
+namespace gq::detail {
+
+// Settings of the reordering (counts of rays).
+struct RayOrderSettings {
+  // Batches smaller than this keep the input order: their rays are too sparse for neighbours in key order to share
+  // nodes, and the key and sort cost (~100 instructions a ray) would be lost.
+  std::size_t minRays = 32768;
+  // Rays are sorted in consecutive blocks of about this many: a block's inputs, outputs and keys stay within the
+  // last-level cache while it is cast in key order (sorting the whole batch at once made every read and write of a
+  // ray a memory miss).
+  std::size_t blockRays = 131072;
+};
+
+// A 30-bit key of a ray against a target box: the Morton interleave of the point where the ray enters the box
+// (its origin when inside), 6 bits per axis of the box, and of the ray's direction in octahedral coordinates, 6 bits
+// per coordinate. The direction need not be unit. Any input is keyed without fault (a NaN coordinate counts as the
+// box's low side).
+template <class T> class RayOrderKey {
+ public:
+  explicit RayOrderKey(const Bounds3<T>& target);
+  // Writes the key and returns true when the ray enters the box within maxDist (measured along the unit direction);
+  // else writes 0 and returns false: such rays stop at the root and gain nothing from the order.
+  bool operator()(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, std::uint32_t& key) const;
+  // The key for any maxDist (0 for a ray that misses the box).
+  std::uint32_t operator()(const Vec3<T>& origin, const Vec3<T>& dir) const;
+
+ private:
+  Vec3<T> lo_, hi_, invExtent_;
+};
+
+// Sorts items of the form (key << 32 | payload), key below 2^30, by key: LSD radix sort, three passes of 10 bits
+// (a pass whose digit is the same for every item is skipped); equal keys keep their order. scratch holds n items.
+// Returns where the sorted items are (items or scratch).
+std::uint64_t* sortByKey(std::uint64_t* items, std::uint64_t* scratch, std::size_t n);
+
+}  // namespace gq::detail

@@ -1,0 +1,211 @@
+// Large ray batches against a mesh cast their rays in a coherent order (blocks sorted by batch/ray_order.h's key):
+// the order must change no answer, no Status and no untouched output, at any thread count; the key sort must be a
+// stable sort by key, and the key must depend only on where a ray enters the target box and its direction.
+#include "gq/batch.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "batch/ray_order.h"
+#include "mesh_test_helpers.h"
+#include "test_util.h"
+
+namespace gq {
+namespace {
+
+using test::Rng;
+
+template <class T> class BatchRayOrder : public ::testing::Test {};
+TYPED_TEST_SUITE(BatchRayOrder, test::Scalars);
+
+// Two blocks of the coherent order (blocks hold up to 131,072 rays), of unequal rays entering the mesh's bounds.
+constexpr std::size_t kManyRays = 140001;
+
+// Rays from a shell around the origin aimed into a box of half size 1.5 (most hit a radius-2 sphere), every 5th
+// with a random direction; a few bad items: NaN and infinite origins, non-unit, NaN and zero directions.
+template <class T> void manyRays(Rng& rng, std::vector<Vec3<T>>& origins, std::vector<Vec3<T>>& dirs) {
+  origins.resize(kManyRays);
+  dirs.resize(kManyRays);
+  for (std::size_t i = 0; i < kManyRays; ++i) {
+    origins[i] = rng.unitVector<T>() * T(5) + rng.inBox<T>(1);
+    dirs[i] = i % 5 == 0 ? rng.unitVector<T>() : Vec3<T>((rng.inBox<T>(1.5) - origins[i]).normalized());
+  }
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  origins[17].x() = nan;
+  origins[40000].z() = std::numeric_limits<T>::infinity();
+  dirs[123] *= T(2);
+  dirs[65536].y() = nan;
+  dirs[69999] = Vec3<T>::Zero();
+}
+
+template <class T> bool sameBytes(const RaycastHit<T>& a, const RaycastHit<T>& b) {
+  return std::memcmp(&a.distance, &b.distance, sizeof(T)) == 0 && a.position == b.position &&
+         a.normal == b.normal && a.faceIndex == b.faceIndex && a.flags == b.flags;
+}
+
+TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThreadCount) {
+  using T = TypeParam;
+  Rng rng(4401);
+  const auto ico = meshtest::icosphere<T>(3);
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
+                                                     MeshScale<T>(Vec3<T>(T(2), T(1.5), T(1)))),
+                             mesh)
+                  .ok());
+  const Transform<T> pose = rng.pose<T>(1);
+  std::vector<Vec3<T>> origins, dirs;
+  manyRays(rng, origins, dirs);
+  RayBatch<T> batch;
+  batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
+  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), dirs.size());
+  batch.maxDist = T(20);
+  batch.hitFlags = kDefaultHitFlags | HitFlag::MeshBothSides;
+
+  // The single query per ray.
+  std::vector<RaycastHit<T>> ref(kManyRays);
+  std::vector<std::uint8_t> refHas(kManyRays, 0);
+  std::vector<StatusCode> refCode(kManyRays);
+  std::size_t failed = 0, hitCount = 0;
+  for (std::size_t i = 0; i < kManyRays; ++i) {
+    std::uint32_t n = 0;
+    const Status s = raycast(origins[i], dirs[i], mesh, pose, batch.maxDist, batch.hitFlags, 1u, &ref[i], n);
+    refCode[i] = s.code;
+    refHas[i] = n > 0 ? 1 : 0;
+    failed += s.ok() ? 0 : 1;
+    hitCount += n;
+  }
+  ASSERT_EQ(failed, 5u);
+  ASSERT_GT(hitCount, kManyRays / 2);
+
+  BatchSettings inputOrder{1, 64};
+  inputOrder.coherentRayOrder = false;
+  const BatchSettings settings[] = {{1, 64}, {2, 64}, {8, 5}, inputOrder};
+  for (const BatchSettings& setting : settings) {
+    SCOPED_TRACE(::testing::Message() << "threads " << setting.threads << " coherent " << setting.coherentRayOrder);
+    std::vector<RaycastHit<T>> hits(kManyRays);
+    std::vector<std::uint8_t> has(kManyRays, 7);
+    std::vector<Status> statuses(kManyRays);
+    const Status s = raycastBatch(batch, mesh, pose, hits.data(), has.data(), statuses.data(), setting);
+    EXPECT_EQ(s.code, StatusCode::Warning);
+    EXPECT_EQ(s.index(), 5u);
+    for (std::size_t i = 0; i < kManyRays; ++i) {
+      ASSERT_EQ(statuses[i].code, refCode[i]) << i;
+      if (refCode[i] != StatusCode::Ok) {
+        ASSERT_EQ(has[i], 7) << "a failed item leaves its output untouched: " << i;
+        continue;
+      }
+      ASSERT_EQ(has[i], refHas[i]) << i;
+      if (has[i]) {
+        ASSERT_TRUE(sameBytes(hits[i], ref[i])) << i;
+      }
+    }
+  }
+}
+
+TYPED_TEST(BatchRayOrder, LargeBatchesOfColumnsAndNormalizedDirectionsEqualTheInputOrder) {
+  using T = TypeParam;
+  Rng rng(4402);
+  const auto ico = meshtest::icosphere<T>(2);
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
+                                                     MeshScale<T>(T(2))),
+                             mesh)
+                  .ok());
+  std::vector<Vec3<T>> origins, dirs;
+  manyRays(rng, origins, dirs);
+  for (std::size_t i = 0; i < kManyRays; i += 3) dirs[i] *= T(3.5);  // lengths the batch divides out
+  RayBatch<T> batch;
+  batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
+  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), dirs.size());
+  batch.maxDist = T(20);
+  batch.normalizeDirections = true;
+  struct Columns {
+    std::vector<std::uint8_t> hit = std::vector<std::uint8_t>(kManyRays, 9);
+    std::vector<T> distance = std::vector<T>(kManyRays, T(-1));
+    std::vector<T> normal = std::vector<T>(3 * kManyRays, T(-1));
+    std::vector<std::int64_t> face = std::vector<std::int64_t>(kManyRays, -7);
+    std::vector<Status> statuses = std::vector<Status>(kManyRays);
+  };
+  auto run = [&](const BatchSettings& settings, Columns& c) {
+    RayHitColumns<T> out;
+    out.hit = c.hit.data();
+    out.distance = c.distance.data();
+    out.normal = c.normal.data();
+    out.faceIndex = c.face.data();
+    return raycastBatch(batch, mesh, Transform<T>(), out, c.statuses.data(), settings);
+  };
+  BatchSettings inputOrder{1, 64};
+  inputOrder.coherentRayOrder = false;
+  Columns expected;
+  const Status se = run(inputOrder, expected);
+  EXPECT_EQ(se.index(), 4u) << "the non-unit direction is divided by its length";
+  for (const BatchSettings& setting : {BatchSettings{1, 64}, BatchSettings{2, 64}, BatchSettings{8, 64}}) {
+    Columns c;
+    const Status s = run(setting, c);
+    EXPECT_EQ(s.code, se.code);
+    EXPECT_EQ(s.index(), se.index());
+    EXPECT_EQ(c.hit, expected.hit);
+    EXPECT_EQ(std::memcmp(c.distance.data(), expected.distance.data(), kManyRays * sizeof(T)), 0);
+    EXPECT_EQ(std::memcmp(c.normal.data(), expected.normal.data(), 3 * kManyRays * sizeof(T)), 0);
+    EXPECT_EQ(c.face, expected.face);
+    for (std::size_t i = 0; i < kManyRays; ++i) ASSERT_EQ(c.statuses[i].code, expected.statuses[i].code) << i;
+  }
+}
+
+TEST(RayOrder, SortByKeyIsAStableSortByTheKeyBits) {
+  std::mt19937_64 gen(4403);
+  for (const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(1000), std::size_t(70000)}) {
+    std::vector<std::uint64_t> items(n), scratch(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      // Few distinct keys, so that equal keys are common; the payload is the input position.
+      const std::uint64_t key = n > 1 && i % 7 == 0 ? std::uint64_t(5) << 20 : gen() % (std::uint64_t(1) << 30);
+      items[i] = key << 32 | std::uint64_t(i);
+    }
+    std::vector<std::uint64_t> expected = items;
+    std::stable_sort(expected.begin(), expected.end(),
+                     [](std::uint64_t a, std::uint64_t b) { return a >> 32 < b >> 32; });
+    const std::uint64_t* sorted = detail::sortByKey(items.data(), scratch.data(), n);
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), sorted)) << n;
+  }
+  // Keys sharing every digit but the top one: only that pass runs.
+  std::vector<std::uint64_t> items = {std::uint64_t(3) << 52 | 0, std::uint64_t(1) << 52 | 1,
+                                     std::uint64_t(2) << 52 | 2};
+  std::vector<std::uint64_t> scratch(3);
+  const std::uint64_t* sorted = detail::sortByKey(items.data(), scratch.data(), 3);
+  EXPECT_EQ(sorted[0] & 0xff, 1u);
+  EXPECT_EQ(sorted[1] & 0xff, 2u);
+  EXPECT_EQ(sorted[2] & 0xff, 0u);
+}
+
+TEST(RayOrder, KeyDependsOnTheEntryPointAndTheDirectionOnly) {
+  const detail::RayOrderKey<double> key(Bounds3<double>::fromMinMax(Vec3<double>(-1, -2, -3), Vec3<double>(1, 2, 3)));
+  const Vec3<double> dir = Vec3<double>(0.3, -0.5, 0.2).normalized();
+  const Vec3<double> entry(-0.7, 2, 1.1);  // on the box's y = max face, the ray going in
+  const std::uint32_t k = key(entry, dir);
+  EXPECT_LT(k, 1u << 30);
+  // Any origin before the entry on the ray's line, and any direction length, give the same key.
+  EXPECT_EQ(key(entry - 3.0 * dir, dir), k);
+  EXPECT_EQ(key(entry - 40.0 * dir, 2.5 * dir), k);
+  // Another entry point or another direction changes it.
+  EXPECT_NE(key(entry + Vec3<double>(1.5, 0, 0), dir), k);
+  EXPECT_NE(key(entry, Vec3<double>(0.3, -0.5, -0.2).normalized()), k);
+  // Bad inputs still give a key (the batch fails such rays when it casts them).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_LT(key(Vec3<double>(nan, 0, 0), dir), 1u << 30);
+  EXPECT_LT(key(Vec3<double>(inf, 0, 0), Vec3<double>(-1, 0, 0)), 1u << 30);
+  EXPECT_LT(key(entry, Vec3<double>(nan, nan, nan)), 1u << 30);
+  EXPECT_LT(key(entry, Vec3<double>::Zero()), 1u << 30);
+  // A flat box (zero extent on an axis) keys rays too.
+  const detail::RayOrderKey<float> flat(Bounds3<float>::fromMinMax(Vec3<float>(0, 0, 0), Vec3<float>(1, 1, 0)));
+  EXPECT_LT(flat(Vec3<float>(0.5f, 0.5f, 2), Vec3<float>(0, 0, -1)), 1u << 30);
+}
+
+}  // namespace
+}  // namespace gq
