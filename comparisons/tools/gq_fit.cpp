@@ -2,7 +2,8 @@
 // Fits a mesh file (OBJ, STL, anything gq::loadMeshFile reads) by the cheapest shape within the tolerance
 // (gq::fitShape, docs/fit.md) and writes PREFIX_partN.obj, one tessellated part each (hulls exact, curved
 // primitives tessellated for viewing), and a JSON report (PREFIX.json: representation, certified bound, relative
-// query cost, each part's exact parameters and pose, and every representation tried).
+// query cost, each part's exact parameters and pose, and every representation tried with its bound and, for one
+// part, its volume over the hull's).
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -184,7 +185,8 @@ int main(int argc, char** argv) {
     report["candidates"].push_back({{"representation", gq::toString(c.representation)},
                                     {"errorBound", c.errorBound},
                                     {"parts", c.parts},
-                                    {"vertices", c.vertices}});
+                                    {"vertices", c.vertices},
+                                    {"volumeRatio", c.volumeRatio}});
   for (std::size_t i = 0; i < fit.parts.size(); ++i) {
     nlohmann::json params;
     const Tessellation t = tessellate(fit.parts[i].first, params);

@@ -10,6 +10,8 @@
 
 #include "gq/bullet/collision_configuration.h"
 #include "gq/bullet/collision_world.h"
+#include "gq/cooking.h"
+#include "shape_cache.h"
 
 namespace gq::bullet::test {
 namespace {
@@ -122,6 +124,30 @@ TEST(BulletMeshFitting, GImpactPairCollidesOnlyWhenFittingIsOn) {
     else
       EXPECT_LT(y, btScalar(-1));
   }
+}
+
+// A fit's hull part is handed to the hull cache as its btConvexHullShape's hull: the cache answers that very hull
+// (no second qhull run) while the shape's points stay those vertices, and cooks its own once they change.
+TEST(BulletHullCache, ASharedHullIsAnsweredUntilTheShapesPointsChange) {
+  std::vector<V3> points;
+  for (int i = 0; i < 8; ++i) points.emplace_back(i & 1 ? 1 : -1, i & 2 ? 2 : -2, i & 4 ? 3 : -3);
+  points.emplace_back(0, 0, 0);  // inside: not a hull vertex
+  std::shared_ptr<const ConvexMesh<Real>> cooked;
+  ASSERT_TRUE(cookConvexMesh(points, cooked).ok());
+  btConvexHullShape shape;
+  for (const V3& v : cooked->vertices) shape.addPoint(toBt(v), false);
+  shape.recalcLocalAabb();
+  ASSERT_TRUE(shareHull(shape, cooked));
+  std::shared_ptr<const ConvexMesh<Real>> answered;
+  ASSERT_EQ(cachedHull(shape, answered), Support::Gq);
+  EXPECT_EQ(answered, cooked);
+  shape.addPoint(btVector3(0, 0, 4));
+  ASSERT_EQ(cachedHull(shape, answered), Support::Gq);
+  EXPECT_NE(answered, cooked);
+  EXPECT_EQ(answered->vertices.size(), cooked->vertices.size() + 1);
+  btConvexHullShape empty;
+  EXPECT_FALSE(shareHull(empty, cooked));
+  EXPECT_FALSE(shareHull(shape, nullptr));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // vertex, the cheapest representation within the tolerance wins, fits are deterministic, bad input gets a status.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -63,6 +64,20 @@ TEST(FitShapeBound, TightOnExactShapes) {
   EXPECT_LE(fit.errorBound, 1e-7);
   ASSERT_TRUE(fitShape(movedSphere(), only(FitRepresentation::Sphere, 0.02), fit).ok());
   EXPECT_LE(fit.errorBound, 0.02);  // level-3 octahedron: sagitta about 0.7 * (1 - cos(pi / 32 * 1.5))
+}
+
+// The stated optimality gap: a one-part fit's volume over the mesh hull's. A box mesh's containing box is the box
+// itself (ratio 1); its containing sphere is the sphere through its corners (radius the half diagonal).
+TEST(FitShapeOptimalityGap, VolumeRatioIsOneForABoxMeshsBoxAndTheCornerSphereOverTheBoxForItsSphere) {
+  FitResult<double> fit;
+  ASSERT_TRUE(fitShape(rotatedBox(), only(FitRepresentation::Box, 1e-3, true), fit).ok());
+  ASSERT_EQ(fit.candidates.size(), 1u);
+  EXPECT_NEAR(fit.candidates[0].volumeRatio, 1.0, 1e-9);
+  ASSERT_TRUE(fitShape(rotatedBox(), only(FitRepresentation::Sphere, 1.0, true), fit).ok());
+  const double r2 = 0.5 * 0.5 + 0.3 * 0.3 + 0.2 * 0.2;
+  EXPECT_NEAR(fit.candidates[0].volumeRatio, 4.0 / 3.0 * M_PI * r2 * std::sqrt(r2) / (8 * 0.5 * 0.3 * 0.2), 1e-6);
+  ASSERT_TRUE(fitShape(fittest::lShapeMesh(), only(FitRepresentation::ConvexDecomposition, 1e-3, true), fit).ok());
+  EXPECT_EQ(fit.candidates.back().volumeRatio, 0.0);  // several parts: no gap stated
 }
 
 TEST(FitShapeChoice, CheapestWithinToleranceWins) {

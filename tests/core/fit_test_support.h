@@ -239,16 +239,21 @@ inline double sampledHausdorff(const MeshData<double>& mesh,
     if (parts.size() == 1) {
       d = surfaceDistance(parts[0].first, parts[0].second, p);
     } else {
-      // Outside every part: the distance to the union is the nearest part's; inside one, skip (no independent
-      // value for the union's surface).
+      // Outside every part: the distance to the union is the nearest part's. Inside some: its depth in any one part
+      // is at most its distance to the union's surface (the ball of that radius lies in the part), so the largest
+      // depth is a distance from below.
       bool inside = false;
+      double deepest = 0;
       for (const auto& part : parts) {
         PointDistanceResult<double> r;
         EXPECT_TRUE(pointDistance<double>(p, part.first, part.second, r).ok());
-        if (r.distance == 0) inside = true;
+        if (r.distance == 0) {
+          inside = true;
+          deepest = std::max(deepest, surfaceDistance(part.first, part.second, p));
+        }
         d = std::min(d, r.distance);
       }
-      if (inside) continue;
+      if (inside) d = deepest;
     }
     worst = std::max(worst, d);
   }

@@ -29,20 +29,23 @@ struct FittedMesh {
   std::unique_ptr<btCompoundShape> compound;
 };
 
-// Bullet shapes for the parts of a fit, margins 0; false for a part Bullet has no shape for.
-bool addPart(const Geometry<double>& g, const Transform<double>& pose, FittedMesh& out) {
+// Bullet shapes for the parts of a fit, margins 0; false for a part Bullet has no shape for. A hull part's points
+// are the fit's hull vertices, and the fit's cooked hull (the one its bound is certified for) goes to the hull
+// cache as that shape's hull: no qhull run again when the child pairs reach gq.
+bool addPart(const Geometry<Real>& g, const Transform<Real>& pose, FittedMesh& out) {
   std::unique_ptr<btCollisionShape> shape;
-  if (const auto* s = g.getIf<SphereGeometry<double>>()) {
-    shape = std::make_unique<btSphereShape>(btScalar(s->radius));
-  } else if (const auto* c = g.getIf<CapsuleGeometry<double>>()) {
-    shape = std::make_unique<btCapsuleShapeX>(btScalar(c->radius), btScalar(2 * c->halfHeight));  // gq: axis X
-  } else if (const auto* b = g.getIf<BoxGeometry<double>>()) {
-    shape = std::make_unique<btBoxShape>(toBt(b->halfExtents.cast<Real>()));
-  } else if (const auto* h = g.getIf<ConvexMeshGeometry<double>>()) {
+  if (const auto* s = g.getIf<SphereGeometry<Real>>()) {
+    shape = std::make_unique<btSphereShape>(s->radius);
+  } else if (const auto* c = g.getIf<CapsuleGeometry<Real>>()) {
+    shape = std::make_unique<btCapsuleShapeX>(c->radius, 2 * c->halfHeight);  // gq: axis X
+  } else if (const auto* b = g.getIf<BoxGeometry<Real>>()) {
+    shape = std::make_unique<btBoxShape>(toBt(b->halfExtents));
+  } else if (const auto* h = g.getIf<ConvexMeshGeometry<Real>>()) {
     if (!h->mesh || !h->scale.isIdentity()) return false;
     auto hull = std::make_unique<btConvexHullShape>();
-    for (const Vec3<double>& v : h->mesh->vertices) hull->addPoint(toBt(v.cast<Real>()), false);
+    for (const V3& v : h->mesh->vertices) hull->addPoint(toBt(v), false);
     hull->recalcLocalAabb();
+    if (!shareHull(*hull, h->mesh)) return false;
     shape = std::move(hull);
   } else {
     return false;
@@ -90,11 +93,17 @@ std::shared_ptr<const FittedMesh> fittedMesh(const btGImpactMeshShape& shape, co
   const btVector3 scaling = shape.getMeshPart(0)->getLocalScaling();  // what GImpact applies to the vertices
   // Keys must order (no NaN): a scaling or tolerance fitShape would refuse leaves the pair to Bullet.
   if (!isUsableScaling(scaling) || !std::isfinite(settings.tolerance) || !(settings.tolerance > 0)) return nullptr;
-  FitOptions<double> options = settings;
+  // Fitted in Bullet's scalar: the hull parts are then the cooked hulls the adapter answers with.
+  FitOptions<Real> options;
+  options.tolerance = Real(settings.tolerance);
+  options.allowed = settings.allowed;
+  options.maxParts = settings.maxParts;
+  options.contain = settings.contain;
+  options.maxBoundPatches = settings.maxBoundPatches;
   options.measureCost = false;
   // The compound takes convex parts only: not the mesh itself, nor the cylinder (a gq custom geometry).
   options.allowed &= ~(fitBit(FitRepresentation::Mesh) | fitBit(FitRepresentation::Cylinder));
-  const Key key{cooked.mesh.get(), scaling.x(), scaling.y(), scaling.z(), options.tolerance,
+  const Key key{cooked.mesh.get(), scaling.x(), scaling.y(), scaling.z(), settings.tolerance,
                 options.allowed, options.maxParts, options.maxBoundPatches, options.contain};
   {
     std::lock_guard<std::mutex> lock(cacheLock());
@@ -102,11 +111,10 @@ std::shared_ptr<const FittedMesh> fittedMesh(const btGImpactMeshShape& shape, co
     if (it != cache().end()) return it->second.fit;
   }
   // Fitted outside the lock (a large mesh takes seconds); two threads fitting the same key keep the first entry.
-  MeshData<double> mesh;
-  for (const V3& v : cooked.mesh->vertices)
-    mesh.vertices.push_back(v.cast<double>().cwiseProduct(Vec3<double>(scaling.x(), scaling.y(), scaling.z())));
+  MeshData<Real> mesh;
+  for (const V3& v : cooked.mesh->vertices) mesh.vertices.push_back(v.cwiseProduct(toGq(scaling)));
   mesh.triangles = cooked.mesh->triangles;
-  FitResult<double> result;
+  FitResult<Real> result;
   const Status s = fitShape(mesh, options, result);
   std::shared_ptr<FittedMesh> fit;
   if ((s.ok() || s.code == StatusCode::Warning) && !result.parts.empty()) {

@@ -49,6 +49,10 @@ class ShapeCache {
     entries_[key] = Entry{fingerprint, data};
     return data;
   }
+  void put(const void* key, std::uint64_t fingerprint, std::shared_ptr<const void> data) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    entries_[key] = Entry{fingerprint, std::move(data)};
+  }
   void clear() {
     std::lock_guard<std::mutex> lock(mutex_);
     entries_.clear();
@@ -187,9 +191,12 @@ std::shared_ptr<const void> cookHeightFieldShape(const btHeightfieldTerrainShape
 
 }  // namespace
 
-Support cachedHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexMesh<Real>>& out) {
+namespace {
+
+// The fingerprint of a hull shape's unscaled points; false for no points or a non-finite one.
+bool hullFingerprint(const btConvexHullShape& shape, std::uint64_t& out) {
   const int n = shape.getNumPoints();
-  if (n <= 0) return Support::Invalid;  // stock Bullet's GJK reads the empty point array (segfault)
+  if (n <= 0) return false;  // stock Bullet's GJK reads the empty point array (segfault)
   Fingerprint fingerprint;
   fingerprint.add(n);
   const btVector3* points = shape.getUnscaledPoints();
@@ -199,8 +206,25 @@ Support cachedHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexM
       finite = finite && std::isfinite(points[i][k]);
       fingerprint.add(points[i][k]);
     }
-  if (!finite) return Support::Invalid;
-  auto data = cache().get(&shape, fingerprint.value(), [&]() -> std::shared_ptr<const void> {
+  out = fingerprint.value();
+  return finite;
+}
+
+}  // namespace
+
+bool shareHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexMesh<Real>> hull) {
+  std::uint64_t fingerprint;
+  if (!hull || !hullFingerprint(shape, fingerprint)) return false;
+  cache().put(&shape, fingerprint, std::move(hull));
+  return true;
+}
+
+Support cachedHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexMesh<Real>>& out) {
+  std::uint64_t fingerprint;
+  if (!hullFingerprint(shape, fingerprint)) return Support::Invalid;
+  const int n = shape.getNumPoints();
+  const btVector3* points = shape.getUnscaledPoints();
+  auto data = cache().get(&shape, fingerprint, [&]() -> std::shared_ptr<const void> {
     std::vector<V3> pts;
     for (int i = 0; i < n; ++i) pts.push_back(toGq(points[i]));
     std::shared_ptr<const ConvexMesh<Real>> hull;

@@ -21,6 +21,10 @@ namespace gq::bullet {
 // Hull of the unscaled points (the shape's local scaling becomes the gq MeshScale). Invalid for no points or a
 // non-finite one; Bullet when qhull refuses the points (fewer than 4, coplanar: Bullet rounds them by its margin).
 Support cachedHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexMesh<Real>>& out);
+// Caches `hull`, already cooked, as the hull of `shape`, whose points must be exactly its vertices (a fit's hull
+// part): cachedHull then answers it without running qhull again. False, nothing cached, for a null hull or a shape
+// cachedHull would call Invalid.
+bool shareHull(const btConvexHullShape& shape, std::shared_ptr<const ConvexMesh<Real>> hull);
 
 // The hull of the spheres at the shape's (uniform) local scaling. Invalid for no spheres, a radius <= 0 or a
 // non-finite number; Bullet for non-uniform or negative scaling.

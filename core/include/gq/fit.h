@@ -58,6 +58,10 @@ template <class T> struct FitCandidate {
   T errorBound = T(0);
   std::uint32_t parts = 0;
   std::uint32_t vertices = 0;  // hull vertices over all parts (0 for primitives and the mesh)
+  // A one-part fit's volume over the volume of the mesh's convex hull (0 for several parts and the mesh). With
+  // `contain`, the least-volume shape of the same kind enclosing the mesh encloses the hull too, so this is also an
+  // upper bound of the fit's volume over that optimum: its stated optimality gap (1: optimal).
+  T volumeRatio = T(0);
 };
 
 template <class T> struct FitResult {

@@ -12,6 +12,7 @@
 // A piece whose bound exceeds max(target, 1.02 x the largest distance attained) is split in four and bounded again,
 // until the patch budget is spent; the bound is then the largest over the pieces, and stays an upper bound.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -115,14 +116,6 @@ struct Union {
 
 // Distance from p to the boundary of the union, from above: exact outside; inside, a walk along +-dir out of the
 // union (each step to the exit of a part containing the point) and the distance from there.
-double outsideDistance(const Union& parts, const Vec3d& p) {
-  double best = std::numeric_limits<double>::infinity();
-  Vec3d g;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    if (parts.below(i, p) < best) best = std::min(best, signedDistance(parts[i], p, g));
-  return best;
-}
-
 double exitAlong(const Solid& s, const Vec3d& p, const Vec3d& dir) {
   if (s.kind == Solid::Kind::Polytope) {
     double t = std::numeric_limits<double>::infinity();
@@ -142,17 +135,29 @@ double exitAlong(const Solid& s, const Vec3d& p, const Vec3d& dir) {
   return t;
 }
 
+// Each step goes to the farthest exit of the parts holding the point; once none holds it, the point is outside the
+// union and its exact distance to it is added. (Only a part whose ball holds the point can hold it.)
 double walkOut(const Union& parts, const Vec3d& p, const Vec3d& dir, double size) {
   double t = 0;
   for (std::size_t step = 0; step < parts.size() + 8; ++step) {
     const Vec3d x = p + t * dir;
-    const double out = outsideDistance(parts, x);
-    if (out >= 0) return t + out;
-    double next = t;
+    bool inside = false;
+    double next = t, out = std::numeric_limits<double>::infinity();
     Vec3d g;
-    for (std::size_t i = 0; i < parts.size(); ++i)
-      if (parts.below(i, x) < 0 && signedDistance(parts[i], x, g) < 0)
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      if (parts.below(i, x) >= 0) continue;
+      const double sd = signedDistance(parts[i], x, g);
+      out = std::min(out, sd);
+      if (sd < 0) {
+        inside = true;
         next = std::max(next, t + exitAlong(parts[i], x, dir));
+      }
+    }
+    if (!inside) {  // the parts not yet measured are at least their ball's distance away
+      for (std::size_t i = 0; i < parts.size(); ++i)
+        if (parts.below(i, x) >= 0 && parts.below(i, x) < out) out = std::min(out, signedDistance(parts[i], x, g));
+      return t + out;
+    }
     t = next + 1e-9 * size;
   }
   return std::numeric_limits<double>::infinity();
@@ -187,7 +192,33 @@ struct Tri {
   int depth;
   double upper;
   bool thorough = false;  // walked out of the union in every direction tried, not only along the normal
+  bool walked = false;    // the bound is a walk's: the thorough walks may lower it
+  // The mesh vertices at the corners (a mesh triangle's), or kNoVertex (a piece of one): the corners' signed
+  // distances are then shared by the triangles around each vertex.
+  std::array<std::uint32_t, 3> vertex{kNoVertex, kNoVertex, kNoVertex};
+  static constexpr std::uint32_t kNoVertex = 0xffffffffu;
   bool operator<(const Tri& o) const { return upper < o.upper; }
+};
+
+// What the tests of one triangle share: each part's signed distance (and gradient) at the centroid, computed once,
+// and each mesh vertex's signed distance to the last part asked about it.
+struct Scratch {
+  std::vector<double> sd;    // at the centroid; NaN where not computed
+  std::vector<Vec3d> grad;
+  std::vector<std::pair<std::uint32_t, double>> vertexSd;  // (part, signed distance); part kNoVertex: none yet
+  explicit Scratch(std::size_t parts, std::size_t vertices)
+      : sd(parts), grad(parts), vertexSd(vertices, {Tri::kNoVertex, 0.0}) {}
+  double at(const Union& parts, std::size_t i, const Vec3d& q) {
+    if (std::isnan(sd[i])) sd[i] = signedDistance(parts[i], q, grad[i]);
+    return sd[i];
+  }
+  double corner(const Solid& part, std::uint32_t partIndex, std::uint32_t vertex, const Vec3d& p) {
+    Vec3d g;
+    if (vertex == Tri::kNoVertex) return signedDistance(part, p, g);
+    auto& slot = vertexSd[vertex];
+    if (slot.first != partIndex) slot = {partIndex, signedDistance(part, p, g)};
+    return slot.second;
+  }
 };
 
 // Whether one face plane of polytope q has every point of `corners` on or outside it (within `slack`) and its
@@ -208,15 +239,15 @@ bool beyondAFace(const Solid& q, const Vec3d (&corners)[3], const Vec3d& dir, do
 // from the image triangle (corners p + beta(p) u) with a normal not against u, points just past the image are
 // outside every part, so the distance from p to the union's boundary is at most beta(p): at most the largest beta
 // at a corner. Polytopes only (a decomposition's parts); infinity when the test does not apply.
-double exitThroughFace(const Union& parts, const Tri& t, const Vec3d& q, const Vec3d& u, double size) {
+double exitThroughFace(const Union& parts, const Tri& t, const Vec3d& q, const Vec3d& u, double size,
+                       Scratch& scratch) {
   const double inf = std::numeric_limits<double>::infinity();
   const double slack = 1e-9 * size;
   for (const Solid& s : parts.solids)
     if (s.kind != Solid::Kind::Polytope) return inf;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const Solid& p = parts[k];
-    Vec3d g;
-    if (parts.below(k, q) > slack || signedDistance(p, q, g) > slack) continue;
+    if (parts.below(k, q) > slack || scratch.at(parts, k, q) > slack) continue;
     const Face* exit = nullptr;
     double nearest = inf;
     for (const Face& f : p.faces) {
@@ -251,57 +282,65 @@ double exitThroughFace(const Union& parts, const Tri& t, const Vec3d& q, const V
 
 // Bounds a mesh triangle's distance to the boundary of the union from above; `lower` gets a distance attained.
 // The distance from the triangle to the boundary of one convex part, from above, and one attained.
-double boundToPart(const Solid& part, const Tri& t, const Vec3d& q, double& lower) {
-  Vec3d g, gv;
-  const double sq = signedDistance(part, q, g);
-  const double sa = signedDistance(part, t.a, gv), sb = signedDistance(part, t.b, gv), sc = signedDistance(part, t.c, gv);
+double boundToPart(const Union& parts, std::uint32_t i, const Tri& t, const Vec3d& q, Scratch& scratch,
+                   double& lower) {
+  const Solid& part = parts[i];
+  const double sq = scratch.at(parts, i, q);
+  const Vec3d& g = scratch.grad[i];
+  const double sa = scratch.corner(part, i, t.vertex[0], t.a), sb = scratch.corner(part, i, t.vertex[1], t.b),
+               sc = scratch.corner(part, i, t.vertex[2], t.c);
   const double outside = std::max({sa, sb, sc});
   const double depth = std::max({-sq - g.dot(t.a - q), -sq - g.dot(t.b - q), -sq - g.dot(t.c - q)});
   lower = std::max({std::abs(sa), std::abs(sb), std::abs(sc), std::abs(sq)});
   return std::max({outside, depth, 0.0});
 }
 
-double boundTriangle(const Union& parts, const Tri& t, double size, double target, double& lower) {
+double boundTriangle(const Union& parts, Tri& t, double size, double target, Scratch& scratch, double& lower) {
+  t.walked = false;
   const Vec3d q = (t.a + t.b + t.c) / 3.0;
-  if (parts.size() == 1) return boundToPart(parts[0], t, q, lower);
+  std::fill(scratch.sd.begin(), scratch.sd.end(), std::numeric_limits<double>::quiet_NaN());
+  if (parts.size() == 1) return boundToPart(parts, 0, t, q, scratch, lower);
   const double r = std::max({(t.a - q).norm(), (t.b - q).norm(), (t.c - q).norm()});
   // One part P alone: with B its bound, each point x of the triangle has a point y of P's boundary within B, and
   // when every other part is farther than r + B from the centroid, y is outside them all, so on the union's
   // boundary (and x, outside the union, is at most sd_P(x) <= B from it): B bounds the union too. P is the part
   // nearest the centroid. Inside it, the centroid's depth is at most its distance to the union's boundary: a
-  // distance attained, from below.
-  std::size_t nearest = 0;
+  // distance attained, from below. A part skipped here has a signed distance of at least the nearest's absolute
+  // value, so the least signed distance computed is the least of all: the union's outside distance.
+  std::uint32_t nearest = 0;
   double nearestDistance = std::numeric_limits<double>::infinity(), nearestSigned = 0;
-  {
-    Vec3d g;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-      if (std::abs(parts.below(i, q)) >= nearestDistance && parts.below(i, q) > 0) continue;
-      const double sd = signedDistance(parts[i], q, g);
-      if (std::abs(sd) < nearestDistance) {
-        nearestDistance = std::abs(sd);
-        nearestSigned = sd;
-        nearest = i;
-      }
+  double out = std::numeric_limits<double>::infinity();
+  for (std::uint32_t i = 0; i < parts.size(); ++i) {
+    if (std::abs(parts.below(i, q)) >= nearestDistance && parts.below(i, q) > 0) continue;
+    const double sd = scratch.at(parts, i, q);
+    out = std::min(out, sd);
+    if (std::abs(sd) < nearestDistance) {
+      nearestDistance = std::abs(sd);
+      nearestSigned = sd;
+      nearest = i;
     }
+  }
+  {
     double single = 0;
-    const double bound = boundToPart(parts[nearest], t, q, single);
+    const double bound = boundToPart(parts, nearest, t, q, scratch, single);
     bool alone = true;
-    for (std::size_t i = 0; i < parts.size() && alone; ++i)
-      if (i != nearest && parts.below(i, q) <= r + bound) alone = signedDistance(parts[i], q, g) > r + bound;
+    for (std::uint32_t i = 0; i < parts.size() && alone; ++i)
+      if (i != nearest && parts.below(i, q) <= r + bound) alone = scratch.at(parts, i, q) > r + bound;
     if (alone) {
-      lower = nearestSigned < 0 ? -nearestSigned : std::max(0.0, outsideDistance(parts, q));
+      lower = nearestSigned < 0 ? -nearestSigned : std::max(0.0, out);
       return bound;
     }
   }
   const Vec3d n = (t.b - t.a).cross(t.c - t.a);
   const Vec3d normal = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::UnitX();
-  const double out = outsideDistance(parts, q);  // exact where q is outside the union
   lower = out >= 0 ? out : std::max(0.0, -nearestSigned);
   // A triangle on a flat face of the union is proven by the exit through that face; the walks only where not.
-  const double exit = out < 0 && n.norm() > 0 ? exitThroughFace(parts, t, q, normal, size)
+  const double exit = out < 0 && n.norm() > 0 ? exitThroughFace(parts, t, q, normal, size, scratch)
                                               : std::numeric_limits<double>::infinity();
   if (exit <= target) return exit;
-  return std::min(exit, unionBoundaryDistance(parts, q, out, normal, size, t.thorough) + r);
+  const double walk = unionBoundaryDistance(parts, q, out, normal, size, t.thorough) + r;
+  t.walked = out < 0;
+  return std::min(exit, walk);
 }
 
 // Best first: the triangle of largest bound is split until it is acceptable or the budget is spent; the bound is
@@ -309,25 +348,29 @@ double boundTriangle(const Union& parts, const Tri& t, double size, double targe
 void meshToFit(const Surface& surface, const Union& parts, double target, Budget& budget, Bound& out) {
   std::priority_queue<Tri> heap;
   double lower = 0;
+  Scratch scratch(parts.size(), surface.vertices.size());
   const auto push = [&](Tri t) {
     double l = 0;
-    t.upper = boundTriangle(parts, t, surface.size, target, l);
+    t.upper = boundTriangle(parts, t, surface.size, target, scratch, l);
     lower = std::max(lower, l);
     heap.push(t);
   };
-  for (const auto& tri : surface.triangles)
-    push({surface.vertices[tri[0]], surface.vertices[tri[1]], surface.vertices[tri[2]], 0, 0});
+  for (const auto& tri : surface.triangles) {
+    Tri t{surface.vertices[tri[0]], surface.vertices[tri[1]], surface.vertices[tri[2]], 0, 0};
+    t.vertex = tri;
+    push(t);
+  }
   while (!heap.empty()) {
     const Tri t = heap.top();
-    if (acceptable(t.upper, target, lower) || t.depth >= kMaxDepth) break;
+    if (acceptable(t.upper, target, lower)) break;
     heap.pop();
-    if (!t.thorough && parts.size() > 1) {  // the other walks first, for the few triangles that decide the bound
+    if (!t.thorough && t.walked) {  // the other walks first, for the few triangles that decide the bound
       Tri again = t;
       again.thorough = true;
       push(again);
       continue;
     }
-    if (!budget.take(4)) {
+    if (t.depth >= kMaxDepth || !budget.take(4)) {
       heap.push(t);
       break;
     }

@@ -94,7 +94,9 @@ struct HullPatch {
   bool operator<(const HullPatch& o) const { return upper < o.upper; }
 };
 
-void measureConcavity(const Surface& surface, Piece& piece) {
+// `cutoff`: the measure stops (false) as soon as the concavity reaches it, the value only growing as it goes: a
+// trial half that reaches the best score so far cannot win. `locate`: also find where it peaks (kept pieces).
+bool measureConcavity(const Surface& surface, Piece& piece, double cutoff, bool locate) {
   piece.concavity = 0;
   Vec3d worst = Vec3d::Zero();
   bool any = false;
@@ -108,6 +110,7 @@ void measureConcavity(const Surface& surface, Piece& piece) {
       any = true;
     }
     heap.push({a, b, c, q, d + std::max({(a - q).norm(), (b - q).norm(), (c - q).norm()})});
+    return piece.concavity < cutoff;
   };
   const auto& v = piece.hull.vertices;
   std::vector<const Face*> outer;  // the hull's faces not on a cut
@@ -115,17 +118,17 @@ void measureConcavity(const Surface& surface, Piece& piece) {
     if (!onCut(f, piece.cuts, surface.size)) outer.push_back(&f);
   for (const Face* face : outer) {
     const Face& f = *face;
-    for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k) push(v[f.vertices[0]], v[f.vertices[k]], v[f.vertices[k + 1]]);
+    for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k)
+      if (!push(v[f.vertices[0]], v[f.vertices[k]], v[f.vertices[k + 1]])) return false;
   }
   for (std::size_t split = 0; split < kConcavityRefinements && !heap.empty(); ++split) {
     const HullPatch t = heap.top();
     if (t.upper <= std::max(1.1 * piece.concavity, piece.concavity + 1e-3 * surface.size)) break;
     heap.pop();
     const Vec3d ab = (t.a + t.b) / 2, bc = (t.b + t.c) / 2, ca = (t.c + t.a) / 2;
-    push(t.a, ab, ca);
-    push(ab, t.b, bc);
-    push(ca, bc, t.c);
-    push(ab, bc, ca);
+    // All four pushed before the cutoff is read, as the measure without one does.
+    const bool below = push(t.a, ab, ca) & push(ab, t.b, bc) & push(ca, bc, t.c) & push(ab, bc, ca);
+    if (!below) return false;
   }
   // The other way: how deep the piece's own surface lies below its hull's faces (cut faces excepted), at up to
   // kDepthSamples of its points; inside a convex solid the distance to the boundary is the least face-plane distance.
@@ -138,17 +141,19 @@ void measureConcavity(const Surface& surface, Piece& piece) {
       piece.concavity = depth;
       worst = p;
       any = true;
+      if (piece.concavity >= cutoff) return false;
     }
   }
-  if (!any) return;
+  if (!any || !locate) return true;
   PointDistanceResult<double> r;
-  if (!pointDistance<double>(worst, TriangleMeshGeometry<double>(surface.cooked), Transform<double>(), r).ok()) return;
+  if (!pointDistance<double>(worst, TriangleMeshGeometry<double>(surface.cooked), Transform<double>(), r).ok()) return true;
   piece.deepest = r.closestPoint;
   const TriangleMesh<double>& m = *surface.cooked;
-  if (r.closestIndex >= m.cookedIndex.size() || m.cookedIndex[r.closestIndex] >= m.triangles.size()) return;
+  if (r.closestIndex >= m.cookedIndex.size() || m.cookedIndex[r.closestIndex] >= m.triangles.size()) return true;
   const TriangleIndices& t = m.triangles[m.cookedIndex[r.closestIndex]];
   const Vec3d n = (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]);
   if (n.norm() > 0) piece.deepestPlane = {n.normalized(), n.normalized().dot(m.vertices[t[0]])};
+  return true;
 }
 
 // Each point once (a mesh vertex is a corner of about six triangles): qhull's work is in the points.
@@ -163,8 +168,10 @@ void keepUnique(std::vector<Vec3d>& pts) {
 // The piece's hull holds its triangles and each of their points on a cut pushed across it by kOverlap of the mesh
 // size: the two halves of a cut overlap in a thin slab, so their union has no crack along it. A trial piece (one
 // half of a candidate cut, only scored) takes qhull's hull as it is; a kept piece's hull is grown to hold every point
-// (enclosingHull), which costs a pass over the points per face.
-bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& surface, bool kept, Piece& out) {
+// (enclosingHull), which costs a pass over the points per face. False also when a trial piece's concavity reaches
+// `cutoff` (it cannot be the better split).
+bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& surface, bool kept, double cutoff,
+               Piece& out) {
   if (tris.size() < 12) return false;
   // The points themselves stay too: pushing a corner where a cut meets a slanted face can leave it just outside.
   std::vector<Vec3d> points = tris;
@@ -185,8 +192,7 @@ bool makePiece(std::vector<Vec3d> tris, std::vector<Plane> cuts, const Surface& 
     if (!cookConvexMesh(points, hull).ok()) return false;
     out.hull = polytopeOf(*hull);
   }
-  measureConcavity(surface, out);
-  return true;
+  return measureConcavity(surface, out, kept ? std::numeric_limits<double>::infinity() : cutoff, kept);
 }
 
 // Candidate planes: first through the deepest concavity (the plane of the mesh face there, which cuts along a
@@ -212,28 +218,29 @@ std::vector<Plane> candidatePlanes(const Piece& piece) {
 }
 
 // The candidate plane whose two halves have the least concavity (the larger of the two); a plane that leaves
-// (nearly) nothing on one side is skipped.
+// (nearly) nothing on one side is skipped. A trial half is measured only until it reaches the best score so far
+// (its plane cannot win then): the choice is the one measuring every half in full would make.
 bool splitPiece(const Piece& piece, const Surface& surface, Piece& a, Piece& b) {
-  double best = std::numeric_limits<double>::infinity();
+  constexpr double kNoCutoff = std::numeric_limits<double>::infinity();
+  double best = kNoCutoff;
   const Plane* chosen = nullptr;
   const std::vector<Plane> candidates = candidatePlanes(piece);
-  const auto halves = [&](const Plane& plane, bool kept, Piece& pa, Piece& pb) {
-    std::vector<Plane> cutsA = piece.cuts, cutsB = piece.cuts;
-    cutsA.push_back(plane);
-    cutsB.push_back({-plane.normal, -plane.offset});
-    return makePiece(clip(piece.triangles, cutsA.back(), surface.size), cutsA, surface, kept, pa) &&
-           makePiece(clip(piece.triangles, cutsB.back(), surface.size), cutsB, surface, kept, pb);
+  const auto half = [&](const Plane& plane, bool kept, double cutoff, Piece& out) {
+    std::vector<Plane> cuts = piece.cuts;
+    cuts.push_back(plane);
+    return makePiece(clip(piece.triangles, plane, surface.size), cuts, surface, kept, cutoff, out);
   };
+  const auto opposite = [](const Plane& p) { return Plane{-p.normal, -p.offset}; };
   for (const Plane& plane : candidates) {
     Piece pa, pb;
-    if (!halves(plane, false, pa, pb)) continue;
+    if (!half(plane, false, best, pa) || !half(opposite(plane), false, best, pb)) continue;
     const double score = std::max(pa.concavity, pb.concavity);
     if (score < best) {
       best = score;
       chosen = &plane;
     }
   }
-  return chosen != nullptr && halves(*chosen, true, a, b);
+  return chosen != nullptr && half(*chosen, true, kNoCutoff, a) && half(opposite(*chosen), true, kNoCutoff, b);
 }
 
 }  // namespace
@@ -245,7 +252,7 @@ Status decompose(const Surface& surface, double tolerance, std::uint32_t maxPart
   for (const auto& t : surface.triangles)
     for (std::uint32_t i : t) tris.push_back(surface.vertices[i]);
   std::vector<Piece> pieces(1);
-  if (!makePiece(std::move(tris), {}, surface, true, pieces[0])) return Status::degenerate("mesh has no convex hull");
+  if (!makePiece(std::move(tris), {}, surface, true, std::numeric_limits<double>::infinity(), pieces[0])) return Status::degenerate("mesh has no convex hull");
   while (pieces.size() < maxParts) {
     std::size_t worst = 0;
     for (std::size_t i = 1; i < pieces.size(); ++i)

@@ -33,10 +33,15 @@ struct Solid {
   Vec3d halfExtents = Vec3d::Zero();
   std::vector<Vec3d> vertices;  // polytope
   std::vector<Face> faces;      // polytope
+  std::vector<double> planes;   // polytope: each face's normal x, y, z and d, packed for the signed distance's scans
 };
 
 // Signed distance to the solid's surface (negative inside), exact; `gradient` gets a unit subgradient of it.
 double signedDistance(const Solid& s, const Vec3d& p, Vec3d& gradient);
+// Fills Solid::planes from the faces (polytopeOf does; call it after changing the faces).
+void packPlanes(Solid& s);
+// The solid's volume (closed forms; a polytope's from its faces about its centre).
+double volumeOf(const Solid& s);
 
 // The mesh in double, with its surface cooked for point distances.
 struct Surface {

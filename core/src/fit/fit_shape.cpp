@@ -165,9 +165,11 @@ template <class T> Status fitShape(const MeshData<T>& mesh, const FitOptions<T>&
     FitRepresentation bestRep = FitRepresentation::Mesh;
     double bestBound = std::numeric_limits<double>::infinity();
     bool found = false;
+    const double hullVolume = hullStatus.ok() ? volumeOf(polytopeOf(*hull)) : 0.0;
     const auto consider = [&](FitRepresentation rep, const Parts<T>& parts, const std::vector<Solid>& exact,
                               double bound) {
-      out.candidates.push_back({rep, T(bound), std::uint32_t(parts.size()), vertexCount<T>(exact)});
+      const double ratio = exact.size() == 1 && hullVolume > 0 ? volumeOf(exact[0]) / hullVolume : 0.0;
+      out.candidates.push_back({rep, T(bound), std::uint32_t(parts.size()), vertexCount<T>(exact), T(ratio)});
       if (bound < bestBound) {
         bestBound = bound;
         bestParts = parts;
@@ -196,6 +198,7 @@ template <class T> Status fitShape(const MeshData<T>& mesh, const FitOptions<T>&
           if (b < bound) {
             bound = b;
             parts = std::move(tighterParts);
+            exact = std::move(tighter);
           }
         }
       }

@@ -37,16 +37,34 @@ Vec3d closestOnPolygon(const Solid& s, const Face& f, const Vec3d& p) {
   return best;
 }
 
-double polytopeDistance(const Solid& s, const Vec3d& p, Vec3d& gradient) {
-  double most = -std::numeric_limits<double>::infinity();
-  std::size_t mostFace = 0;
-  for (std::size_t i = 0; i < s.faces.size(); ++i) {
-    const double v = s.faces[i].normal.dot(p) + s.faces[i].d;
-    if (v > most) {
-      most = v;
-      mostFace = i;
-    }
+// The largest face-plane value at p and its face, over the packed planes (two faces a round: independent chains).
+double mostPlane(const Solid& s, const Vec3d& p, std::size_t& face) {
+  const double* pl = s.planes.data();
+  const std::size_t n = s.planes.size() / 4;
+  double most0 = -std::numeric_limits<double>::infinity(), most1 = most0;
+  std::size_t face0 = 0, face1 = 0, i = 0;
+  for (; i + 1 < n; i += 2, pl += 8) {
+    const double v0 = pl[0] * p.x() + pl[1] * p.y() + pl[2] * p.z() + pl[3];
+    const double v1 = pl[4] * p.x() + pl[5] * p.y() + pl[6] * p.z() + pl[7];
+    if (v0 > most0) most0 = v0, face0 = i;
+    if (v1 > most1) most1 = v1, face1 = i + 1;
   }
+  if (i < n) {
+    const double v0 = pl[0] * p.x() + pl[1] * p.y() + pl[2] * p.z() + pl[3];
+    if (v0 > most0) most0 = v0, face0 = i;
+  }
+  // Ties go to the lower index, as one scan in order would.
+  if (most1 > most0 || (most1 == most0 && face1 < face0)) {
+    face = face1;
+    return most1;
+  }
+  face = face0;
+  return most0;
+}
+
+double polytopeDistance(const Solid& s, const Vec3d& p, Vec3d& gradient) {
+  std::size_t mostFace = 0;
+  const double most = mostPlane(s, p, mostFace);
   if (most <= 0) {  // inside: the nearest boundary point is the projection on the nearest plane
     gradient = s.faces[mostFace].normal;
     return most;
@@ -54,10 +72,12 @@ double polytopeDistance(const Solid& s, const Vec3d& p, Vec3d& gradient) {
   // Outside: the closest point lies on a face whose plane has p in front of it.
   double best = std::numeric_limits<double>::infinity();
   Vec3d bestPoint = p;
-  for (const Face& f : s.faces) {
+  const double* pl = s.planes.data();
+  for (std::size_t i = 0; i < s.faces.size(); ++i, pl += 4) {
     // A face is no nearer than its plane.
-    const double v = f.normal.dot(p) + f.d;
+    const double v = pl[0] * p.x() + pl[1] * p.y() + pl[2] * p.z() + pl[3];
     if (v <= 0 || v >= best) continue;
+    const Face& f = s.faces[i];
     const Vec3d c = closestOnPolygon(s, f, p);
     const double d = (p - c).norm();
     if (d < best) {
@@ -124,6 +144,32 @@ double signedDistance(const Solid& s, const Vec3d& p, Vec3d& gradient) {
   return 0;
 }
 
+void packPlanes(Solid& s) {
+  s.planes.clear();
+  s.planes.reserve(4 * s.faces.size());
+  for (const Face& f : s.faces) s.planes.insert(s.planes.end(), {f.normal.x(), f.normal.y(), f.normal.z(), f.d});
+}
+
+double volumeOf(const Solid& s) {
+  switch (s.kind) {
+    case Solid::Kind::Sphere: return 4.0 / 3.0 * M_PI * s.radius * s.radius * s.radius;
+    case Solid::Kind::Capsule:
+      return M_PI * s.radius * s.radius * (2 * s.halfHeight + 4.0 / 3.0 * s.radius);
+    case Solid::Kind::Box: return 8 * s.halfExtents.prod();
+    case Solid::Kind::Cylinder: return 2 * M_PI * s.radius * s.radius * s.halfHeight;
+    case Solid::Kind::Polytope: break;
+  }
+  // Pyramids from the centre over each face: a third of the face's area times the centre's depth below its plane.
+  double volume = 0;
+  for (const Face& f : s.faces) {
+    Vec3d area = Vec3d::Zero();
+    for (std::size_t i = 0; i < f.vertices.size(); ++i)
+      area += s.vertices[f.vertices[i]].cross(s.vertices[f.vertices[(i + 1) % f.vertices.size()]]);
+    volume += 0.5 * std::abs(area.dot(f.normal)) * -(f.normal.dot(s.centre) + f.d) / 3.0;
+  }
+  return volume;
+}
+
 Solid polytopeOf(const ConvexMesh<double>& hull) {
   Solid s;
   s.kind = Solid::Kind::Polytope;
@@ -138,6 +184,7 @@ Solid polytopeOf(const ConvexMesh<double>& hull) {
     s.faces.push_back(std::move(f));
   }
   s.centre = hull.center;
+  packPlanes(s);
   return s;
 }
 
@@ -162,6 +209,7 @@ template <class T> Solid polytopeOf(const ConvexMesh<T>& hull, const Transform<T
     s.faces.push_back(std::move(f));
   }
   s.centre = pd.transform(hull.center.template cast<double>());
+  packPlanes(s);
   return s;
 }
 
