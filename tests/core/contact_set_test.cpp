@@ -138,6 +138,41 @@ TYPED_TEST(ContactSets, NoPointIsDeeperThanTheExactPenetration) {
   }
 }
 
+// Crossed edges: box 0 turned 45 degrees about y, its bottom edge (along y) 0.01 into the top edge (along x) of a
+// box turned 45 degrees about x. One point (no face within ~8 degrees of the normal): the crossing on geom1's edge,
+// normal +z, at the exact depth.
+TYPED_TEST(ContactSets, CrossedEdgesGiveTheirCrossingAtTheExactDepth) {
+  using T = TypeParam;
+  const double r = 0.5 * std::sqrt(2.0);
+  const Transform<T> pose0(Vec3<T>(T(0.1), T(-0.05), T(2 * r - 0.01)),
+                           Quat<T>(Eigen::AngleAxis<T>(T(EIGEN_PI / 4), Vec3<T>::UnitY())));
+  const Transform<T> pose1(Vec3<T>(T(0.1), T(-0.05), T(0)), Quat<T>(Eigen::AngleAxis<T>(T(EIGEN_PI / 4), Vec3<T>::UnitX())));
+  ContactSet<T> c;
+  ASSERT_TRUE(generateContacts(this->unitBox(), pose0, this->unitBox(), pose1, c).ok());
+  ASSERT_EQ(c.count, 1u);
+  this->expectNormal(c, 0, 0, 1);
+  EXPECT_NEAR(double(c.points[0].separation), -0.01, this->kTol);
+  EXPECT_TRUE(this->hasPoint(c, 0.1, -0.05, r));
+}
+
+// A box on its edge (turned 45 degrees about x), 0.01 into the ground's top face: one point on the edge's line on the
+// face, at the exact depth.
+TYPED_TEST(ContactSets, BoxOnItsEdgeGivesOnePointOfTheEdgeAtTheExactDepth) {
+  using T = TypeParam;
+  const double r = 0.5 * std::sqrt(2.0);
+  const Transform<T> pose(Vec3<T>(T(0.2), T(0.3), T(0.5 + r - 0.01)),
+                          Quat<T>(Eigen::AngleAxis<T>(T(EIGEN_PI / 4), Vec3<T>::UnitX())));
+  ContactSet<T> c;
+  ASSERT_TRUE(generateContacts(this->unitBox(), pose, this->ground(), this->at(0, 0, 0), c).ok());
+  ASSERT_EQ(c.count, 1u);
+  this->expectNormal(c, 0, 0, 1);
+  EXPECT_NEAR(double(c.points[0].separation), -0.01, this->kTol);
+  const Eigen::Vector3d p = c.points[0].position.template cast<double>();
+  EXPECT_NEAR(p.y(), 0.3, 10 * this->kTol);
+  EXPECT_NEAR(p.z(), 0.5, 10 * this->kTol);
+  EXPECT_LE(std::abs(p.x() - 0.2), 0.5 + 10 * this->kTol);
+}
+
 // A hexagonal hull standing on its face: 4 of the 6 bottom corners by default, all 6 when maxContacts allows; 1 (the
 // deepest, exact) with maxContacts = 1.
 TYPED_TEST(ContactSets, HullOnBoxKeepsMaxContactsOfItsBottomFace) {

@@ -6,23 +6,12 @@
 #include "contacts/contact_features.h"
 
 namespace gq::detail {
-namespace {
 
-// Clipping to a rectangle in its own frame: each point as (x, y, height over the face), four axis-aligned half
-// planes (a quarter of the work of the general polygon's cross products and dot products per edge).
-template <class T> int clipToRectangle(const Feature<T>& reference, Feature<T>& incident) {
-  struct P {
-    T c[3];
-  };
-  std::array<P, kMaxFeaturePoints> bufferA, bufferB;
-  int count = incident.count;
-  for (int i = 0; i < count; ++i) {
-    const Vec3<T> d = incident.points[i] - reference.centre;
-    bufferA[i] = P{{d.dot(reference.u), d.dot(reference.w), d.dot(reference.normal)}};
-  }
-  P* in = bufferA.data();
-  P* out = bufferB.data();
-  const T limits[2] = {reference.hu, reference.hw};
+template <class T>
+int clipToRectangle(FacePoint<T>* in, FacePoint<T>* scratch, int count, int capacity, T hx, T hy,
+                    FacePoint<T>*& result) {
+  FacePoint<T>* out = scratch;
+  const T limits[2] = {hx, hy};
   for (int e = 0; e < 4 && count > 0; ++e) {
     const int axis = e >> 1;
     const T sign = (e & 1) ? T(-1) : T(1), limit = limits[axis];
@@ -30,11 +19,11 @@ template <class T> int clipToRectangle(const Feature<T>& reference, Feature<T>& 
     for (int i = 0; i < count; ++i) {
       const int next = i + 1 == count ? 0 : i + 1;
       const T da = sign * in[i].c[axis] - limit, db = sign * in[next].c[axis] - limit;
-      if (da <= 0 && n < kMaxFeaturePoints) out[n++] = in[i];
+      if (da <= 0 && n < capacity) out[n++] = in[i];
       const bool crosses = (da < 0 && db > 0) || (da > 0 && db < 0);
-      if (crosses && n < kMaxFeaturePoints && (count > 2 || i == 0)) {
+      if (crosses && n < capacity && (count > 2 || i == 0)) {
         const T t = da / (da - db);
-        P q;
+        FacePoint<T> q;
         for (int k = 0; k < 3; ++k) q.c[k] = in[i].c[k] + (in[next].c[k] - in[i].c[k]) * t;
         out[n++] = q;
       }
@@ -42,6 +31,23 @@ template <class T> int clipToRectangle(const Feature<T>& reference, Feature<T>& 
     std::swap(in, out);
     count = n;
   }
+  result = in;
+  return count;
+}
+
+namespace {
+
+// A box face: each incident point as (x, y, height over the face) in the face's own frame, clipped to four
+// axis-aligned half planes (a quarter of the work of the general polygon's cross products and dot products per edge).
+template <class T> int clipToBoxFace(const Feature<T>& reference, Feature<T>& incident) {
+  std::array<FacePoint<T>, kMaxFeaturePoints> bufferA, bufferB;
+  for (int i = 0; i < incident.count; ++i) {
+    const Vec3<T> d = incident.points[i] - reference.centre;
+    bufferA[i] = FacePoint<T>{{d.dot(reference.u), d.dot(reference.w), d.dot(reference.normal)}};
+  }
+  FacePoint<T>* in = nullptr;
+  const int count = clipToRectangle(bufferA.data(), bufferB.data(), incident.count, kMaxFeaturePoints, reference.hu,
+                                    reference.hw, in);
   for (int i = 0; i < count; ++i)
     incident.points[i] =
         reference.centre + reference.u * in[i].c[0] + reference.w * in[i].c[1] + reference.normal * in[i].c[2];
@@ -53,7 +59,7 @@ template <class T> int clipToRectangle(const Feature<T>& reference, Feature<T>& 
 
 template <class T> int clipToFace(const Feature<T>& reference, Feature<T>& incident) {
   if (reference.unbounded) return incident.count;
-  if (reference.rectangle) return clipToRectangle(reference, incident);
+  if (reference.rectangle) return clipToBoxFace(reference, incident);
   Vec3<T> centroid = Vec3<T>::Zero();
   for (int i = 0; i < reference.count; ++i) centroid += reference.points[i];
   centroid /= T(reference.count);
@@ -88,6 +94,9 @@ template <class T> int clipToFace(const Feature<T>& reference, Feature<T>& incid
   return count;
 }
 
+template int clipToRectangle<float>(FacePoint<float>*, FacePoint<float>*, int, int, float, float, FacePoint<float>*&);
+template int clipToRectangle<double>(FacePoint<double>*, FacePoint<double>*, int, int, double, double,
+                                     FacePoint<double>*&);
 template int clipToFace<float>(const Feature<float>&, Feature<float>&);
 template int clipToFace<double>(const Feature<double>&, Feature<double>&);
 

@@ -5,8 +5,10 @@
 // (Sutherland-Hodgman), and the reduction of a point set to the few that span it.
 #include <array>
 
+#include "gq/contacts.h"
 #include "gq/geometry.h"
 #include "gq/math.h"
+#include "gq/query.h"
 #include "gq/transform.h"
 
 namespace gq::detail {
@@ -45,11 +47,44 @@ bool incidentFeature(const Geometry<T>& g, const Transform<T>& pose, const Vec3<
 // Clips the incident polygon (or segment, or point) to the prism over the reference face; returns the count left.
 template <class T> int clipToFace(const Feature<T>& reference, Feature<T>& incident);
 
+// A point in a rectangle's frame: (c[0], c[1]) in its plane, c[2] the height over it.
+template <class T> struct FacePoint {
+  T c[3];
+};
+// Sutherland-Hodgman: the polygon in[0, count) (or a segment, or a point) clipped to |c[0]| <= hx, |c[1]| <= hy, the
+// two buffers (`capacity` points each) swapped per side. Returns the count left; `result` points at them.
+template <class T>
+int clipToRectangle(FacePoint<T>* in, FacePoint<T>* scratch, int count, int capacity, T hx, T hy,
+                    FacePoint<T>*& result);
+
 // Picks at most `maxKeep` (<= kMaxFeaturePoints) of `count` points (common normal n) spanning the largest area: the
 // deepest, the farthest from it, the farthest from their line on each side, then the deepest of the rest. Writes
 // their indices to `keep`; returns how many.
 template <class T>
 int reduceContactPoints(const Vec3<T>* points, const T* separations, int count, const Vec3<T>& n, int maxKeep,
                         int* keep);
+
+// ---- Box pairs (box_box.cpp) ----------------------------------------------------------------------------------
+
+// The settings of a box pair's contact set, checked by the caller.
+template <class T> struct BoxContactSettings {
+  T threshold;  // contactDistance
+  T margin0, margin1;
+  T tolerance;  // separations within it are equal
+  int maxContacts;
+};
+
+// The contact set of two boxes (poses validated by the caller). Penetrating cores: the whole set (SAT depth and
+// normal, the incident face clipped to the reference face), true. A separating axis with a gap beyond the threshold:
+// an empty set, true. Otherwise false and nothing written: the caller takes the exact signed distance of the cores
+// and passes it to boxContactsApart.
+template <class T>
+bool boxContactsPenetrating(const BoxGeometry<T>& box0, const Transform<T>& pose0, const BoxGeometry<T>& box1,
+                            const Transform<T>& pose1, const BoxContactSettings<T>& settings, ContactSet<T>& out);
+// The contact set of two boxes whose cores' signed distance is `d` (distanceWithin of the pair).
+template <class T>
+void boxContactsApart(const BoxGeometry<T>& box0, const Transform<T>& pose0, const BoxGeometry<T>& box1,
+                      const Transform<T>& pose1, const BoxContactSettings<T>& settings, const DistanceResult<T>& d,
+                      ContactSet<T>& out);
 
 }  // namespace gq::detail

@@ -175,6 +175,30 @@ template <class T> Status checkSettings(const ContactSetSettings<T>& s) {
   return Status();
 }
 
+// Two boxes: the compact box-pair path (box_box.cpp); the signed distance of the cores answers pairs apart within
+// the threshold.
+template <class T, class Q>
+Status boxContactSet(const Q& q, const Transform<T>& pose0, const Transform<T>& pose1, ContactSet<T>& out,
+                     const ContactSetSettings<T>& settings, T tolerance) {
+  if (!detail::pairPosesAreValid(pose0, pose1)) return detail::pairPosesStatus(pose0, pose1);
+  const auto& box0 = q.geometry0().template get<BoxGeometry<T>>();
+  const auto& box1 = q.geometry1().template get<BoxGeometry<T>>();
+  const detail::BoxContactSettings<T> s{settings.contactDistance, settings.margin0, settings.margin1, tolerance,
+                                        int(settings.maxContacts)};
+  if (detail::boxContactsPenetrating(box0, pose0, box1, pose1, s, out)) return Status();
+  DistanceResult<T> d;
+  bool beyond = false;
+  const T within = settings.contactDistance + settings.margin0 + settings.margin1;
+  if (Status st = q.distanceUpTo(d, beyond, within, pose0, pose1, settings.cache); !st.ok()) return st;
+  if (beyond) {
+    out.normal = Vec3<T>::Zero();
+    out.count = 0;
+    return Status();
+  }
+  detail::boxContactsApart(box0, pose0, box1, pose1, s, d, out);
+  return Status();
+}
+
 template <class T, class Q>
 Status contactSet(const Q& q, const Transform<T>& pose0, const Transform<T>& pose1, ContactSet<T>& out,
                   const ContactSetSettings<T>& settings) {
@@ -188,6 +212,8 @@ Status contactSet(const Q& q, const Transform<T>& pose0, const Transform<T>& pos
   if (!((convex0 && (convex1 || plane1)) || (plane0 && convex1)))
     return Status::unsupported("contact sets are defined for convex pairs and a plane against a convex shape");
   const T tolerance = T(tol::Rel<T>::kEpsilon) * settings.toleranceLength;
+  if (g0.type() == GeometryType::Box && g1.type() == GeometryType::Box)
+    return boxContactSet(q, pose0, pose1, out, settings, tolerance);
   Candidates<T> c;
   const bool swap = plane0;  // the plane goes second
   if (!swap) {
