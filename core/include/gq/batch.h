@@ -63,8 +63,8 @@ struct BatchSettings {
   // runs the hardware's count.
   std::uint32_t threads = 0;
   std::size_t grain = 64;     // items per task (at least 1)
-  // Ray batches of at least 16,384 rays against a triangle mesh cast their rays in a coherent order: in blocks of
-  // about 65,536 input rays, sorted by where each ray enters the mesh's bounds and by its direction, so neighbouring
+  // Ray batches against a triangle mesh with at least 32,768 rays per worker cast their rays in a coherent order: in
+  // blocks of up to 131,072 input rays, sorted by where each ray enters the mesh's bounds and by its direction, so neighbouring
   // rays walk the same nodes while they are in cache (grain does not apply to them). Each ray's answer and Status
   // are the same in either order; false keeps the input order (rays that are already coherent).
   bool coherentRayOrder = true;

@@ -326,7 +326,8 @@ std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, con
   return runRanges(blocks, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t slot) {
     std::size_t failed = 0;
     for (std::size_t b = first; b < last; ++b) {
-      failed += castBlockInKeyOrder(items, key, scratch[slot], b * blockRays, std::min(n, (b + 1) * blockRays));
+      const std::size_t begin = std::min(n, b * blockRays), end = std::min(n, begin + blockRays);
+      if (begin < end) failed += castBlockInKeyOrder(items, key, scratch[slot], begin, end);
     }
     return failed;
   });

@@ -15,8 +15,8 @@ struct RayOrderSettings {
   // nodes, and the key and sort cost (~100 instructions a ray) would be lost.
   std::size_t minRays = 32768;
   // Rays are sorted in consecutive blocks of about this many: a block's inputs, outputs and keys stay within the
-  // last-level cache while it is cast in key order (sorting the whole batch at once made every read and write of a
-  // ray a memory miss).
+  // last-level cache while it is cast in key order (in one block the size of a large batch, every read and write of
+  // a ray in key order is a memory miss).
   std::size_t blockRays = 131072;
 };
 

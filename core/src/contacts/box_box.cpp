@@ -1,7 +1,8 @@
 // The contact set of two boxes (gq/contacts.h generateContacts; contact_features.h), one compact path worked in
 // box 0's frame (box 1's axes R and centre t there):
-//  1. Separating axes over the 15 axes (overlap/box_box_sat.h): the exact depth and normal of penetrating boxes and
-//     the face or edge pair that carries them; a separating axis whose gap exceeds the threshold ends the query (an
+//  1. Separating axes over the 15 axes (overlap/box_box_sat.h leastOverlap): the depth and normal of penetrating
+//     boxes (the exact minimum, or a face axis within the coincidence tolerance of it) and the face or edge pair
+//     that carries them; a separating axis whose gap exceeds the threshold ends the query (an
 //     exact cull). Boxes apart within the threshold take the exact signed distance from the caller.
 //  2. Reference face: box 1's face most aligned with the normal, or box 0's when better aligned (box 1's wins when it
 //     is the separating axis's own face); incident face: the other box's face most opposed to it. When both are
@@ -9,9 +10,8 @@
 //     (Sutherland-Hodgman on 4 sides, clipToRectangle); no point is deeper than the exact separation.
 //  3. The exact point (the separating axis's witness, or the distance's) joins unless a clipped point carries the
 //     exact separation; the points are reduced to maxContacts (reduceContactPoints).
-// The same rules as the other polytope pairs of contact_set.cpp, in ~10 KB of code per scalar type that stays in the
-// instruction cache across a pile's pair loop (the general path's penetration dispatch, feature building and 64-point
-// buffers did not: 14.2 M L1i misses on the BasicDemo grid's float step, against 5.7 M with this path).
+// The same rules as the other polytope pairs of contact_set.cpp, in ~10 KB of code per scalar type, small enough to
+// stay in the instruction cache across a pile's pair loop (docs/bullet.md gives the measured misses).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -49,40 +49,6 @@ template <class T> struct BoxCandidates {
   int count = 0;
   Vec3<T> normal;
 };
-
-// The least-overlap axis: code 0-2 box 0's face, 3-5 box 1's, 6 + 3i + j the edge e_i x r_j; depth and unit axis
-// from box 0 towards box 1 (box 0's frame). `gap`: a separating axis's normalised gap (penetrating = false).
-template <class T> struct BoxSat {
-  bool penetrating = true;
-  int code = 0;
-  T depth = std::numeric_limits<T>::max();
-  T gap = T(0);
-  Vec3<T> towards1 = Vec3<T>::UnitX();
-};
-
-// The arithmetic of leastOverlapAxis (computePenetration's box pair), with the axis's code kept. An edge axis must
-// beat the best face axis by `slack`: an edge parallel to the other box's face has an edge axis along that face's
-// normal with the same depth, and rounding must not pick it (its witness would be the far edge's closest point).
-template <class T> BoxSat<T> separatingAxes(const BoxPair<T>& s, T slack) {
-  BoxSat<T> sat;
-  int face = 0;
-  forEachBoxAxis(s, [&](const BoxAxis<T>& axis) {
-    const int code = axis.edge0 < 0 ? face++ : 6 + 3 * axis.edge0 + axis.edge1;
-    if (axis.overlap < T(0)) {
-      sat.penetrating = false;
-      sat.gap = -axis.overlap / axis.length;
-      return true;
-    }
-    const T d = axis.overlap / axis.length;
-    if (d < sat.depth - (code >= 6 && sat.code < 6 ? slack : T(0))) {
-      sat.depth = d;
-      sat.code = code;
-      sat.towards1 = (axis.gap > T(0) ? axis.axis : Vec3<T>(-axis.axis)) / axis.length;
-    }
-    return false;
-  });
-  return sat;
-}
 
 template <class T> T signOf(T x) { return x >= T(0) ? T(1) : T(-1); }
 
@@ -148,8 +114,8 @@ template <class T> T clippedBoxContacts(const BoxFrame<T>& f, const Vec3<T>& n, 
 
 // The witness on box 1 (box 0's frame) of a penetrating pair's separating axis: box 1's deepest vertex under box 0's
 // face, box 0's deepest vertex brought back to box 1's face, or the closest points of the two edges.
-template <class T> [[gnu::cold, gnu::noinline]] Vec3<T> satWitness(const BoxPair<T>& s, const BoxSat<T>& sat) {
-  const Vec3<T>& u = sat.towards1;
+template <class T> [[gnu::cold, gnu::noinline]] Vec3<T> satWitness(const BoxPair<T>& s, const LeastOverlap<T>& sat) {
+  const Vec3<T>& u = sat.towardsBox1;
   const Vec3<T> l = s.r.transpose() * u;
   Vec3<T> corner0, corner1 = s.t;  // box 0's vertex farthest along u, box 1's farthest against it
   for (int k = 0; k < 3; ++k) {
@@ -187,15 +153,18 @@ template <class T>
 bool boxContactsPenetrating(const BoxGeometry<T>& box0, const Transform<T>& pose0, const BoxGeometry<T>& box1,
                             const Transform<T>& pose1, const BoxContactSettings<T>& settings, ContactSet<T>& out) {
   const BoxFrame<T> f = boxFrame(box0, pose0, box1, pose1, settings);
-  const BoxSat<T> sat = separatingAxes(f.s, f.tolerance);
-  if (!sat.penetrating) {
+  // An edge axis must beat the best face axis by the coincidence tolerance: an edge parallel to the other box's face
+  // has an edge axis along that face's normal with the same depth, and rounding must not pick it (its witness would
+  // be the far edge's closest point). The set's depth can so exceed the exact minimum by at most that tolerance.
+  const LeastOverlap<T> sat = leastOverlap(f.s, f.tolerance);
+  if (sat.separated) {
     if (sat.gap - f.ma - f.mb <= f.threshold) return false;
     out.normal = Vec3<T>::Zero();
     out.count = 0;
     return true;
   }
   const T exact = -sat.depth - f.ma - f.mb;
-  const Vec3<T> n = -sat.towards1;
+  const Vec3<T> n = -sat.towardsBox1;
   BoxCandidates<T> c;
   c.normal = f.r0 * n;
   if (clippedBoxContacts(f, n, exact, c) > exact + f.tolerance) {

@@ -118,22 +118,44 @@ template <class T, class Visit> void forEachBoxAxis(const BoxPair<T>& s, Visit&&
   }
 }
 
-// The minimum translation distance: the least normalised overlap over the 15 axes (face axes win ties) and its
-// unit axis pointing from box 0 towards box 1 (the sign of t.L), in box 0's frame. False when an axis separates.
-template <class T> bool leastOverlapAxis(const BoxPair<T>& s, T& depth, Vec3<T>& towardsBox1) {
-  depth = std::numeric_limits<T>::max();
-  towardsBox1 = Vec3<T>::UnitX();
+// The least normalised overlap over the 15 axes: its depth, the axis's code (0-2 box 0's faces, 3-5 box 1's,
+// 6 + 3i + j box 0's edge i x box 1's edge j) and its unit axis pointing from box 0 towards box 1 (the sign of t.L),
+// in box 0's frame. An edge axis must beat the best face axis by edgeSlack (0: the exact minimum, face axes winning
+// ties). The survey stops at the first separating axis: separated, with that axis's gap.
+template <class T> struct LeastOverlap {
   bool separated = false;
+  int code = 0;
+  T depth = std::numeric_limits<T>::max();
+  T gap = T(0);
+  Vec3<T> towardsBox1 = Vec3<T>::UnitX();
+};
+template <class T> LeastOverlap<T> leastOverlap(const BoxPair<T>& s, T edgeSlack = T(0)) {
+  LeastOverlap<T> least;
+  int face = 0;
   forEachBoxAxis(s, [&](const BoxAxis<T>& axis) {
-    if (axis.overlap < T(0)) return separated = true;
+    const int code = axis.edge0 < 0 ? face++ : 6 + 3 * axis.edge0 + axis.edge1;
+    if (axis.overlap < T(0)) {
+      least.separated = true;
+      least.gap = -axis.overlap / axis.length;
+      return true;
+    }
     const T d = axis.overlap / axis.length;
-    if (d < depth) {
-      depth = d;
-      towardsBox1 = (axis.gap > T(0) ? axis.axis : Vec3<T>(-axis.axis)) / axis.length;
+    if (d < least.depth - (code >= 6 && least.code < 6 ? edgeSlack : T(0))) {
+      least.depth = d;
+      least.code = code;
+      least.towardsBox1 = (axis.gap > T(0) ? axis.axis : Vec3<T>(-axis.axis)) / axis.length;
     }
     return false;
   });
-  return !separated;
+  return least;
+}
+
+// The minimum translation distance and its axis (leastOverlap without slack). False when an axis separates.
+template <class T> bool leastOverlapAxis(const BoxPair<T>& s, T& depth, Vec3<T>& towardsBox1) {
+  const LeastOverlap<T> least = leastOverlap(s);
+  depth = least.depth;
+  towardsBox1 = least.towardsBox1;
+  return !least.separated;
 }
 
 }  // namespace gq::detail

@@ -172,7 +172,10 @@ std::atomic<int> gWalk{-1};  // the MeshWalk in use, -1 until meshWalk() picks i
 
 void setMeshRaycastBaselineOnly(bool baselineOnly) {
   gBaselineOnly.store(baselineOnly);
-  gWalk.store(-1);
+#ifdef GQ_SSE42
+  // The resolved choice, not -1: a walk picked concurrently from the old flag cannot overwrite it afterwards.
+  gWalk.store(int(hasAvx2() && !baselineOnly ? MeshWalk::Avx2 : MeshWalk::Sse));
+#endif
 }
 
 namespace {
@@ -218,7 +221,7 @@ __attribute__((target("avx2"), flatten)) auto withAvx2Lanes(Args&&... args) {
   return Walk::template run<Bvh8LanesAvx2>(args...);
 }
 #endif
-// The baseline walk out of line too: inlined into the caller, its registers and stack frame were paid by every ray.
+// The baseline walk out of line too: inlined into the caller, its registers and stack frame would be paid by every ray.
 template <class Walk, class... Args> [[gnu::noinline]] auto withBaselineLanes(Args&&... args) {
   return Walk::template run<Bvh8LanesBaseline>(args...);
 }
