@@ -32,7 +32,9 @@
 #include "gq/custom_shapes.h"
 #include "gq/query.h"
 #include "gjk/gjk.h"
+#if GQ_BENCH_PENETRATION_ERRORS
 #include "exact_polytope.h"  // tests/urdf: the long double SAT referee
+#endif
 
 namespace {
 
@@ -573,6 +575,7 @@ void runOncePenetrationShapes(int n) {
   if (f.hull) runShapesAgainstHull(f, f.hull, "float: ");
 }
 
+#if GQ_BENCH_PENETRATION_ERRORS
 // ---- penetration errors against the exact MTD ----------------------------------------------------------------
 // One backend's answer for one pair, in computePenetration's convention: translating geom0 by dir * depth separates.
 struct PenAnswer {
@@ -688,9 +691,9 @@ PenErrors penetrationErrors(const PenAnswers& answers, const std::vector<gq::urd
 // `--once-penetration-errors N`: for the penetration rows' 64 overlapping pairs of N-point hulls, each backend's
 // errors against the exact MTD, one CSV-ready line per backend:
 // `errors,penetration_hullN,<backend>,<max_rel_depth_error>,<max_rel_direction_excess>,<missed>`.
-void runOncePenetrationErrors(int n) {
+int runOncePenetrationErrors(int n) {
   const Scene& s = overlappingScene(n);
-  if (!s.hull) return;
+  if (!s.hull) return 1;
   const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
   std::vector<gq::urdf::test::Polytope> p0, p1;
   std::vector<long double> exact;
@@ -712,7 +715,14 @@ void runOncePenetrationErrors(int n) {
     const PenErrors e = penetrationErrors(answers, p0, p1, exact);
     std::printf("errors,penetration_hull%d,%s,%.3e,%.3e,%d\n", n, backend, e.maxDepth, e.maxDirection, e.missed);
   }
+  return 0;
 }
+#else
+int runOncePenetrationErrors(int) {
+  std::fprintf(stderr, "built without the URDF plugin: no exact referee for --once-penetration-errors\n");
+  return 1;
+}
+#endif
 
 void runOnce(const std::vector<int>& args) {
   for (int arg : args) {
@@ -765,8 +775,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc > 2 && std::string(argv[1]) == "--once-penetration-errors") {
-    runOncePenetrationErrors(std::stoi(argv[2]));
-    return 0;
+    return runOncePenetrationErrors(std::stoi(argv[2]));
   }
   if (argc > 1 && std::string(argv[1]) == "--once") {
     runOnce(argc > 2 ? std::vector<int>{std::stoi(argv[2])} : std::vector<int>{30, 100, 300, 1, 2, 3});
