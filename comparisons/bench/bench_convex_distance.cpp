@@ -8,7 +8,8 @@
 // penetration depth (MTD) of hull pairs on 64 overlapping pose pairs (drawn as above, the separated ones skipped):
 // gq::computePenetration (exact) and gq::distance (signed: EPA) vs libccd's ccdGJKPenetration and
 // ccdMPRPenetration, Bullet's GJK + EPA and FCL's collide with a contact (GST_LIBCCD). Counters:
-// `overlapping` = pairs the backend reported as intersecting.
+// `overlapping` = pairs the backend reported as intersecting. `--once-penetration-errors N` prints each
+// penetration backend's depth error against the exact MTD (long double SAT over every face normal and edge pair).
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
@@ -18,6 +19,8 @@
 #include <ccd/ccd.h>
 #include <fcl/fcl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -29,6 +32,9 @@
 #include "gq/custom_shapes.h"
 #include "gq/query.h"
 #include "gjk/gjk.h"
+#if GQ_BENCH_PENETRATION_ERRORS
+#include "exact_polytope.h"  // tests/urdf: the long double SAT referee
+#endif
 
 namespace {
 
@@ -569,6 +575,155 @@ void runOncePenetrationShapes(int n) {
   if (f.hull) runShapesAgainstHull(f, f.hull, "float: ");
 }
 
+#if GQ_BENCH_PENETRATION_ERRORS
+// ---- penetration errors against the exact MTD ----------------------------------------------------------------
+// One backend's answer for one pair, in computePenetration's convention: translating geom0 by dir * depth separates.
+struct PenAnswer {
+  bool hit = false;
+  double depth = 0;
+  gq::Vec3<double> dir = gq::Vec3<double>::Zero();
+};
+using PenAnswers = std::vector<PenAnswer>;
+
+PenAnswers gqPenetrationAnswers(const Scene& s, const gq::Geometry<double>& h) {
+  PenAnswers out(kPairs);
+  for (int i = 0; i < kPairs; ++i) {
+    gq::PenetrationResult<double> r;
+    if (gq::computePenetration(r, h, s.pose0[i], h, s.pose1[i]).ok() && r.penetrating) out[i] = {true, r.depth, r.direction};
+  }
+  return out;
+}
+
+// distance's normal points from geom0 towards geom1: geom0 leaves along -normal.
+PenAnswers gqDistanceAnswers(const Scene& s, const gq::Geometry<double>& h) {
+  PenAnswers out(kPairs);
+  for (int i = 0; i < kPairs; ++i) {
+    gq::DistanceResult<double> r;
+    if (gq::distance(r, h, s.pose0[i], h, s.pose1[i]).ok() && r.distance < 0) out[i] = {true, -r.distance, -r.normal};
+  }
+  return out;
+}
+
+// libccd's dir is the direction in which obj2 moves out: geom0 leaves along -dir.
+PenAnswers ccdAnswers(CcdPenetrationSolver solve, const Scene& s, const gq::Geometry<double>& h) {
+  const ccd_t ccd = makeCcd();
+  PenAnswers out(kPairs);
+  for (int i = 0; i < kPairs; ++i) {
+    const CcdShape a{&h, s.pose0[i]}, b{&h, s.pose1[i]};
+    ccd_real_t depth;
+    ccd_vec3_t dir, pos;
+    if (solve(&a, &b, &ccd, &depth, &dir, &pos) == 0)
+      out[i] = {true, depth, -gq::Vec3<double>(dir.v[0], dir.v[1], dir.v[2]).normalized()};
+  }
+  return out;
+}
+
+// Bullet's normal on B points from B towards A: A (geom0) leaves along it.
+PenAnswers bulletAnswers(const Scene& s, const btConvexHullShape& hull) {
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver epa;
+  PenAnswers out(kPairs);
+  for (int i = 0; i < kPairs; ++i) {
+    btGjkPairDetector gjk(&hull, &hull, &simplex, &epa);
+    btGjkPairDetector::ClosestPointInput input;
+    input.m_transformA = bulletPose(s.pose0[i]);
+    input.m_transformB = bulletPose(s.pose1[i]);
+    btPointCollector r;
+    gjk.getClosestPoints(input, r, nullptr);
+    const btVector3& n = r.m_normalOnBInWorld;
+    if (r.m_hasResult && r.m_distance < 0) out[i] = {true, -r.m_distance, gq::Vec3<double>(n.x(), n.y(), n.z())};
+  }
+  return out;
+}
+
+// FCL's contact normal points from o1 towards o2: o1 (geom0) leaves along -normal.
+PenAnswers fclAnswers(const FclScene& f) {
+  fcl::CollisionRequestd request;
+  request.gjk_solver_type = fcl::GST_LIBCCD;
+  request.enable_contact = true;
+  request.num_max_contacts = 1;
+  PenAnswers out(kPairs);
+  for (int i = 0; i < kPairs; ++i) {
+    fcl::CollisionResultd r;
+    fcl::collide(f.o0[i].get(), f.o1[i].get(), request, r);
+    if (r.numContacts() > 0) out[i] = {true, r.getContact(0).penetration_depth, -r.getContact(0).normal};
+  }
+  return out;
+}
+
+// A posed hull as the referee's polytope (long double vertices, face normals, edge directions).
+gq::urdf::test::Polytope refereePolytope(const gq::Geometry<double>& hull, const gq::Transform<double>& pose) {
+  gq::urdf::Shape<double> shape;
+  shape.geometry = hull;
+  gq::urdf::test::Polytope p;
+  gq::urdf::test::worldPolytope(shape, pose, p);
+  return p;
+}
+
+struct PenErrors {
+  double maxDepth = 0;      // max |depth - exact| / exact; a missed pair (no contact reported) counts 1
+  double maxDirection = 0;  // max (push-out along the backend's direction, by every vertex) / exact - 1
+  int missed = 0;
+};
+
+// The push-out along `dir` is hi1(dir) - lo0(dir): it equals the exact depth exactly when dir is an MTD direction.
+PenErrors penetrationErrors(const PenAnswers& answers, const std::vector<gq::urdf::test::Polytope>& p0,
+                            const std::vector<gq::urdf::test::Polytope>& p1, const std::vector<long double>& exact) {
+  using LD = long double;
+  PenErrors e;
+  for (int i = 0; i < kPairs; ++i) {
+    const PenAnswer& a = answers[i];
+    if (!a.hit || !std::isfinite(a.depth) || !a.dir.allFinite()) {
+      e.maxDepth = std::max(e.maxDepth, 1.0);
+      ++e.missed;
+      continue;
+    }
+    e.maxDepth = std::max(e.maxDepth, double(std::abs(LD(a.depth) - exact[i]) / exact[i]));
+    LD lo0, hi0, lo1, hi1;
+    const Eigen::Matrix<LD, 3, 1> d = a.dir.cast<LD>().normalized();
+    gq::urdf::test::project(p0[i], d, lo0, hi0);
+    gq::urdf::test::project(p1[i], d, lo1, hi1);
+    e.maxDirection = std::max(e.maxDirection, double((hi1 - lo0) / exact[i] - 1));
+  }
+  return e;
+}
+
+// `--once-penetration-errors N`: for the penetration rows' 64 overlapping pairs of N-point hulls, each backend's
+// errors against the exact MTD, one CSV-ready line per backend:
+// `errors,penetration_hullN,<backend>,<max_rel_depth_error>,<max_rel_direction_excess>,<missed>`.
+int runOncePenetrationErrors(int n) {
+  const Scene& s = overlappingScene(n);
+  if (!s.hull) return 1;
+  const gq::Geometry<double> hull = gq::ConvexMeshGeometry<double>(s.hull);
+  std::vector<gq::urdf::test::Polytope> p0, p1;
+  std::vector<long double> exact;
+  for (int i = 0; i < kPairs; ++i) {
+    p0.push_back(refereePolytope(hull, s.pose0[i]));
+    p1.push_back(refereePolytope(hull, s.pose1[i]));
+    exact.push_back(-gq::urdf::test::satGap(p0[i], p1[i]));
+  }
+  const std::unique_ptr<btConvexHullShape> bullet = bulletHull(*s.hull);
+  const std::pair<const char*, PenAnswers> rows[] = {
+      {"gq", gqPenetrationAnswers(s, hull)},
+      {"gq_distance", gqDistanceAnswers(s, hull)},
+      {"libccd_gjk_epa", ccdAnswers(ccdGJKPenetration, s, hull)},
+      {"libccd_mpr", ccdAnswers(ccdMPRPenetration, s, hull)},
+      {"bullet64_gjk_epa", bulletAnswers(s, *bullet)},
+      {"fcl_libccd_contact", fclAnswers(fclScene(s))},
+  };
+  for (const auto& [backend, answers] : rows) {
+    const PenErrors e = penetrationErrors(answers, p0, p1, exact);
+    std::printf("errors,penetration_hull%d,%s,%.3e,%.3e,%d\n", n, backend, e.maxDepth, e.maxDirection, e.missed);
+  }
+  return 0;
+}
+#else
+int runOncePenetrationErrors(int) {
+  std::fprintf(stderr, "built without the URDF plugin: no exact referee for --once-penetration-errors\n");
+  return 1;
+}
+#endif
+
 void runOnce(const std::vector<int>& args) {
   for (int arg : args) {
     const Scene& s = sceneFor(arg);
@@ -618,6 +773,9 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[1]) == "--once-penetration-shapes") {
     runOncePenetrationShapes(std::stoi(argv[2]));
     return 0;
+  }
+  if (argc > 2 && std::string(argv[1]) == "--once-penetration-errors") {
+    return runOncePenetrationErrors(std::stoi(argv[2]));
   }
   if (argc > 1 && std::string(argv[1]) == "--once") {
     runOnce(argc > 2 ? std::vector<int>{std::stoi(argv[2])} : std::vector<int>{30, 100, 300, 1, 2, 3});

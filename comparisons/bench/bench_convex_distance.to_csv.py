@@ -2,7 +2,7 @@
 """bench_convex_distance penetration rows (BM_Pen* Google Benchmark JSON runs, callgrind) -> convex_distance.csv.
 
 Usage: bench_convex_distance.to_csv.py [<run1.json> ...] [--exe <build>/comparisons/bench/bench_convex_distance]
-       [--out CSV] [--machine TEXT]
+       [--errors <build>/comparisons/bench/bench_convex_distance] [--out CSV] [--machine TEXT]
 JSON runs: bench_convex_distance --benchmark_filter='BM_Pen' --benchmark_repetitions=5
 --benchmark_report_aggregates_only=true --benchmark_out=pen_ns.json. Each gives, per backend and hull size, the
 CPU-time median of the 64 overlapping pose pairs; a row's ns is that per query (the median over the runs when several
@@ -11,6 +11,10 @@ are given) and ratio_vs_libccd is libccd GJK+EPA's ns / the row's ns (the median
 `--once-penetration-shapes N` (sphere, capsule, box against the hull) for N = 30, 100, 300: the inclusive cost of each
 runner / 64 (libccd's two rows share one runner, runCcdPenetrationWith, listed once per solver: GJK+EPA's is the one
 that costs at least ccdGJKPenetration's inclusive cost, which only it calls).
+--errors: the hull-hull rows' max_rel_depth_error and max_rel_direction_error, by `--once-penetration-errors N`
+(each backend against the exact MTD, a long double SAT over every face normal and edge pair; deterministic, so it is
+not timed and the row's ns and instructions keep their date, machine and commit; the note says at which commit the
+errors were measured). A source that does not measure a column keeps it as it is.
 Only the penetration rows are written: the rows a source measures are replaced in place (their date, machine and
 commit become this run's; a hull-hull row measured by one source keeps the other's figure, its note saying at which
 commit that was measured), every other row of the CSV is kept as it is.
@@ -29,7 +33,8 @@ import results_csv  # noqa: E402
 
 SIZES = [30, 100, 300]
 HEADER = ["date", "machine", "commit", "benchmark", "backend", "ns", "ratio_vs_libccd", "callgrind_ir_per_query",
-          "note"]
+          "max_rel_depth_error", "max_rel_direction_error", "note"]
+ERROR_COLUMNS = ["max_rel_depth_error", "max_rel_direction_error"]
 PAIRS = 64  # pose pairs per benchmark iteration and per runner call
 
 # Hull-hull rows: backend -> (Google Benchmark function, callgrind function (a substring of the demangled name), note).
@@ -128,6 +133,26 @@ def measure_instructions(exe):
     return instr
 
 
+def measure_errors(exe):
+    """{(benchmark, backend): (max relative depth error, max relative direction error)} of the hull-hull rows."""
+    errors = {}
+    for n in SIZES:
+        out = subprocess.run([exe, "--once-penetration-errors", str(n)], capture_output=True, text=True,
+                             check=True).stdout
+        # errors,penetration_hullN,<backend>,<depth error>,<direction error>,<missed pairs>
+        for line in out.splitlines():
+            f = line.split(",")
+            if len(f) == 6 and f[0] == "errors":
+                errors[(f[1], f[2])] = (float(f[3]), float(f[4]))
+        if not any(b == "penetration_hull%d" % n for b, _ in errors):
+            raise SystemExit("%s --once-penetration-errors %d printed no errors" % (exe, n))
+    return errors
+
+
+def error_text(x):
+    return "0" if x == 0 else "%.1e" % x
+
+
 def shape_note(bench, backend, where):
     if backend == "gq_distance":
         return "gq::distance%s (signed, EPA) on the same poses" % (" in float" if bench.endswith("_float") else "")
@@ -140,20 +165,23 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("json", nargs="*")
     ap.add_argument("--exe")
+    ap.add_argument("--errors", metavar="EXE")
     ap.add_argument("--out", default=os.path.join(results_csv.RESULTS, "convex_distance.csv"))
     ap.add_argument("--machine")
     a = ap.parse_args()
-    if not a.json and not a.exe:
-        raise SystemExit("give JSON runs, --exe, or both")
+    if not a.json and not a.exe and not a.errors:
+        raise SystemExit("give JSON runs, --exe, --errors, or several")
     with open(a.out, newline="") as f:
         lines = f.read().splitlines()
-    if next(csv.reader([lines[0]])) != HEADER:
+    header = next(csv.reader([lines[0]]))
+    if header != HEADER and header != [h for h in HEADER if h not in ERROR_COLUMNS]:
         raise SystemExit("%s: unexpected header" % a.out)
     comments = [l for l in lines[1:] if l.startswith("#")]
-    rows = [dict(zip(HEADER, r)) for r in csv.reader(l for l in lines[1:] if not l.startswith("#"))]
+    rows = [dict(zip(header, r)) for r in csv.reader(l for l in lines[1:] if not l.startswith("#"))]
 
     ns, ratios = ns_per_query(a.json) if a.json else ({}, {})
     instr = measure_instructions(a.exe) if a.exe else {}
+    errors = measure_errors(a.errors) if a.errors else {}
     run = results_csv.run_columns(a.machine)
     mid = statistics.median
     hull_notes = {b[0]: b[3] for b in HULL_BACKENDS}
@@ -166,7 +194,17 @@ def main():
             size = int(m.group(1))
             timed = (backend, size) in ns
             counted = (bench, backend) in instr
+            checked = (bench, backend) in errors
+            if checked:
+                r["max_rel_depth_error"], r["max_rel_direction_error"] = map(error_text, errors[(bench, backend)])
+            errors_at = None  # the commit at which the errors were measured, when it is not the row's
+            if r.get("max_rel_depth_error"):
+                kept = re.search(r"\berrors at ([\w+]+)", r["note"])
+                errors_at = run["commit"] if checked else (kept.group(1) if kept else r["commit"])
             if not timed and not counted:
+                if checked:
+                    r["note"] = re.sub(r"; errors at \S+", "", r["note"]) + "; errors at %s" % errors_at
+                    replaced += 1
                 continue
             note = hull_notes[backend]
             columns = dict(run)
@@ -182,6 +220,8 @@ def main():
             elif r["callgrind_ir_per_query"]:
                 kept = re.search(r"instructions at (\w+)", r["note"])
                 note += "; instructions at %s" % (kept.group(1) if kept else r["commit"])
+            if errors_at and errors_at != run["commit"]:
+                note += "; errors at %s" % errors_at
             r.update(columns, note=note)
             replaced += 1
         elif (bench, backend) in instr and bench.startswith("penetration_"):
@@ -198,7 +238,8 @@ def main():
     print("%d of %d rows replaced -> %s" % (replaced, len(rows), a.out))
     for r in rows:
         if r["benchmark"].startswith("penetration_"):
-            print(r["benchmark"], r["backend"], r["ns"], r["ratio_vs_libccd"], r["callgrind_ir_per_query"])
+            print(r["benchmark"], r["backend"], r["ns"], r["ratio_vs_libccd"], r["callgrind_ir_per_query"],
+                  r.get("max_rel_depth_error", ""), r.get("max_rel_direction_error", ""))
 
 
 if __name__ == "__main__":
