@@ -3,7 +3,7 @@
 // sampled with 20k points each way; a fit on a link is the same, bit for bit, when computed twice.
 #include <gtest/gtest.h>
 
-#include <cstring>
+#include <cstdint>
 #include <string>
 
 #include "fit_test_support.h"
@@ -34,14 +34,16 @@ class FitShapeRobotLinkData : public ::testing::TestWithParam<std::string> {
   double size = 0;
 };
 
-FitOptions<double> linkOptions(FitRepresentationSet allowed, double tolerance) {
+// Containing fits; a patch budget of 50k keeps each link to seconds (the bound stays an upper bound, at most a few
+// tenths of a millimetre looser on the UR5 links than with 200k).
+FitOptions<double> linkOptions(FitRepresentationSet allowed, double tolerance, std::uint32_t maxParts = 8) {
   FitOptions<double> o;
   o.tolerance = tolerance;
   o.allowed = allowed;
   o.contain = true;
   o.measureCost = false;
-  o.maxParts = 8;
-  o.maxBoundPatches = 200000;
+  o.maxParts = maxParts;
+  o.maxBoundPatches = 50000;
   return o;
 }
 
@@ -66,12 +68,14 @@ TEST_P(FitShapeRobotLinkData, BoundNeverBelowDenseSampling) {
   EXPECT_TRUE(fittest::containsVertices(mesh, chosen.parts, 1e-9 * size)) << toString(chosen.representation);
 }
 
-// The hull is the one-part decomposition: a decomposition's bound is never above the hull's (on the UR5 links the
-// error sits on internal walls where two closed shells meet, which no cut brings to the boundary).
+// The hull is the one-part decomposition: a decomposition's bound is never above the hull's. On the UR5 links the
+// error sits on internal walls where two closed shells meet, which no cut brings to the boundary (docs/fit.md): the
+// shoulder's 16 parts at 0.2 % of its size are not below its hull, which stands in for them.
 TEST_P(FitShapeRobotLinkData, DecompositionNeverFartherThanTheHull) {
   FitResult<double> hull, parts;
+  const FitRepresentationSet decomposition = fitBit(FitRepresentation::ConvexDecomposition);
   const Status sh = fitShape(mesh, linkOptions(fitBit(FitRepresentation::ConvexHull), 0.002 * size), hull);
-  const Status sp = fitShape(mesh, linkOptions(fitBit(FitRepresentation::ConvexDecomposition), 0.002 * size), parts);
+  const Status sp = fitShape(mesh, linkOptions(decomposition, 0.002 * size, 16), parts);
   ASSERT_TRUE(sh.ok() || sh.code == StatusCode::Warning) << sh.toString();
   ASSERT_TRUE(sp.ok() || sp.code == StatusCode::Warning) << sp.toString();
   ASSERT_EQ(parts.representation, FitRepresentation::ConvexDecomposition);
