@@ -190,6 +190,27 @@ TEST(FitShapeDecomposition, TorusAtEightPartsIsWellBelowItsHull) {
   EXPECT_GE(double(fit.errorBound), fittest::sampledHausdorff(torus, fit.parts, 20000));
 }
 
+// Two closed unit-half-height boxes stacked face to face: their shared wall z = 0 is mesh surface inside the solid,
+// 1 from its boundary at the wall's centre, whatever convex parts contain the mesh. The decomposition's certified
+// bound is then at least 1 and never above the hull's (the hull stands in for a split that does not pay).
+TEST(FitShapeDecomposition, AnInternalWallKeepsItsDepthSoTheDecompositionIsNeverFartherThanTheHull) {
+  MeshData<double> mesh = fittest::boxMesh({1, 1, 0.5}, Transform<double>(Vec3d(0, 0, -0.5)));
+  const MeshData<double> upper = fittest::boxMesh({1, 1, 0.5}, Transform<double>(Vec3d(0, 0, 0.5)));
+  const std::uint32_t base = std::uint32_t(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), upper.vertices.begin(), upper.vertices.end());
+  for (const auto& t : upper.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  FitResult<double> hull, parts;
+  EXPECT_EQ(fitShape(mesh, only(FitRepresentation::ConvexHull, 0.01, true), hull).code, StatusCode::Warning);
+  FitOptions<double> o = only(FitRepresentation::ConvexDecomposition, 0.01, true);
+  o.maxParts = 8;
+  EXPECT_EQ(fitShape(mesh, o, parts).code, StatusCode::Warning);
+  ASSERT_EQ(parts.representation, FitRepresentation::ConvexDecomposition);
+  EXPECT_GE(hull.errorBound, 1.0);
+  EXPECT_GE(parts.errorBound, 1.0);
+  EXPECT_LE(parts.errorBound, hull.errorBound);
+  EXPECT_TRUE(fittest::containsVertices(mesh, parts.parts, 1e-9));
+}
+
 TEST(FitShapeDeterminism, SameInputSameFit) {
   for (FitRepresentation r : fittest::kSolidRepresentations) {
     FitResult<double> a, b;
