@@ -190,19 +190,25 @@ TEST(FitShapeDecomposition, TorusAtEightPartsIsWellBelowItsHull) {
   EXPECT_GE(double(fit.errorBound), fittest::sampledHausdorff(torus, fit.parts, 20000));
 }
 
-template <class T> std::vector<double> fingerprint(const FitResult<T>& fit) {
-  std::vector<double> f = {double(fit.errorBound), double(fit.representation), double(fit.parts.size())};
-  for (const auto& [g, pose] : fit.parts) {
-    for (int i = 0; i < 3; ++i) f.push_back(double(pose.p[i]));
-    for (int i = 0; i < 4; ++i) f.push_back(double(pose.q.coeffs()[i]));
-    if (const auto* c = g.template getIf<ConvexMeshGeometry<T>>())
-      for (const auto& v : c->mesh->vertices) f.insert(f.end(), v.data(), v.data() + 3);
-    if (const auto* b = g.template getIf<BoxGeometry<T>>()) f.insert(f.end(), b->halfExtents.data(), b->halfExtents.data() + 3);
-    if (const auto* s = g.template getIf<SphereGeometry<T>>()) f.push_back(double(s->radius));
-    if (const auto* c = g.template getIf<CapsuleGeometry<T>>()) f.insert(f.end(), {double(c->radius), double(c->halfHeight)});
-  }
-  for (const auto& c : fit.candidates) f.push_back(double(c.errorBound));
-  return f;
+// Two closed unit-half-height boxes stacked face to face: their shared wall z = 0 is mesh surface inside the solid,
+// 1 from its boundary at the wall's centre, whatever convex parts contain the mesh. The decomposition's certified
+// bound is then at least 1 and never above the hull's (the hull stands in for a split that does not pay).
+TEST(FitShapeDecomposition, AnInternalWallKeepsItsDepthSoTheDecompositionIsNeverFartherThanTheHull) {
+  MeshData<double> mesh = fittest::boxMesh({1, 1, 0.5}, Transform<double>(Vec3d(0, 0, -0.5)));
+  const MeshData<double> upper = fittest::boxMesh({1, 1, 0.5}, Transform<double>(Vec3d(0, 0, 0.5)));
+  const std::uint32_t base = std::uint32_t(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), upper.vertices.begin(), upper.vertices.end());
+  for (const auto& t : upper.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  FitResult<double> hull, parts;
+  EXPECT_EQ(fitShape(mesh, only(FitRepresentation::ConvexHull, 0.01, true), hull).code, StatusCode::Warning);
+  FitOptions<double> o = only(FitRepresentation::ConvexDecomposition, 0.01, true);
+  o.maxParts = 8;
+  EXPECT_EQ(fitShape(mesh, o, parts).code, StatusCode::Warning);
+  ASSERT_EQ(parts.representation, FitRepresentation::ConvexDecomposition);
+  EXPECT_GE(hull.errorBound, 1.0);
+  EXPECT_GE(parts.errorBound, 1.0);
+  EXPECT_LE(parts.errorBound, hull.errorBound);
+  EXPECT_TRUE(fittest::containsVertices(mesh, parts.parts, 1e-9));
 }
 
 TEST(FitShapeDeterminism, SameInputSameFit) {
@@ -210,7 +216,7 @@ TEST(FitShapeDeterminism, SameInputSameFit) {
     FitResult<double> a, b;
     ASSERT_TRUE(fitShape(fittest::lShapeMesh(), only(r, 1e-3), a).ok());
     ASSERT_TRUE(fitShape(fittest::lShapeMesh(), only(r, 1e-3), b).ok());
-    EXPECT_EQ(fingerprint(a), fingerprint(b)) << toString(r);
+    EXPECT_TRUE(fittest::sameBits(fittest::fingerprint(a), fittest::fingerprint(b))) << toString(r);
   }
 }
 
@@ -274,6 +280,11 @@ TEST(FitShapeCertify, BoundOfAGivenFit) {
   EXPECT_GE(bound, 0.1);   // every mesh point is at least 0.1 inside
   EXPECT_LE(bound, 0.13);  // and at most 0.1 plus the chord error
   EXPECT_EQ(certifyFit(mesh, {}, 0.0, 1000, bound).code, StatusCode::InvalidArgument);
+  // A target that is not finite or below 0 (0 asks for refinement to the patch budget): a status, the bound untouched.
+  bound = 42;
+  for (double t : {-1e-3, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    EXPECT_EQ(certifyFit(mesh, parts, t, 1000, bound).code, StatusCode::InvalidArgument) << t;
+  EXPECT_EQ(bound, 42);
   EXPECT_EQ(certifyFit(mesh, {{PlaneGeometry<double>(), Transform<double>()}}, 0.0, 1000, bound).code,
             StatusCode::Unsupported);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <random>
 #include <vector>
@@ -299,6 +300,30 @@ inline bool containsVertices(const MeshData<double>& mesh,
     if (best > slack) return false;
   }
   return true;
+}
+
+// Every number a fit hands out (bound, representation, part poses and shapes, candidates' bounds), in order.
+template <class T> std::vector<double> fingerprint(const FitResult<T>& fit) {
+  std::vector<double> f = {double(fit.errorBound), double(fit.representation), double(fit.parts.size())};
+  for (const auto& [g, pose] : fit.parts) {
+    for (int i = 0; i < 3; ++i) f.push_back(double(pose.p[i]));
+    for (int i = 0; i < 4; ++i) f.push_back(double(pose.q.coeffs()[i]));
+    if (const auto* c = g.template getIf<ConvexMeshGeometry<T>>())
+      for (const auto& v : c->mesh->vertices) f.insert(f.end(), v.data(), v.data() + 3);
+    if (const auto* b = g.template getIf<BoxGeometry<T>>()) f.insert(f.end(), b->halfExtents.data(), b->halfExtents.data() + 3);
+    if (const auto* s = g.template getIf<SphereGeometry<T>>()) f.push_back(double(s->radius));
+    if (const auto* c = g.template getIf<CapsuleGeometry<T>>()) f.insert(f.end(), {double(c->radius), double(c->halfHeight)});
+    if (const auto* c = g.template getIf<CustomGeometry<T>>())
+      if (const auto* cyl = dynamic_cast<const CylinderCallbacks<T>*>(c->callbacks.get()))
+        f.insert(f.end(), {double(cyl->radius()), double(cyl->halfHeight())});
+  }
+  for (const auto& c : fit.candidates) f.push_back(double(c.errorBound));
+  return f;
+}
+
+// Whether two fingerprints are equal bit for bit (NaN and -0 included).
+inline bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
 
 inline const FitRepresentation kSolidRepresentations[] = {

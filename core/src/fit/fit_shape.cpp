@@ -249,7 +249,15 @@ template <class T> Status fitShape(const MeshData<T>& mesh, const FitOptions<T>&
         if (decompose(surface, tol, options.maxParts, options.maxBoundPatches, pieces).ok() && !pieces.empty()) {
           Parts<T> parts;
           std::vector<Solid> exact;
-          if (realise<T>(pieces, parts, exact).ok()) consider(FitRepresentation::ConvexDecomposition, parts, exact, certify(exact));
+          if (realise<T>(pieces, parts, exact).ok()) {
+            // The hull is the one-part decomposition: where the split's bound is not below it (a mesh whose error
+            // sits on internal walls no cut reaches, docs/fit.md), the hull stands for the decomposition.
+            const double bound = certify(exact);
+            if (bound < hullBound || hullParts.empty())
+              consider(FitRepresentation::ConvexDecomposition, parts, exact, bound);
+            else
+              consider(FitRepresentation::ConvexDecomposition, hullParts, hullExact, hullBound);
+          }
         }
       }
     }
