@@ -5,7 +5,8 @@
 //    other box's face most opposed to it (incident face) is projected on the reference face and clipped to it; each
 //    clipped point below the reference face (depth >= 0) is a contact, placed midway between its incident-face point
 //    and the reference face, with its own depth. More than 4: the deepest, then the 3 whose angles about the clipped
-//    polygon's centroid are nearest the deepest's plus 90, 180 and 270 degrees (FCL's culling).
+//    polygon's centroid are nearest the deepest's plus 90, 180 and 270 degrees (FCL's culling). Coincident centres
+//    leave the normal's sign free: FCL's, + the reference box's axis.
 //  - Otherwise (an edge pair): one contact midway between the closest points of the lines through the two touching
 //    edges (each box's edge perpendicular to the normal at its vertex farthest towards the other box), at the depth.
 #include <algorithm>
@@ -150,12 +151,14 @@ int fclBoxContactSet(const OrientedBox<S>& a, const OrientedBox<S>& b, const Vec
                      BoxContact<S>* out) {
   S ca, cb;
   const int ka = mostAlignedAxis(a, n, ca), kb = mostAlignedAxis(b, n, cb);
+  // Coincident centres: both signs of the axis are minimum translations; FCL's is + the reference box's axis.
+  const bool concentric = a.centre == b.centre;
   if (std::abs(ca) >= kFaceAxisCos<S>) {
-    normal = a.axes.col(ka) * (ca < 0 ? S(-1) : S(1));
+    normal = a.axes.col(ka) * (ca < 0 && !concentric ? S(-1) : S(1));
     return boxFaceContacts(a, ka, normal, b, out);
   }
   if (std::abs(cb) >= kFaceAxisCos<S>) {
-    normal = b.axes.col(kb) * (cb < 0 ? S(-1) : S(1));
+    normal = b.axes.col(kb) * (cb < 0 && !concentric ? S(-1) : S(1));
     return boxFaceContacts(b, kb, Vec3<S>(-normal), a, out);
   }
   normal = n;
