@@ -22,6 +22,7 @@
 #endif
 
 
+#include "box_contacts.h"
 #include "fallback.h"
 #include "geometry_cache.h"
 #include "gq/contacts.h"
@@ -1176,23 +1177,13 @@ template <class S, FS A, FS B>
   return result.numContacts();
 }
 
-// Whether `normal` (from a to b) is the direction of two boxes' exact minimum translation (to rounding).
-template <class S> bool isExactNormal(Solid<S> a, Solid<S> b, const Vec3<S>& normal) {
-  DistanceResult<S> d;
-  if (distanceEntry<S, FS::Box, FS::Box>(a, b, DistanceAsk{true, true}, d) != Answer::Done) return false;
-  return d.normal.dot(normal) >= S(1) - S(64) * std::numeric_limits<S>::epsilon();
-}
-
-// Two boxes under collide with contacts: gq's contact set (generateContacts, at most 4 points as FCL's box routine
-// keeps) in FCL's placement: the normal from o1 to o2, each point midway between the incident point and the
-// reference face with its own depth; when num_max_contacts leaves less room than the set, the deepest first (FCL
-// sorts them so). A pair gq finds apart writes nothing; a touching pair whose set is empty gets the exact contact.
-// With `minimumTranslation`, a set whose normal is a face's (FCL's placement, within ~8 degrees of the exact
-// direction) but not the exact minimum translation's gives way to the one exact contact.
+// Two boxes under collide with contacts: FCL's box-box set (box_contacts.h: its points, placement and culling)
+// around gq's exact minimum translation (computePenetration's SAT), so that the normal and the deepest depth are the
+// exact ones in every mode; the deepest first when num_max_contacts leaves less room (FCL sorts them so). A pair gq
+// finds apart writes nothing; a touching pair (no penetration to place the set by) gets the exact contact.
 template <class S>
 [[gnu::noinline]] std::size_t collideBoxBoxContacts(Solid<S> a, Solid<S> b, const ::fcl::CollisionRequest<S>& request,
-                                                    ::fcl::CollisionResult<S>& result, std::size_t before,
-                                                    bool minimumTranslation) {
+                                                    ::fcl::CollisionResult<S>& result, std::size_t before) {
   bool hit = false;
   switch (overlapCall<S, FS::Box, FS::Box>(a, b, true, hit)) {
     case Answer::Invalid: return 0;  // bad input: nothing written
@@ -1201,28 +1192,29 @@ template <class S>
   }
   countGq();
   if (!hit) return before;
-  const Geometry<S> ga = BoxGeometry<S>(boxHalf(a)), gb = BoxGeometry<S>(boxHalf(b));
-  const Transform<S> pa(a.tf->translation(), Quat<S>(a.tf->linear()).normalized());
-  const Transform<S> pb(b.tf->translation(), Quat<S>(b.tf->linear()).normalized());
-  ContactSet<S> set;
-  if (!generateContacts(ga, pa, gb, pb, set).ok() || set.count == 0 ||
-      (minimumTranslation && !isExactNormal<S>(a, b, Vec3<S>(-set.normal)))) {
+  const OrientedBox<S> boxA{a.tf->translation(), a.tf->linear(), boxHalf(a)};
+  const OrientedBox<S> boxB{b.tf->translation(), b.tf->linear(), boxHalf(b)};
+  const Transform<S> pa(boxA.centre, Quat<S>(boxA.axes).normalized());
+  const Transform<S> pb(boxB.centre, Quat<S>(boxB.axes).normalized());
+  PenetrationResult<S> mtd;
+  BoxContact<S> set[4];
+  Vec3<S> normal;
+  int count = 0;
+  if (computePenetration(mtd, Geometry<S>(BoxGeometry<S>(boxA.half)), pa, Geometry<S>(BoxGeometry<S>(boxB.half)), pb)
+          .ok() &&
+      mtd.penetrating && mtd.depth > S(0))
+    count = fclBoxContactSet<S>(boxA, boxB, Vec3<S>(-mtd.direction), mtd.depth, normal, set);
+  if (count == 0) {
     collideWithContact<S, FS::Box, FS::Box>(a.geometry, a.tf, b.geometry, b.tf, result);
     return result.numContacts();
   }
-  std::array<std::uint32_t, kMaxContactSetPoints> order;
-  for (std::uint32_t i = 0; i < set.count; ++i) order[i] = i;
+  int order[4] = {0, 1, 2, 3};
   const std::size_t room = request.num_max_contacts - std::min(request.num_max_contacts, before);
-  if (room < set.count)
-    std::stable_sort(order.begin(), order.begin() + set.count, [&](std::uint32_t i, std::uint32_t j) {
-      return set.points[i].separation < set.points[j].separation;
-    });
-  for (std::uint32_t k = 0; k < set.count && k < room; ++k) {
-    const ContactSetPoint<S>& c = set.points[order[k]];
-    result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, kNoPrimitive, kNoPrimitive,
-                                        Vec3<S>(c.position + set.normal * (c.separation / S(2))), Vec3<S>(-set.normal),
-                                        -c.separation));
-  }
+  if (room < std::size_t(count))
+    std::stable_sort(order, order + count, [&](int i, int j) { return set[i].depth > set[j].depth; });
+  for (int k = 0; k < count && std::size_t(k) < room; ++k)
+    result.addContact(::fcl::Contact<S>(a.geometry, b.geometry, kNoPrimitive, kNoPrimitive, set[order[k]].position,
+                                        normal, set[order[k]].depth));
   return result.numContacts();
 }
 
@@ -1251,10 +1243,10 @@ std::size_t fclCollideEntry(const FclGeometry<S>* ga, const Isometry<S>* ta, con
   const std::size_t before = result.numContacts();
   if (satisfiedBy(request, before)) return before;
   const bool fclContact = request.enable_contact && contactFromFcl(A, B, options);
-  // Two boxes' contacts are gq's contact set in every mode: its deepest point is the exact minimum translation that
-  // minimumTranslation and exactContainedBoxDepth ask for.
+  // Two boxes' contacts are FCL's set around the exact minimum translation in every mode: its normal and deepest
+  // depth are the exact ones that minimumTranslation and exactContainedBoxDepth ask for.
   if constexpr (A == FS::Box && B == FS::Box)
-    if (!request.enable_cost && request.enable_contact) return collideBoxBoxContacts<S>(a, b, request, result, before, options.minimumTranslation);
+    if (!request.enable_cost && request.enable_contact) return collideBoxBoxContacts<S>(a, b, request, result, before);
   if (!request.enable_cost && fclContact) return collideWithFclContact<S, A, B>(a, b, request, result, before);
   if (!request.enable_cost && !fclContact) {
     const Collided c = collideSolids<S, A, B>(a, b, request.enable_contact, before > 0, result);

@@ -21,6 +21,7 @@
 // Every kernel exists for float and double (explicit instantiations in core). The headers:
 //   gq/kernels/vector.h    unit vectors and norms safe at the ends of the floating-point range
 //   gq/kernels/segment.h   closest points of points and segments
+//   gq/kernels/clip.h      a polygon clipped to a rectangle (contact sets' incident faces)
 //   gq/kernels/overlap.h   boolean overlap per primitive pair, certificates (cylinder-box, hull balls), GJK overlap
 //   gq/kernels/distance.h  signed distance per primitive pair, box-box and box-cylinder in a box's frame, GJK/EPA
 //   gq/kernels/gjk.h       the convex support shape (ConvexShape), GJK distance and overlap, EPA, hull start tables
@@ -30,6 +31,7 @@
 // Stability: this layer follows core's releases, not the façade's compatibility promise; names and signatures may
 // change with the kernels. Prefer gq/query.h (and prepared shapes, gq/shape.h) unless a host's pose type makes the
 // conversion the dominant cost.
+#include "gq/kernels/clip.h"
 #include "gq/kernels/custom.h"
 #include "gq/kernels/distance.h"
 #include "gq/kernels/gjk.h"

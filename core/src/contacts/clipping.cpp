@@ -1,16 +1,16 @@
 // Clipping an incident feature to a reference face (contact_features.h): Sutherland-Hodgman against the face's edge
-// planes, or four axis-aligned half planes for a box face.
+// planes, or four axis-aligned half planes for a box face (gq/kernels/clip.h's clipToRectangle).
 #include <algorithm>
 #include <utility>
 
 #include "contacts/contact_features.h"
 
-namespace gq::detail {
+namespace gq::kernels {
 
 template <class T>
-int clipToRectangle(FacePoint<T>* in, FacePoint<T>* scratch, int count, int capacity, T hx, T hy,
-                    FacePoint<T>*& result) {
-  FacePoint<T>* out = scratch;
+int clipToRectangle(RectanglePoint<T>* in, RectanglePoint<T>* scratch, int count, int capacity, T hx, T hy,
+                    RectanglePoint<T>*& result) {
+  RectanglePoint<T>* out = scratch;
   const T limits[2] = {hx, hy};
   for (int e = 0; e < 4 && count > 0; ++e) {
     const int axis = e >> 1;
@@ -23,7 +23,7 @@ int clipToRectangle(FacePoint<T>* in, FacePoint<T>* scratch, int count, int capa
       const bool crosses = (da < 0 && db > 0) || (da > 0 && db < 0);
       if (crosses && n < capacity && (count > 2 || i == 0)) {
         const T t = da / (da - db);
-        FacePoint<T> q;
+        RectanglePoint<T> q;
         for (int k = 0; k < 3; ++k) q.c[k] = in[i].c[k] + (in[next].c[k] - in[i].c[k]) * t;
         out[n++] = q;
       }
@@ -34,6 +34,15 @@ int clipToRectangle(FacePoint<T>* in, FacePoint<T>* scratch, int count, int capa
   result = in;
   return count;
 }
+
+template int clipToRectangle<float>(RectanglePoint<float>*, RectanglePoint<float>*, int, int, float, float,
+                                    RectanglePoint<float>*&);
+template int clipToRectangle<double>(RectanglePoint<double>*, RectanglePoint<double>*, int, int, double, double,
+                                     RectanglePoint<double>*&);
+
+}  // namespace gq::kernels
+
+namespace gq::detail {
 
 namespace {
 
@@ -94,9 +103,6 @@ template <class T> int clipToFace(const Feature<T>& reference, Feature<T>& incid
   return count;
 }
 
-template int clipToRectangle<float>(FacePoint<float>*, FacePoint<float>*, int, int, float, float, FacePoint<float>*&);
-template int clipToRectangle<double>(FacePoint<double>*, FacePoint<double>*, int, int, double, double,
-                                     FacePoint<double>*&);
 template int clipToFace<float>(const Feature<float>&, Feature<float>&);
 template int clipToFace<double>(const Feature<double>&, Feature<double>&);
 

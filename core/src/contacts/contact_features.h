@@ -7,6 +7,7 @@
 
 #include "gq/contacts.h"
 #include "gq/geometry.h"
+#include "gq/kernels/clip.h"
 #include "gq/math.h"
 #include "gq/query.h"
 #include "gq/transform.h"
@@ -47,15 +48,9 @@ bool incidentFeature(const Geometry<T>& g, const Transform<T>& pose, const Vec3<
 // Clips the incident polygon (or segment, or point) to the prism over the reference face; returns the count left.
 template <class T> int clipToFace(const Feature<T>& reference, Feature<T>& incident);
 
-// A point in a rectangle's frame: (c[0], c[1]) in its plane, c[2] the height over it.
-template <class T> struct FacePoint {
-  T c[3];
-};
-// Sutherland-Hodgman: the polygon in[0, count) (or a segment, or a point) clipped to |c[0]| <= hx, |c[1]| <= hy, the
-// two buffers (`capacity` points each) swapped per side. Returns the count left; `result` points at them.
-template <class T>
-int clipToRectangle(FacePoint<T>* in, FacePoint<T>* scratch, int count, int capacity, T hx, T hy,
-                    FacePoint<T>*& result);
+// A point in a rectangle's frame and its clipping (gq/kernels/clip.h).
+template <class T> using FacePoint = kernels::RectanglePoint<T>;
+using kernels::clipToRectangle;
 
 // Picks at most `maxKeep` (<= kMaxFeaturePoints) of `count` points (common normal n) spanning the largest area: the
 // deepest, the farthest from it, the farthest from their line on each side, then the deepest of the rest. Writes
