@@ -314,18 +314,25 @@ std::unique_ptr<btConvexHullShape> bulletHull(const gq::ConvexMesh<double>& hull
   return shape;
 }
 
-// Signed distance through Bullet's GJK, with EPA when the hulls overlap (as btConvexConvexAlgorithm uses them).
+// One pair through Bullet's GJK, with EPA when the hulls overlap (as btConvexConvexAlgorithm uses them).
+inline btPointCollector bulletClosestPoints(const btConvexHullShape& hull, btVoronoiSimplexSolver& simplex,
+                                            btGjkEpaPenetrationDepthSolver& epa, const gq::Transform<double>& p0,
+                                            const gq::Transform<double>& p1) {
+  btGjkPairDetector gjk(&hull, &hull, &simplex, &epa);
+  btGjkPairDetector::ClosestPointInput input;
+  input.m_transformA = bulletPose(p0);
+  input.m_transformB = bulletPose(p1);
+  btPointCollector out;
+  gjk.getClosestPoints(input, out, nullptr);
+  return out;
+}
+
 [[gnu::noinline]] int runBulletDistance(const Scene& s, const btConvexHullShape& hull) {
   btVoronoiSimplexSolver simplex;
   btGjkEpaPenetrationDepthSolver epa;
   int overlapping = 0;
   for (int i = 0; i < kPairs; ++i) {
-    btGjkPairDetector gjk(&hull, &hull, &simplex, &epa);
-    btGjkPairDetector::ClosestPointInput input;
-    input.m_transformA = bulletPose(s.pose0[i]);
-    input.m_transformB = bulletPose(s.pose1[i]);
-    btPointCollector out;
-    gjk.getClosestPoints(input, out, nullptr);
+    const btPointCollector out = bulletClosestPoints(hull, simplex, epa, s.pose0[i], s.pose1[i]);
     overlapping += out.m_hasResult && out.m_distance <= 0;
     benchmark::DoNotOptimize(out);
   }
@@ -624,12 +631,7 @@ PenAnswers bulletAnswers(const Scene& s, const btConvexHullShape& hull) {
   btGjkEpaPenetrationDepthSolver epa;
   PenAnswers out(kPairs);
   for (int i = 0; i < kPairs; ++i) {
-    btGjkPairDetector gjk(&hull, &hull, &simplex, &epa);
-    btGjkPairDetector::ClosestPointInput input;
-    input.m_transformA = bulletPose(s.pose0[i]);
-    input.m_transformB = bulletPose(s.pose1[i]);
-    btPointCollector r;
-    gjk.getClosestPoints(input, r, nullptr);
+    const btPointCollector r = bulletClosestPoints(hull, simplex, epa, s.pose0[i], s.pose1[i]);
     const btVector3& n = r.m_normalOnBInWorld;
     if (r.m_hasResult && r.m_distance < 0) out[i] = {true, -r.m_distance, gq::Vec3<double>(n.x(), n.y(), n.z())};
   }
