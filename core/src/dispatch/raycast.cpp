@@ -95,10 +95,15 @@ Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>&
   });
 }
 
+namespace {
+
+// The Shape<T> overload past its success-path test: the table's kernel on valid inputs, else the full checks, which
+// name the problem. Out of line, so the success path of a mesh shape pays none of its frame.
 template <class T>
-Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape, const Transform<T>& pose,
-               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
-               std::uint32_t& hitCount) noexcept {
+[[gnu::noinline]] Status raycastShapeChecked(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                                             const Transform<T>& pose, T maxDist, HitFlags hitFlags,
+                                             std::uint32_t maxHits, RaycastHit<T>* hits,
+                                             std::uint32_t& hitCount) noexcept {
   return detail::guarded([&]() -> Status {
     if (rayInputsAreValid(origin, unitDir, pose, maxDist, hitFlags, maxHits, hits) &&
         detail::ShapeAccess<T>::made(shape)) {
@@ -109,6 +114,19 @@ Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& sh
     if (!detail::ShapeAccess<T>::made(shape)) return Status::invalid(detail::emptyShapeText());
     return raycastGeometry(origin, unitDir, shape.geometry(), pose, maxDist, hitFlags, maxHits, hits, hitCount);
   });
+}
+
+}  // namespace
+
+// A mesh shape with valid inputs goes to the mesh kernel directly; both calls are tail calls (same arguments).
+template <class T>
+Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape, const Transform<T>& pose,
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
+               std::uint32_t& hitCount) noexcept {
+  if (detail::ShapeAccess<T>::rayMesh(shape) &&
+      rayInputsAreValid(origin, unitDir, pose, maxDist, hitFlags, maxHits, hits))
+    return detail::raycastMeshShape(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
+  return raycastShapeChecked(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
 }
 
 template Status raycast<float>(const Vec3<float>&, const Vec3<float>&, const Geometry<float>&, const Transform<float>&,

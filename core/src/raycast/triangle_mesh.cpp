@@ -14,8 +14,9 @@
 #include "bvh/triangle_exact4.h"
 #include "mesh/mesh_instance.h"
 #include "mesh/triangle.h"
-#include "raycast/raycast.h"
 #include "common/unit_vector.h"
+#include "prepared/shape_ref.h"
+#include "raycast/raycast.h"
 
 namespace gq::detail {
 namespace {
@@ -240,10 +241,9 @@ template <class Walk, class... Args> auto withLanes(MeshWalk w, Args&&... args) 
 // the quaternion products, whose result would be the same vectors.
 template <class T>
 [[gnu::always_inline]] inline TriangleMeshRays<T>::TriangleMeshRays(const TriangleMeshGeometry<T>& g,
-                                                                    const Transform<T>& pose)
-    : g_(g), pose_(pose), scaled_(!g.scale.isIdentity()),
-      rotated_(!(pose.q.w() == T(1) && pose.q.x() == T(0) && pose.q.y() == T(0) && pose.q.z() == T(0))),
-      flips_(false), walk_(int(meshWalk())) {
+                                                                    const Transform<T>& pose, bool scaled)
+    : g_(g), pose_(pose), scaled_(scaled), rotated_(!isIdentityRotation(pose.q)), flips_(false),
+      walk_(int(meshWalk())) {
   if (!scaled_) return;
   flips_ = g.scale.flipsWinding();
   invScaleDiagonal_ = g.scale.scale.cwiseInverse();
@@ -323,6 +323,27 @@ std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transf
                                   RaycastHit<T>* hits) {
   return TriangleMeshRays<T>(g, pose).cast(ray, hits);
 }
+
+template <class T>
+Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                        const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
+                        RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept {
+  // Keeping several hits may allocate (the first time a thread keeps that many): guarded.
+  return guarded([&]() __attribute__((always_inline)) -> Status {
+    const RayQuery<T> ray = rayQuery(origin, unitDir, maxDist, hitFlags, maxHits);
+    const TriangleMeshRays<T> rays(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose,
+                                   !ShapeAccess<T>::rayMeshUnscaled(shape));
+    hitCount = rays.cast(ray, hits);
+    return Status();
+  });
+}
+
+template Status raycastMeshShape<float>(const Vec3<float>&, const Vec3<float>&, const Shape<float>&,
+                                        const Transform<float>&, float, HitFlags, std::uint32_t, RaycastHit<float>*,
+                                        std::uint32_t&) noexcept;
+template Status raycastMeshShape<double>(const Vec3<double>&, const Vec3<double>&, const Shape<double>&,
+                                         const Transform<double>&, double, HitFlags, std::uint32_t,
+                                         RaycastHit<double>*, std::uint32_t&) noexcept;
 
 template std::uint32_t raycastTriangleMesh<float>(const TriangleMeshGeometry<float>&, const Transform<float>&,
                                                   const RayQuery<float>&, RaycastHit<float>*);
