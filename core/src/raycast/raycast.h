@@ -100,6 +100,7 @@ template <class T> class TriangleMeshRays {
   }
   void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
                 RaycastHit<T>& hit) const;
+  void writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir, bool frontFace, Vec3<T>& normal) const;
 
   const TriangleMeshGeometry<T>& g_;
   const Transform<T>& pose_;

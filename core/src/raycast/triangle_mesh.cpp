@@ -32,6 +32,27 @@ template <class T> float floatCeil(T t) {
   return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
+#ifdef GQ_SSE42
+// The unit normal of the float triangle whose 9 coordinates start at v: (v1 - v0) x (v2 - v0) as Eigen's cross()
+// computes each lane (a.y b.z - a.z b.y ...), divided by sqrt(x^2 + (y^2 + z^2)) as tryUnit does (the order of
+// Eigen's squaredNorm on a 3-vector). False (unit unwritten) where tryUnit would rescale: a squared length outside
+// the normal float range.
+inline bool unitTriangleNormal(const float* v, __m128& unit) {
+  const __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 3);
+  const __m128 z1v2 = _mm_loadu_ps(v + 5);                         // z1 x2 y2 z2 (the 4 loads stay inside the 9)
+  const __m128 v2 = _mm_shuffle_ps(z1v2, z1v2, _MM_SHUFFLE(0, 3, 2, 1));  // x2 y2 z2 z1
+  const __m128 a = _mm_sub_ps(v1, v0), b = _mm_sub_ps(v2, v0);
+  const __m128 aYzx = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)), aZxy = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2));
+  const __m128 bYzx = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 0, 2, 1)), bZxy = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 1, 0, 2));
+  const __m128 n = _mm_sub_ps(_mm_mul_ps(aYzx, bZxy), _mm_mul_ps(aZxy, bYzx));
+  const __m128 sq = _mm_mul_ps(n, n);
+  const float len2 = _mm_cvtss_f32(_mm_add_ss(sq, _mm_add_ss(_mm_movehdup_ps(sq), _mm_movehl_ps(sq, sq))));
+  if (!(len2 >= std::numeric_limits<float>::min() && len2 <= std::numeric_limits<float>::max())) return false;
+  unit = _mm_div_ps(n, _mm_set1_ps(std::sqrt(len2)));
+  return true;
+}
+#endif
+
 template <class T> class MeshRaycaster {
  public:
   MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir, bool cullBackFaces)
@@ -257,31 +278,53 @@ template <class T>
   invScale_ = r * invScaleDiagonal_.asDiagonal() * r.transpose();
 }
 
-// The requested fields of one hit, written in place (the others keep RaycastHit's defaults). The world normal of the
-// (reported-order) triangle is S^-1 n_mesh rotated by the pose, with S^-1 = S^-T: under a mirrored scale the 1<->2
-// swap cancels the mirror, so it is outward either way.
+// The world normal of the triangle at v (cooked order, mesh space): S^-1 n_mesh rotated by the pose, with
+// S^-1 = S^-T; under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way. Double-sided
+// meshes report the side the ray hit. A float mesh with an identity scale and pose rotation (the common case) takes
+// it 4 lanes wide: Eigen's cross product and tryUnit's d / sqrt(|d|^2) as the same IEEE operations.
+template <class T>
+[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir,
+                                                                    bool frontFace, Vec3<T>& normal) const {
+  const bool flip = g_.doubleSided() && !frontFace;
+#ifdef GQ_SSE42
+  if constexpr (std::is_same_v<T, float>) {
+    __m128 unit;
+    if (!scaled_ && !rotated_ && unitTriangleNormal(v[0].data(), unit)) {
+      if (flip) unit = _mm_xor_ps(unit, _mm_set1_ps(-0.0f));
+      _mm_storel_pi(reinterpret_cast<__m64*>(normal.data()), unit);
+      _mm_store_ss(normal.data() + 2, _mm_movehl_ps(unit, unit));
+      return;
+    }
+  }
+#endif
+  const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
+  Vec3<T> n = toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
+  if (rotated_) n = pose_.rotate(n);
+  n = unitOr(n, Vec3<T>(-rayDir));
+  normal = flip ? Vec3<T>(-n) : n;
+}
+
+// The requested fields of one hit, written in place.
 template <class T>
 void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
                                    RaycastHit<T>& hit) const {
+  // Every field written once: the requested ones, RaycastHit's defaults for the others.
   const TriangleMesh<T>& mesh = *g_.mesh;
-  hit = RaycastHit<T>();
-  hit.distance = tri.t;
-  hit.faceIndex = mesh.inputIndex[cooked];
   HitFlags flags = HitFlag::FaceIndex;
+  hit.position = Vec3<T>::Zero();
   if (ray.flags.has(HitFlag::Position)) {
     hit.position = ray.origin + ray.dir * tri.t;
     flags |= HitFlag::Position;
   }
+  hit.normal = Vec3<T>::Zero();
   if (ray.flags.has(HitFlag::Normal)) {
-    const Vec3<T>* v = &mesh.triangleVertices[3 * std::size_t(cooked)];
-    const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
-    Vec3<T> n = toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
-    if (rotated_) n = pose_.rotate(n);
-    n = unitOr(n, Vec3<T>(-ray.dir));
-    if (g_.doubleSided() && !tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
-    hit.normal = n;
+    writeNormal(&mesh.triangleVertices[3 * std::size_t(cooked)], ray.dir, tri.frontFace, hit.normal);
     flags |= HitFlag::Normal;
   }
+  hit.distance = tri.t;
+  hit.faceIndex = mesh.inputIndex[cooked];
+  hit.u = T(0);
+  hit.v = T(0);
   if (ray.flags.has(HitFlag::UV)) {
     hit.u = flips_ ? tri.v : tri.u;
     hit.v = flips_ ? tri.u : tri.v;
