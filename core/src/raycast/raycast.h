@@ -74,14 +74,19 @@ template <class T>
 std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
 template <class T> struct TriangleRayHit;
 
-// A raycast on a prepared triangle-mesh shape, called by the Shape<T> façade once its inputs passed the façade's
-// success-path predicate (rayIsValid, raySettingsAreValid): the mesh kernel of raycastTriangleMesh, without the
-// dispatch table, with the shape's identity scale known from Shape::make. Writes hitCount; returns Ok, or the Status
-// of an exception the kernel ran into (out of memory keeping MeshMultiple hits).
+// The Shape<T> raycast on a triangle-mesh shape (gq/shape.h's contract): inputs passing the success-path predicate
+// (rayIsValid, raySettingsAreValid) take the mesh kernel of raycastTriangleMesh without the dispatch table, with the
+// shape's identity scale known from Shape::make; others take raycastShapeChecked, whose Status names the problem.
 template <class T>
 Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
                         const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
                         RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept;
+
+// The Shape<T> raycast through the dispatch table after the full checks (dispatch/raycast.cpp).
+template <class T>
+Status raycastShapeChecked(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                           const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
+                           RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept;
 
 // Raycasts against one mesh at one pose (a single raycast, or a batch's rays): the mesh frame and the node test the
 // CPU runs are found once; cast() is raycastTriangleMesh's kernel for one ray. Holds references to g and pose.

@@ -371,6 +371,8 @@ template <class T>
 Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
                         const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
                         RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept {
+  if (!(rayIsValid(origin, unitDir, pose.p) & raySettingsAreValid(pose, maxDist, hitFlags, maxHits, hits)))
+    return raycastShapeChecked(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
   // Keeping several hits may allocate (the first time a thread keeps that many): guarded.
   return guarded([&]() __attribute__((always_inline)) -> Status {
     const RayQuery<T> ray = rayQuery(origin, unitDir, maxDist, hitFlags, maxHits);
