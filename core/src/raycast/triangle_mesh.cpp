@@ -337,8 +337,16 @@ template <class T>
 [[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
                                                                       RaycastHit<T>* hits) const {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
-  const Vec3<T> org = toMesh(rotated_ ? pose_.transformInv(ray.origin) : Vec3<T>(ray.origin - pose_.p));
-  const Vec3<T> dir = toMesh(rotated_ ? pose_.rotateInv(ray.dir) : ray.dir);
+  // The ray in mesh space (one branch per frame step, the identity ones skipped).
+  Vec3<T> org = ray.origin - pose_.p, dir = ray.dir;
+  if (rotated_) {
+    org = pose_.rotateInv(org);
+    dir = pose_.rotateInv(dir);
+  }
+  if (scaled_) {
+    org = toMesh(org);
+    dir = toMesh(dir);
+  }
   const bool cull = !(g_.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
   const MeshRaycaster<T> caster(*g_.mesh, org, dir, cull);
   const MeshWalk walk = MeshWalk(walk_);
