@@ -297,6 +297,19 @@ template <class T>
     }
   }
 #endif
+  if (!scaled_ && !rotated_) {
+    // The same operations written out for the other precisions (Eigen's expression code kept the vectors on the
+    // stack): a = v1 - v0, b = v2 - v0, a x b lane by lane, then Eigen's squared norm (its order of the sum).
+    const T ax = v[1].x() - v[0].x(), ay = v[1].y() - v[0].y(), az = v[1].z() - v[0].z();
+    const T bx = v[2].x() - v[0].x(), by = v[2].y() - v[0].y(), bz = v[2].z() - v[0].z();
+    const T nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+    const T len2 = Vec3<T>(nx, ny, nz).squaredNorm();
+    if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) {
+      const T len = flip ? -std::sqrt(len2) : std::sqrt(len2);
+      normal = Vec3<T>(nx / len, ny / len, nz / len);
+      return;
+    }
+  }
   const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
   Vec3<T> n = toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
   if (rotated_) n = pose_.rotate(n);
