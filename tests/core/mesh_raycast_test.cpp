@@ -7,6 +7,7 @@
 
 #include "gq/mesh_query.h"
 #include "gq/query.h"
+#include "gq/shape.h"
 #include "mesh_test_helpers.h"
 
 namespace gq {
@@ -110,6 +111,47 @@ TYPED_TEST(MeshRaycast, DoubleSidedDisablesCullingAndFlipsBackFaceNormals) {
   EXPECT_TRUE((hit.normal - Vec3<T>(0, 0, -1)).norm() < this->tol());
   ASSERT_EQ(this->castDown(g, kDefaultHitFlags, 1, &hit), 1u);  // front faces keep their normal
   EXPECT_TRUE((hit.normal - Vec3<T>(0, 0, 1)).norm() < this->tol());
+}
+
+// The reported normal is (v1 - v0) x (v2 - v0) / sqrt(|.|^2) of the hit triangle's cooked vertices bit for bit, on
+// both faces (negated on the back face of a double-sided mesh), through a prepared shape placed as cooked.
+TYPED_TEST(MeshRaycast, NormalIsTheUnitCrossProductOfTheHitTriangleBitForBit) {
+  using T = TypeParam;
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  int checked = 0;
+  for (int k = 0; k < 300; ++k) {
+    const std::vector<Vec3<T>> v = {draw3<T>(coordinate, rng), draw3<T>(coordinate, rng), draw3<T>(coordinate, rng)};
+    const auto mesh = meshtest::cook(v, {{0u, 1u, 2u}});
+    const Vec3<T>* c = mesh->triangleVertices.data();
+    const Vec3<T> n = (c[1] - c[0]).cross(c[2] - c[0]);
+    if (!(n.squaredNorm() > T(1e-6))) continue;  // a sliver: its centroid ray may graze an edge
+    const Vec3<T> unit = n / std::sqrt(n.squaredNorm());
+    const Vec3<T> centroid = (c[0] + c[1] + c[2]) / T(3);
+    for (const bool doubleSided : {false, true}) {
+      Shape<T> shape;
+      ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(mesh, MeshScale<T>(),
+                                                         doubleSided ? MeshGeometryFlag::DoubleSided
+                                                                     : MeshGeometryFlag::None),
+                                 shape)
+                      .ok());
+      for (const T side : {T(1), T(-1)}) {  // +1: from the front, -1: from the back
+        const Vec3<T> dir = -side * unit;
+        RaycastHit<T> hit;
+        std::uint32_t count = 0;
+        ASSERT_TRUE(raycast(Vec3<T>(centroid - T(2) * dir), dir, shape, Transform<T>(), T(10),
+                            kDefaultHitFlags | HitFlag::MeshBothSides, 1, &hit, count)
+                        .ok());
+        ASSERT_EQ(count, 1u);
+        const Vec3<T> expected = doubleSided && side < T(0) ? Vec3<T>(-unit) : unit;
+        EXPECT_EQ(hit.normal.x(), expected.x());
+        EXPECT_EQ(hit.normal.y(), expected.y());
+        EXPECT_EQ(hit.normal.z(), expected.z());
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 TYPED_TEST(MeshRaycast, MaxDistZeroNeverHitsAMesh) {

@@ -77,6 +77,10 @@ template <class T> class Shape {
   bool made_ = false;
   bool nonConvexCustom_ = false;
   bool pairReady_ = false;  // made, pairProblem_ null and not a non-convex custom shape: pair queries check only poses
+  // A triangle mesh: raycast calls the mesh kernel directly (no dispatch table); with an identity scale the kernel
+  // skips the mesh-space products without testing the scale per ray.
+  bool rayMesh_ = false;
+  bool rayMeshUnscaled_ = false;
   std::shared_ptr<detail::ShapeDerived<T>> derived_;
 };
 

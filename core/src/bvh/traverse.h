@@ -52,10 +52,48 @@ template <int W> struct BvhPlaneOffsets {
 };
 template <int W> inline constexpr BvhPlaneOffsets<W> kBvhPlaneOffsets{};
 
+#ifdef GQ_SSE42
+// The float x, y, z of a T vector in lanes 0-2 (lane 3: 0).
+template <class T> inline __m128 floatLanes(const Vec3<T>& v) {
+  if constexpr (std::is_same_v<T, float>) {
+    return _mm_setr_ps(v[0], v[1], v[2], 0.0f);
+  } else {
+    return _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(v.data())), _mm_cvtpd_ps(_mm_set_sd(v[2])));
+  }
+}
+#endif
+
 template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   // Components this small would give infinite inverses (and 0 * inf = NaN); clamping keeps slabs correct.
   constexpr float kTinyDir = 1e-20f;
   BvhRay<W> r;
+#ifdef GQ_SSE42
+  // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
+  // and the same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the
+  // clamped direction are those of its inverse (1 / x keeps the sign and never gives 0 or NaN here).
+  const __m128 signBit = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(kTinyDir);
+  const __m128 d = floatLanes(dir);
+  const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
+  const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
+  const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), clamped);
+  const int negative = _mm_movemask_ps(clamped) & 7;
+  alignas(16) float lanes[2][4];
+  _mm_store_ps(lanes[0], floatLanes(org));
+  _mm_store_ps(lanes[1], inv);
+  std::memcpy(r.org, lanes[0], sizeof(r.org));
+  std::memcpy(r.invDir, lanes[1], sizeof(r.invDir));
+  for (int i = 0; i < 3; ++i) {
+    if constexpr (std::is_same_v<T, float>) {
+      r.slack[i] = 0.0f;  // the origin is exactly the float one
+    } else {
+      const double originError = std::abs(double(org[i]) - double(r.org[i]));
+      r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+    }
+  }
+  std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
+  std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));
+  return r;
+#else
   int negative = 0;  // bit i: invDir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
   for (int i = 0; i < 3; ++i) {
     r.org[i] = static_cast<float>(org[i]);
@@ -75,6 +113,7 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
     r.farOffset[i] = kBvhPlaneOffsets<W>.bytes[negative][3 + i];
   }
   return r;
+#endif
 }
 
 #ifdef GQ_SSE42

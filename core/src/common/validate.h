@@ -16,6 +16,10 @@
 #include "gq/tolerances.h"
 #include "gq/transform.h"
 
+#ifdef GQ_SSE42
+#include <immintrin.h>
+#endif
+
 namespace gq::detail {
 
 // Why an input is rejected; `reason == nullptr` means valid.
@@ -47,6 +51,23 @@ inline bool squaredNormIsUnit(double n2, double tolerance) {
 
 template <class T> [[gnu::always_inline]] inline bool isUnitQuaternion(const Quat<T>& q) {
   return squaredNormIsUnit(double(q.squaredNorm()), tol::kUnitQuaternion);
+}
+
+// q is exactly the identity rotation (w = 1, x = y = z = +-0): one 4-lane compare where SSE is compiled in. An
+// identity pose (a shape placed as cooked) skips both its unit-norm test and the quaternion products.
+template <class T> [[gnu::always_inline]] inline bool isIdentityRotation(const Quat<T>& q) {
+  const T* c = q.coeffs().data();  // x, y, z, w
+#ifdef GQ_SSE42
+  if constexpr (std::is_same_v<T, float>) {
+    return _mm_movemask_ps(_mm_cmpeq_ps(_mm_loadu_ps(c), _mm_setr_ps(0.0f, 0.0f, 0.0f, 1.0f))) == 0xF;
+  } else {
+    const __m128d xy = _mm_cmpeq_pd(_mm_loadu_pd(c), _mm_setzero_pd());
+    const __m128d zw = _mm_cmpeq_pd(_mm_loadu_pd(c + 2), _mm_setr_pd(0.0, 1.0));
+    return _mm_movemask_pd(_mm_and_pd(xy, zw)) == 0x3;
+  }
+#else
+  return c[3] == T(1) && c[0] == T(0) && c[1] == T(0) && c[2] == T(0);
+#endif
 }
 
 // A NaN or infinite quaternion component fails the norm bounds; x * 0 is exactly 0 only for a finite x.

@@ -95,20 +95,34 @@ Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Geometry<T>&
   });
 }
 
+namespace detail {
+
 template <class T>
-Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape, const Transform<T>& pose,
-               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
-               std::uint32_t& hitCount) noexcept {
-  return detail::guarded([&]() -> Status {
-    if (rayInputsAreValid(origin, unitDir, pose, maxDist, hitFlags, maxHits, hits) &&
-        detail::ShapeAccess<T>::made(shape)) {
+[[gnu::noinline]] Status raycastShapeChecked(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                                             const Transform<T>& pose, T maxDist, HitFlags hitFlags,
+                                             std::uint32_t maxHits, RaycastHit<T>* hits,
+                                             std::uint32_t& hitCount) noexcept {
+  return guarded([&]() -> Status {
+    if (rayInputsAreValid(origin, unitDir, pose, maxDist, hitFlags, maxHits, hits) && ShapeAccess<T>::made(shape)) {
       hitCount = raycastValid(origin, unitDir, shape.geometry(), pose, maxDist, hitFlags, maxHits, hits);
       return Status();
     }
     if (Status s = validateRay(origin, unitDir, maxDist, hitFlags, maxHits, hits); !s.ok()) return s;
-    if (!detail::ShapeAccess<T>::made(shape)) return Status::invalid(detail::emptyShapeText());
+    if (!ShapeAccess<T>::made(shape)) return Status::invalid(emptyShapeText());
     return raycastGeometry(origin, unitDir, shape.geometry(), pose, maxDist, hitFlags, maxHits, hits, hitCount);
   });
+}
+
+}  // namespace detail
+
+// A mesh shape goes to the mesh kernel directly, which checks the inputs itself (a tail call: same arguments).
+template <class T>
+Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape, const Transform<T>& pose,
+               T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,
+               std::uint32_t& hitCount) noexcept {
+  if (detail::ShapeAccess<T>::rayMesh(shape))
+    return detail::raycastMeshShape(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
+  return detail::raycastShapeChecked(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
 }
 
 template Status raycast<float>(const Vec3<float>&, const Vec3<float>&, const Geometry<float>&, const Transform<float>&,
@@ -121,5 +135,11 @@ template Status raycast<float>(const Vec3<float>&, const Vec3<float>&, const Sha
 template Status raycast<double>(const Vec3<double>&, const Vec3<double>&, const Shape<double>&,
                                 const Transform<double>&, double, HitFlags, std::uint32_t, RaycastHit<double>*,
                                 std::uint32_t&) noexcept;
+template Status detail::raycastShapeChecked<float>(const Vec3<float>&, const Vec3<float>&, const Shape<float>&,
+                                                   const Transform<float>&, float, HitFlags, std::uint32_t,
+                                                   RaycastHit<float>*, std::uint32_t&) noexcept;
+template Status detail::raycastShapeChecked<double>(const Vec3<double>&, const Vec3<double>&, const Shape<double>&,
+                                                    const Transform<double>&, double, HitFlags, std::uint32_t,
+                                                    RaycastHit<double>*, std::uint32_t&) noexcept;
 
 }  // namespace gq

@@ -22,6 +22,10 @@ template <class T> Status Shape<T>::make(const Geometry<T>& geometry, Shape& out
     s.pairProblem_ = pair.reason;
     s.nonConvexCustom_ = detail::isNonConvexCustom(geometry);
     if (geometry.type() == GeometryType::ConvexMesh) s.derived_ = std::make_shared<detail::ShapeDerived<T>>();
+    if (geometry.type() == GeometryType::TriangleMesh) {
+      s.rayMesh_ = true;
+      s.rayMeshUnscaled_ = geometry.template get<TriangleMeshGeometry<T>>().scale.isIdentity();
+    }
     s.made_ = true;
     s.pairReady_ = !s.pairProblem_ && !s.nonConvexCustom_;
     out = std::move(s);

@@ -39,6 +39,9 @@ template <class T> struct ShapeAccess {
   static bool pairReady(const Shape<T>& s0, const Shape<T>& s1) { return s0.pairReady_ & s1.pairReady_; }
   static bool nonConvexCustom(const Shape<T>& s) { return s.nonConvexCustom_; }
   static const ShapeDerived<T>* derived(const Shape<T>& s) { return s.derived_.get(); }
+  // A made triangle-mesh shape (raycast takes the mesh kernel directly), and whether its scale is the identity.
+  static bool rayMesh(const Shape<T>& s) { return s.rayMesh_; }
+  static bool rayMeshUnscaled(const Shape<T>& s) { return s.rayMeshUnscaled_; }
 };
 
 inline const char* emptyShapeText() { return "the shape is empty (not made by Shape::make)"; }

@@ -14,6 +14,10 @@
 #include "gq/hit.h"
 #include "gq/transform.h"
 
+namespace gq {
+template <class T> class Shape;
+}  // namespace gq
+
 namespace gq::detail {
 
 template <class T> struct RayQuery {
@@ -37,13 +41,14 @@ template <class T>
 
 // The façade's checks on its success path as predicates of a few compares; a failing input takes the full checks,
 // which name the problem. What does not depend on the ray (checked once for a batch): maxDist >= 0 admits +inf and
-// rejects NaN and -inf, as checkMaxDist does; the flags are raycast flags; the pose rotation is a unit quaternion.
+// rejects NaN and -inf, as checkMaxDist does; the flags are raycast flags; the pose rotation is a unit quaternion
+// (the identity, the common case, by one compare).
 template <class T>
 [[gnu::always_inline]] inline bool raySettingsAreValid(const Transform<T>& pose, T maxDist, HitFlags flags,
                                                        std::uint32_t maxHits, const RaycastHit<T>* hits) {
   const HitFlags sweepOnly = HitFlag::Mtd | HitFlag::PreciseSweep | HitFlag::AssumeNoInitialOverlap;
   return (maxDist >= T(0)) & (maxHits != 0) & (hits != nullptr) & ((flags & sweepOnly).bits() == 0) &
-         isUnitQuaternion(pose.q);
+         (isIdentityRotation(pose.q) || isUnitQuaternion(pose.q));
 }
 
 // The ray's own checks: a finite origin - p proves both finite (an infinite or NaN coordinate on either side makes
@@ -69,20 +74,38 @@ template <class T>
 std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
 template <class T> struct TriangleRayHit;
 
+// The Shape<T> raycast on a triangle-mesh shape (gq/shape.h's contract): inputs passing the success-path predicate
+// (rayIsValid, raySettingsAreValid) take the mesh kernel of raycastTriangleMesh without the dispatch table, with the
+// shape's identity scale known from Shape::make; others take raycastShapeChecked, whose Status names the problem.
+template <class T>
+Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                        const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
+                        RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept;
+
+// The Shape<T> raycast through the dispatch table after the full checks (dispatch/raycast.cpp).
+template <class T>
+Status raycastShapeChecked(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                           const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
+                           RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept;
+
 // Raycasts against one mesh at one pose (a single raycast, or a batch's rays): the mesh frame and the node test the
 // CPU runs are found once; cast() is raycastTriangleMesh's kernel for one ray. Holds references to g and pose.
 template <class T> class TriangleMeshRays {
  public:
-  TriangleMeshRays(const TriangleMeshGeometry<T>& g, const Transform<T>& pose);
+  TriangleMeshRays(const TriangleMeshGeometry<T>& g, const Transform<T>& pose)
+      : TriangleMeshRays(g, pose, !g.scale.isIdentity()) {}
+  // `scaled`: !g.scale.isIdentity(), as a prepared shape keeps it.
+  TriangleMeshRays(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, bool scaled);
   std::uint32_t cast(const RayQuery<T>& ray, RaycastHit<T>* hits) const;
 
  private:
-  Vec3<T> toMesh(const Vec3<T>& v) const {
+  [[gnu::always_inline]] Vec3<T> toMesh(const Vec3<T>& v) const {
     if (!scaled_) return v;
     return diagonal_ ? Vec3<T>(v.cwiseProduct(invScaleDiagonal_)) : Vec3<T>(invScale_ * v);
   }
   void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
                 RaycastHit<T>& hit) const;
+  void writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir, bool frontFace, Vec3<T>& normal) const;
 
   const TriangleMeshGeometry<T>& g_;
   const Transform<T>& pose_;

@@ -14,8 +14,9 @@
 #include "bvh/triangle_exact4.h"
 #include "mesh/mesh_instance.h"
 #include "mesh/triangle.h"
-#include "raycast/raycast.h"
 #include "common/unit_vector.h"
+#include "prepared/shape_ref.h"
+#include "raycast/raycast.h"
 
 namespace gq::detail {
 namespace {
@@ -30,6 +31,27 @@ template <class T> float floatCeil(T t) {
   const float f = static_cast<float>(t);
   return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
+
+#ifdef GQ_SSE42
+// The unit normal of the float triangle whose 9 coordinates start at v: (v1 - v0) x (v2 - v0) as Eigen's cross()
+// computes each lane (a.y b.z - a.z b.y ...), divided by sqrt(x^2 + (y^2 + z^2)) as tryUnit does (the order of
+// Eigen's squaredNorm on a 3-vector). False (unit unwritten) where tryUnit would rescale: a squared length outside
+// the normal float range.
+inline bool unitTriangleNormal(const float* v, __m128& unit) {
+  const __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 3);
+  const __m128 z1v2 = _mm_loadu_ps(v + 5);                         // z1 x2 y2 z2 (the 4 loads stay inside the 9)
+  const __m128 v2 = _mm_shuffle_ps(z1v2, z1v2, _MM_SHUFFLE(0, 3, 2, 1));  // x2 y2 z2 z1
+  const __m128 a = _mm_sub_ps(v1, v0), b = _mm_sub_ps(v2, v0);
+  const __m128 aYzx = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)), aZxy = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2));
+  const __m128 bYzx = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 0, 2, 1)), bZxy = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 1, 0, 2));
+  const __m128 n = _mm_sub_ps(_mm_mul_ps(aYzx, bZxy), _mm_mul_ps(aZxy, bYzx));
+  const __m128 sq = _mm_mul_ps(n, n);
+  const float len2 = _mm_cvtss_f32(_mm_add_ss(sq, _mm_add_ss(_mm_movehdup_ps(sq), _mm_movehl_ps(sq, sq))));
+  if (!(len2 >= std::numeric_limits<float>::min() && len2 <= std::numeric_limits<float>::max())) return false;
+  unit = _mm_div_ps(n, _mm_set1_ps(std::sqrt(len2)));
+  return true;
+}
+#endif
 
 template <class T> class MeshRaycaster {
  public:
@@ -240,10 +262,9 @@ template <class Walk, class... Args> auto withLanes(MeshWalk w, Args&&... args) 
 // the quaternion products, whose result would be the same vectors.
 template <class T>
 [[gnu::always_inline]] inline TriangleMeshRays<T>::TriangleMeshRays(const TriangleMeshGeometry<T>& g,
-                                                                    const Transform<T>& pose)
-    : g_(g), pose_(pose), scaled_(!g.scale.isIdentity()),
-      rotated_(!(pose.q.w() == T(1) && pose.q.x() == T(0) && pose.q.y() == T(0) && pose.q.z() == T(0))),
-      flips_(false), walk_(int(meshWalk())) {
+                                                                    const Transform<T>& pose, bool scaled)
+    : g_(g), pose_(pose), scaled_(scaled), rotated_(!isIdentityRotation(pose.q)), flips_(false),
+      walk_(int(meshWalk())) {
   if (!scaled_) return;
   flips_ = g.scale.flipsWinding();
   invScaleDiagonal_ = g.scale.scale.cwiseInverse();
@@ -257,31 +278,66 @@ template <class T>
   invScale_ = r * invScaleDiagonal_.asDiagonal() * r.transpose();
 }
 
-// The requested fields of one hit, written in place (the others keep RaycastHit's defaults). The world normal of the
-// (reported-order) triangle is S^-1 n_mesh rotated by the pose, with S^-1 = S^-T: under a mirrored scale the 1<->2
-// swap cancels the mirror, so it is outward either way.
+// The world normal of the triangle at v (cooked order, mesh space): S^-1 n_mesh rotated by the pose, with
+// S^-1 = S^-T; under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way. Double-sided
+// meshes report the side the ray hit. A float mesh with an identity scale and pose rotation (the common case) takes
+// it 4 lanes wide: Eigen's cross product and tryUnit's d / sqrt(|d|^2) as the same IEEE operations.
+template <class T>
+[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir,
+                                                                    bool frontFace, Vec3<T>& normal) const {
+  const bool flip = g_.doubleSided() && !frontFace;
+#ifdef GQ_SSE42
+  if constexpr (std::is_same_v<T, float>) {
+    __m128 unit;
+    if (!scaled_ && !rotated_ && unitTriangleNormal(v[0].data(), unit)) {
+      if (flip) unit = _mm_xor_ps(unit, _mm_set1_ps(-0.0f));
+      _mm_storel_pi(reinterpret_cast<__m64*>(normal.data()), unit);
+      _mm_store_ss(normal.data() + 2, _mm_movehl_ps(unit, unit));
+      return;
+    }
+  }
+#endif
+  if (!scaled_ && !rotated_) {
+    // The same operations written out for the other precisions (Eigen's expression code kept the vectors on the
+    // stack): a = v1 - v0, b = v2 - v0, a x b lane by lane, then Eigen's squared norm (its order of the sum).
+    const T ax = v[1].x() - v[0].x(), ay = v[1].y() - v[0].y(), az = v[1].z() - v[0].z();
+    const T bx = v[2].x() - v[0].x(), by = v[2].y() - v[0].y(), bz = v[2].z() - v[0].z();
+    const T nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+    const T len2 = Vec3<T>(nx, ny, nz).squaredNorm();
+    if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) {
+      const T len = flip ? -std::sqrt(len2) : std::sqrt(len2);
+      normal = Vec3<T>(nx / len, ny / len, nz / len);
+      return;
+    }
+  }
+  const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
+  Vec3<T> n = toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
+  if (rotated_) n = pose_.rotate(n);
+  n = unitOr(n, Vec3<T>(-rayDir));
+  normal = flip ? Vec3<T>(-n) : n;
+}
+
+// The requested fields of one hit, written in place.
 template <class T>
 void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
                                    RaycastHit<T>& hit) const {
+  // Every field written once: the requested ones, RaycastHit's defaults for the others.
   const TriangleMesh<T>& mesh = *g_.mesh;
-  hit = RaycastHit<T>();
-  hit.distance = tri.t;
-  hit.faceIndex = mesh.inputIndex[cooked];
   HitFlags flags = HitFlag::FaceIndex;
+  hit.position = Vec3<T>::Zero();
   if (ray.flags.has(HitFlag::Position)) {
     hit.position = ray.origin + ray.dir * tri.t;
     flags |= HitFlag::Position;
   }
+  hit.normal = Vec3<T>::Zero();
   if (ray.flags.has(HitFlag::Normal)) {
-    const Vec3<T>* v = &mesh.triangleVertices[3 * std::size_t(cooked)];
-    const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
-    Vec3<T> n = toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
-    if (rotated_) n = pose_.rotate(n);
-    n = unitOr(n, Vec3<T>(-ray.dir));
-    if (g_.doubleSided() && !tri.frontFace) n = -n;  // double-sided meshes report the side the ray hit
-    hit.normal = n;
+    writeNormal(&mesh.triangleVertices[3 * std::size_t(cooked)], ray.dir, tri.frontFace, hit.normal);
     flags |= HitFlag::Normal;
   }
+  hit.distance = tri.t;
+  hit.faceIndex = mesh.inputIndex[cooked];
+  hit.u = T(0);
+  hit.v = T(0);
   if (ray.flags.has(HitFlag::UV)) {
     hit.u = flips_ ? tri.v : tri.u;
     hit.v = flips_ ? tri.u : tri.v;
@@ -294,8 +350,16 @@ template <class T>
 [[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
                                                                       RaycastHit<T>* hits) const {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
-  const Vec3<T> org = toMesh(rotated_ ? pose_.transformInv(ray.origin) : Vec3<T>(ray.origin - pose_.p));
-  const Vec3<T> dir = toMesh(rotated_ ? pose_.rotateInv(ray.dir) : ray.dir);
+  // The ray in mesh space (one branch per frame step, the identity ones skipped).
+  Vec3<T> org = ray.origin - pose_.p, dir = ray.dir;
+  if (rotated_) {
+    org = pose_.rotateInv(org);
+    dir = pose_.rotateInv(dir);
+  }
+  if (scaled_) {
+    org = toMesh(org);
+    dir = toMesh(dir);
+  }
   const bool cull = !(g_.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
   const MeshRaycaster<T> caster(*g_.mesh, org, dir, cull);
   const MeshWalk walk = MeshWalk(walk_);
@@ -323,6 +387,29 @@ std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transf
                                   RaycastHit<T>* hits) {
   return TriangleMeshRays<T>(g, pose).cast(ray, hits);
 }
+
+template <class T>
+Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                        const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
+                        RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept {
+  if (!(rayIsValid(origin, unitDir, pose.p) & raySettingsAreValid(pose, maxDist, hitFlags, maxHits, hits)))
+    return raycastShapeChecked(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
+  // Keeping several hits may allocate (the first time a thread keeps that many): guarded.
+  return guarded([&]() __attribute__((always_inline)) -> Status {
+    const RayQuery<T> ray = rayQuery(origin, unitDir, maxDist, hitFlags, maxHits);
+    const TriangleMeshRays<T> rays(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose,
+                                   !ShapeAccess<T>::rayMeshUnscaled(shape));
+    hitCount = rays.cast(ray, hits);
+    return Status();
+  });
+}
+
+template Status raycastMeshShape<float>(const Vec3<float>&, const Vec3<float>&, const Shape<float>&,
+                                        const Transform<float>&, float, HitFlags, std::uint32_t, RaycastHit<float>*,
+                                        std::uint32_t&) noexcept;
+template Status raycastMeshShape<double>(const Vec3<double>&, const Vec3<double>&, const Shape<double>&,
+                                         const Transform<double>&, double, HitFlags, std::uint32_t,
+                                         RaycastHit<double>*, std::uint32_t&) noexcept;
 
 template std::uint32_t raycastTriangleMesh<float>(const TriangleMeshGeometry<float>&, const Transform<float>&,
                                                   const RayQuery<float>&, RaycastHit<float>*);
