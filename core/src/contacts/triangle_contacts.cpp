@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "common/validate.h"
@@ -186,19 +187,29 @@ template <class T> struct CoreView {
   std::vector<Vec3<T>>& vertices;
   std::vector<T>& heights;
   std::vector<EdgeDistances<T>>& inside;
+  // The range of the vertices' distances inside each edge line (the core's shadow spans it).
+  EdgeDistances<T> least, most;
+  // Whether the shape's shadow along n (its core's, grown by `margin`) reaches edge k's line.
+  bool reachesLine(int k, T margin) const { return least[k] <= margin && most[k] >= -margin; }
 };
 
 template <class T>
 CoreView<T> viewCore(const detail::ConvexShape<T>& a, const Triangle<T>& triangle, const Vec3<T>& n,
                      const EdgeNormals<T>& edges, ContactScratch<T>& scratch) {
-  CoreView<T> core{scratch.vertices, scratch.heights, scratch.inside};
+  const T inf = std::numeric_limits<T>::infinity();
+  CoreView<T> core{scratch.vertices, scratch.heights, scratch.inside, {inf, inf, inf}, {-inf, -inf, -inf}};
   coreVertices(a, core.vertices);
   core.heights.resize(core.vertices.size());
   core.inside.resize(core.vertices.size());
   const T base = n.dot(triangle.verts[0]) + a.margin;
   for (std::size_t i = 0; i < core.vertices.size(); ++i) {
     core.heights[i] = n.dot(core.vertices[i]) - base;
-    for (int k = 0; k < 3; ++k) core.inside[i][k] = edges.inside(triangle, k, core.vertices[i]);
+    for (int k = 0; k < 3; ++k) {
+      const T d = edges.inside(triangle, k, core.vertices[i]);
+      core.inside[i][k] = d;
+      core.least[k] = std::min(core.least[k], d);
+      core.most[k] = std::max(core.most[k], d);
+    }
   }
   return core;
 }
@@ -207,16 +218,7 @@ CoreView<T> viewCore(const detail::ConvexShape<T>& a, const Triangle<T>& triangl
 // it: box, segment, hull), so no point of it is within contactDistance of the triangle.
 template <class T> bool beyondAnEdge(const CoreView<T>& core, T reach) {
   if (core.vertices.empty()) return false;
-  for (int k = 0; k < 3; ++k) {
-    bool beyond = true;
-    for (const EdgeDistances<T>& d : core.inside)
-      if (d[k] >= -reach) {
-        beyond = false;
-        break;
-      }
-    if (beyond) return true;
-  }
-  return false;
+  return core.most[0] < -reach || core.most[1] < -reach || core.most[2] < -reach;
 }
 
 // The points of the shape under the triangle's face along n (step 2), into scratch.face: the lowest point, core
@@ -245,10 +247,13 @@ void facePoints(const Geometry<T>& geom, const Transform<T>& pose, const detail:
     if (s <= contactDistance) face.push_back({Vec3<T>(p - a.margin * n), s});
   }
   // Triangle vertices under the shape: a ray from below the vertex along n enters the shape's lower surface. The
-  // ray misses when the vertex is farther from the line through the shape's origin along n than its bounding radius.
+  // ray misses when the shape's shadow along n misses one of the two edge lines through the vertex, or when the
+  // vertex is farther from the line through the shape's origin along n than its bounding radius.
   const T below = T(2) * a.size + std::abs(faceSeparation) + contactDistance;
   const T reach = a.size + a.margin;
-  for (const Vec3<T>& v : triangle.verts) {
+  for (int k = 0; k < 3; ++k) {
+    if (!core.reachesLine(k, a.margin) || !core.reachesLine((k + 2) % 3, a.margin)) continue;
+    const Vec3<T>& v = triangle.verts[k];
     const Vec3<T> offset = v - a.position;
     if ((offset - n.dot(offset) * n).squaredNorm() > reach * reach) continue;
     RaycastHit<T> hit;
