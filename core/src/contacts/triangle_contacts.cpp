@@ -1,18 +1,23 @@
 // Contacts between a capsule, box, convex mesh or convex custom shape and one triangle (gq/contacts.h).
 //
 // 0. Culls without exact work: the shape's lowest point along the face normal n (towards the shape) farther than
-//    contactDistance above the triangle's plane bounds the distance from below, so nothing is reported.
+//    contactDistance above the triangle's plane, or every core vertex farther than contactDistance + margin beyond
+//    one of the triangle's edge lines (seen along n), bounds the distance from below: nothing is reported.
 // 1. Closest features by GJK (separated) or EPA (overlapping): separation s and normal N from the triangle towards
 //    the shape. Nothing is reported when s > contactDistance (GJK stops once it has certified that).
-// 2. The face normal n (oriented towards the shape) explains the contact when the shape's separation from the
-//    triangle's plane, s_f = n.(support(-n) - v0) - margin, is within meshContactMargin of s (always s_f <= s). Then
-//    the manifold is built along n: core vertices of the shape whose projection falls inside the triangle (separation
+// 2. The face normal n explains the contact when the shape's separation from the triangle's plane,
+//    s_f = n.(support(-n) - v0) - margin, is within meshContactMargin of s (always s_f <= s). Then the manifold is
+//    built along n: core vertices of the shape whose projection falls inside the triangle (separation
 //    n.(p - v0) - margin), triangle vertices under the shape (a ray from below the vertex along n enters the shape
 //    at its lower surface), and the crossings of the shape's core edges with the triangle's edges seen along n (the
 //    corners of the contact polygon where a face or an edge of the shape straddles the triangle's boundary).
-//    Otherwise, or when no point lies under the face, the closest point alone, along N. A core point's separation
-//    is linear along a core edge, so edges whose two ends are beyond contactDistance are skipped, and a triangle
-//    vertex farther from the shape's bounding sphere's axis along n than its radius casts no ray.
+//    Otherwise, or when no point lies under the face, the closest point alone, along N. These face points are
+//    found before step 1: when one of them proves the test (a surface point over the triangle at height h >= 0
+//    bounds s by h; one below the plane whose segment to the shape's centre crosses the plane inside the triangle
+//    shows that the shape meets the triangle, s <= 0), step 1 is skipped, its answer being replaced anyway. A core
+//    point's separation is linear along a core edge, so edges whose two ends are beyond contactDistance are
+//    skipped; a triangle vertex casts its ray only when the shape's shadow along n reaches both edge lines through
+//    it and the vertex lies within the shape's bounding radius of the line through its origin along n.
 // 3. At most 4 points: the deepest, the one farthest from it, the one farthest from the line of those two, and the
 //    one farthest from the three chosen (a spread-out, stable set).
 #include <algorithm>
