@@ -48,6 +48,24 @@ TYPED_TEST(TriangleContacts, RestingBoxGivesFourCornerContactsWithTheGap) {
   }
 }
 
+// Triangles are two-sided: a box under the triangle's back face gets the same four corners, mirrored, with the
+// normal pointing down towards it.
+TYPED_TEST(TriangleContacts, BoxUnderTheBackFaceGivesFourCornerContactsAsOnTheFront) {
+  using T = TypeParam;
+  ContactBuffer<T> c;
+  ASSERT_TRUE(generateTriangleContacts(this->unitBox(), this->at(0.2, -0.1, -0.51), this->big(), 7u, c,
+                                       TriangleContactSettings<T>{T(0.02), T(0.01), T(1)})
+                  .ok());
+  ASSERT_EQ(c.count, 4u);
+  for (std::uint32_t i = 0; i < c.count; ++i) {
+    EXPECT_NEAR(double(c.contacts[i].normal.z()), -1.0, this->kTol);
+    EXPECT_NEAR(double(c.contacts[i].separation), 0.01, this->kTol);
+    EXPECT_NEAR(double(c.contacts[i].position.z()), -0.01, this->kTol);
+    EXPECT_NEAR(std::abs(double(c.contacts[i].position.x()) - 0.2), 0.5, this->kTol);  // a top corner
+    EXPECT_NEAR(std::abs(double(c.contacts[i].position.y()) + 0.1), 0.5, this->kTol);
+  }
+}
+
 TYPED_TEST(TriangleContacts, PenetratingBoxReportsNegativeSeparationAndKeepsTheDeepest) {
   using T = TypeParam;
   // Tilted about Y by a small angle: the corners at x = +0.5 go deepest.

@@ -122,14 +122,35 @@ Status overlappingTriangles(const PlacedShape& surface, const Geometry<Real>& bo
   return findOverlapHeightField(box, boxPose, g.get<HeightFieldGeometry<Real>>(), surface.pose, page, received);
 }
 
+// The midphase's query shape: the triangles within `reach` of the convex shape lie within its sphere or capsule
+// grown by reach, or within its own (oriented) bounding box grown by reach, which is tighter than a world box
+// around a turned shape.
+struct QueryShape {
+  Geometry<Real> geom;
+  Pose pose;
+};
+bool queryShape(const PlacedShape& a, Real reach, QueryShape& out) {
+  const Geometry<Real>& g = a.view->geom;
+  if (const auto* sphere = g.getIf<SphereGeometry<Real>>()) {
+    out = {SphereGeometry<Real>(sphere->radius + reach), a.pose};
+    return true;
+  }
+  if (const auto* capsule = g.getIf<CapsuleGeometry<Real>>()) {
+    out = {CapsuleGeometry<Real>(capsule->radius + reach, capsule->halfHeight), a.pose};
+    return true;
+  }
+  Bounds3<Real> local;
+  if (!computeGeomBounds(local, g, Pose(), reach, Real(1)).ok()) return false;
+  out = {BoxGeometry<Real>(local.extents()), a.pose * Pose(local.center())};
+  return true;
+}
+
 }  // namespace
 
 void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
-  Bounds3<Real> bounds;
   const Real reach = std::max(threshold, Real(0)) + a.view->margin + b.view->margin;
-  if (!computeGeomBounds(bounds, a.view->geom, a.pose, reach, Real(1)).ok()) return;
-  const Geometry<Real> box = BoxGeometry<Real>(bounds.extents());
-  const Pose boxPose(bounds.center());
+  QueryShape query;
+  if (!queryShape(a, reach, query)) return;
   const Geometry<Real> contactGeom = contactGeometry(a.view->geom);
   InternalEdgeFilter filter(sink);
   const SurfaceQuery q{a, b, threshold, filter};
@@ -137,7 +158,7 @@ void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold,
   TriangleOverlapPage page{indices.data(), kTrianglePage, 0};
   for (bool more = true; more;) {
     TriangleOverlapPageResult received;
-    if (!overlappingTriangles(b, box, boxPose, page, received).ok()) break;
+    if (!overlappingTriangles(b, query.geom, query.pose, page, received).ok()) break;
     for (std::uint32_t i = 0; i < received.count; ++i) triangleContacts(q, indices[i], contactGeom);
     page.start += received.count;
     more = received.overflow;
