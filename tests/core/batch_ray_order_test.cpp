@@ -1,6 +1,6 @@
 // Large ray batches against a mesh cast their rays in a coherent order (blocks sorted by batch/ray_order.h's key):
 // the order must change no answer, no Status and no untouched output, at any thread count; the key sort must be a
-// stable sort by key, and the key must depend only on where a ray enters the target box and its direction.
+// stable sort by key, and the key must depend only on the ray's line and direction.
 #include "gq/batch.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +24,8 @@ using test::Rng;
 template <class T> class BatchRayOrder : public ::testing::Test {};
 TYPED_TEST_SUITE(BatchRayOrder, test::Scalars);
 
-// Two blocks of the coherent order (blocks hold up to 131,072 rays), of unequal rays entering the mesh's bounds.
+// One block of the coherent order at 1 thread, two at 2 or more (one per worker), of unequal rays entering the
+// mesh's bounds.
 constexpr std::size_t kManyRays = 140001;
 
 // Rays from a shell around the origin aimed into a box of half size 1.5 (most hit a radius-2 sphere), every 5th
@@ -183,25 +184,87 @@ TEST(RayOrder, SortByKeyIsAStableSortByTheKeyBits) {
   EXPECT_EQ(sorted[2] & 0xff, 0u);
 }
 
-TEST(RayOrder, KeyDependsOnTheEntryPointAndTheDirectionOnly) {
+// Rays sharing one bucket of the order (nearly the same line): the bucket is cast in several chunks, bad items
+// among them, and every answer is the single query's.
+TYPED_TEST(BatchRayOrder, OneBucketOfManyChunksEqualsSingleRaycasts) {
+  using T = TypeParam;
+  Rng rng(4404);
+  const auto ico = meshtest::icosphere<T>(2);
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles)), mesh).ok());
+  constexpr std::size_t n = 40000;  // above the order's 32,768-ray threshold at 1 thread
+  std::vector<Vec3<T>> origins(n), dirs(n);
+  const Vec3<T> dir = Vec3<T>(T(0.02), T(-0.03), T(-1)).normalized();
+  for (std::size_t i = 0; i < n; ++i) {
+    origins[i] = Vec3<T>(T(0.05), T(-0.02), T(3)) + rng.inBox<T>(0.001);
+    dirs[i] = dir;
+  }
+  origins[777].y() = std::numeric_limits<T>::quiet_NaN();
+  dirs[30001] *= T(1.5);
+  RayBatch<T> batch;
+  batch.origins = StridedArray<Vec3<T>>(origins.data(), n);
+  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), n);
+  batch.maxDist = T(10);
+  std::vector<RaycastHit<T>> hits(n);
+  std::vector<std::uint8_t> has(n, 7);
+  std::vector<Status> statuses(n);
+  const Status s = raycastBatch(batch, mesh, Transform<T>(), hits.data(), has.data(), statuses.data(), {1, 64});
+  EXPECT_EQ(s.index(), 2u);
+  std::size_t hitCount = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    RaycastHit<T> ref;
+    std::uint32_t count = 0;
+    const Status r = raycast(origins[i], dirs[i], mesh, Transform<T>(), batch.maxDist, batch.hitFlags, 1u, &ref, count);
+    ASSERT_EQ(statuses[i].code, r.code) << i;
+    if (!r.ok()) {
+      ASSERT_EQ(has[i], 7) << i;
+      continue;
+    }
+    ASSERT_EQ(has[i], count > 0 ? 1 : 0) << i;
+    if (count > 0) {
+      ASSERT_TRUE(sameBytes(hits[i], ref)) << i;
+    }
+    hitCount += count;
+  }
+  EXPECT_EQ(hitCount, n - 2);
+}
+
+TEST(RayOrder, SortByKeyOfFewerBitsUsesFewerPassesAndStaysStable) {
+  std::mt19937_64 gen(4405);
+  for (const int bits : {1, 11, 20, 22, 32}) {
+    const std::size_t n = 5000;
+    std::vector<std::uint64_t> items(n), scratch(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t key = (gen() % 97 == 0 ? 3u : gen()) & ((std::uint64_t(1) << bits) - 1);
+      items[i] = key << 32 | std::uint64_t(i);
+    }
+    std::vector<std::uint64_t> expected = items;
+    std::stable_sort(expected.begin(), expected.end(),
+                     [](std::uint64_t a, std::uint64_t b) { return a >> 32 < b >> 32; });
+    const std::uint64_t* sorted = detail::sortByKey(items.data(), scratch.data(), n, bits);
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), sorted)) << bits;
+  }
+}
+
+TEST(RayOrder, KeyDependsOnTheRaysLineAndDirectionOnly) {
   const detail::RayOrderKey<double> key(Bounds3<double>::fromMinMax(Vec3<double>(-1, -2, -3), Vec3<double>(1, 2, 3)));
   const Vec3<double> dir = Vec3<double>(0.3, -0.5, 0.2).normalized();
-  const Vec3<double> entry(-0.7, 2, 1.1);  // on the box's y = max face, the ray going in
-  const std::uint32_t k = key(entry, dir);
+  const Vec3<double> onLine(-0.7, 2, 1.1);  // on the box's y = max face, the ray going in
+  const std::uint32_t k = key(onLine, dir);
   EXPECT_LT(k, 1u << 30);
-  // Any origin before the entry on the ray's line, and any direction length, give the same key.
-  EXPECT_EQ(key(entry - 3.0 * dir, dir), k);
-  EXPECT_EQ(key(entry - 40.0 * dir, 2.5 * dir), k);
-  // Another entry point or another direction changes it.
-  EXPECT_NE(key(entry + Vec3<double>(1.5, 0, 0), dir), k);
-  EXPECT_NE(key(entry, Vec3<double>(0.3, -0.5, -0.2).normalized()), k);
+  // Any origin on the ray's line, and any direction length, give the same key.
+  EXPECT_EQ(key(onLine - 3.0 * dir, dir), k);
+  EXPECT_EQ(key(onLine - 40.0 * dir, 2.5 * dir), k);
+  // Another line or another direction changes it.
+  EXPECT_NE(key(onLine + Vec3<double>(1.5, 0, 0), dir), k);
+  EXPECT_NE(key(onLine, Vec3<double>(0.3, -0.5, -0.2).normalized()), k);
   // Bad inputs still give a key (the batch fails such rays when it casts them).
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_LT(key(Vec3<double>(nan, 0, 0), dir), 1u << 30);
   EXPECT_LT(key(Vec3<double>(inf, 0, 0), Vec3<double>(-1, 0, 0)), 1u << 30);
-  EXPECT_LT(key(entry, Vec3<double>(nan, nan, nan)), 1u << 30);
-  EXPECT_LT(key(entry, Vec3<double>::Zero()), 1u << 30);
+  EXPECT_LT(key(onLine, Vec3<double>(nan, nan, nan)), 1u << 30);
+  EXPECT_LT(key(onLine, Vec3<double>::Zero()), 1u << 30);
   // A flat box (zero extent on an axis) keys rays too.
   const detail::RayOrderKey<float> flat(Bounds3<float>::fromMinMax(Vec3<float>(0, 0, 0), Vec3<float>(1, 1, 0)));
   EXPECT_LT(flat(Vec3<float>(0.5f, 0.5f, 2), Vec3<float>(0, 0, -1)), 1u << 30);
