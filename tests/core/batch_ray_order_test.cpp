@@ -1,6 +1,6 @@
 // Large ray batches against a mesh cast their rays in a coherent order (blocks sorted by batch/ray_order.h's key):
 // the order must change no answer, no Status and no untouched output, at any thread count; the key sort must be a
-// stable sort by key, and the key must depend only on the ray's line and direction.
+// stable sort by key, and the key must depend only on where a ray enters the target box and its direction.
 #include "gq/batch.h"
 
 #include <gtest/gtest.h>
@@ -246,25 +246,25 @@ TEST(RayOrder, SortByKeyOfFewerBitsUsesFewerPassesAndStaysStable) {
   }
 }
 
-TEST(RayOrder, KeyDependsOnTheRaysLineAndDirectionOnly) {
+TEST(RayOrder, KeyDependsOnTheEntryPointAndTheDirectionOnly) {
   const detail::RayOrderKey<double> key(Bounds3<double>::fromMinMax(Vec3<double>(-1, -2, -3), Vec3<double>(1, 2, 3)));
   const Vec3<double> dir = Vec3<double>(0.3, -0.5, 0.2).normalized();
-  const Vec3<double> onLine(-0.7, 2, 1.1);  // on the box's y = max face, the ray going in
-  const std::uint32_t k = key(onLine, dir);
+  const Vec3<double> entry(-0.7, 2, 1.1);  // on the box's y = max face, the ray going in
+  const std::uint32_t k = key(entry, dir);
   EXPECT_LT(k, 1u << 30);
-  // Any origin on the ray's line, and any direction length, give the same key.
-  EXPECT_EQ(key(onLine - 3.0 * dir, dir), k);
-  EXPECT_EQ(key(onLine - 40.0 * dir, 2.5 * dir), k);
-  // Another line or another direction changes it.
-  EXPECT_NE(key(onLine + Vec3<double>(1.5, 0, 0), dir), k);
-  EXPECT_NE(key(onLine, Vec3<double>(0.3, -0.5, -0.2).normalized()), k);
+  // Any origin before the entry on the ray's line, and any direction length, give the same key.
+  EXPECT_EQ(key(entry - 3.0 * dir, dir), k);
+  EXPECT_EQ(key(entry - 40.0 * dir, 2.5 * dir), k);
+  // Another entry point or another direction changes it.
+  EXPECT_NE(key(entry + Vec3<double>(1.5, 0, 0), dir), k);
+  EXPECT_NE(key(entry, Vec3<double>(0.3, -0.5, -0.2).normalized()), k);
   // Bad inputs still give a key (the batch fails such rays when it casts them).
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_LT(key(Vec3<double>(nan, 0, 0), dir), 1u << 30);
   EXPECT_LT(key(Vec3<double>(inf, 0, 0), Vec3<double>(-1, 0, 0)), 1u << 30);
-  EXPECT_LT(key(onLine, Vec3<double>(nan, nan, nan)), 1u << 30);
-  EXPECT_LT(key(onLine, Vec3<double>::Zero()), 1u << 30);
+  EXPECT_LT(key(entry, Vec3<double>(nan, nan, nan)), 1u << 30);
+  EXPECT_LT(key(entry, Vec3<double>::Zero()), 1u << 30);
   // A flat box (zero extent on an axis) keys rays too.
   const detail::RayOrderKey<float> flat(Bounds3<float>::fromMinMax(Vec3<float>(0, 0, 0), Vec3<float>(1, 1, 0)));
   EXPECT_LT(flat(Vec3<float>(0.5f, 0.5f, 2), Vec3<float>(0, 0, -1)), 1u << 30);

@@ -10,11 +10,11 @@ namespace gq::detail {
 
 namespace {
 
-constexpr int kBitsPerAxis = 5;
+constexpr int kBitsPerAxis = 6;
 constexpr std::uint32_t kCells = 1u << kBitsPerAxis;
-constexpr int kAxes = 6;  // closest point x, y, z; direction x, y, z
+constexpr int kAxes = 5;  // entry point x, y, z; direction u, v
 
-// The 5 bits of a cell index spread 6 apart (bit b at 6b): six spread indices shifted by 0..5 interleave.
+// The 6 bits of a cell index spread 5 apart (bit b at 5b): five spread indices shifted by 0..4 interleave.
 constexpr std::array<std::uint32_t, kCells> spreadTable() {
   std::array<std::uint32_t, kCells> table{};
   for (std::uint32_t v = 0; v < kCells; ++v) {
@@ -26,19 +26,18 @@ constexpr std::array<std::uint32_t, kCells> spreadTable() {
 }
 constexpr std::array<std::uint32_t, kCells> kSpread = spreadTable();
 
-// x in [0, 1] to a cell index: below 0 or NaN the first cell, from 1 up the last (max(0, NaN) is 0).
+// x in [0, 1] to a cell index; below 0 or NaN gives 0, above 1 the last cell.
 template <class T> std::uint32_t cell(T x) {
-  return std::uint32_t(std::min(std::max(T(0), x * T(kCells)), T(kCells - 1)));
+  if (!(x > T(0))) return 0;
+  if (!(x < T(1))) return kCells - 1;
+  return std::uint32_t(x * T(kCells));
 }
 
 }  // namespace
 
-template <class T>
-RayOrderKey<T>::RayOrderKey(const Bounds3<T>& target)
-    : lo_(target.min), centre_((target.min + target.max) * T(0.5)),
-      radius_(T(0.5) * (target.max - target.min).norm()) {
+template <class T> RayOrderKey<T>::RayOrderKey(const Bounds3<T>& target) : lo_(target.min), hi_(target.max) {
   for (int k = 0; k < 3; ++k) {
-    const T extent = target.max[k] - target.min[k];
+    const T extent = hi_[k] - lo_[k];
     invExtent_[k] = extent > T(0) ? T(1) / extent : T(0);
   }
 }
@@ -51,21 +50,42 @@ template <class T> std::uint32_t RayOrderKey<T>::operator()(const Vec3<T>& origi
 
 template <class T>
 bool RayOrderKey<T>::operator()(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, std::uint32_t& key) const {
-  // u = dir / |dir|; the line's closest point to the centre c is origin + s u, s = (c - origin) . u, at the
-  // squared distance |c - origin|^2 - s^2. The ray meets the box's bounding sphere (radius r) within maxDist when
-  // that distance is at most r and s lies in [-r, maxDist + r]. A NaN anywhere fails a comparison: no key.
-  const T invLength = T(1) / std::sqrt(dir.squaredNorm());
-  const Vec3<T> u = dir * invLength;
-  const Vec3<T> w = centre_ - origin;
-  const T s = w.dot(u);
-  const T r2 = radius_ * radius_;
-  key = 0;
-  if (!(w.squaredNorm() - s * s <= r2) || !(s >= -radius_) || !(s <= maxDist + radius_)) return false;
-  const Vec3<T> closest = origin + s * u;
+  // Slab parameters along dir: enter the largest per-axis near one (0 for an origin inside), exit the smallest far
+  // one. An axis the ray is parallel to keeps it out when the origin is outside its slab.
+  T enter = T(0);
+  T exit = std::numeric_limits<T>::infinity();
+  bool outside = false;
   for (int k = 0; k < 3; ++k) {
-    key |= kSpread[cell((closest[k] - lo_[k]) * invExtent_[k])] << (kAxes - 1 - k);
-    key |= kSpread[cell((u[k] + T(1)) * T(0.5))] << (2 - k);
+    if (dir[k] == T(0)) {
+      outside |= !(origin[k] >= lo_[k] && origin[k] <= hi_[k]);
+      continue;
+    }
+    const T inv = T(1) / dir[k];
+    const T t0 = (lo_[k] - origin[k]) * inv;
+    const T t1 = (hi_[k] - origin[k]) * inv;
+    enter = std::max(enter, std::min(t0, t1));
+    exit = std::min(exit, std::max(t0, t1));
   }
+  key = 0;
+  // enter * |dir| <= maxDist, squared (no root; an overflow to +inf only admits more rays).
+  if (outside || !(enter <= exit) || !(enter * enter * dir.squaredNorm() <= maxDist * maxDist)) return false;
+  for (int k = 0; k < 3; ++k) {
+    const T entry = origin[k] + enter * dir[k];
+    key |= kSpread[cell((entry - lo_[k]) * invExtent_[k])] << (kAxes - 1 - k);
+  }
+  // Octahedral direction: d / |d|_1 on the upper half, folded over the diagonals for z < 0; u, v in [-1, 1].
+  const T l1 = std::abs(dir.x()) + std::abs(dir.y()) + std::abs(dir.z());
+  const T inv1 = l1 > T(0) ? T(1) / l1 : T(0);
+  T u = dir.x() * inv1;
+  T v = dir.y() * inv1;
+  if (dir.z() < T(0)) {
+    const T fu = (T(1) - std::abs(v)) * (u < T(0) ? T(-1) : T(1));
+    const T fv = (T(1) - std::abs(u)) * (v < T(0) ? T(-1) : T(1));
+    u = fu;
+    v = fv;
+  }
+  key |= kSpread[cell((u + T(1)) * T(0.5))] << 1;
+  key |= kSpread[cell((v + T(1)) * T(0.5))];
   return true;
 }
 

@@ -12,7 +12,7 @@ namespace gq::detail {
 // Settings of the reordering (counts of rays).
 struct RayOrderSettings {
   // Batches smaller than this keep the input order: their rays are too sparse for neighbours in key order to share
-  // nodes, and the key, sort and copies (~250 instructions a ray) would be lost.
+  // nodes, and the key, sort and copies (~300 instructions a ray) would be lost.
   std::size_t minRays = 32768;
   // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 72 bytes a ray in double,
   // 48 in float). The whole block is cast in key order: the casts of 1M bunny rays took 1.3x less CPU in one block
@@ -23,22 +23,21 @@ struct RayOrderSettings {
   int coarseBits = 10;
 };
 
-// A 30-bit key of a ray against a target box: the Morton interleave of the point of the ray's line closest to the
-// box's centre, 5 bits per axis of the box, and of the ray's unit direction, 5 bits per coordinate (rays near each
-// other in both walk the same nodes). The direction need not be unit. One root and one division a ray.
+// A 30-bit key of a ray against a target box: the Morton interleave of the point where the ray enters the box
+// (its origin when inside), 6 bits per axis of the box, and of the ray's direction in octahedral coordinates, 6 bits
+// per coordinate. The direction need not be unit. Any input is keyed without fault (a NaN coordinate counts as the
+// box's low side).
 template <class T> class RayOrderKey {
  public:
   explicit RayOrderKey(const Bounds3<T>& target);
-  // Writes the key and returns true when the ray meets the box's bounding sphere within maxDist (measured along the
-  // unit direction); else, or for a NaN, writes 0 and returns false: such rays stop at or near the root and gain
-  // nothing from the order.
+  // Writes the key and returns true when the ray enters the box within maxDist (measured along the unit direction);
+  // else writes 0 and returns false: such rays stop at the root and gain nothing from the order.
   bool operator()(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, std::uint32_t& key) const;
-  // The key for any maxDist (0 for a ray that misses the sphere).
+  // The key for any maxDist (0 for a ray that misses the box).
   std::uint32_t operator()(const Vec3<T>& origin, const Vec3<T>& dir) const;
 
  private:
-  Vec3<T> lo_, centre_, invExtent_;
-  T radius_;
+  Vec3<T> lo_, hi_, invExtent_;
 };
 
 // Sorts items of the form (key << 32 | payload), key below 2^keyBits (keyBits at most 32), by key: LSD radix sort
