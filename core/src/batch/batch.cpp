@@ -300,6 +300,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
                                 std::size_t begin, std::size_t end) {
   using Ray = typename KeyOrderScratch<T>::Ray;
   constexpr std::size_t kPrefetchAhead = 16;  // rays
+  constexpr std::size_t kComparisonSortRays = 256;
   const RayBatch<T>& rays = items.rays;
   const int fineBits = 30 - order.coarseBits;
   const std::size_t buckets = std::size_t(1) << order.coarseBits;
@@ -345,7 +346,14 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     const Ray* bucket = scratch.rays.data + first;
     std::uint64_t* fine = scratch.items.data;
     for (std::size_t j = 0; j < count; ++j) fine[j] = std::uint64_t(bucket[j].key & fineMask) << 32 | std::uint64_t(j);
-    const std::uint64_t* sorted = detail::sortByKey(fine, fine + count, count, fineBits);
+    // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's): a
+    // radix pass costs two histograms of 1,024 counts whatever the bucket's size.
+    const std::uint64_t* sorted = fine;
+    if (count <= kComparisonSortRays) {
+      std::sort(fine, fine + count);
+    } else {
+      sorted = detail::sortByKey(fine, fine + count, count, fineBits);
+    }
     auto rayAt = [&](std::size_t k) -> const Ray& { return bucket[sorted[k] & 0xffffffffu]; };
     for (std::size_t c = 0; c < count; c += KeyOrderScratch<T>::kChunk) {
       const std::size_t n = std::min(count - c, KeyOrderScratch<T>::kChunk);
