@@ -24,7 +24,8 @@ using test::Rng;
 template <class T> class BatchRayOrder : public ::testing::Test {};
 TYPED_TEST_SUITE(BatchRayOrder, test::Scalars);
 
-// Two blocks of the coherent order (blocks hold up to 131,072 rays), of unequal rays entering the mesh's bounds.
+// One block of the coherent order at 1 thread, two at 2 or more (one per worker), of unequal rays entering the
+// mesh's bounds.
 constexpr std::size_t kManyRays = 140001;
 
 // Rays from a shell around the origin aimed into a box of half size 1.5 (most hit a radius-2 sphere), every 5th
@@ -181,6 +182,68 @@ TEST(RayOrder, SortByKeyIsAStableSortByTheKeyBits) {
   EXPECT_EQ(sorted[0] & 0xff, 1u);
   EXPECT_EQ(sorted[1] & 0xff, 2u);
   EXPECT_EQ(sorted[2] & 0xff, 0u);
+}
+
+// Rays sharing one bucket of the order (nearly the same line): the bucket is cast in several chunks, bad items
+// among them, and every answer is the single query's.
+TYPED_TEST(BatchRayOrder, OneBucketOfManyChunksEqualsSingleRaycasts) {
+  using T = TypeParam;
+  Rng rng(4404);
+  const auto ico = meshtest::icosphere<T>(2);
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles)), mesh).ok());
+  constexpr std::size_t n = 40000;  // above the order's 32,768-ray threshold at 1 thread
+  std::vector<Vec3<T>> origins(n), dirs(n);
+  const Vec3<T> dir = Vec3<T>(T(0.02), T(-0.03), T(-1)).normalized();
+  for (std::size_t i = 0; i < n; ++i) {
+    origins[i] = Vec3<T>(T(0.05), T(-0.02), T(3)) + rng.inBox<T>(0.001);
+    dirs[i] = dir;
+  }
+  origins[777].y() = std::numeric_limits<T>::quiet_NaN();
+  dirs[30001] *= T(1.5);
+  RayBatch<T> batch;
+  batch.origins = StridedArray<Vec3<T>>(origins.data(), n);
+  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), n);
+  batch.maxDist = T(10);
+  std::vector<RaycastHit<T>> hits(n);
+  std::vector<std::uint8_t> has(n, 7);
+  std::vector<Status> statuses(n);
+  const Status s = raycastBatch(batch, mesh, Transform<T>(), hits.data(), has.data(), statuses.data(), {1, 64});
+  EXPECT_EQ(s.index(), 2u);
+  std::size_t hitCount = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    RaycastHit<T> ref;
+    std::uint32_t count = 0;
+    const Status r = raycast(origins[i], dirs[i], mesh, Transform<T>(), batch.maxDist, batch.hitFlags, 1u, &ref, count);
+    ASSERT_EQ(statuses[i].code, r.code) << i;
+    if (!r.ok()) {
+      ASSERT_EQ(has[i], 7) << i;
+      continue;
+    }
+    ASSERT_EQ(has[i], count > 0 ? 1 : 0) << i;
+    if (count > 0) {
+      ASSERT_TRUE(sameBytes(hits[i], ref)) << i;
+    }
+    hitCount += count;
+  }
+  EXPECT_EQ(hitCount, n - 2);
+}
+
+TEST(RayOrder, SortByKeyOfFewerBitsUsesFewerPassesAndStaysStable) {
+  std::mt19937_64 gen(4405);
+  for (const int bits : {1, 11, 20, 22, 32}) {
+    const std::size_t n = 5000;
+    std::vector<std::uint64_t> items(n), scratch(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t key = (gen() % 97 == 0 ? 3u : gen()) & ((std::uint64_t(1) << bits) - 1);
+      items[i] = key << 32 | std::uint64_t(i);
+    }
+    std::vector<std::uint64_t> expected = items;
+    std::stable_sort(expected.begin(), expected.end(),
+                     [](std::uint64_t a, std::uint64_t b) { return a >> 32 < b >> 32; });
+    const std::uint64_t* sorted = detail::sortByKey(items.data(), scratch.data(), n, bits);
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), sorted)) << bits;
+  }
 }
 
 TEST(RayOrder, KeyDependsOnTheEntryPointAndTheDirectionOnly) {

@@ -63,10 +63,12 @@ struct BatchSettings {
   // runs the hardware's count.
   std::uint32_t threads = 0;
   std::size_t grain = 64;     // items per task (at least 1)
-  // Ray batches against a triangle mesh with at least 32,768 rays per worker cast their rays in a coherent order: in
-  // blocks of up to 131,072 input rays, sorted by where each ray enters the mesh's bounds and by its direction, so neighbouring
-  // rays walk the same nodes while they are in cache (grain does not apply to them). Each ray's answer and Status
-  // are the same in either order; false keeps the input order (rays that are already coherent).
+  // Ray batches against a triangle mesh with at least 32,768 rays per worker cast their rays in a coherent order:
+  // in blocks of up to 1,048,576 input rays (at least one per worker), sorted by where each ray passes the mesh's
+  // bounds and by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not
+  // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays
+  // that are already coherent). Memory: each worker holds scratch of about 72 bytes (double; 48 in float) a ray of
+  // its largest block, so at most ~72 bytes a ray of the batch and ~76 MB (double) a worker, freed on return.
   bool coherentRayOrder = true;
 };
 

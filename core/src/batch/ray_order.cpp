@@ -89,26 +89,30 @@ bool RayOrderKey<T>::operator()(const Vec3<T>& origin, const Vec3<T>& dir, T max
   return true;
 }
 
-std::uint64_t* sortByKey(std::uint64_t* items, std::uint64_t* scratch, std::size_t n) {
-  constexpr int kDigitBits = 10;
-  constexpr int kPasses = 3;
-  constexpr std::size_t kDigits = std::size_t(1) << kDigitBits;
-  auto digit = [](std::uint64_t item, int pass) {
-    return std::size_t(item >> (32 + kDigitBits * pass)) & (kDigits - 1);
+std::uint64_t* sortByKey(std::uint64_t* items, std::uint64_t* scratch, std::size_t n, int keyBits) {
+  constexpr int kMaxDigitBits = 11;
+  constexpr int kMaxPasses = 3;
+  constexpr std::size_t kMaxDigits = std::size_t(1) << kMaxDigitBits;
+  const int passes = std::min(kMaxPasses, (keyBits + kMaxDigitBits - 1) / kMaxDigitBits);
+  const int digitBits = (keyBits + passes - 1) / passes;
+  const std::size_t digits = std::size_t(1) << digitBits;
+  auto digit = [&](std::uint64_t item, int pass) {
+    return std::size_t(item >> (32 + digitBits * pass)) & (digits - 1);
   };
-  std::array<std::array<std::size_t, kDigits>, kPasses> counts{};
+  std::array<std::array<std::uint32_t, kMaxDigits>, kMaxPasses> counts;
+  for (int p = 0; p < passes; ++p) std::fill_n(counts[std::size_t(p)].begin(), digits, 0u);
   for (std::size_t i = 0; i < n; ++i) {
-    for (int p = 0; p < kPasses; ++p) ++counts[std::size_t(p)][digit(items[i], p)];
+    for (int p = 0; p < passes; ++p) ++counts[std::size_t(p)][digit(items[i], p)];
   }
   std::uint64_t* from = items;
   std::uint64_t* to = scratch;
-  for (int p = 0; p < kPasses; ++p) {
-    std::array<std::size_t, kDigits>& c = counts[std::size_t(p)];
+  for (int p = 0; p < passes; ++p) {
+    std::uint32_t* c = counts[std::size_t(p)].data();
     if (n == 0 || c[digit(from[0], p)] == n) continue;  // one digit for every item: the pass keeps the order
-    std::size_t sum = 0;
-    for (std::size_t& x : c) {
-      const std::size_t count = x;
-      x = sum;
+    std::uint32_t sum = 0;
+    for (std::size_t d = 0; d < digits; ++d) {
+      const std::uint32_t count = c[d];
+      c[d] = sum;
       sum += count;
     }
     for (std::size_t i = 0; i < n; ++i) to[c[digit(from[i], p)]++] = from[i];
