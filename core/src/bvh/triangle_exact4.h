@@ -1,10 +1,11 @@
 #pragma once
 // The watertight ray/triangle test (mesh/triangle.h, intersectRayTriangle<T>) on the (up to) 4 triangles of a leaf at
 // once, in the mesh's own precision: float 4 lanes per SSE register, double 2. Every lane performs the scalar test's
-// IEEE operations in the same order on the same inputs, so a lane it rejects is one the scalar test rejects: no
-// margin and no pre-test copy of the triangles are needed. Lanes it cannot decide exactly the same way are kept as
-// candidates for the scalar test: an edge function that is exactly zero (the scalar test re-evaluates it in a wider
-// type) and any NaN (every comparison fails, so nothing rejects the lane). The triangles are read from the mesh's
+// IEEE operations in the same order on the same inputs, so a lane it rejects is one the scalar test rejects (or,
+// with a NaN edge function from overflow, accepts with a NaN hit, which the mesh raycast rejects): no margin and no
+// pre-test copy of the triangles are needed. Lanes it cannot decide exactly the same way are kept as candidates for
+// the scalar test: an edge function that is exactly zero (the scalar test re-evaluates it in a wider type) and a
+// non-finite hit. The triangles are read from the mesh's
 // per-triangle vertex copies (TriangleMesh::triangleVertices, contiguous per leaf) and transposed in registers.
 #include <cmath>
 #include <cstdint>
@@ -182,9 +183,10 @@ inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r,
   const V ev = sub(mul(ax, cy), mul(ay, cx));
   const V ew = sub(mul(bx, ay), mul(by, ax));
   const V anyZero = bitOr(bitOr(eq(eu, zero), eq(ev, zero)), eq(ew, zero));
-  const V anyNeg = bitOr(bitOr(lt(eu, zero), lt(ev, zero)), lt(ew, zero));
-  const V anyPos = bitOr(bitOr(lt(zero, eu), lt(zero, ev)), lt(zero, ew));
-  V reject = bitAnd(anyNeg, anyPos);
+  // Edge functions of both signs (the scalar test's anyNeg && anyPos on lanes without a zero one): sign bits that
+  // differ. Only sign bits are read from here on (movemask), so masks of all bits and of the sign bit mix freely. A
+  // NaN edge function (overflow) may land either way: its lane's hit is NaN, which the mesh raycast rejects.
+  V reject = bitOr(bitXor(eu, ev), bitXor(eu, ew));
   const V det = add(add(eu, ev), ew);
   reject = bitOr(reject, eq(det, zero));
   const V front = lt(zero, det);
@@ -195,15 +197,15 @@ inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r,
   const V flip = andNot(front, R::signBit());
   const V absDet = bitXor(det, flip), st = bitXor(tScaled, flip);
   const V limit = mul(R::set1(maxT), absDet);
-  const V inRange = bitAnd(le(zero, st), le(st, limit));
   reject = bitOr(reject, bitOr(lt(st, zero), lt(limit, st)));
   // An exactly zero edge function: the scalar test re-evaluates it in a wider type, so it decides.
-  reject = andNot(anyZero, reject);
+  const int zeroEdge = R::mask(anyZero);
   const int full = (1 << R::kWidth) - 1;
   const int candidates = ~R::mask(reject) & full;
-  // Decided: no zero edge function, both range comparisons true (so nothing is NaN), and t, u, v finite (the mesh
-  // raycast requires a finite hit).
-  int decided = R::mask(andNot(anyZero, andNot(reject, inRange))) & candidates;
+  // Decided: no zero edge function and t, u, v finite (the mesh raycast requires a finite hit). The scalar test then
+  // rejects exactly what `reject` holds (on a NaN comparison it accepts, and so does this test; a NaN edge function or
+  // det gives a NaN t, never decided), so a candidate is its hit.
+  int decided = candidates & ~zeroEdge;
   if (decided) {
     const V inv = div(R::set1(T(1)), det);
     const V t = mul(tScaled, inv), u = mul(ev, inv), v = mul(ew, inv);
@@ -217,7 +219,7 @@ inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r,
     hits.frontMask |= (R::mask(front) & decided) << lane0;
   }
   hits.decided |= decided << lane0;
-  return candidates << lane0;
+  return (candidates | zeroEdge) << lane0;
 }
 }  // namespace lanes
 #endif

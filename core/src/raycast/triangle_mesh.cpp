@@ -51,8 +51,11 @@ template <class T> class MeshRaycaster {
   int candidates(std::uint32_t leafRef, T maxT, TriangleHits4<T>& hits) const {
     const std::uint32_t first = MeshBvhNode::leafFirst(leafRef), count = MeshBvhNode::leafCount(leafRef);
     TriangleVertices4<T> tris;
-    const std::size_t triangles = mesh_.triangles.size();  // triangleVertices holds 3 per cooked triangle
-    loadTriangles4(&mesh_.triangleVertices[3 * std::size_t(first)], count, std::size_t(first) + 4 <= triangles, tris);
+    const Vec3<T>* tv = mesh_.triangleVertices.data() + 3 * std::size_t(first);
+    // 4 triangles (12 vertices) stored from tv on: compared with the end pointer (no division by the element size;
+    // the vector is not empty, this leaf's triangles are in it).
+    const bool fourReadable = tv + 12 <= &mesh_.triangleVertices.back() + 1;
+    loadTriangles4(tv, count, fourReadable, tris);
     return exactTriangleHits(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
   }
 
