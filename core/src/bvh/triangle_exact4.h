@@ -173,15 +173,18 @@ inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r,
   const WatertightRay<T>& ray = r.ray;
   const V zero = R::set1(T(0));
   auto at = [&](int vertex, int axis) { return R::load(&p.v[vertex][axis][lane0]); };
-  // a = v0 - org, b = v1 - org, c = v2 - org on the permuted axes, then the shear.
+  // a = v0 - org, b = v1 - org, c = v2 - org on the permuted axes, then the shear. The sheared x and y are computed
+  // negated, nax = (ox - v0x) + sx * akz = -((v0x - ox) - sx * akz) (rounding is symmetric), so the vertex is the
+  // subtraction's second operand (read from memory on x86); the edge functions below multiply them in pairs, so they
+  // are the scalar test's bit for bit but for the sign of an exact zero (which goes to the scalar test).
   const V akz = sub(at(0, ray.kz), r.oz), bkz = sub(at(1, ray.kz), r.oz), ckz = sub(at(2, ray.kz), r.oz);
-  const V ax = sub(sub(at(0, ray.kx), r.ox), mul(r.sx, akz)), ay = sub(sub(at(0, ray.ky), r.oy), mul(r.sy, akz));
-  const V bx = sub(sub(at(1, ray.kx), r.ox), mul(r.sx, bkz)), by = sub(sub(at(1, ray.ky), r.oy), mul(r.sy, bkz));
-  const V cx = sub(sub(at(2, ray.kx), r.ox), mul(r.sx, ckz)), cy = sub(sub(at(2, ray.ky), r.oy), mul(r.sy, ckz));
+  const V nax = add(sub(r.ox, at(0, ray.kx)), mul(r.sx, akz)), nay = add(sub(r.oy, at(0, ray.ky)), mul(r.sy, akz));
+  const V nbx = add(sub(r.ox, at(1, ray.kx)), mul(r.sx, bkz)), nby = add(sub(r.oy, at(1, ray.ky)), mul(r.sy, bkz));
+  const V ncx = add(sub(r.ox, at(2, ray.kx)), mul(r.sx, ckz)), ncy = add(sub(r.oy, at(2, ray.ky)), mul(r.sy, ckz));
   // edgeFunction(cx, cy, bx, by), edgeFunction(ax, ay, cx, cy), edgeFunction(bx, by, ax, ay).
-  const V eu = sub(mul(cx, by), mul(cy, bx));
-  const V ev = sub(mul(ax, cy), mul(ay, cx));
-  const V ew = sub(mul(bx, ay), mul(by, ax));
+  const V eu = sub(mul(ncx, nby), mul(ncy, nbx));
+  const V ev = sub(mul(nax, ncy), mul(nay, ncx));
+  const V ew = sub(mul(nbx, nay), mul(nby, nax));
   const V anyZero = bitOr(bitOr(eq(eu, zero), eq(ev, zero)), eq(ew, zero));
   // Edge functions of both signs (the scalar test's anyNeg && anyPos on lanes without a zero one): sign bits that
   // differ. Only sign bits are read from here on (movemask), so masks of all bits and of the sign bit mix freely. A
