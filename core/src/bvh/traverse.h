@@ -314,8 +314,10 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
     Entry e = stack[--top];
     if (kOrdered && e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
     // Descend through inner nodes, pushing the other children and continuing with one (the nearest when ordered).
+    // (Entries are never kEmpty: the root is checked above and empty lanes are never in a mask, so the leaf bit alone
+    // tells a leaf.)
     bool missed = false;
-    while (!Node::isLeaf(e.ref)) {
+    while (!(e.ref & Node::kLeafBit)) {
       const Node& node = bvh.nodes[e.ref];
       alignas(32) float tn[W];
       int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);  // empty lanes never set
