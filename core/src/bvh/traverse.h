@@ -195,6 +195,7 @@ struct BvhWalkEntry {
 template <int W> struct BvhLanesScalar {
   static constexpr int kWidth = W;
   static constexpr bool kSortsHits = false;  // the walk insertion-sorts 3 or more hit children
+  static constexpr bool kAvx2 = false;       // the walk's leaf code may use AVX2 (Bvh8LanesAvx2)
   using Ray = BvhRay<W>;
   static const Ray& prepare(const BvhRay<W>& ray) { return ray; }
   template <bool kSlack> static int test(const BvhNode<W>& node, const Ray& ray, float tMax, float* tNear) {
@@ -223,6 +224,7 @@ template <int W> struct BvhLanesScalar {
 struct Bvh8LanesSse {
   static constexpr int kWidth = 8;
   static constexpr bool kSortsHits = false;
+  static constexpr bool kAvx2 = false;
   using Ray = BvhRaySse;
   static Ray prepare(const BvhRay<8>& ray) { return broadcastSse(ray); }
   template <bool kSlack> static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
@@ -240,6 +242,7 @@ template <int kMaxLanes> __attribute__((target("avx2"))) inline __m256i sortLaye
 struct Bvh8LanesAvx2 {
   static constexpr int kWidth = 8;
   static constexpr bool kSortsHits = true;  // sortHits below
+  static constexpr bool kAvx2 = true;
   using Ray = BvhRay<8>;
   static const Ray& prepare(const BvhRay<8>& ray) { return ray; }
   template <bool kSlack>

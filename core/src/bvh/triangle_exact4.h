@@ -15,7 +15,7 @@
 #include "mesh/triangle.h"
 
 #ifdef GQ_SSE42
-#include <smmintrin.h>
+#include <immintrin.h>
 #endif
 
 namespace gq::detail {
@@ -53,6 +53,37 @@ inline void loadTriangles4(const Vec3<float>* tv, std::uint32_t count, bool four
     for (int k = 0; k < 3; ++k)
       for (int a = 0; a < 3; ++a) out.v[k][a][i] = tv[3 * i + std::uint32_t(k)][a];
 }
+
+#ifdef GQ_SSE42
+// loadTriangles4 of 4 stored triangles with 256-bit loads, for the AVX2 walk: triangle i's first 8 floats in one
+// register, the 4 registers transposed two rows at a time (rows r and r + 4 share a register), the 9th floats gathered
+// apart. The same values as loadTriangles4 (25 instructions instead of 37).
+__attribute__((target("avx2"))) inline void loadFourTriangles4Avx2(const Vec3<float>* tv,
+                                                                  TriangleVertices4<float>& out) {
+  const float* f = tv->data();
+  const __m256 r0 = _mm256_loadu_ps(f), r1 = _mm256_loadu_ps(f + 9), r2 = _mm256_loadu_ps(f + 18),
+               r3 = _mm256_loadu_ps(f + 27);
+  const __m256 lo01 = _mm256_unpacklo_ps(r0, r1), hi01 = _mm256_unpackhi_ps(r0, r1);
+  const __m256 lo23 = _mm256_unpacklo_ps(r2, r3), hi23 = _mm256_unpackhi_ps(r2, r3);
+  // (Casts, not a lambda: a lambda does not inherit the target attribute.)
+  const __m256d l01 = _mm256_castps_pd(lo01), l23 = _mm256_castps_pd(lo23);
+  const __m256d h01 = _mm256_castps_pd(hi01), h23 = _mm256_castps_pd(hi23);
+  const __m256 rows04 = _mm256_castpd_ps(_mm256_unpacklo_pd(l01, l23));
+  const __m256 rows15 = _mm256_castpd_ps(_mm256_unpackhi_pd(l01, l23));
+  const __m256 rows26 = _mm256_castpd_ps(_mm256_unpacklo_pd(h01, h23));
+  const __m256 rows37 = _mm256_castpd_ps(_mm256_unpackhi_pd(h01, h23));
+  float* o = &out.v[0][0][0];  // row r (vertex r / 3, axis r % 3) at o + 4 r
+  _mm_store_ps(o, _mm256_castps256_ps128(rows04));
+  _mm_store_ps(o + 4, _mm256_castps256_ps128(rows15));
+  _mm_store_ps(o + 8, _mm256_castps256_ps128(rows26));
+  _mm_store_ps(o + 12, _mm256_castps256_ps128(rows37));
+  _mm_store_ps(o + 16, _mm256_extractf128_ps(rows04, 1));
+  _mm_store_ps(o + 20, _mm256_extractf128_ps(rows15, 1));
+  _mm_store_ps(o + 24, _mm256_extractf128_ps(rows26, 1));
+  _mm_store_ps(o + 28, _mm256_extractf128_ps(rows37, 1));
+  _mm_store_ps(o + 32, _mm_setr_ps(f[8], f[17], f[26], f[35]));
+}
+#endif
 
 inline void loadTriangles4(const Vec3<double>* tv, std::uint32_t count, bool fourReadable,
                            TriangleVertices4<double>& out) {
