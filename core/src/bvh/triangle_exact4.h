@@ -55,7 +55,7 @@ inline void loadTriangles4(const Vec3<float>* tv, std::uint32_t count, bool four
 }
 
 #ifdef GQ_SSE42
-// loadTriangles4 of 4 stored triangles with 256-bit loads, for the AVX2 walk: triangle i's first 8 floats in one
+// loadTriangles4 of 4 stored float triangles with 256-bit loads, for the AVX2 walk: triangle i's first 8 floats in one
 // register, the 4 registers transposed two rows at a time (rows r and r + 4 share a register), the 9th floats gathered
 // apart. The same values as loadTriangles4 (25 instructions instead of 37).
 __attribute__((target("avx2"))) inline void loadFourTriangles4Avx2(const Vec3<float>* tv,
@@ -112,6 +112,28 @@ inline void loadTriangles4(const Vec3<double>* tv, std::uint32_t count, bool fou
     for (int k = 0; k < 3; ++k)
       for (int a = 0; a < 3; ++a) out.v[k][a][i] = tv[3 * i + std::uint32_t(k)][a];
 }
+
+#ifdef GQ_SSE42
+// loadTriangles4 of 4 stored double triangles for the AVX2 walk: each triangle's 9 doubles as rows 0-3, 4-7 and 8;
+// two 4 x 4 transposes (unpacks, then 128-bit halves exchanged) give whole rows. The same values as loadTriangles4.
+__attribute__((target("avx2"))) inline void loadFourTriangles4Avx2(const Vec3<double>* tv,
+                                                                  TriangleVertices4<double>& out) {
+  const double* d = tv->data();
+  double* o = &out.v[0][0][0];  // row r (vertex r / 3, axis r % 3) at o + 4 r
+  for (int half = 0; half < 2; ++half) {  // rows 0-3 from each triangle's doubles 0-3, rows 4-7 from 4-7
+    const __m256d a0 = _mm256_loadu_pd(d + 4 * half), a1 = _mm256_loadu_pd(d + 9 + 4 * half);
+    const __m256d a2 = _mm256_loadu_pd(d + 18 + 4 * half), a3 = _mm256_loadu_pd(d + 27 + 4 * half);
+    const __m256d lo01 = _mm256_unpacklo_pd(a0, a1), hi01 = _mm256_unpackhi_pd(a0, a1);
+    const __m256d lo23 = _mm256_unpacklo_pd(a2, a3), hi23 = _mm256_unpackhi_pd(a2, a3);
+    double* q = o + 16 * half;
+    _mm256_storeu_pd(q, _mm256_permute2f128_pd(lo01, lo23, 0x20));
+    _mm256_storeu_pd(q + 4, _mm256_permute2f128_pd(hi01, hi23, 0x20));
+    _mm256_storeu_pd(q + 8, _mm256_permute2f128_pd(lo01, lo23, 0x31));
+    _mm256_storeu_pd(q + 12, _mm256_permute2f128_pd(hi01, hi23, 0x31));
+  }
+  _mm256_storeu_pd(o + 32, _mm256_setr_pd(d[8], d[17], d[26], d[35]));
+}
+#endif
 
 #ifdef GQ_SSE42
 // The same SSE operation on float (4 lanes) and double (2 lanes) registers, so one kernel serves both.

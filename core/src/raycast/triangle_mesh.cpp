@@ -48,7 +48,7 @@ template <class T> class MeshRaycaster {
   // The leaf's triangles (cooked first + i) that the exact test may accept within maxT, as a bit mask over i, tested
   // 4 wide; the lanes it decides come with their hit in `hits` (hits.decided), bit-identical to the scalar test's, so
   // only the other candidates need testTriangle.
-  // kAvx2: called from the AVX2 walk, which loads 4 float triangles with 256-bit loads.
+  // kAvx2: called from the AVX2 walk, which loads 4 triangles with 256-bit loads.
   template <bool kAvx2> int candidates(std::uint32_t leafRef, T maxT, TriangleHits4<T>& hits) const {
     const std::uint32_t first = MeshBvhNode::leafFirst(leafRef), count = MeshBvhNode::leafCount(leafRef);
     TriangleVertices4<T> tris;
@@ -57,7 +57,7 @@ template <class T> class MeshRaycaster {
     // the vector is not empty, this leaf's triangles are in it).
     const bool fourReadable = tv + 12 <= &mesh_.triangleVertices.back() + 1;
 #ifdef GQ_SSE42
-    if constexpr (kAvx2 && kFloat) {
+    if constexpr (kAvx2) {
       if (fourReadable) loadFourTriangles4Avx2(tv, tris);
       else loadTriangles4(tv, count, false, tris);
     } else {
