@@ -8,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <type_traits>
 
 #include "bvh/build.h"
 #include "bvh/triangle_exact4.h"
@@ -201,6 +200,14 @@ TYPED_TEST(MeshRaycastPacket, LeafTrianglesLoadTheSameFromRegistersAndLaneByLane
         EXPECT_EQ(wide.v[k][a][i], lanes.v[k][a][i]);
         EXPECT_EQ(wide.v[k][a][i], mesh->triangleVertices[3 * std::size_t(i) + std::size_t(k)][a]);
       }
+  // The AVX2 walk's 256-bit loads: the same rows.
+  if (__builtin_cpu_supports("avx2")) {
+    detail::TriangleVertices4<T> avx2;
+    detail::loadFourTriangles4Avx2(mesh->triangleVertices.data(), avx2);
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a)
+        for (int i = 0; i < 4; ++i) EXPECT_EQ(avx2.v[k][a][i], wide.v[k][a][i]);
+  }
   // Fewer than 4 triangles stored: the missing lanes are zero.
   detail::TriangleVertices4<T> three;
   detail::loadTriangles4(mesh->triangleVertices.data(), 3, false, three);

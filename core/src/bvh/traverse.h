@@ -25,8 +25,10 @@ inline constexpr int kBvhStackSize = 512;
 // ray that the triangles are tested against. W: the width of the nodes it walks (the plane offsets depend on it).
 template <int W> struct BvhRay {
   alignas(16) float org[3];
-  float invDir[3];
-  float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |invDir|
+  // -1 / dir: a slab distance is (org - plane) * negInvDir, the same float as (plane - org) / dir's product form
+  // (both negations are exact), with the plane as the subtraction's second operand, which x86 reads from memory.
+  float negInvDir[3];
+  float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |negInvDir|
   // Per axis, the byte offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
   // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis. (In
   // bytes, so a node test adds them without a scaling per walk restart.)
@@ -70,44 +72,44 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
 #ifdef GQ_SSE42
   // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
   // and the same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the
-  // clamped direction are those of its inverse (1 / x keeps the sign and never gives 0 or NaN here).
+  // clamped direction are the loop's `negInvDir > 0` (-1 / x flips the sign and never gives 0 or NaN here).
   const __m128 signBit = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(kTinyDir);
   const __m128 d = floatLanes(dir);
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
-  const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), clamped);
+  const __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
   const int negative = _mm_movemask_ps(clamped) & 7;
   alignas(16) float lanes[2][4];
   _mm_store_ps(lanes[0], floatLanes(org));
-  _mm_store_ps(lanes[1], inv);
+  _mm_store_ps(lanes[1], negInv);
   std::memcpy(r.org, lanes[0], sizeof(r.org));
-  std::memcpy(r.invDir, lanes[1], sizeof(r.invDir));
+  std::memcpy(r.negInvDir, lanes[1], sizeof(r.negInvDir));
   for (int i = 0; i < 3; ++i) {
     if constexpr (std::is_same_v<T, float>) {
       r.slack[i] = 0.0f;  // the origin is exactly the float one
     } else {
       const double originError = std::abs(double(org[i]) - double(r.org[i]));
-      r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+      r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
     }
   }
   std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
   std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));
   return r;
 #else
-  int negative = 0;  // bit i: invDir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
+  int negative = 0;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
   for (int i = 0; i < 3; ++i) {
     r.org[i] = static_cast<float>(org[i]);
     float d = static_cast<float>(dir[i]);
     if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
-    r.invDir[i] = 1.0f / d;
-    negative |= int(r.invDir[i] < 0.0f) << i;
+    r.negInvDir[i] = -1.0f / d;
+    negative |= int(r.negInvDir[i] > 0.0f) << i;
   }
   for (int i = 0; i < 3; ++i) {
     if constexpr (std::is_same_v<T, float>) {
       r.slack[i] = 0.0f;  // the origin is exactly the float one
     } else {
       const double originError = std::abs(double(org[i]) - double(r.org[i]));
-      r.slack[i] = static_cast<float>(originError * std::abs(double(r.invDir[i])) * (1.0 + 1e-6));
+      r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
     }
     r.nearOffset[i] = kBvhPlaneOffsets<W>.bytes[negative][i];
     r.farOffset[i] = kBvhPlaneOffsets<W>.bytes[negative][3 + i];
@@ -117,11 +119,11 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
 }
 
 #ifdef GQ_SSE42
-// The SSE node test's ray constants: org, invDir and slack broadcast to 4 lanes once per walk, so a node test loads
+// The SSE node test's ray constants: org, negInvDir and slack broadcast to 4 lanes once per walk, so a node test loads
 // them instead of splatting them, and the plane offsets. (The AVX2 test broadcasts from BvhRay as it loads: holding
 // 8-lane copies in the walk was measured 68 instructions more per bunny ray, spilled around the leaf tests.)
 struct BvhRaySse {
-  __m128 org[3], invDir[3], slack[3];
+  __m128 org[3], negInvDir[3], slack[3];
   std::uint32_t nearOffset[3], farOffset[3];
 };
 
@@ -129,7 +131,7 @@ template <int W> inline BvhRaySse broadcastSse(const BvhRay<W>& ray) {
   BvhRaySse r;
   for (int i = 0; i < 3; ++i) {
     r.org[i] = _mm_set1_ps(ray.org[i]);
-    r.invDir[i] = _mm_set1_ps(ray.invDir[i]);
+    r.negInvDir[i] = _mm_set1_ps(ray.negInvDir[i]);
     r.slack[i] = _mm_set1_ps(ray.slack[i]);
     r.nearOffset[i] = ray.nearOffset[i];
     r.farOffset[i] = ray.farOffset[i];
@@ -149,7 +151,7 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
   // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
   const float* base = node.minX + lane0;
   auto slab = [&](std::uint32_t offset, int axis) {
-    return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(planeAt(base, offset)), ray.org[axis]), ray.invDir[axis]);
+    return _mm_mul_ps(_mm_sub_ps(ray.org[axis], _mm_load_ps(planeAt(base, offset))), ray.negInvDir[axis]);
   };
   __m128 nearX = slab(ray.nearOffset[0], 0), nearY = slab(ray.nearOffset[1], 1), nearZ = slab(ray.nearOffset[2], 2);
   __m128 farX = slab(ray.farOffset[0], 0), farY = slab(ray.farOffset[1], 1), farZ = slab(ray.farOffset[2], 2);
@@ -177,8 +179,8 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
 // masks and entry distances bit for bit (no FMA: a fused multiply-add would round differently).
 // (A helper function, not a lambda: a lambda does not inherit the target attribute.)
 __attribute__((target("avx2"))) inline __m256 slab8(const float* plane, const BvhRay<8>& ray, int axis) {
-  return _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(plane), _mm256_broadcast_ss(&ray.org[axis])),
-                       _mm256_broadcast_ss(&ray.invDir[axis]));
+  return _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&ray.org[axis]), _mm256_load_ps(plane)),
+                       _mm256_broadcast_ss(&ray.negInvDir[axis]));
 }
 
 template <bool kSlack>
@@ -232,6 +234,7 @@ struct BvhWalkEntry {
 template <int W> struct BvhLanesScalar {
   static constexpr int kWidth = W;
   static constexpr bool kSortsHits = false;  // the walk insertion-sorts 3 or more hit children
+  static constexpr bool kAvx2 = false;       // the walk's leaf code may use AVX2 (Bvh8LanesAvx2)
   using Ray = BvhRay<W>;
   static const Ray& prepare(const BvhRay<W>& ray) { return ray; }
   template <bool kSlack> static int test(const BvhNode<W>& node, const Ray& ray, float tMax, float* tNear) {
@@ -241,8 +244,8 @@ template <int W> struct BvhLanesScalar {
     for (int i = 0; i < W; ++i) {
       float tn = 0.0f, tf = tMax;
       for (int a = 0; a < 3; ++a) {
-        const float t0 = (lo[a][i] - ray.org[a]) * ray.invDir[a];
-        const float t1 = (hi[a][i] - ray.org[a]) * ray.invDir[a];
+        const float t0 = (ray.org[a] - lo[a][i]) * ray.negInvDir[a];
+        const float t1 = (ray.org[a] - hi[a][i]) * ray.negInvDir[a];
         tn = std::max(tn, std::min(t0, t1) - ray.slack[a]);
         tf = std::min(tf, std::max(t0, t1) + ray.slack[a]);
       }
@@ -260,6 +263,7 @@ template <int W> struct BvhLanesScalar {
 struct Bvh8LanesSse {
   static constexpr int kWidth = 8;
   static constexpr bool kSortsHits = false;
+  static constexpr bool kAvx2 = false;
   using Ray = BvhRaySse;
   static Ray prepare(const BvhRay<8>& ray) { return broadcastSse(ray); }
   template <bool kSlack> static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
@@ -277,6 +281,7 @@ template <int kMaxLanes> __attribute__((target("avx2"))) inline __m256i sortLaye
 struct Bvh8LanesAvx2 {
   static constexpr int kWidth = 8;
   static constexpr bool kSortsHits = true;  // sortHits below
+  static constexpr bool kAvx2 = true;
   using Ray = BvhRay<8>;
   static const Ray& prepare(const BvhRay<8>& ray) { return ray; }
   template <bool kSlack>
@@ -351,8 +356,10 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
     Entry e = stack[--top];
     if (kOrdered && e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
     // Descend through inner nodes, pushing the other children and continuing with one (the nearest when ordered).
+    // (Entries are never kEmpty: the root is checked above and empty lanes are never in a mask, so the leaf bit alone
+    // tells a leaf.)
     bool missed = false;
-    while (!Node::isLeaf(e.ref)) {
+    while (!(e.ref & Node::kLeafBit)) {
       const Node& node = bvh.nodes[e.ref];
       alignas(32) float tn[W];
       int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);  // empty lanes never set

@@ -70,11 +70,24 @@ template <class T> class MeshRaycaster {
   // The leaf's triangles (cooked first + i) that the exact test may accept within maxT, as a bit mask over i, tested
   // 4 wide; the lanes it decides come with their hit in `hits` (hits.decided), bit-identical to the scalar test's, so
   // only the other candidates need testTriangle.
-  int candidates(std::uint32_t leafRef, T maxT, TriangleHits4<T>& hits) const {
+  // kAvx2: called from the AVX2 walk, which loads 4 triangles with 256-bit loads.
+  template <bool kAvx2> int candidates(std::uint32_t leafRef, T maxT, TriangleHits4<T>& hits) const {
     const std::uint32_t first = MeshBvhNode::leafFirst(leafRef), count = MeshBvhNode::leafCount(leafRef);
     TriangleVertices4<T> tris;
-    const std::size_t triangles = mesh_.triangles.size();  // triangleVertices holds 3 per cooked triangle
-    loadTriangles4(&mesh_.triangleVertices[3 * std::size_t(first)], count, std::size_t(first) + 4 <= triangles, tris);
+    const Vec3<T>* tv = mesh_.triangleVertices.data() + 3 * std::size_t(first);
+    // 4 triangles (12 vertices) stored from tv on: compared with the end pointer (no division by the element size;
+    // the vector is not empty, this leaf's triangles are in it).
+    const bool fourReadable = tv + 12 <= &mesh_.triangleVertices.back() + 1;
+#ifdef GQ_SSE42
+    if constexpr (kAvx2) {
+      if (fourReadable) loadFourTriangles4Avx2(tv, tris);
+      else loadTriangles4(tv, count, false, tris);
+    } else {
+      loadTriangles4(tv, count, fourReadable, tris);
+    }
+#else
+    loadTriangles4(tv, count, fourReadable, tris);
+#endif
     return exactTriangleHits(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
   }
 
@@ -100,7 +113,7 @@ template <class T> class MeshRaycaster {
       const std::uint32_t first = MeshBvhNode::leafFirst(ref);
       bool lowered = false;
       TriangleHits4<T> laneHits;
-      for (int mask = candidates(ref, bestT, laneHits); mask; mask &= mask - 1) {
+      for (int mask = candidates<Lanes::kAvx2>(ref, bestT, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
@@ -128,7 +141,7 @@ template <class T> class MeshRaycaster {
     walkRayLeaves<false, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = MeshBvhNode::leafFirst(ref);
       TriangleHits4<T> laneHits;
-      for (int mask = candidates(ref, maxDist, laneHits); mask; mask &= mask - 1) {
+      for (int mask = candidates<Lanes::kAvx2>(ref, maxDist, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
@@ -150,7 +163,7 @@ template <class T> class MeshRaycaster {
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = MeshBvhNode::leafFirst(ref);
       TriangleHits4<T> laneHits;
-      for (int mask = candidates(ref, limit, laneHits); mask; mask &= mask - 1) {
+      for (int mask = candidates<Lanes::kAvx2>(ref, limit, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
