@@ -231,11 +231,11 @@ TYPED_TEST(BatchRayOrder, OneBucketOfManyChunksEqualsSingleRaycasts) {
 
 TEST(RayOrder, SortByKeyOfFewerBitsUsesFewerPassesAndStaysStable) {
   std::mt19937_64 gen(4405);
-  for (const int bits : {1, 11, 20, 22, 32}) {
+  for (const int bits : {0, 1, 11, 20, 22, 32}) {  // 0: every key 0, the input order
     const std::size_t n = 5000;
     std::vector<std::uint64_t> items(n), scratch(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint64_t key = (gen() % 97 == 0 ? 3u : gen()) & ((std::uint64_t(1) << bits) - 1);
+      const std::uint64_t key = (gen() % 97 == 0 ? 3u : gen()) & ((std::uint64_t(1) << bits) - 1);  // bits <= 32
       items[i] = key << 32 | std::uint64_t(i);
     }
     std::vector<std::uint64_t> expected = items;

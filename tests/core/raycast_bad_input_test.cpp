@@ -16,6 +16,7 @@
 #include "gq/custom.h"
 #include "gq/io.h"
 #include "gq/query.h"
+#include "gq/shape.h"
 
 namespace {
 
@@ -116,20 +117,27 @@ template <class T> std::vector<gq::RaycastHit<T>> sentinelHits() {
   return hits;
 }
 
-template <class T> gq::Status run(const RayCall<T>& call, const gq::Geometry<T>& geom, std::vector<gq::RaycastHit<T>>& hits,
-                                  std::uint32_t& count) {
-  return gq::raycast<T>(call.origin, call.dir, geom, call.pose, call.maxDist, call.flags, call.maxHits,
+// Target: a gq::Geometry<T> or a prepared gq::Shape<T> (whose mesh raycast calls the mesh kernel directly).
+template <class T, class Target>
+gq::Status run(const RayCall<T>& call, const Target& target, std::vector<gq::RaycastHit<T>>& hits,
+               std::uint32_t& count) {
+  return gq::raycast<T>(call.origin, call.dir, target, call.pose, call.maxDist, call.flags, call.maxHits,
                         call.nullBuffer ? nullptr : hits.data(), count);
 }
 
+template <class T> std::string nameOf(const gq::Geometry<T>& geom) { return gq::toString(geom.type()); }
+template <class T> std::string nameOf(const gq::Shape<T>& shape) {
+  return std::string("prepared ") + gq::toString(shape.geometry().type());
+}
+
 // The call is rejected with a message and leaves the hit buffer and the count bit-identical.
-template <class T> void expectRejected(const RayCall<T>& call, const gq::Geometry<T>& geom, const std::string& what) {
+template <class T, class Target> void expectRejected(const RayCall<T>& call, const Target& target, const std::string& what) {
   std::vector<gq::RaycastHit<T>> hits = sentinelHits<T>();
   std::vector<unsigned char> before(hits.size() * sizeof(gq::RaycastHit<T>));
   std::memcpy(before.data(), static_cast<const void*>(hits.data()), before.size());
   std::uint32_t count = kCountSentinel;
-  const gq::Status s = run(call, geom, hits, count);
-  const std::string where = what + " on " + gq::toString(geom.type());
+  const gq::Status s = run(call, target, hits, count);
+  const std::string where = what + " on " + nameOf(target);
   EXPECT_FALSE(s.ok()) << where;
   EXPECT_STRNE(s.message(), "") << where;
   EXPECT_EQ(count, kCountSentinel) << where;
@@ -137,18 +145,26 @@ template <class T> void expectRejected(const RayCall<T>& call, const gq::Geometr
       << where << ": the hit buffer was written";
 }
 
-// Applies `corrupt` to a valid call and expects rejection for every geometry type; the uncorrupted call is accepted,
-// so the rejection is due to the corrupted argument.
+// Applies `corrupt` to a valid call and expects rejection for every geometry type, as a geometry and as a prepared
+// shape; the uncorrupted call is accepted, so the rejection is due to the corrupted argument.
+template <class T, class Target, class Corrupt>
+void expectRejectedFor(const Target& target, const std::string& what, Corrupt& corrupt) {
+  RayCall<T> good;
+  std::vector<gq::RaycastHit<T>> hits = sentinelHits<T>();
+  std::uint32_t count = kCountSentinel;
+  const gq::Status s = run(good, target, hits, count);
+  EXPECT_TRUE(s.ok()) << "baseline on " << nameOf(target) << ": " << s.toString();
+  RayCall<T> bad = good;
+  corrupt(bad);
+  expectRejected(bad, target, what);
+}
+
 template <class T, class Corrupt> void expectRejectedForEveryType(const std::string& what, Corrupt&& corrupt) {
   for (const gq::Geometry<T>& geom : validGeometries<T>()) {
-    RayCall<T> good;
-    std::vector<gq::RaycastHit<T>> hits = sentinelHits<T>();
-    std::uint32_t count = kCountSentinel;
-    const gq::Status s = run(good, geom, hits, count);
-    EXPECT_TRUE(s.ok()) << "baseline on " << gq::toString(geom.type()) << ": " << s.toString();
-    RayCall<T> bad = good;
-    corrupt(bad);
-    expectRejected(bad, geom, what);
+    expectRejectedFor<T>(geom, what, corrupt);
+    gq::Shape<T> shape;
+    ASSERT_TRUE(gq::Shape<T>::make(geom, shape).ok()) << nameOf(geom);
+    expectRejectedFor<T>(shape, what, corrupt);
   }
 }
 

@@ -114,12 +114,12 @@ Geometry<Real> contactGeometry(const Geometry<Real>& g) {
   return g;
 }
 
-Status overlappingTriangles(const PlacedShape& surface, const Geometry<Real>& box, const Pose& boxPose,
+Status overlappingTriangles(const PlacedShape& surface, const Geometry<Real>& query, const Pose& queryPose,
                             const TriangleOverlapPage& page, TriangleOverlapPageResult& received) {
   const Geometry<Real>& g = surface.view->geom;
   if (const auto* mesh = g.getIf<TriangleMeshGeometry<Real>>())
-    return findOverlapTriangleMesh(box, boxPose, *mesh, surface.pose, page, received);
-  return findOverlapHeightField(box, boxPose, g.get<HeightFieldGeometry<Real>>(), surface.pose, page, received);
+    return findOverlapTriangleMesh(query, queryPose, *mesh, surface.pose, page, received);
+  return findOverlapHeightField(query, queryPose, g.get<HeightFieldGeometry<Real>>(), surface.pose, page, received);
 }
 
 // The midphase's query shape: the triangles within `reach` of the convex shape lie within its sphere or capsule

@@ -68,7 +68,8 @@ struct BatchSettings {
   // bounds and by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not
   // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays
   // that are already coherent). Memory: each worker holds scratch of about 72 bytes (double; 48 in float) a ray of
-  // its largest block, so at most ~72 bytes a ray of the batch and ~76 MB (double) a worker, freed on return.
+  // its largest block, each of its arrays in whole 2 MB pages (about 4 MB a worker at the smallest sorted block), so
+  // at most ~76 MB (double) a worker, freed on return.
   bool coherentRayOrder = true;
 };
 

@@ -24,6 +24,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <type_traits>
 #include <vector>
 
 namespace gq {
@@ -225,11 +226,13 @@ template <class T, class Out> struct MeshRayItems {
   }
 };
 
-// An uninitialized array of plain-data E (no constructor runs; every entry is written before it is read) for a
-// batch's scratch. On Linux its memory is asked to be in huge pages (2 MB): first touched, the scratch of a million
-// rays then costs a few dozen page faults instead of ~18,000 (measured 26 ms a million rays), and its scattered
-// reads few TLB misses.
+// A batch's scratch: an array of default-initialized E (for plain data and Eigen vectors no code runs; every entry is
+// written before it is read). On Linux its memory is asked to be in huge pages (2 MB): first touched, the scratch of
+// a million rays then costs a few dozen page faults instead of ~18,000, and its scattered reads few TLB misses. Each
+// array takes whole 2 MB pages.
 template <class E> class ScratchArray {
+  static_assert(std::is_trivially_destructible_v<E>, "freed without destructors");
+
  public:
   ScratchArray() = default;
   ScratchArray(const ScratchArray&) = delete;
@@ -249,8 +252,9 @@ template <class E> class ScratchArray {
 #if defined(__linux__)
     (void)madvise(p, bytes, MADV_HUGEPAGE);  // advice only: without huge pages the array works the same
 #endif
-    data = static_cast<E*>(p);
     size = bytes / sizeof(E);
+    data = static_cast<E*>(p);
+    std::uninitialized_default_construct_n(data, size);  // begins the entries' lifetimes
     return true;
   }
   E* data = nullptr;
@@ -271,6 +275,7 @@ template <class T> struct KeyOrderScratch {
   ScratchArray<std::uint64_t> items;  // key << 32 | ray within the block; then a bucket's fine keys and scratch
   ScratchArray<Ray> rays;
   std::vector<std::uint32_t> starts;       // where each coarse bucket begins in rays
+  std::vector<std::uint32_t> next;         // where the next ray of each bucket is copied
   std::vector<RaycastHit<T>> hits;         // a chunk's hits in key order
   std::vector<std::uint8_t> counts;        // their hit counts, or kByIndex
 
@@ -278,6 +283,7 @@ template <class T> struct KeyOrderScratch {
     try {
       if (!items.reserve(2 * m) || !rays.reserve(m)) return false;
       starts.resize(buckets + 1);
+      next.resize(buckets);
       hits.resize(kChunk);
       counts.resize(kChunk);
       return true;
@@ -293,7 +299,7 @@ template <class T> struct KeyOrderScratch {
 // remaining bits and cast from its copies in chunks: a chunk's rays are cast into the chunk's hit array, then each
 // hit is written at its input index. The whole block is so cast in key order while the scattered reads stay within
 // a bucket's copies, and the scattered writes run in a tight loop of their own (prefetched, they overlap one
-// another; inside the cast loop each waited behind a cast). A ray failing the quick checks takes the per-index path
+// another instead of each waiting behind a cast). A ray failing the quick checks takes the per-index path
 // (the single query's Status). Without memory for the scratch the block keeps input order.
 template <class T, class Out>
 std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
@@ -326,7 +332,8 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   // The rays copied into their buckets.
   for (std::size_t b = 1; b <= buckets; ++b) starts[b] += starts[b - 1];
   {
-    std::vector<std::uint32_t> next(starts, starts + buckets);  // 4 bytes a bucket
+    std::uint32_t* next = scratch.next.data();
+    std::copy(starts, starts + buckets, next);
     for (std::size_t j = 0; j < m; ++j) {
       const std::uint32_t k = std::uint32_t(scratch.items.data[j] >> 32);
       const std::size_t i = begin + std::size_t(scratch.items.data[j] & 0xffffffffu);
@@ -392,7 +399,7 @@ std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, con
                              Status* statuses, const BatchSettings& settings) {
   const MeshRayItems<T, Out> items(rays, shape, pose, out, statuses);
   const std::size_t n = rays.origins.count;
-  detail::RayOrderSettings order;
+  const detail::RayOrderSettings order;
   const std::size_t slots = batchSlots(settings);
   Bounds3<T> box;
   if (!settings.coherentRayOrder || n / slots < order.minRays || !computeGeomBounds(box, shape, pose).ok()) {

@@ -15,8 +15,8 @@ struct RayOrderSettings {
   // nodes, and the key, sort and copies (~300 instructions a ray) would be lost.
   std::size_t minRays = 32768;
   // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 72 bytes a ray in double,
-  // 48 in float). The whole block is cast in key order: the casts of 1M bunny rays took 1.3x less CPU in one block
-  // than in blocks of 128k, as neighbours in key order are nearer.
+  // 48 in float; each array at least one 2 MB page). The whole block is cast in key order: the larger the block, the
+  // nearer neighbours in key order are (docs/performance.md: one 1M block against 128k blocks).
   std::size_t blockRays = std::size_t(1) << 20;
   // A block's rays are first copied into buckets of this many top bits of the key (a histogram and 1,024 write
   // streams stay in L1 and L2), then each bucket is sorted by the other bits and cast from its copies.

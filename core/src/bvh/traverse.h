@@ -69,21 +69,33 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // Components this small would give infinite inverses (and 0 * inf = NaN); clamping keeps slabs correct.
   constexpr float kTinyDir = 1e-20f;
   BvhRay<W> r;
+  int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
 #ifdef GQ_SSE42
   // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
   // and the same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the
-  // clamped direction are the loop's `negInvDir > 0` (-1 / x flips the sign and never gives 0 or NaN here).
+  // clamped direction are the loop's `negInvDir > 0` (-1 / x flips the sign; it is 0 only for an infinite x, a
+  // direction overflowing float, whose slab values are 0 or NaN with either plane order).
   const __m128 signBit = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(kTinyDir);
   const __m128 d = floatLanes(dir);
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   const __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
-  const int negative = _mm_movemask_ps(clamped) & 7;
+  negative = _mm_movemask_ps(clamped) & 7;
   alignas(16) float lanes[2][4];
   _mm_store_ps(lanes[0], floatLanes(org));
   _mm_store_ps(lanes[1], negInv);
   std::memcpy(r.org, lanes[0], sizeof(r.org));
   std::memcpy(r.negInvDir, lanes[1], sizeof(r.negInvDir));
+#else
+  negative = 0;
+  for (int i = 0; i < 3; ++i) {
+    r.org[i] = static_cast<float>(org[i]);
+    float d = static_cast<float>(dir[i]);
+    if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
+    r.negInvDir[i] = -1.0f / d;
+    negative |= int(r.negInvDir[i] > 0.0f) << i;
+  }
+#endif
   for (int i = 0; i < 3; ++i) {
     if constexpr (std::is_same_v<T, float>) {
       r.slack[i] = 0.0f;  // the origin is exactly the float one
@@ -95,27 +107,6 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
   std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));
   return r;
-#else
-  int negative = 0;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
-  for (int i = 0; i < 3; ++i) {
-    r.org[i] = static_cast<float>(org[i]);
-    float d = static_cast<float>(dir[i]);
-    if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
-    r.negInvDir[i] = -1.0f / d;
-    negative |= int(r.negInvDir[i] > 0.0f) << i;
-  }
-  for (int i = 0; i < 3; ++i) {
-    if constexpr (std::is_same_v<T, float>) {
-      r.slack[i] = 0.0f;  // the origin is exactly the float one
-    } else {
-      const double originError = std::abs(double(org[i]) - double(r.org[i]));
-      r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
-    }
-    r.nearOffset[i] = kBvhPlaneOffsets<W>.bytes[negative][i];
-    r.farOffset[i] = kBvhPlaneOffsets<W>.bytes[negative][3 + i];
-  }
-  return r;
-#endif
 }
 
 #ifdef GQ_SSE42

@@ -14,7 +14,10 @@
 //    Otherwise, or when no point lies under the face, the closest point alone, along N. These face points are
 //    found before step 1: when one of them proves the test (a surface point over the triangle at height h >= 0
 //    bounds s by h; one below the plane whose segment to the shape's centre crosses the plane inside the triangle
-//    shows that the shape meets the triangle, s <= 0), step 1 is skipped, its answer being replaced anyway. A core
+//    shows that the shape meets the triangle, s <= 0), step 1 is skipped, its answer being replaced anyway. Step 1
+//    is also skipped, for every shape kind, when the shape's lowest point along n lies over the triangle at s_f >= 0:
+//    that point is then the closest one (s = s_f, along n). When step 1 certifies s > contactDistance, no point is
+//    reported, face points within the merge slack of an edge included. A core
 //    point's separation is linear along a core edge, so edges whose two ends are beyond contactDistance are
 //    skipped; a triangle vertex casts its ray only when the shape's shadow along n reaches both edge lines through
 //    it and the vertex lies within the shape's bounding radius of the line through its origin along n.

@@ -115,7 +115,7 @@ template <class T>
 
 }  // namespace detail
 
-// A mesh shape goes to the mesh kernel directly, which checks the inputs itself (a tail call: same arguments).
+// A mesh shape goes to the mesh kernel directly, which checks the inputs itself.
 template <class T>
 Status raycast(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape, const Transform<T>& pose,
                T maxDist, HitFlags hitFlags, std::uint32_t maxHits, RaycastHit<T>* hits,

@@ -75,9 +75,9 @@ template <class T> class MeshRaycaster {
     const std::uint32_t first = MeshBvhNode::leafFirst(leafRef), count = MeshBvhNode::leafCount(leafRef);
     TriangleVertices4<T> tris;
     const Vec3<T>* tv = mesh_.triangleVertices.data() + 3 * std::size_t(first);
-    // 4 triangles (12 vertices) stored from tv on: compared with the end pointer (no division by the element size;
-    // the vector is not empty, this leaf's triangles are in it).
-    const bool fourReadable = tv + 12 <= &mesh_.triangleVertices.back() + 1;
+    // 4 triangles (12 vertices) stored from tv on: the vertices left from tv by a pointer difference (no division by
+    // the element size, no pointer formed past the end).
+    const bool fourReadable = (mesh_.triangleVertices.data() + mesh_.triangleVertices.size()) - tv >= 12;
 #ifdef GQ_SSE42
     if constexpr (kAvx2) {
       if (fourReadable) loadFourTriangles4Avx2(tv, tris);
@@ -311,8 +311,9 @@ template <class T>
   }
 #endif
   if (!scaled_ && !rotated_) {
-    // The same operations written out for the other precisions (Eigen's expression code kept the vectors on the
-    // stack): a = v1 - v0, b = v2 - v0, a x b lane by lane, then Eigen's squared norm (its order of the sum).
+    // The same operations written out in scalars (so the vectors stay in registers): a = v1 - v0, b = v2 - v0,
+    // a x b lane by lane, then Eigen's squared norm (its order of the sum). For float with SSE this is reached only
+    // when the SSE path's range test failed, which this one then fails too.
     const T ax = v[1].x() - v[0].x(), ay = v[1].y() - v[0].y(), az = v[1].z() - v[0].z();
     const T bx = v[2].x() - v[0].x(), by = v[2].y() - v[0].y(), bz = v[2].z() - v[0].z();
     const T nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
