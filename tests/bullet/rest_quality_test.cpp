@@ -1,6 +1,7 @@
 // How well stepped scenes come to rest with gq's contacts: the 10-box stack against stock Bullet stepping the same
-// world, Bullet's BasicDemo box grid and a 200-body mixed pile on a triangle-mesh ground, and a box resting on a box
-// face gets 4 contacts at its corners (the clipping itself: tests/core/contact_set_clipping_test.cpp).
+// world, Bullet's BasicDemo box grid, 30-vertex hulls and a 200-body mixed pile on a triangle-mesh ground (how deep
+// they rest), and a box resting on a box face gets 4 contacts at its corners (the clipping itself:
+// tests/core/contact_set_clipping_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -76,6 +77,36 @@ TEST(BulletRestQuality, StackRestsAsStockAndNoFaster) {
   EXPECT_LE(speed[1], speed[0] + btScalar(1e-3));
 }
 
+// Hulls dropped on a triangle-mesh ground at rest: each one's lowest point (the exact support point of its hull
+// along -y at its pose, margin included; the ground's top is y = 0) lies within 1 mm of the ground. A resting contact
+// sinks by the solver's resting penetration only (0.3 mm for the stack's lowest box, the same solver and step); a
+// supporting vertex missing from the manifold lets the hull sink by several mm.
+TEST(BulletRestQuality, HullsRestingOnAMeshSinkNoMoreThanTheRestingPenetration) {
+  ShapeStore store;
+  TestWorld w(Backend::Gq);
+  w.add(flatMesh(store, 25, 12, 0), 0, btVector3(0, 0, 0));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(-3.14159, 3.14159), offset(0, 1);
+  PileScene s;
+  for (int i = 0; i < 25; ++i) {
+    auto* hull = randomHull(store, 30, btVector3(btScalar(0.3), btScalar(0.2), btScalar(0.25)), unsigned(100 + i));
+    // Over a different place of the ground's 1 m quads each (vertices near the triangles' shared edges).
+    const btVector3 at(btScalar(-8 + 4 * (i % 5) + offset(rng)), btScalar(0.5),
+                       btScalar(-8 + 4 * (i / 5) + offset(rng)));
+    const btQuaternion q(btVector3(btScalar(angle(rng)), 1, btScalar(angle(rng))).normalized(), btScalar(angle(rng)));
+    btRigidBody* b = w.add(hull, 1, at, q);
+    b->setRollingFriction(btScalar(0.02));
+    s.bodies.push_back(b);
+  }
+  w.step(300);
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    PileScene one;
+    one.bodies = {s.bodies[i]};
+    EXPECT_LT(deepestBelowGround(one), btScalar(1e-3)) << "hull " << i;
+  }
+  EXPECT_LT(maxSpeed(s), btScalar(0.01));
+}
+
 // A pile after 5 s: nothing fell through the ground (the lowest point of every body within 2 cm of the ground's
 // top: the smallest body is 20 cm across) and at least 95 % of the bodies rest (slower than 0.1 m/s).
 void checkPile(PileScene (*build)(TestWorld&, ShapeStore&)) {
@@ -106,6 +137,18 @@ TEST(BulletRestQuality, MixedPileIsAtRestAfterFiveSecondsNoFasterThanStock) {
   }
   EXPECT_LE(speed[1], speed[0] + btScalar(1e-3)) << "stock " << speed[0];
   EXPECT_LT(speed[1], btScalar(0.01));
+}
+
+// The mixed pile at rest after 5 s: its lowest point lies within 1 mm of the ground's top (exact: every body's
+// support point along -y at y = 0). Each resting contact sinks by the solver's resting penetration only (0.3 mm for
+// the stack's lowest box, the same solver and step); a body's deepest point missing from its manifold lets it sink
+// by several mm.
+TEST(BulletRestQuality, MixedPileSinksNoMoreThanTheRestingPenetration) {
+  ShapeStore store;
+  TestWorld w(Backend::Gq);
+  const PileScene s = mixedPile(w, store);
+  w.step(300);
+  EXPECT_LT(deepestBelowGround(s), btScalar(1e-3));
 }
 
 }  // namespace

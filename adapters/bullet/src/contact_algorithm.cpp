@@ -303,7 +303,8 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
   const PlacedShape a{&va, worldPose(trA, va)};
   const PlacedShape b{&vb, worldPose(trB, vb)};
   ManifoldSink sink(*result);
-  pairContacts(a, b, threshold, sink, state_ ? &state_->memory : nullptr);
+  // The manifold merges points closer than its breaking threshold (btPersistentManifold::getCacheEntry).
+  pairContacts(a, b, threshold, manifold_->getContactBreakingThreshold(), sink, state_ ? &state_->memory : nullptr);
   if (ownManifold_) result->refreshContactPoints();
   if (reusable) rememberContacts(reuseSize(va, vb), relative, threshold, poseB);
 }

@@ -34,7 +34,9 @@ class SwappedSink final : public ContactSink {
 
 // Contacts closer than `threshold` (depth <= threshold), for:
 //  - a convex shape A against a convex shape or plane B (signed distance, then face clipping for flat contacts);
-//  - a convex shape A against a triangle mesh or heightfield B (per-triangle contacts).
+//  - a convex shape A against a triangle mesh or heightfield B (per-triangle contacts, deepest first; of contacts
+//    closer than `mergeRadius` on A only the deepest, as the manifold would merge them; when one touches, only the
+//    touching ones, which a manifold's 4 places are for).
 // What a pair learned in earlier frames: GJK's warm start, whether the pair was in contact range, and the last axis
 // that separated it beyond the threshold (in A's frame; zero when none), re-checked first each frame.
 struct PairMemory {
@@ -46,10 +48,10 @@ struct PairMemory {
 // `memory` (optional) carries what the pair learned from one frame to the next.
 void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
                     PairMemory* memory = nullptr);
-void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink);
+void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Real mergeRadius, ContactSink& sink);
 
 // Any supported pair in either order (the surface or plane may be A or B); false if the pair has no gq path.
-bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Real mergeRadius, ContactSink& sink,
                   PairMemory* memory = nullptr);
 
 }  // namespace gq::bullet

@@ -1,6 +1,7 @@
 // Convex shape against a triangle mesh or heightfield: the triangles under the shape's bounds (gq's midphase),
 // then contacts per triangle (gq's generateTriangleContacts, which clips a cylinder's cap or side to the triangle).
 // Triangles are two-sided, as Bullet's convex-triangle contacts are.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -37,9 +38,32 @@ class InternalEdgeFilter {
     }
     held_[count_++] = {normalOnB, pointOnB, depth, ids, onFace};
   }
-  void flush() {
+  // Hands the kept contacts to the sink in the form Bullet's manifold (4 points) keeps the deepest of:
+  //  - deepest first: when full, the manifold never replaces its deepest cached point (sortCachedPoints);
+  //  - of contacts closer than `mergeRadius` on the convex shape only the deepest: the manifold replaces its nearest
+  //    cached point within that radius by each incoming one (getCacheEntry), so a later, shallower contact would
+  //    overwrite a deeper one of the same call;
+  //  - when some contact touches (depth <= 0), none still apart: a full manifold keeps its deepest point and
+  //    otherwise the widest spread whatever the depth, so points up to the breaking threshold above the surface
+  //    would take the places of the ones carrying the shape. Points cached while nothing touched stay cached.
+  void flush(Real mergeRadius) {
+    std::array<int, kCapacity> order;
+    int kept = 0;
     for (int i = 0; i < count_; ++i)
-      if (keep(held_[i])) sink_.add(held_[i].normal, held_[i].point, held_[i].depth, held_[i].ids, true);
+      if (keep(held_[i])) order[kept++] = i;
+    std::sort(order.begin(), order.begin() + kept, [this](int i, int j) {
+      return held_[i].depth < held_[j].depth || (held_[i].depth == held_[j].depth && i < j);
+    });
+    const bool touching = kept > 0 && held_[order[0]].depth <= 0;
+    const Real radius2 = mergeRadius * mergeRadius;
+    int handed = 0;  // order[0, handed): the contacts handed over
+    for (int k = 0; k < kept; ++k) {
+      const Held& c = held_[order[k]];
+      if (touching && c.depth > 0) break;  // the rest are apart too
+      if (mergesIntoDeeper(c, order.data(), handed, radius2)) continue;
+      sink_.add(c.normal, c.point, c.depth, c.ids, true);
+      order[handed++] = order[k];
+    }
     count_ = 0;
   }
 
@@ -50,6 +74,15 @@ class InternalEdgeFilter {
     TriangleIds ids;
     bool onFace;
   };
+  // The contact's point on the convex shape (Bullet's manifold compares points there).
+  static V3 pointOnConvex(const Held& c) { return c.point + c.normal * c.depth; }
+  // Whether one of the first `count` contacts of `order` lies within sqrt(radius2) of c on the convex shape.
+  bool mergesIntoDeeper(const Held& c, const int* order, int count, Real radius2) const {
+    const V3 p = pointOnConvex(c);
+    for (int k = 0; k < count; ++k)
+      if ((pointOnConvex(held_[order[k]]) - p).squaredNorm() < radius2) return true;
+    return false;
+  }
   bool keep(const Held& c) const {
     if (c.onFace) return true;
     bool anyFace = false;
@@ -147,7 +180,7 @@ bool queryShape(const PlacedShape& a, Real reach, QueryShape& out) {
 
 }  // namespace
 
-void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink) {
+void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Real mergeRadius, ContactSink& sink) {
   const Real reach = std::max(threshold, Real(0)) + a.view->margin + b.view->margin;
   QueryShape query;
   if (!queryShape(a, reach, query)) return;
@@ -164,7 +197,7 @@ void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold,
     more = received.overflow;
     if (received.count == 0) break;
   }
-  filter.flush();
+  filter.flush(mergeRadius);
 }
 
 }  // namespace gq::bullet
