@@ -234,6 +234,32 @@ TEST(BulletContacts, SphereOnBvhAndScaledMeshNamesTheTriangle) {
   EXPECT_NEAR(deepestScaled, -0.03, kTol);
 }
 
+// A box tilted on a mesh: a manifold gets its touching corners only (points still apart would take its places), a
+// contactTest that widened its closest-distance threshold gets the corners apart too, at their exact distances.
+TEST(BulletContacts, WidenedContactTestThresholdKeepsMeshPointsStillApart) {
+  QueryWorld w;
+  ShapeStore store;
+  btBvhTriangleMeshShape* flat = flatMesh(store, 5, 2, 1);  // y = 1
+  btBoxShape box(btVector3(0.5, 0.5, 0.5));
+  const double tilt = 0.01;  // about z: the bottom edge at -x 2 mm into the surface, the one at +x sin(tilt) higher
+  const double centreY = 1 - 0.002 + 0.5 * std::cos(tilt) + 0.5 * std::sin(tilt);
+  auto* mesh = w.add(flat, btVector3(0, 0, 0));
+  auto* b = w.add(&box, btVector3(0.3, btScalar(centreY), 0.2), btQuaternion(btVector3(0, 0, 1), btScalar(tilt)));
+  const auto touching = w.contacts(b, mesh);
+  ASSERT_GE(touching.size(), 2u);
+  btScalar deepest = 1;
+  for (const Point& p : touching) {
+    EXPECT_LE(p.distance, kTol);  // the bottom face's part under the surface (corners, mesh vertices under it)
+    deepest = std::min(deepest, p.distance);
+  }
+  EXPECT_NEAR(deepest, -0.002, kTol);
+  const auto all = w.contacts(b, mesh, btScalar(0.05));
+  btScalar highest = -1;
+  for (const Point& p : all) highest = std::max(highest, p.distance);
+  EXPECT_GT(all.size(), touching.size());
+  EXPECT_NEAR(highest, std::sin(tilt) - 0.002, kTol);
+}
+
 // Bullet centres a heightfield on its AABB midpoint: local height = h - (minH + maxH) / 2. Heights 0.25 * x on a
 // 5 x 5 grid with range [0, 1] make the plane up = 0.25 * (first horizontal axis) in the shape frame, for every
 // up axis; a sphere 0.31 from it must touch at distance 0.01 along the plane normal.

@@ -68,7 +68,9 @@ TEST(BulletRestQuality, StackRestsAsStockAndNoFaster) {
       spacing[int(backend)].push_back(y - below);
       below = y;
     }
-    if (backend == Backend::Gq) EXPECT_LT(deepestBelowGround(s), btScalar(1e-3));
+    if (backend == Backend::Gq) {
+      EXPECT_LT(deepestBelowGround(s), btScalar(1e-3));
+    }
   }
   for (int i = 0; i < 10; ++i) {
     EXPECT_NEAR(spacing[1][i], spacing[0][i], 1e-4) << "box " << i;

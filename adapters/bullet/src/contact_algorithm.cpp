@@ -303,8 +303,10 @@ void ContactAlgorithm::collide(bool answerable, const ShapeView& va, const Shape
   const PlacedShape a{&va, worldPose(trA, va)};
   const PlacedShape b{&vb, worldPose(trB, vb)};
   ManifoldSink sink(*result);
-  // The manifold merges points closer than its breaking threshold (btPersistentManifold::getCacheEntry).
-  pairContacts(a, b, threshold, manifold_->getContactBreakingThreshold(), sink, state_ ? &state_->memory : nullptr);
+  // The manifold merges points closer than its breaking threshold (btPersistentManifold::getCacheEntry); a widened
+  // distance threshold (contactTest) asks for the points still apart too.
+  const HandOver handOver{manifold_->getContactBreakingThreshold(), result->m_closestPointDistanceThreshold == Real(0)};
+  pairContacts(a, b, threshold, handOver, sink, state_ ? &state_->memory : nullptr);
   if (ownManifold_) result->refreshContactPoints();
   if (reusable) rememberContacts(reuseSize(va, vb), relative, threshold, poseB);
 }

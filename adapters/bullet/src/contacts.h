@@ -35,8 +35,17 @@ class SwappedSink final : public ContactSink {
 // Contacts closer than `threshold` (depth <= threshold), for:
 //  - a convex shape A against a convex shape or plane B (signed distance, then face clipping for flat contacts);
 //  - a convex shape A against a triangle mesh or heightfield B (per-triangle contacts, deepest first; of contacts
-//    closer than `mergeRadius` on A only the deepest, as the manifold would merge them; when one touches, only the
-//    touching ones, which a manifold's 4 places are for).
+//    closer than HandOver's mergeRadius on A only the deepest, as the manifold would merge them; when one touches and
+//    HandOver asks, only the touching ones, which a manifold's 4 places are for).
+// How surface contacts are handed to the sink (see surfaceContacts): contacts closer than `mergeRadius` on A merge
+// into the deepest; with `touchingOnly`, once one touches the ones still apart are left out. A persistent manifold
+// wants both (its breaking threshold as the radius); a caller that widened the distance threshold (contactTest's
+// closest-distance threshold) asked for the apart points too.
+struct HandOver {
+  Real mergeRadius = 0;
+  bool touchingOnly = false;
+};
+
 // What a pair learned in earlier frames: GJK's warm start, whether the pair was in contact range, and the last axis
 // that separated it beyond the threshold (in A's frame; zero when none), re-checked first each frame.
 struct PairMemory {
@@ -48,10 +57,11 @@ struct PairMemory {
 // `memory` (optional) carries what the pair learned from one frame to the next.
 void convexContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, ContactSink& sink,
                     PairMemory* memory = nullptr);
-void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Real mergeRadius, ContactSink& sink);
+void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver,
+                     ContactSink& sink);
 
 // Any supported pair in either order (the surface or plane may be A or B); false if the pair has no gq path.
-bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Real mergeRadius, ContactSink& sink,
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver, ContactSink& sink,
                   PairMemory* memory = nullptr);
 
 }  // namespace gq::bullet

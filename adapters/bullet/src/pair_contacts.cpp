@@ -4,7 +4,7 @@
 
 namespace gq::bullet {
 
-bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Real mergeRadius, ContactSink& sink,
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver, ContactSink& sink,
                   PairMemory* memory) {
   const ShapeKind ka = a.view->kind, kb = b.view->kind;
   if (ka == ShapeKind::Convex && (kb == ShapeKind::Convex || kb == ShapeKind::Plane)) {
@@ -12,7 +12,7 @@ bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Re
     return true;
   }
   if (ka == ShapeKind::Convex) {
-    surfaceContacts(a, b, threshold, mergeRadius, sink);
+    surfaceContacts(a, b, threshold, handOver, sink);
     return true;
   }
   if (kb != ShapeKind::Convex) return false;
@@ -20,7 +20,7 @@ bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Re
   if (ka == ShapeKind::Plane)
     convexContacts(b, a, threshold, swapped, memory);
   else
-    surfaceContacts(b, a, threshold, mergeRadius, swapped);
+    surfaceContacts(b, a, threshold, handOver, swapped);
   return true;
 }
 

@@ -40,13 +40,13 @@ class InternalEdgeFilter {
   }
   // Hands the kept contacts to the sink in the form Bullet's manifold (4 points) keeps the deepest of:
   //  - deepest first: when full, the manifold never replaces its deepest cached point (sortCachedPoints);
-  //  - of contacts closer than `mergeRadius` on the convex shape only the deepest: the manifold replaces its nearest
+  //  - of contacts closer than handOver.mergeRadius on the convex shape only the deepest: the manifold replaces its nearest
   //    cached point within that radius by each incoming one (getCacheEntry), so a later, shallower contact would
   //    overwrite a deeper one of the same call;
-  //  - when some contact touches (depth <= 0), none still apart: a full manifold keeps its deepest point and
+  //  - with handOver.touchingOnly, when some contact touches (depth <= 0), none still apart: a full manifold keeps its deepest point and
   //    otherwise the widest spread whatever the depth, so points up to the breaking threshold above the surface
   //    would take the places of the ones carrying the shape. Points cached while nothing touched stay cached.
-  void flush(Real mergeRadius) {
+  void flush(const HandOver& handOver) {
     std::array<int, kCapacity> order;
     int kept = 0;
     for (int i = 0; i < count_; ++i)
@@ -54,8 +54,8 @@ class InternalEdgeFilter {
     std::sort(order.begin(), order.begin() + kept, [this](int i, int j) {
       return held_[i].depth < held_[j].depth || (held_[i].depth == held_[j].depth && i < j);
     });
-    const bool touching = kept > 0 && held_[order[0]].depth <= 0;
-    const Real radius2 = mergeRadius * mergeRadius;
+    const bool touching = handOver.touchingOnly && kept > 0 && held_[order[0]].depth <= 0;
+    const Real radius2 = handOver.mergeRadius * handOver.mergeRadius;
     int handed = 0;  // order[0, handed): the contacts handed over
     for (int k = 0; k < kept; ++k) {
       const Held& c = held_[order[k]];
@@ -180,7 +180,8 @@ bool queryShape(const PlacedShape& a, Real reach, QueryShape& out) {
 
 }  // namespace
 
-void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, Real mergeRadius, ContactSink& sink) {
+void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver,
+                     ContactSink& sink) {
   const Real reach = std::max(threshold, Real(0)) + a.view->margin + b.view->margin;
   QueryShape query;
   if (!queryShape(a, reach, query)) return;
@@ -197,7 +198,7 @@ void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold,
     more = received.overflow;
     if (received.count == 0) break;
   }
-  filter.flush(mergeRadius);
+  filter.flush(handOver);
 }
 
 }  // namespace gq::bullet
