@@ -32,6 +32,7 @@ ROWS = {
     "BunnyRaycastBatchInputOrder/1": ("BunnyRaycastLoop",
                                       "the same batch in input order (coherentRayOrder false), 1 thread"),
     "BunnyRaycastBatch/2": ("BunnyRaycastBatch/1", "1M bunny rays as one raycastBatch, 2 threads"),
+    "BunnyRaycastBatchInputOrder/2": ("BunnyRaycastBatchInputOrder/1", "the input-order batch, 2 threads"),
     "GqFloatBunnyRaycastBatch/1": ("EmbreeBunnyIntersect1M", "1M bunny rays, float mesh, one raycastBatch, 1 thread"),
     "GqFloatBunnyRaycastBatch/2": ("GqFloatBunnyRaycastBatch/1", "the same, 2 threads"),
     "EmbreeBunnyIntersect1": ("", "Embree 3 rtcIntersect1 per ray, 1M bunny rays (float)"),
