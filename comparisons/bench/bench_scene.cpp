@@ -5,7 +5,8 @@
 //    slow); items_per_second of both are rays per second.
 //  - SceneRaycastBatch/threads: the 100k rays as one raycastBatch, 1 and 2 threads (the speedup is the ratio).
 //  - BunnyRaycastLoop, BunnyRaycastBatch/threads: 1M rays at the bunny, a loop of single raycasts vs a batch (in its
-//    coherent ray order); BunnyRaycastBatchInputOrder/threads: the batch in input order (coherentRayOrder false).
+//    coherent ray order); BunnyRaycastBatchInputOrder/threads: the batch in input order (coherentRayOrder false);
+//    BunnyRaycastBatchKeptScratch/threads: the coherent batch with one BatchScratch kept across calls.
 //  - SelfPairs: Scene::overlappingPairs over the 1000 objects; BruteSelfPairs: every pair through overlap().
 // Counters `hits` / `pairs` let the answers of the two forms be compared in the output.
 #include <benchmark/benchmark.h>
@@ -183,8 +184,9 @@ void BM_BunnyRaycastLoop(benchmark::State& state) {
   state.counters["hits"] = double(hits);
 }
 
-// The bunny's rays as one raycastBatch; coherent: the batch's coherent ray order (the default), else input order.
-void bunnyRaycastBatch(benchmark::State& state, bool coherent) {
+// The bunny's rays as one raycastBatch; coherent: the batch's coherent ray order (the default), else input order;
+// keepScratch: one BatchScratch kept across the iterations (a caller casting batch after batch).
+void bunnyRaycastBatch(benchmark::State& state, bool coherent, bool keepScratch = false) {
   const Fixture& f = fixture();
   if (!f.ok) return state.SkipWithError("bunny not found or setup failed");
   gq::Shape<T> bunny;
@@ -195,6 +197,8 @@ void bunnyRaycastBatch(benchmark::State& state, bool coherent) {
   gq::BatchSettings settings;
   settings.threads = std::uint32_t(state.range(0));
   settings.coherentRayOrder = coherent;
+  gq::BatchScratch scratch;
+  if (keepScratch) settings.scratch = &scratch;
   gq::RayBatch<T> rays;
   rays.origins = gq::StridedArray<V>(f.bunnyOrigins.data(), kBunnyRays);
   rays.unitDirs = gq::StridedArray<V>(f.bunnyDirs.data(), kBunnyRays);
@@ -212,6 +216,7 @@ void bunnyRaycastBatch(benchmark::State& state, bool coherent) {
 
 void BM_BunnyRaycastBatch(benchmark::State& state) { bunnyRaycastBatch(state, true); }
 void BM_BunnyRaycastBatchInputOrder(benchmark::State& state) { bunnyRaycastBatch(state, false); }
+void BM_BunnyRaycastBatchKeptScratch(benchmark::State& state) { bunnyRaycastBatch(state, true, true); }
 
 void BM_SelfPairs(benchmark::State& state) {
   const Fixture& f = fixture();
@@ -250,6 +255,7 @@ BENCHMARK(BM_SceneRaycastBatch)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->
 BENCHMARK(BM_BunnyRaycastLoop)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BunnyRaycastBatch)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_BunnyRaycastBatchInputOrder)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_BunnyRaycastBatchKeptScratch)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SelfPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BruteSelfPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -33,6 +33,8 @@ ROWS = {
                                       "the same batch in input order (coherentRayOrder false), 1 thread"),
     "BunnyRaycastBatch/2": ("BunnyRaycastBatch/1", "1M bunny rays as one raycastBatch, 2 threads"),
     "BunnyRaycastBatchInputOrder/2": ("BunnyRaycastBatchInputOrder/1", "the input-order batch, 2 threads"),
+    "BunnyRaycastBatchKeptScratch/1": ("BunnyRaycastLoop", "the coherent batch with a BatchScratch kept across calls, 1 thread"),
+    "BunnyRaycastBatchKeptScratch/2": ("BunnyRaycastBatchKeptScratch/1", "the same, 2 threads"),
     "GqFloatBunnyRaycastBatch/1": ("EmbreeBunnyIntersect1M", "1M bunny rays, float mesh, one raycastBatch, 1 thread"),
     "GqFloatBunnyRaycastBatch/2": ("GqFloatBunnyRaycastBatch/1", "the same, 2 threads"),
     "EmbreeBunnyIntersect1": ("", "Embree 3 rtcIntersect1 per ray, 1M bunny rays (float)"),

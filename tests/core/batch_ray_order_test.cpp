@@ -86,9 +86,13 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
 
   BatchSettings inputOrder{1, 64};
   inputOrder.coherentRayOrder = false;
-  const BatchSettings settings[] = {{1, 64}, {2, 64}, {8, 5}, inputOrder};
+  // Scratch kept between calls: the 1-thread call grows one worker's arrays, the later calls reuse and add to them.
+  BatchScratch kept;
+  const BatchSettings settings[] = {{1, 64}, {2, 64}, {8, 5}, inputOrder,
+                                    {1, 64, true, &kept}, {2, 64, true, &kept}, {8, 5, true, &kept}, {1, 64, true, &kept}};
   for (const BatchSettings& setting : settings) {
-    SCOPED_TRACE(::testing::Message() << "threads " << setting.threads << " coherent " << setting.coherentRayOrder);
+    SCOPED_TRACE(::testing::Message() << "threads " << setting.threads << " coherent " << setting.coherentRayOrder
+                                      << " kept scratch " << (setting.scratch != nullptr));
     std::vector<RaycastHit<T>> hits(kManyRays);
     std::vector<std::uint8_t> has(kManyRays, 7);
     std::vector<Status> statuses(kManyRays);
@@ -107,6 +111,9 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
       }
     }
   }
+  EXPECT_GT(kept.bytes(), kManyRays * sizeof(Vec3<T>));  // the rays' copies at least
+  kept.release();
+  EXPECT_EQ(kept.bytes(), 0u);
 }
 
 TYPED_TEST(BatchRayOrder, LargeBatchesOfColumnsAndNormalizedDirectionsEqualTheInputOrder) {

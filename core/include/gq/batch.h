@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 
 #include "gq/geometry.h"
 #include "gq/hit.h"
@@ -58,6 +59,29 @@ template <class E> struct StridedArray {
   }
 };
 
+namespace detail {
+class BatchScratchAccess;
+}
+
+// Scratch memory kept between batch calls by their caller: a mesh ray batch cast in coherent order (below) that is
+// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (about 72
+// bytes a ray of a block per worker in double; 1M rays on 2 threads: ~36 MB a worker). A caller casting batch after
+// batch keeps one; one batch call at a time may use it. The memory is held until release() or destruction.
+class BatchScratch {
+ public:
+  BatchScratch() noexcept;
+  ~BatchScratch();
+  BatchScratch(const BatchScratch&) = delete;
+  BatchScratch& operator=(const BatchScratch&) = delete;
+  std::size_t bytes() const noexcept;  // held now
+  void release() noexcept;
+
+ private:
+  friend class detail::BatchScratchAccess;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 struct BatchSettings {
   // 0: every hardware thread; 1: the calling thread only (no thread is created); more than the hardware's threads
   // runs the hardware's count.
@@ -69,8 +93,9 @@ struct BatchSettings {
   // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays
   // that are already coherent). Memory: each worker holds scratch of about 72 bytes (double; 48 in float) a ray of
   // its largest block, each of its arrays in whole 2 MB pages (about 4 MB a worker at the smallest sorted block), so
-  // at most ~76 MB (double) a worker, freed on return.
+  // at most ~76 MB (double) a worker, freed on return unless `scratch` keeps it.
   bool coherentRayOrder = true;
+  BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };
 
 // ---- rays ---------------------------------------------------------------------------------------------------------

@@ -279,6 +279,11 @@ template <class T> struct KeyOrderScratch {
   std::vector<RaycastHit<T>> hits;         // a chunk's hits in key order
   std::vector<std::uint8_t> counts;        // their hit counts, or kByIndex
 
+  std::size_t bytes() const noexcept {
+    return items.size * sizeof(std::uint64_t) + rays.size * sizeof(Ray) +
+           (starts.capacity() + next.capacity()) * sizeof(std::uint32_t) + hits.capacity() * sizeof(RaycastHit<T>) +
+           counts.capacity();
+  }
   bool reserve(std::size_t m, std::size_t buckets) {
     try {
       if (!items.reserve(2 * m) || !rays.reserve(m)) return false;
@@ -292,6 +297,47 @@ template <class T> struct KeyOrderScratch {
     }
   }
 };
+
+// One KeyOrderScratch per worker slot.
+template <class T> using WorkerScratch = std::vector<std::unique_ptr<KeyOrderScratch<T>>>;
+
+}  // namespace
+
+struct BatchScratch::Impl {
+  WorkerScratch<float> f;
+  WorkerScratch<double> d;
+};
+
+namespace detail {
+class BatchScratchAccess {
+ public:
+  // The workers' scratch of precision T kept by `s` (created on first use; may throw std::bad_alloc).
+  template <class T> static WorkerScratch<T>& workers(BatchScratch& s) {
+    if (!s.impl_) s.impl_ = std::make_unique<BatchScratch::Impl>();
+    if constexpr (std::is_same_v<T, float>) {
+      return s.impl_->f;
+    } else {
+      return s.impl_->d;
+    }
+  }
+};
+}  // namespace detail
+
+BatchScratch::BatchScratch() noexcept = default;
+BatchScratch::~BatchScratch() = default;
+
+std::size_t BatchScratch::bytes() const noexcept {
+  std::size_t total = 0;
+  if (impl_) {
+    for (const auto& w : impl_->f) total += w->bytes();
+    for (const auto& w : impl_->d) total += w->bytes();
+  }
+  return total;
+}
+
+void BatchScratch::release() noexcept { impl_.reset(); }
+
+namespace {
 
 // Rays [begin, end) of a batch cast in key order (batch/ray_order.h); returns how many failed. Rays that miss the
 // mesh's bounds are cast at once in input order. The others are copied, in one sequential pass over the caller's
@@ -408,9 +454,11 @@ std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, con
   const detail::RayOrderKey<T> key(box);
   const std::size_t blocks = std::max((n + order.blockRays - 1) / order.blockRays, slots);
   const std::size_t blockRays = (n + blocks - 1) / blocks;
-  std::unique_ptr<KeyOrderScratch<T>[]> scratch;
+  WorkerScratch<T> local;
+  WorkerScratch<T>* scratch = &local;
   try {
-    scratch.reset(new KeyOrderScratch<T>[slots]);
+    if (settings.scratch != nullptr) scratch = &detail::BatchScratchAccess::workers<T>(*settings.scratch);
+    while (scratch->size() < slots) scratch->push_back(std::make_unique<KeyOrderScratch<T>>());
   } catch (const std::bad_alloc&) {
     return runItems(n, settings, items);
   }
@@ -418,7 +466,7 @@ std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, con
     std::size_t failed = 0;
     for (std::size_t b = first; b < last; ++b) {
       const std::size_t begin = std::min(n, b * blockRays), end = std::min(n, begin + blockRays);
-      if (begin < end) failed += castBlockInKeyOrder(items, key, order, scratch[slot], begin, end);
+      if (begin < end) failed += castBlockInKeyOrder(items, key, order, *(*scratch)[slot], begin, end);
     }
     return failed;
   });
