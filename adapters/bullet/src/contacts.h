@@ -61,7 +61,7 @@ void surfaceContacts(const PlacedShape& a, const PlacedShape& b, Real threshold,
                      ContactSink& sink);
 
 // Any supported pair in either order (the surface or plane may be A or B); false if the pair has no gq path.
-bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver, ContactSink& sink,
-                  PairMemory* memory = nullptr);
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver,
+                  ContactSink& sink, PairMemory* memory = nullptr);
 
 }  // namespace gq::bullet

@@ -4,8 +4,8 @@
 
 namespace gq::bullet {
 
-bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver, ContactSink& sink,
-                  PairMemory* memory) {
+bool pairContacts(const PlacedShape& a, const PlacedShape& b, Real threshold, const HandOver& handOver,
+                  ContactSink& sink, PairMemory* memory) {
   const ShapeKind ka = a.view->kind, kb = b.view->kind;
   if (ka == ShapeKind::Convex && (kb == ShapeKind::Convex || kb == ShapeKind::Plane)) {
     convexContacts(a, b, threshold, sink, memory);

@@ -40,12 +40,13 @@ class InternalEdgeFilter {
   }
   // Hands the kept contacts to the sink in the form Bullet's manifold (4 points) keeps the deepest of:
   //  - deepest first: when full, the manifold never replaces its deepest cached point (sortCachedPoints);
-  //  - of contacts closer than handOver.mergeRadius on the convex shape only the deepest: the manifold replaces its nearest
-  //    cached point within that radius by each incoming one (getCacheEntry), so a later, shallower contact would
-  //    overwrite a deeper one of the same call;
-  //  - with handOver.touchingOnly, when some contact touches (depth <= 0), none still apart: a full manifold keeps its deepest point and
-  //    otherwise the widest spread whatever the depth, so points up to the breaking threshold above the surface
-  //    would take the places of the ones carrying the shape. Points cached while nothing touched stay cached.
+  //  - of contacts closer than handOver.mergeRadius on the convex shape only the deepest: the manifold replaces its
+  //    nearest cached point within that radius by each incoming one (getCacheEntry), so a later, shallower contact
+  //    would overwrite a deeper one of the same call;
+  //  - with handOver.touchingOnly, when some contact touches (depth <= 0), none still apart: a full manifold keeps
+  //    its deepest point and otherwise the widest spread whatever the depth, so points up to the breaking threshold
+  //    above the surface would take the places of the ones carrying the shape. Points cached while nothing touched
+  //    stay cached.
   void flush(const HandOver& handOver) {
     std::array<int, kCapacity> order;
     int kept = 0;
