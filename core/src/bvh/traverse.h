@@ -372,7 +372,10 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
       }
       const int j = __builtin_ctz(unsigned(mask));
       if ((mask & (mask - 1)) == 0) {  // two children entered (the common case): push the farther one
-        const int nearLane = tn[j] < tn[i] ? j : i, farLane = i + j - nearLane;
+        // Without a branch: which child is nearer is a coin toss for rays in all directions (a branch on it was
+        // mispredicted about half the time).
+        const int swap = -int(tn[j] < tn[i]);
+        const int nearLane = i ^ ((i ^ j) & swap), farLane = i ^ j ^ nearLane;
         stack[top++] = Entry{node.child[farLane], tn[farLane]};
         e = Entry{node.child[nearLane], tn[nearLane]};
         continue;
