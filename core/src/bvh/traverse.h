@@ -16,9 +16,9 @@
 
 namespace gq::detail {
 
-// Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels; an
-// 8-wide node stands for at least one 4-wide level) times the 7 siblings an 8-wide node leaves behind, plus slack
-// (which also holds the 8 entries Bvh8LanesAvx2::sortHits writes past the top).
+// Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels, each
+// node's first split of its range halving it) times the 7 siblings an 8-wide node leaves behind, plus slack (which
+// also holds the 8 entries Bvh8LanesAvx2::sortHits writes past the top).
 inline constexpr int kBvhStackSize = 512;
 
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
@@ -377,6 +377,8 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
         const int swap = -int(tn[j] < tn[i]);
         const int nearLane = i ^ ((i ^ j) & swap), farLane = i ^ j ^ nearLane;
         stack[top++] = Entry{node.child[farLane], tn[farLane]};
+        // Its node is fetched while the nearer subtree is walked (measured 1 % off the walk on the bunny).
+        if (!(node.child[farLane] & Node::kLeafBit)) __builtin_prefetch(&bvh.nodes[node.child[farLane]]);
         e = Entry{node.child[nearLane], tn[nearLane]};
         continue;
       }

@@ -1,4 +1,4 @@
-// Triangle mesh cooking: validation, removal of degenerate triangles, BVH4 build (bvh/build.cpp) with triangles
+// Triangle mesh cooking: validation, removal of degenerate triangles, 8-wide BVH build (bvh/build.cpp) with triangles
 // reordered into leaf order, and the hull vertex list used for exact world bounds.
 #include <libqhull_r/qhull_ra.h>
 
