@@ -88,7 +88,7 @@ template <class T> class MeshRaycaster {
 #else
     loadTriangles4(tv, count, fourReadable, tris);
 #endif
-    return exactTriangleHits(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
+    return exactTriangleHits<T, kAvx2>(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
   }
 
   // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the wide test when it decided the
