@@ -191,8 +191,8 @@ TEST(MeshRaycastWalks, TreeFillsLeavesAndNodes) {
     }
   const double trianglesPerLeaf = double(prims.size()) / double(leaves);
   const double childrenPerNode = double(children) / double(bvh.nodes.size());
-  EXPECT_GT(trianglesPerLeaf, 3.5);  // 3.82 when written
-  EXPECT_GT(childrenPerNode, 3.5);   // 3.84 when written (a binary tree: 2)
+  EXPECT_GT(trianglesPerLeaf, 3.5);  // 3.82 on this mesh
+  EXPECT_GT(childrenPerNode, 3.5);   // 3.84 on this mesh (a binary tree: 2)
 }
 
 }  // namespace
