@@ -278,6 +278,20 @@ template <int kMaxLanes> __attribute__((target("avx2"))) inline __m256i sortLaye
   return _mm256_blend_epi32(_mm256_min_epi32(v, partner), _mm256_max_epi32(v, partner), kMaxLanes);
 }
 
+// For each 8-bit mask, its set lanes in increasing order, 4 bits each (lowest first).
+struct BvhLaneLists {
+  std::uint32_t lanes[256];
+  constexpr BvhLaneLists() : lanes() {
+    for (std::uint32_t m = 0; m < 256; ++m) {
+      std::uint32_t list = 0, n = 0;
+      for (std::uint32_t lane = 0; lane < 8; ++lane)
+        if ((m >> lane) & 1u) list |= lane << (4 * n++);
+      lanes[m] = list;
+    }
+  }
+};
+inline constexpr BvhLaneLists kBvhLaneLists{};
+
 // 8-wide nodes with AVX2 (only on CPUs that have it: callers check hasAvx2()).
 struct Bvh8LanesAvx2 {
   static constexpr int kWidth = 8;
@@ -323,6 +337,22 @@ struct Bvh8LanesAvx2 {
     top += count - 1;
     const int nearest = _mm_cvtsi128_si32(_mm256_castsi256_si128(k)) & 7;
     return BvhWalkEntry{node.child[nearest], tNear[nearest]};
+  }
+
+  // The lanes of `mask` pushed in lane order without a loop: their references and entry distances gathered by one
+  // permutation each (lane lists from kBvhLaneLists) and written by two 8-entry stores from `stack` on (the stack bound
+  // leaves that room).
+  __attribute__((target("avx2"))) static void pushLanes(const Bvh8Node& node, const float* tNear, int mask,
+                                                        BvhWalkEntry* stack) {
+    const __m256i shifts = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);
+    const __m256i lanes = _mm256_and_si256(
+        _mm256_srlv_epi32(_mm256_set1_epi32(int(kBvhLaneLists.lanes[mask])), shifts), _mm256_set1_epi32(7));
+    const __m256i refs = _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
+                                                     lanes);
+    const __m256i dists = _mm256_permutevar8x32_epi32(_mm256_castps_si256(_mm256_load_ps(tNear)), lanes);
+    const __m256i lo = _mm256_unpacklo_epi32(refs, dists), hi = _mm256_unpackhi_epi32(refs, dists);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack), _mm256_permute2x128_si256(lo, hi, 0x20));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack + 4), _mm256_permute2x128_si256(lo, hi, 0x31));
   }
 };
 
@@ -373,11 +403,16 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
       }
       if (!kOrdered) {
         e = Entry{node.child[i], tn[i]};
-        do {
-          i = __builtin_ctz(unsigned(mask));
-          mask &= mask - 1;
-          stack[top++] = Entry{node.child[i], tn[i]};
-        } while (mask);
+        if constexpr (Lanes::kSortsHits) {
+          Lanes::pushLanes(node, tn, mask, stack + top);
+          top += __builtin_popcount(unsigned(mask));
+        } else {
+          do {
+            i = __builtin_ctz(unsigned(mask));
+            mask &= mask - 1;
+            stack[top++] = Entry{node.child[i], tn[i]};
+          } while (mask);
+        }
         continue;
       }
       const int j = __builtin_ctz(unsigned(mask));
