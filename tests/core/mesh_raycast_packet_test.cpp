@@ -2,10 +2,11 @@
 // watertight test in T hits (otherwise mesh raycasts would leak or lose the closest hit), the hits it decides alone
 // must be the scalar test's bit for bit, and it must drop triangles the ray misses. Checked on 4-triangle meshes (one
 // leaf) of many sizes and offsets, with rays aimed at vertices, edge points and interiors, grazing rays and tight maxT,
-// in float (4 lanes per register) and double (2).
+// in float (4 lanes per register) and double (2; 4 in the AVX2 walk's form, which must give the same bits).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -37,6 +38,37 @@ template <class T> MeshData<T> randomLeaf(std::mt19937_64& rng, const Vec3<T>& c
   for (int i = 0; i < 6; ++i) m.vertices.push_back((c + jitter()).template cast<T>());
   m.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {5, 4, 1}};
   return m;
+}
+
+#ifdef GQ_SSE42
+// The test as the AVX2 walk runs it (double 4 lanes to a register), inlined into AVX2 code as there.
+template <class T>
+__attribute__((target("avx2"), flatten)) int exactTriangleHitsAvx2(const detail::TriangleVertices4<T>& tris,
+                                                                   const detail::WatertightRay4<T>& ray, T maxT,
+                                                                   bool cull, detail::TriangleHits4<T>& hits) {
+  return detail::exactTriangleHits<T, true>(tris, ray, maxT, cull, hits);
+}
+#endif
+
+// The AVX2 form's mask and decided hits equal the baseline's, bit for bit (CPUs without AVX2 run only the baseline).
+template <class T>
+void expectAvx2FormAgrees(const detail::TriangleVertices4<T>& tris, const detail::WatertightRay4<T>& ray, T maxT,
+                          bool cull, int mask, const detail::TriangleHits4<T>& hits) {
+#ifdef GQ_SSE42
+  if (!__builtin_cpu_supports("avx2")) return;
+  detail::TriangleHits4<T> wide;
+  EXPECT_EQ(exactTriangleHitsAvx2(tris, ray, maxT, cull, wide), mask);
+  EXPECT_EQ(wide.decided, hits.decided);
+  EXPECT_EQ(wide.frontMask, hits.frontMask);
+  for (int i = 0; i < 4; ++i) {
+    if (!((hits.decided >> i) & 1)) continue;
+    EXPECT_EQ(std::memcmp(&wide.t[i], &hits.t[i], sizeof(T)), 0);
+    EXPECT_EQ(std::memcmp(&wide.u[i], &hits.u[i], sizeof(T)), 0);
+    EXPECT_EQ(std::memcmp(&wide.v[i], &hits.v[i], sizeof(T)), 0);
+  }
+#else
+  (void)tris, (void)ray, (void)maxT, (void)cull, (void)mask, (void)hits;
+#endif
 }
 
 struct Counts {
@@ -74,6 +106,7 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
       }
       detail::TriangleHits4<T> laneHits;
       const int mask = detail::exactTriangleHits(tris, wideRay, maxT, cull, laneHits);
+      expectAvx2FormAgrees(tris, wideRay, maxT, cull, mask, laneHits);
       for (std::uint32_t i = 0; i < count; ++i) {
         const Vec3<T>* v = &mesh.triangleVertices[3 * i];
         detail::TriangleRayHit<T> h;

@@ -1,5 +1,7 @@
-// Binned SAH BVH4 build: binary SAH splits (16 bins on each axis over the centroid bounds) are applied repeatedly to
-// the child with the largest surface area until a node has 4 children or all children fit in a leaf.
+// Binned SAH BVH8 build: binary SAH splits (16 bins on each axis over the centroid bounds) are applied repeatedly to
+// the child with the largest surface area until a node has 8 children or all children fit in a leaf. The SAH counts
+// a side's triangles in leaves of 4 (ceil(n / 4)): a leaf is tested 4 triangles at once, so a split that fills
+// leaves costs less than one that leaves them part empty.
 #include "bvh/build.h"
 
 #include <algorithm>
@@ -11,6 +13,8 @@ namespace gq::detail {
 namespace {
 
 constexpr int kBins = 16;
+constexpr int kWidth = 8;
+using Node = BvhNode<kWidth>;
 // Past this depth the splits fall back to the median, bounding the traversal stack (see bvh/traverse.h).
 constexpr int kMaxSahDepth = 32;
 
@@ -34,7 +38,7 @@ class Builder {
     for (const auto& b : prims) centroids_.push_back(b.center());
   }
 
-  Bvh4 run() {
+  Bvh8 run() {
     Bounds3<float> all;
     for (const auto& b : prims_) all.include(b);
     const Range root{0, std::uint32_t(order_.size()), all};
@@ -84,7 +88,7 @@ class Builder {
           acc.include(binBounds[b]);
           n += binCount[b];
           if (n == 0 || rightCount[b + 1] == 0) continue;
-          const float cost = halfArea(acc) * float(n) + rightArea[b + 1] * float(rightCount[b + 1]);
+          const float cost = halfArea(acc) * leafBlocks(n) + rightArea[b + 1] * leafBlocks(rightCount[b + 1]);
           if (cost < bestCost) { bestCost = cost; bestAxis = axis; bestBin = b; }
         }
       }
@@ -107,6 +111,9 @@ class Builder {
     return m;
   }
 
+  // The leaves of 4 that n triangles fill at least.
+  static float leafBlocks(std::uint32_t n) { return float((n + Node::kMaxLeafSize - 1) / Node::kMaxLeafSize); }
+
   // Clamped in float before the conversion: with extents beyond the float range (scale 0, offsets inf) or tiny ones
   // (scale inf) the product is NaN or inf, which int() must never see (found by fuzz_raycast under UBSan).
   static int binOf(float c, float lo, float scale) {
@@ -117,16 +124,16 @@ class Builder {
 
   // Reference to the subtree over r.
   std::uint32_t buildRef(const Range& r, int depth) {
-    if (r.count() <= Bvh4Node::kMaxLeafSize) return Bvh4Node::makeLeaf(r.begin, r.count());
-    std::array<Range, 4> kids;
+    if (r.count() <= Node::kMaxLeafSize) return Node::makeLeaf(r.begin, r.count());
+    std::array<Range, kWidth> kids;
     int n = 1;
     kids[0] = r;
-    while (n < 4) {
+    while (n < kWidth) {
       // Split the splittable child with the largest area.
       int pick = -1;
       float best = -1.0f;
       for (int i = 0; i < n; ++i) {
-        if (kids[i].count() <= Bvh4Node::kMaxLeafSize) continue;
+        if (kids[i].count() <= Node::kMaxLeafSize) continue;
         const float a = halfArea(kids[i].bounds);
         if (a > best) { best = a; pick = i; }
       }
@@ -136,14 +143,18 @@ class Builder {
       kids[pick] = Range{p.begin, m, boundsOf(p.begin, m)};
       kids[n++] = Range{m, p.end, boundsOf(m, p.end)};
     }
+    // Largest surface area first (stable: equal areas keep their order, so cooking stays deterministic): the order
+    // the unordered any-hit walk takes them in.
+    std::stable_sort(kids.begin(), kids.begin() + n,
+                     [](const Range& a, const Range& b) { return halfArea(a.bounds) > halfArea(b.bounds); });
     const auto nodeIndex = std::uint32_t(bvh_.nodes.size());
     bvh_.nodes.emplace_back();
-    std::array<std::uint32_t, 4> refs;
-    refs.fill(Bvh4Node::kEmpty);
+    std::array<std::uint32_t, kWidth> refs;
+    refs.fill(Node::kEmpty);
     for (int i = 0; i < n; ++i) refs[i] = buildRef(kids[i], depth + 1);
-    Bvh4Node& node = bvh_.nodes[nodeIndex];
+    Node& node = bvh_.nodes[nodeIndex];
     const float inf = std::numeric_limits<float>::infinity();
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kWidth; ++i) {
       node.child[i] = refs[i];
       // Empty lanes get an all-+inf box, which every slab test rejects.
       const Bounds3<float> b = i < n ? kids[i].bounds : Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf),
@@ -157,7 +168,7 @@ class Builder {
   const std::vector<Bounds3<float>>& prims_;
   std::vector<std::uint32_t>& order_;
   std::vector<Vec3<float>> centroids_;
-  Bvh4 bvh_;
+  Bvh8 bvh_;
 };
 
 template <class T> float roundDown(T x) {
@@ -169,89 +180,12 @@ template <class T> float roundUp(T x) {
   return T(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-// Builds 8-wide nodes over a 4-wide tree, top down.
-class Collapser {
- public:
-  explicit Collapser(const Bvh4& bvh) : in_(bvh) {}
-
-  Bvh8 run() {
-    out_.rootChild = Bvh4Node::isLeaf(in_.rootChild) || in_.rootChild == Bvh4Node::kEmpty ? in_.rootChild
-                                                                                             : collapse(in_.rootChild);
-    return std::move(out_);
-  }
-
- private:
-  struct Slot {
-    std::uint32_t ref;
-    Bounds3<float> box;
-  };
-
-  static Bounds3<float> laneBox(const Bvh4Node& n, int lane) {
-    return Bounds3<float>::fromMinMax(Vec3<float>(n.minX[lane], n.minY[lane], n.minZ[lane]),
-                                      Vec3<float>(n.maxX[lane], n.maxY[lane], n.maxZ[lane]));
-  }
-  static int childCount(const Bvh4Node& n) {
-    int c = 0;
-    for (int lane = 0; lane < 4; ++lane) c += n.child[lane] != Bvh4Node::kEmpty;
-    return c;
-  }
-
-  // Index of the 8-wide node over the 4-wide inner node `ref`.
-  std::uint32_t collapse(std::uint32_t ref) {
-    std::array<Slot, 8> slots;
-    int n = 0;
-    const Bvh4Node& root = in_.nodes[ref];
-    for (int lane = 0; lane < 4; ++lane)
-      if (root.child[lane] != Bvh4Node::kEmpty) slots[n++] = Slot{root.child[lane], laneBox(root, lane)};
-    for (;;) {
-      // Open the inner slot with the largest area whose children fit.
-      int pick = -1;
-      float best = -1.0f;
-      for (int i = 0; i < n; ++i) {
-        if (Bvh4Node::isLeaf(slots[i].ref)) continue;
-        if (n - 1 + childCount(in_.nodes[slots[i].ref]) > 8) continue;
-        const float a = halfArea(slots[i].box);
-        if (a > best) { best = a; pick = i; }
-      }
-      if (pick < 0) break;
-      const Bvh4Node& open = in_.nodes[slots[pick].ref];
-      slots[pick] = slots[--n];
-      for (int lane = 0; lane < 4; ++lane)
-        if (open.child[lane] != Bvh4Node::kEmpty) slots[n++] = Slot{open.child[lane], laneBox(open, lane)};
-    }
-    // Largest surface area first (stable: equal areas keep their order, so cooking stays deterministic).
-    std::stable_sort(slots.begin(), slots.begin() + n,
-                     [](const Slot& a, const Slot& b) { return halfArea(a.box) > halfArea(b.box); });
-    const auto index = std::uint32_t(out_.nodes.size());
-    out_.nodes.emplace_back();
-    std::array<std::uint32_t, 8> refs;
-    refs.fill(Bvh8Node::kEmpty);
-    for (int i = 0; i < n; ++i) refs[i] = Bvh4Node::isLeaf(slots[i].ref) ? slots[i].ref : collapse(slots[i].ref);
-    Bvh8Node& node = out_.nodes[index];
-    const float inf = std::numeric_limits<float>::infinity();
-    for (int i = 0; i < 8; ++i) {
-      node.child[i] = refs[i];
-      // Empty lanes get an all-+inf box, as in the 4-wide tree.
-      const Bounds3<float> b = i < n ? slots[i].box : Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf),
-                                                                                Vec3<float>::Constant(inf));
-      node.minX[i] = b.min.x(); node.minY[i] = b.min.y(); node.minZ[i] = b.min.z();
-      node.maxX[i] = b.max.x(); node.maxY[i] = b.max.y(); node.maxZ[i] = b.max.z();
-    }
-    return index;
-  }
-
-  const Bvh4& in_;
-  Bvh8 out_;
-};
-
 }  // namespace
 
-Bvh8 collapseToBvh8(const Bvh4& bvh) { return Collapser(bvh).run(); }
-
-Bvh4 buildBvh4(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order) {
+Bvh8 buildBvh8(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order) {
   order.resize(primBounds.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  if (primBounds.empty()) return Bvh4();
+  if (primBounds.empty()) return Bvh8();
   return Builder(primBounds, order).run();
 }
 

@@ -16,9 +16,9 @@
 
 namespace gq::detail {
 
-// Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels; an
-// 8-wide node stands for at least one 4-wide level) times the 7 siblings an 8-wide node leaves behind, plus slack
-// (which also holds the 8 entries Bvh8LanesAvx2::sortHits writes past the top).
+// Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels, each
+// node's first split of its range halving it) times the 7 siblings an 8-wide node leaves behind, plus slack (which
+// also holds the 8 entries Bvh8LanesAvx2::sortHits writes past the top).
 inline constexpr int kBvhStackSize = 512;
 
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
@@ -28,6 +28,11 @@ template <int W> struct BvhRay {
   // -1 / dir: a slab distance is (org - plane) * negInvDir, the same float as (plane - org) / dir's product form
   // (both negations are exact), with the plane as the subtraction's second operand, which x86 reads from memory.
   float negInvDir[3];
+  // negInvDir times (1 - kRelPad) and (1 + kRelPad): the near and far slab distances come out padded from their one
+  // product (no multiply between the slab test's min/max and its compare). A positive near (far) distance shrinks
+  // (grows) by the pad, as when the padding scaled the test's [tNear, tFar]; negative ones never decide an entry
+  // (tNear is at least 0, and a negative far distance rejects either way).
+  float nearInv[3], farInv[3];
   float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |negInvDir|
   // Per axis, the byte offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
   // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis. (In
@@ -104,17 +109,21 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
     }
   }
+  for (int i = 0; i < 3; ++i) {
+    r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);
+    r.farInv[i] = r.negInvDir[i] * (1.0f + BvhRay<W>::kRelPad);
+  }
   std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
   std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));
   return r;
 }
 
 #ifdef GQ_SSE42
-// The SSE node test's ray constants: org, negInvDir and slack broadcast to 4 lanes once per walk, so a node test loads
+// The SSE node test's ray constants: org, nearInv, farInv and slack broadcast to 4 lanes once per walk, so a node test loads
 // them instead of splatting them, and the plane offsets. (The AVX2 test broadcasts from BvhRay as it loads: holding
 // 8-lane copies in the walk was measured 68 instructions more per bunny ray, spilled around the leaf tests.)
 struct BvhRaySse {
-  __m128 org[3], negInvDir[3], slack[3];
+  __m128 org[3], nearInv[3], farInv[3], slack[3];
   std::uint32_t nearOffset[3], farOffset[3];
 };
 
@@ -122,7 +131,8 @@ template <int W> inline BvhRaySse broadcastSse(const BvhRay<W>& ray) {
   BvhRaySse r;
   for (int i = 0; i < 3; ++i) {
     r.org[i] = _mm_set1_ps(ray.org[i]);
-    r.negInvDir[i] = _mm_set1_ps(ray.negInvDir[i]);
+    r.nearInv[i] = _mm_set1_ps(ray.nearInv[i]);
+    r.farInv[i] = _mm_set1_ps(ray.farInv[i]);
     r.slack[i] = _mm_set1_ps(ray.slack[i]);
     r.nearOffset[i] = ray.nearOffset[i];
     r.farOffset[i] = ray.farOffset[i];
@@ -141,11 +151,13 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
   // With a positive (negative) inverse the min (max) plane gives the smaller slab distance, and rounding keeps that
   // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
   const float* base = node.minX + lane0;
-  auto slab = [&](std::uint32_t offset, int axis) {
-    return _mm_mul_ps(_mm_sub_ps(ray.org[axis], _mm_load_ps(planeAt(base, offset))), ray.negInvDir[axis]);
+  auto slab = [&](std::uint32_t offset, int axis, const __m128* inv) {
+    return _mm_mul_ps(_mm_sub_ps(ray.org[axis], _mm_load_ps(planeAt(base, offset))), inv[axis]);
   };
-  __m128 nearX = slab(ray.nearOffset[0], 0), nearY = slab(ray.nearOffset[1], 1), nearZ = slab(ray.nearOffset[2], 2);
-  __m128 farX = slab(ray.farOffset[0], 0), farY = slab(ray.farOffset[1], 1), farZ = slab(ray.farOffset[2], 2);
+  __m128 nearX = slab(ray.nearOffset[0], 0, ray.nearInv), nearY = slab(ray.nearOffset[1], 1, ray.nearInv);
+  __m128 nearZ = slab(ray.nearOffset[2], 2, ray.nearInv);
+  __m128 farX = slab(ray.farOffset[0], 0, ray.farInv), farY = slab(ray.farOffset[1], 1, ray.farInv);
+  __m128 farZ = slab(ray.farOffset[2], 2, ray.farInv);
   if constexpr (kSlack) {
     nearX = _mm_sub_ps(nearX, ray.slack[0]);
     nearY = _mm_sub_ps(nearY, ray.slack[1]);
@@ -154,10 +166,9 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
     farY = _mm_add_ps(farY, ray.slack[1]);
     farZ = _mm_add_ps(farZ, ray.slack[2]);
   }
-  __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
-  __m128 tf = _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax)));
-  tn = _mm_mul_ps(tn, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad));
-  tf = _mm_mul_ps(tf, _mm_set1_ps(1.0f + BvhRay<W>::kRelPad));
+  const __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
+  const __m128 tf =
+      _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax * (1.0f + BvhRay<W>::kRelPad))));
   _mm_store_ps(tNear + lane0, tn);
   // Empty lanes (all-+inf boxes) fail the slab test only for a finite float origin and tMax; an origin beyond the
   // float range (|x| > 3.4e38 in mesh space) gives inf - inf = NaN there, so they are masked out explicitly.
@@ -169,21 +180,22 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
 // The 8-lane slab test with AVX2: the operations of intersectLanes4 on 8 lanes at once, so both give the same
 // masks and entry distances bit for bit (no FMA: a fused multiply-add would round differently).
 // (A helper function, not a lambda: a lambda does not inherit the target attribute.)
-__attribute__((target("avx2"))) inline __m256 slab8(const float* plane, const BvhRay<8>& ray, int axis) {
+__attribute__((target("avx2"))) inline __m256 slab8(const float* plane, const BvhRay<8>& ray, int axis,
+                                                   const float* inv) {
   return _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&ray.org[axis]), _mm256_load_ps(plane)),
-                       _mm256_broadcast_ss(&ray.negInvDir[axis]));
+                       _mm256_broadcast_ss(&inv[axis]));
 }
 
 template <bool kSlack>
 __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
                                                             float* tNear) {
   const float* base = node.minX;
-  __m256 nearX = slab8(planeAt(base, ray.nearOffset[0]), ray, 0);
-  __m256 nearY = slab8(planeAt(base, ray.nearOffset[1]), ray, 1);
-  __m256 nearZ = slab8(planeAt(base, ray.nearOffset[2]), ray, 2);
-  __m256 farX = slab8(planeAt(base, ray.farOffset[0]), ray, 0);
-  __m256 farY = slab8(planeAt(base, ray.farOffset[1]), ray, 1);
-  __m256 farZ = slab8(planeAt(base, ray.farOffset[2]), ray, 2);
+  __m256 nearX = slab8(planeAt(base, ray.nearOffset[0]), ray, 0, ray.nearInv);
+  __m256 nearY = slab8(planeAt(base, ray.nearOffset[1]), ray, 1, ray.nearInv);
+  __m256 nearZ = slab8(planeAt(base, ray.nearOffset[2]), ray, 2, ray.nearInv);
+  __m256 farX = slab8(planeAt(base, ray.farOffset[0]), ray, 0, ray.farInv);
+  __m256 farY = slab8(planeAt(base, ray.farOffset[1]), ray, 1, ray.farInv);
+  __m256 farZ = slab8(planeAt(base, ray.farOffset[2]), ray, 2, ray.farInv);
   if constexpr (kSlack) {
     nearX = _mm256_sub_ps(nearX, _mm256_broadcast_ss(&ray.slack[0]));
     nearY = _mm256_sub_ps(nearY, _mm256_broadcast_ss(&ray.slack[1]));
@@ -192,10 +204,9 @@ __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node,
     farY = _mm256_add_ps(farY, _mm256_broadcast_ss(&ray.slack[1]));
     farZ = _mm256_add_ps(farZ, _mm256_broadcast_ss(&ray.slack[2]));
   }
-  __m256 tn = _mm256_max_ps(_mm256_max_ps(nearX, nearY), _mm256_max_ps(nearZ, _mm256_setzero_ps()));
-  __m256 tf = _mm256_min_ps(_mm256_min_ps(farX, farY), _mm256_min_ps(farZ, _mm256_set1_ps(tMax)));
-  tn = _mm256_mul_ps(tn, _mm256_set1_ps(1.0f - BvhRay<8>::kRelPad));
-  tf = _mm256_mul_ps(tf, _mm256_set1_ps(1.0f + BvhRay<8>::kRelPad));
+  const __m256 tn = _mm256_max_ps(_mm256_max_ps(nearX, nearY), _mm256_max_ps(nearZ, _mm256_setzero_ps()));
+  const __m256 tf = _mm256_min_ps(_mm256_min_ps(farX, farY),
+                                  _mm256_min_ps(farZ, _mm256_set1_ps(tMax * (1.0f + BvhRay<8>::kRelPad))));
   _mm256_store_ps(tNear, tn);
   const __m256i empty = _mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
                                            _mm256_set1_epi32(-1));
@@ -233,15 +244,14 @@ template <int W> struct BvhLanesScalar {
     const float* hi[3] = {node.maxX, node.maxY, node.maxZ};
     int mask = 0;
     for (int i = 0; i < W; ++i) {
-      float tn = 0.0f, tf = tMax;
+      float tn = 0.0f, tf = tMax * (1.0f + BvhRay<W>::kRelPad);
       for (int a = 0; a < 3; ++a) {
-        const float t0 = (ray.org[a] - lo[a][i]) * ray.negInvDir[a];
-        const float t1 = (ray.org[a] - hi[a][i]) * ray.negInvDir[a];
-        tn = std::max(tn, std::min(t0, t1) - ray.slack[a]);
-        tf = std::min(tf, std::max(t0, t1) + ray.slack[a]);
+        const float t0n = (ray.org[a] - lo[a][i]) * ray.nearInv[a], t1n = (ray.org[a] - hi[a][i]) * ray.nearInv[a];
+        const float t0f = (ray.org[a] - lo[a][i]) * ray.farInv[a], t1f = (ray.org[a] - hi[a][i]) * ray.farInv[a];
+        // The near (far) plane gives the smaller (larger) distance, as the SIMD tests pick it by the direction's sign.
+        tn = std::max(tn, std::min(t0n, t1n) - ray.slack[a]);
+        tf = std::min(tf, std::max(t0f, t1f) + ray.slack[a]);
       }
-      tn *= 1.0f - BvhRay<W>::kRelPad;
-      tf *= 1.0f + BvhRay<W>::kRelPad;
       tNear[i] = tn;
       if (tn <= tf && node.child[i] != BvhNode<W>::kEmpty) mask |= 1 << i;
     }
@@ -267,6 +277,20 @@ struct Bvh8LanesSse {
 template <int kMaxLanes> __attribute__((target("avx2"))) inline __m256i sortLayer(__m256i v, __m256i partner) {
   return _mm256_blend_epi32(_mm256_min_epi32(v, partner), _mm256_max_epi32(v, partner), kMaxLanes);
 }
+
+// For each 8-bit mask, its set lanes in increasing order, 4 bits each (lowest first).
+struct BvhLaneLists {
+  std::uint32_t lanes[256];
+  constexpr BvhLaneLists() : lanes() {
+    for (std::uint32_t m = 0; m < 256; ++m) {
+      std::uint32_t list = 0, n = 0;
+      for (std::uint32_t lane = 0; lane < 8; ++lane)
+        if ((m >> lane) & 1u) list |= lane << (4 * n++);
+      lanes[m] = list;
+    }
+  }
+};
+inline constexpr BvhLaneLists kBvhLaneLists{};
 
 // 8-wide nodes with AVX2 (only on CPUs that have it: callers check hasAvx2()).
 struct Bvh8LanesAvx2 {
@@ -313,6 +337,22 @@ struct Bvh8LanesAvx2 {
     top += count - 1;
     const int nearest = _mm_cvtsi128_si32(_mm256_castsi256_si128(k)) & 7;
     return BvhWalkEntry{node.child[nearest], tNear[nearest]};
+  }
+
+  // The lanes of `mask` pushed in lane order without a loop: their references and entry distances gathered by one
+  // permutation each (lane lists from kBvhLaneLists) and written by two 8-entry stores from `stack` on (the stack bound
+  // leaves that room).
+  __attribute__((target("avx2"))) static void pushLanes(const Bvh8Node& node, const float* tNear, int mask,
+                                                        BvhWalkEntry* stack) {
+    const __m256i shifts = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);
+    const __m256i lanes = _mm256_and_si256(
+        _mm256_srlv_epi32(_mm256_set1_epi32(int(kBvhLaneLists.lanes[mask])), shifts), _mm256_set1_epi32(7));
+    const __m256i refs = _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
+                                                     lanes);
+    const __m256i dists = _mm256_permutevar8x32_epi32(_mm256_castps_si256(_mm256_load_ps(tNear)), lanes);
+    const __m256i lo = _mm256_unpacklo_epi32(refs, dists), hi = _mm256_unpackhi_epi32(refs, dists);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack), _mm256_permute2x128_si256(lo, hi, 0x20));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack + 4), _mm256_permute2x128_si256(lo, hi, 0x31));
   }
 };
 
@@ -363,17 +403,27 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
       }
       if (!kOrdered) {
         e = Entry{node.child[i], tn[i]};
-        do {
-          i = __builtin_ctz(unsigned(mask));
-          mask &= mask - 1;
-          stack[top++] = Entry{node.child[i], tn[i]};
-        } while (mask);
+        if constexpr (Lanes::kSortsHits) {
+          Lanes::pushLanes(node, tn, mask, stack + top);
+          top += __builtin_popcount(unsigned(mask));
+        } else {
+          do {
+            i = __builtin_ctz(unsigned(mask));
+            mask &= mask - 1;
+            stack[top++] = Entry{node.child[i], tn[i]};
+          } while (mask);
+        }
         continue;
       }
       const int j = __builtin_ctz(unsigned(mask));
       if ((mask & (mask - 1)) == 0) {  // two children entered (the common case): push the farther one
-        const int nearLane = tn[j] < tn[i] ? j : i, farLane = i + j - nearLane;
+        // Without a branch: which child is nearer is a coin toss for rays in all directions (a branch on it was
+        // mispredicted about half the time).
+        const int swap = -int(tn[j] < tn[i]);
+        const int nearLane = i ^ ((i ^ j) & swap), farLane = i ^ j ^ nearLane;
         stack[top++] = Entry{node.child[farLane], tn[farLane]};
+        // Its node is fetched while the nearer subtree is walked (measured 1 % off the walk on the bunny).
+        if (!(node.child[farLane] & Node::kLeafBit)) __builtin_prefetch(&bvh.nodes[node.child[farLane]]);
         e = Entry{node.child[nearLane], tn[nearLane]};
         continue;
       }

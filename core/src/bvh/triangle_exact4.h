@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "gq/math.h"
 #include "mesh/triangle.h"
@@ -179,6 +180,32 @@ inline __m128 lt(__m128 a, __m128 b) { return _mm_cmplt_ps(a, b); }
 inline __m128d lt(__m128d a, __m128d b) { return _mm_cmplt_pd(a, b); }
 inline __m128 le(__m128 a, __m128 b) { return _mm_cmple_ps(a, b); }
 inline __m128d le(__m128d a, __m128d b) { return _mm_cmple_pd(a, b); }
+
+// Double on 4 lanes with AVX2, for the AVX2 walk (only on CPUs that have it): the same operations as Reg<double>'s two
+// halves, so the same bits. (Unaligned loads and stores: the leaf arrays are 16-byte aligned.)
+struct Reg256d {
+  using type = __m256d;
+  static constexpr int kWidth = 4;
+  __attribute__((target("avx2"))) static __m256d load(const double* p) { return _mm256_loadu_pd(p); }
+  __attribute__((target("avx2"))) static __m256d set1(double x) { return _mm256_set1_pd(x); }
+  __attribute__((target("avx2"))) static void store(double* p, __m256d x) { _mm256_storeu_pd(p, x); }
+  __attribute__((target("avx2"))) static int mask(__m256d x) { return _mm256_movemask_pd(x); }
+  __attribute__((target("avx2"))) static __m256d signBit() { return _mm256_set1_pd(-0.0); }
+};
+#define GQ_AVX2 __attribute__((target("avx2")))
+GQ_AVX2 inline __m256d add(__m256d a, __m256d b) { return _mm256_add_pd(a, b); }
+GQ_AVX2 inline __m256d sub(__m256d a, __m256d b) { return _mm256_sub_pd(a, b); }
+GQ_AVX2 inline __m256d mul(__m256d a, __m256d b) { return _mm256_mul_pd(a, b); }
+GQ_AVX2 inline __m256d div(__m256d a, __m256d b) { return _mm256_div_pd(a, b); }
+GQ_AVX2 inline __m256d bitOr(__m256d a, __m256d b) { return _mm256_or_pd(a, b); }
+GQ_AVX2 inline __m256d bitAnd(__m256d a, __m256d b) { return _mm256_and_pd(a, b); }
+GQ_AVX2 inline __m256d andNot(__m256d a, __m256d b) { return _mm256_andnot_pd(a, b); }
+GQ_AVX2 inline __m256d bitXor(__m256d a, __m256d b) { return _mm256_xor_pd(a, b); }
+// The SSE compares' predicates: cmpeq is EQ_OQ, cmplt LT_OS, cmple LE_OS (false on NaN, as here).
+GQ_AVX2 inline __m256d eq(__m256d a, __m256d b) { return _mm256_cmp_pd(a, b, _CMP_EQ_OQ); }
+GQ_AVX2 inline __m256d lt(__m256d a, __m256d b) { return _mm256_cmp_pd(a, b, _CMP_LT_OS); }
+GQ_AVX2 inline __m256d le(__m256d a, __m256d b) { return _mm256_cmp_pd(a, b, _CMP_LE_OS); }
+#undef GQ_AVX2
 }  // namespace lanes
 #endif
 
@@ -218,22 +245,47 @@ template <class T> struct TriangleHits4 {
 namespace lanes {
 // Lanes [lane0, lane0 + width) of the wide test: returns their candidate bits (shifted to lane0) and adds the decided
 // and front-face bits to `hits`.
-template <class T>
-inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r, int lane0, T maxT,
+// With R = Reg256d (256-bit vectors) rayLanes and exactLanes are instantiated only inside the AVX2 walk, which inlines
+// them whole (flatten): their vectors never cross a call between AVX and non-AVX code, which the ABI warning is about.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+// The ray's origin and shear on the permuted axes in registers of R: the per-ray broadcasts, or (other widths)
+// broadcast here from the scalar constants.
+template <class R> struct RayLanes {
+  typename R::type ox, oy, oz, sx, sy, sz;
+};
+// (Written to `out`, not returned: a 256-bit vector returned by a function compiled without AVX changes the ABI.)
+template <class R, class T> inline void rayLanes(const WatertightRay4<T>& r, RayLanes<R>& out) {
+  if constexpr (std::is_same_v<R, Reg<T>>) {
+    out = RayLanes<R>{r.ox, r.oy, r.oz, r.sx, r.sy, r.sz};
+  } else {
+    const WatertightRay<T>& ray = r.ray;
+    out = RayLanes<R>{R::set1(ray.org[ray.kx]), R::set1(ray.org[ray.ky]), R::set1(ray.org[ray.kz]),
+                      R::set1(ray.sx), R::set1(ray.sy), R::set1(ray.sz)};
+  }
+}
+
+template <class T, class R = Reg<T>>
+inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r4, int lane0, T maxT,
                       bool cullBackFaces, TriangleHits4<T>& hits) {
-  using R = Reg<T>;
   using V = typename R::type;
-  const WatertightRay<T>& ray = r.ray;
+  const WatertightRay<T>& ray = r4.ray;
+  RayLanes<R> r;
+  rayLanes<R>(r4, r);
   const V zero = R::set1(T(0));
-  auto at = [&](int vertex, int axis) { return R::load(&p.v[vertex][axis][lane0]); };
+  auto at = [&](int vertex, int axis) { return &p.v[vertex][axis][lane0]; };  // loaded by R::load
   // a = v0 - org, b = v1 - org, c = v2 - org on the permuted axes, then the shear. The sheared x and y are computed
   // negated, nax = (ox - v0x) + sx * akz = -((v0x - ox) - sx * akz) (rounding is symmetric), so the vertex is the
   // subtraction's second operand (read from memory on x86); the edge functions below multiply them in pairs, so they
   // are the scalar test's bit for bit but for the sign of an exact zero (which goes to the scalar test).
-  const V akz = sub(at(0, ray.kz), r.oz), bkz = sub(at(1, ray.kz), r.oz), ckz = sub(at(2, ray.kz), r.oz);
-  const V nax = add(sub(r.ox, at(0, ray.kx)), mul(r.sx, akz)), nay = add(sub(r.oy, at(0, ray.ky)), mul(r.sy, akz));
-  const V nbx = add(sub(r.ox, at(1, ray.kx)), mul(r.sx, bkz)), nby = add(sub(r.oy, at(1, ray.ky)), mul(r.sy, bkz));
-  const V ncx = add(sub(r.ox, at(2, ray.kx)), mul(r.sx, ckz)), ncy = add(sub(r.oy, at(2, ray.ky)), mul(r.sy, ckz));
+  const V akz = sub(R::load(at(0, ray.kz)), r.oz), bkz = sub(R::load(at(1, ray.kz)), r.oz);
+  const V ckz = sub(R::load(at(2, ray.kz)), r.oz);
+  const V nax = add(sub(r.ox, R::load(at(0, ray.kx))), mul(r.sx, akz));
+  const V nay = add(sub(r.oy, R::load(at(0, ray.ky))), mul(r.sy, akz));
+  const V nbx = add(sub(r.ox, R::load(at(1, ray.kx))), mul(r.sx, bkz));
+  const V nby = add(sub(r.oy, R::load(at(1, ray.ky))), mul(r.sy, bkz));
+  const V ncx = add(sub(r.ox, R::load(at(2, ray.kx))), mul(r.sx, ckz));
+  const V ncy = add(sub(r.oy, R::load(at(2, ray.ky))), mul(r.sy, ckz));
   // edgeFunction(cx, cy, bx, by), edgeFunction(ax, ay, cx, cy), edgeFunction(bx, by, ax, ay).
   const V eu = sub(mul(ncx, nby), mul(ncy, nbx));
   const V ev = sub(mul(nax, ncy), mul(nay, ncx));
@@ -277,22 +329,28 @@ inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r,
   hits.decided |= decided << lane0;
   return (candidates | zeroEdge) << lane0;
 }
+#pragma GCC diagnostic pop
 }  // namespace lanes
 #endif
 
 // Bit i set: the scalar watertight test of triangle i of the leaf may accept the ray within [0, maxT]. A candidate
 // lane without an exactly zero edge function and with a finite hit is decided here: the scalar test accepts it with
 // the hit written to `hits` (bit i of hits.decided).
-template <class T>
+// kAvx2 (callers on CPUs with AVX2): double lanes 4 to a register instead of 2.
+template <class T, bool kAvx2 = false>
 inline int exactTriangleHits(const TriangleVertices4<T>& p, const WatertightRay4<T>& r, T maxT, bool cullBackFaces,
                              TriangleHits4<T>& hits) {
   hits.decided = 0;
   hits.frontMask = 0;
 #ifdef GQ_SSE42
-  int mask = 0;
-  for (int lane0 = 0; lane0 < 4; lane0 += lanes::Reg<T>::kWidth)
-    mask |= lanes::exactLanes(p, r, lane0, maxT, cullBackFaces, hits);
-  return mask;
+  if constexpr (kAvx2 && std::is_same_v<T, double>) {
+    return lanes::exactLanes<T, lanes::Reg256d>(p, r, 0, maxT, cullBackFaces, hits);
+  } else {
+    int mask = 0;
+    for (int lane0 = 0; lane0 < 4; lane0 += lanes::Reg<T>::kWidth)
+      mask |= lanes::exactLanes(p, r, lane0, maxT, cullBackFaces, hits);
+    return mask;
+  }
 #else
   // Scalar build: the scalar test decides every lane it accepts with a finite hit.
   int mask = 0;

@@ -1,4 +1,4 @@
-// Triangle mesh cooking: validation, removal of degenerate triangles, BVH4 build (bvh/build.cpp) with triangles
+// Triangle mesh cooking: validation, removal of degenerate triangles, 8-wide BVH build (bvh/build.cpp) with triangles
 // reordered into leaf order, and the hull vertex list used for exact world bounds.
 #include <libqhull_r/qhull_ra.h>
 
@@ -111,7 +111,7 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
     mesh->vertices = vertices;
     std::vector<std::uint32_t> order;
     auto accel = std::make_shared<detail::MeshAccel>();
-    accel->bvh = detail::collapseToBvh8(detail::buildBvh4(primBounds, order));
+    accel->bvh = detail::buildBvh8(primBounds, order);
     mesh->triangles.resize(kept.size());
     mesh->inputIndex.resize(kept.size());
     mesh->cookedIndex.assign(triangles.size(), kRemovedTriangle);

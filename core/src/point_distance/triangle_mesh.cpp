@@ -1,4 +1,4 @@
-// Distance from a point to a triangle mesh surface: best-first BVH4 traversal in shape space (scale applied,
+// Distance from a point to a triangle mesh surface: best-first BVH traversal in shape space (scale applied,
 // pose removed; distances are world distances there). A child's mesh-space box maps to the box
 // center' = S c, extents' = |S| e, which contains the scaled child, so the point's distance to it is a lower bound.
 #include <limits>

@@ -1,6 +1,6 @@
 // Raycast against a triangle mesh (spec "Raycasts against Triangle Meshes"). The ray is taken into mesh space,
 // x_mesh = S^-1 R^T (x_world - p), keeping its parameter: o' + t d' maps to o + t dir, so t is the world distance
-// even under non-uniform scale. The BVH4 (bvh/traverse.h) is walked front to back with the closest distance found so
+// even under non-uniform scale. The 8-wide BVH (bvh/traverse.h) is walked front to back with the closest distance found so
 // far as early-out; at a leaf the exact watertight test (mesh/triangle.h) runs in T on its (up to) 4 triangles at once
 // (bvh/triangle_exact4.h, read from the mesh's triangle vertex copies), the scalar test only on lanes it cannot decide.
 // Modes: closest hit (default), any hit (AnyHit, maxHits 1), or up to maxHits hits (MeshMultiple): we keep the
@@ -88,7 +88,7 @@ template <class T> class MeshRaycaster {
 #else
     loadTriangles4(tv, count, fourReadable, tris);
 #endif
-    return exactTriangleHits(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
+    return exactTriangleHits<T, kAvx2>(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
   }
 
   // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the wide test when it decided the
