@@ -140,16 +140,21 @@ template <int W> struct TreeWalk {
   }
 };
 
-TEST(MeshRaycastWalks, EveryTriangleIsInOneLeafUnderContainingBoxes) {
-  const MeshData<float> m = meshtest::icosphere<float>(5);  // 20,480 triangles
-  std::vector<Bounds3<float>> prims;
+// The tree over the triangle boxes of an icosphere of 20,480 triangles.
+Bvh8 icosphereTree(std::vector<Bounds3<float>>& prims, std::vector<std::uint32_t>& order) {
+  const MeshData<float> m = meshtest::icosphere<float>(5);
   for (const auto& t : m.triangles) {
     Bounds3<float> b;
     for (std::uint32_t v : t) b.include(m.vertices[v]);
     prims.push_back(b);
   }
+  return detail::buildBvh8(prims, order);
+}
+
+TEST(MeshRaycastWalks, EveryTriangleIsInOneLeafUnderContainingBoxes) {
+  std::vector<Bounds3<float>> prims;
   std::vector<std::uint32_t> order;
-  const Bvh8 bvh = detail::buildBvh8(prims, order);
+  const Bvh8 bvh = icosphereTree(prims, order);
   std::vector<std::uint32_t> sortedOrder = order;
   std::sort(sortedOrder.begin(), sortedOrder.end());
   for (std::uint32_t i = 0; i < sortedOrder.size(); ++i) ASSERT_EQ(sortedOrder[i], i) << "order is a permutation";
@@ -174,15 +179,9 @@ TEST(MeshRaycastWalks, EveryTriangleIsInOneLeafUnderContainingBoxes) {
 // The SAH counts triangles in leaves of 4 (one leaf test covers 4): on a uniformly tessellated sphere the leaves are
 // close to full and the nodes hold several children each.
 TEST(MeshRaycastWalks, TreeFillsLeavesAndNodes) {
-  const MeshData<float> m = meshtest::icosphere<float>(5);
   std::vector<Bounds3<float>> prims;
-  for (const auto& t : m.triangles) {
-    Bounds3<float> b;
-    for (std::uint32_t v : t) b.include(m.vertices[v]);
-    prims.push_back(b);
-  }
   std::vector<std::uint32_t> order;
-  const Bvh8 bvh = detail::buildBvh8(prims, order);
+  const Bvh8 bvh = icosphereTree(prims, order);
   std::size_t leaves = 0, children = 0;
   for (const Bvh8Node& n : bvh.nodes)
     for (std::uint32_t ref : n.child) {
