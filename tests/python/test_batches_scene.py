@@ -218,6 +218,13 @@ def test_ray_batches_answer_the_same_with_a_kept_scratch_across_calls(dtype):
     for i in range(0, 70000, 997):
         single = gq.raycast(origins[i], dirs[i], mesh, both_sides=True)
         assert fresh[4][i] == (single.face_index if single is not None else -1)
+    # A bad ray fails the call naming it, with or without the scratch, and leaves the scratch usable.
+    bad = origins.copy()
+    bad[40000, 1] = np.nan
+    for kept in (None, scratch):
+        with pytest.raises(ValueError, match="item 40000"):
+            gq.raycast_batch_faces(bad, dirs, mesh, both_sides=True, scratch=kept)
+    assert np.array_equal(gq.raycast_batch_faces(origins, dirs, mesh, both_sides=True, scratch=scratch), fresh[4])
     scratch.release()
     assert scratch.bytes == 0
 
