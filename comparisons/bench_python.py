@@ -3,7 +3,8 @@
 
   rays:    1M rays through geomquery.trimesh.RayMeshIntersector.intersects_first (non-unit directions, normalised
            as trimesh does) against gq::raycastBatch on the same unit rays, timed in C++ (face index only, all
-           threads); mesh: the Stanford bunny from the shared data folder, else an icosphere.
+           threads); mesh: the Stanford bunny from the shared data folder, else an icosphere. Then the same pair of
+           calls with one geomquery.BatchScratch kept across them (geomquery.raycast_batch_faces with scratch=).
   overlap: one geomquery.overlap(sphere, pose, box, pose) call against the same gq::overlap in a C++ loop; the
            difference is the Python overhead of a call.
 
@@ -73,14 +74,22 @@ def bench_rays(n, repeats):
     ray = gtm.RayMeshIntersector(mesh)
     first = ray.intersects_first(origins[:10], dirs[:10])  # cooks the mesh once
     cooked = gtm.cooked_mesh(mesh).mesh
-    py_times, cpp_times = [], []
+    scratch = gq.BatchScratch()
+    py_times, cpp_times, kept_py_times, kept_cpp_times = [], [], [], []
     for _ in range(repeats):  # alternate, so both see the same load
         t0 = time.perf_counter()
         first = ray.intersects_first(origins, dirs)
         py_times.append(time.perf_counter() - t0)
         cpp_times.append(gq._geomquery._time_raycast_batch_faces(origins, unit, cooked, 0))
+        # The same call with a kept scratch (the batch reuses its arrays instead of faulting in fresh ones).
+        t0 = time.perf_counter()
+        kept = gq.raycast_batch_faces(origins, dirs, cooked, None, float("inf"), True, 0, True, scratch=scratch)
+        kept_py_times.append(time.perf_counter() - t0)
+        kept_cpp_times.append(gq._geomquery._time_raycast_batch_faces(origins, unit, cooked, 0, scratch))
     hits = int((first >= 0).sum())
-    return name, len(f), statistics.median(py_times), statistics.median(cpp_times), hits
+    assert np.array_equal(kept, first)
+    return (name, len(f), statistics.median(py_times), statistics.median(cpp_times), hits,
+            statistics.median(kept_py_times), statistics.median(kept_cpp_times))
 
 
 def rays_for_instructions():
@@ -154,12 +163,15 @@ def main():
     if args.cast_once:
         return cast_once(args.cast_once[0], int(args.cast_once[1]))
 
-    name, tris, py_s, cpp_s, hits = bench_rays(args.rays, args.repeats)
+    name, tris, py_s, cpp_s, hits, kept_py_s, kept_cpp_s = bench_rays(args.rays, args.repeats)
     py_ns, cpp_ns, loop_ns = bench_overlap(args.calls, args.repeats)
     load = os.getloadavg()[0]
     rows = [
         ("intersects_first_1M_rays", "%s (%d triangles), %d rays, %d hits" % (name, tris, args.rays, hits),
          py_s * 1e3, cpp_s * 1e3, "ms", py_s / cpp_s),
+        ("raycast_batch_faces_1M_rays_kept_scratch",
+         "the same rays through geomquery.raycast_batch_faces(normalize=True) with a kept BatchScratch, against the "
+         "C++ batch with it", kept_py_s * 1e3, kept_cpp_s * 1e3, "ms", kept_py_s / kept_cpp_s),
         ("overlap_single_call", "sphere-box, Pose objects; python includes the for-loop (%.0f ns a turn)" % loop_ns,
          py_ns, cpp_ns, "ns", py_ns / cpp_ns),
         ("overlap_python_overhead", "python call minus the C++ call minus the empty loop turn",

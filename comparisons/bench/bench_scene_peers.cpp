@@ -4,7 +4,8 @@
 //    Scene::raycastClosest: the two differ only in the structure over the objects); float rays, rtcIntersect1.
 //  - EmbreeBunnyIntersect1 / EmbreeBunnyIntersect1M: the 1M bunny rays (float) against Embree's triangle BVH
 //    (RTC_BUILD_QUALITY_HIGH, as bench_raycast_mesh), one rtcIntersect1 per ray or the whole array through
-//    rtcIntersect1M; GqFloatBunnyRaycastBatch/threads: the same float rays as one gq raycastBatch on the float bunny.
+//    rtcIntersect1M; GqFloatBunnyRaycastBatch/threads: the same float rays as one gq raycastBatch on the float bunny
+//    (default settings: coherent order on 1 thread, input order on 2).
 //  - FclSelfPairs: FCL 0.7's DynamicAABBTreeCollisionManager over the same 1000 objects as FCL shapes (the capsule
 //    along Z turned onto gq's X, the box by full sides, the hulls as Convex with gq's cooked faces, the bunnies as
 //    BVHModel<OBBRSS>), the narrow phase fcl::collide in the callback; `pairs` counts the colliding pairs.

@@ -195,3 +195,69 @@ def test_batches_call_python_custom_shapes_from_worker_threads():
     over = gq.overlap_batch(ball, poses, gq.Sphere(0.5), None)
     expected = np.linalg.norm(poses[:, :3], axis=1) <= 1.0
     assert np.array_equal(over, expected)
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+def test_ray_batches_answer_the_same_with_a_kept_scratch_across_calls(dtype):
+    # 70,000 rays: enough per thread (32,768) for the batch's coherent order, which is what uses the scratch.
+    mesh, rng, origins = icosphere_and_origins(dtype, 11, 70000)
+    dirs = rng.normal(size=(70000, 3))
+    dirs = (dirs / np.linalg.norm(dirs, axis=1)[:, None]).astype(dtype)
+    fresh = gq.raycast_batch(origins, dirs, mesh, both_sides=True)
+    scratch = gq.BatchScratch()
+    assert scratch.bytes == 0
+    for threads in (1, 2, 1):
+        kept = gq.raycast_batch(origins, dirs, mesh, both_sides=True, threads=threads, scratch=scratch)
+        assert all(np.array_equal(a, b) for a, b in zip(kept, fresh))
+        assert scratch.bytes > 0
+    # A larger batch grows the kept arrays; a smaller one reuses them.
+    twice = (np.vstack([origins, origins[::-1]]), np.vstack([dirs, dirs[::-1]]))
+    faces = gq.raycast_batch_faces(*twice, mesh, both_sides=True, scratch=scratch)
+    assert np.array_equal(faces[:70000], fresh[4]) and np.array_equal(faces[70000:], fresh[4][::-1])
+    assert np.array_equal(gq.raycast_batch_faces(origins, dirs, mesh, both_sides=True, scratch=scratch), fresh[4])
+    for i in range(0, 70000, 997):
+        single = gq.raycast(origins[i], dirs[i], mesh, both_sides=True)
+        assert fresh[4][i] == (single.face_index if single is not None else -1)
+    # A bad ray fails the call naming it, with or without the scratch, and leaves the scratch usable.
+    bad = origins.copy()
+    bad[40000, 1] = np.nan
+    for kept in (None, scratch):
+        with pytest.raises(ValueError, match="item 40000"):
+            gq.raycast_batch_faces(bad, dirs, mesh, both_sides=True, scratch=kept)
+    assert np.array_equal(gq.raycast_batch_faces(origins, dirs, mesh, both_sides=True, scratch=scratch), fresh[4])
+    scratch.release()
+    assert scratch.bytes == 0
+
+
+def test_a_batch_scratch_of_the_wrong_type_raises_type_error():
+    mesh, rng, origins = icosphere_and_origins(np.float64, 3, 10)
+    dirs = np.tile([0.0, 0.0, 1.0], (10, 1))
+    for wrong in (object(), 3, "scratch", mesh):
+        with pytest.raises(TypeError):
+            gq.raycast_batch(origins, dirs, mesh, scratch=wrong)
+        with pytest.raises(TypeError):
+            gq.raycast_batch_faces(origins, dirs, mesh, scratch=wrong)
+    assert gq.raycast_batch_faces(origins, dirs, mesh, scratch=None).shape == (10,)
+
+
+def test_python_threads_sharing_one_batch_scratch_take_turns():
+    import threading
+
+    mesh, rng, origins = icosphere_and_origins(np.float64, 13, 70000)
+    dirs = rng.normal(size=(70000, 3))
+    dirs /= np.linalg.norm(dirs, axis=1)[:, None]
+    expected = gq.raycast_batch_faces(origins, dirs, mesh)
+    scratch = gq.BatchScratch()
+    results = []
+
+    def cast():
+        for _ in range(3):
+            results.append(gq.raycast_batch_faces(origins, dirs, mesh, threads=1, scratch=scratch))
+
+    workers = [threading.Thread(target=cast) for _ in range(3)]
+    for w in workers:
+        w.start()
+    for w in workers:
+        w.join()
+    assert len(results) == 9 and all(np.array_equal(r, expected) for r in results)
+    assert scratch.bytes > 0

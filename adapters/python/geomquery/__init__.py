@@ -10,6 +10,7 @@ Errors raise: ``ValueError`` for invalid input (the message is gq's), ``TypeErro
 """
 
 from ._geomquery import (  # noqa: F401
+    BatchScratch,
     Box,
     Capsule,
     Cone,

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers of the batched forms: strided numpy rows as gq::StridedArray, (N, 7) poses, and batch Status -> exception.
 #include <limits>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -98,5 +99,35 @@ inline gq::BatchSettings batchSettings(std::uint32_t threads) {
   s.threads = threads;
   return s;
 }
+
+// geomquery.BatchScratch: a gq::BatchScratch with a lock, so two Python threads passing one scratch to batches that
+// run without the GIL take turns instead of sharing its arrays.
+struct BatchScratchObject {
+  gq::BatchScratch scratch;
+  std::mutex lock;
+};
+
+// The scratch a batch call uses: none, or the object's scratch locked for the call (taken without the GIL).
+class ScratchUse {
+ public:
+  explicit ScratchUse(BatchScratchObject* object) : object_(object) {
+    if (object_ == nullptr) return;
+    py::gil_scoped_release release;
+    object_->lock.lock();
+  }
+  ~ScratchUse() {
+    if (object_ != nullptr) object_->lock.unlock();
+  }
+  ScratchUse(const ScratchUse&) = delete;
+  ScratchUse& operator=(const ScratchUse&) = delete;
+  gq::BatchSettings settings(std::uint32_t threads) const {
+    gq::BatchSettings s = batchSettings(threads);
+    s.scratch = object_ != nullptr ? &object_->scratch : nullptr;
+    return s;
+  }
+
+ private:
+  BatchScratchObject* object_;
+};
 
 }  // namespace gqpy

@@ -91,9 +91,12 @@ struct BatchSettings {
   // in blocks of up to 1,048,576 input rays (at least one per worker), sorted by where each ray passes the mesh's
   // bounds and by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not
   // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays
-  // that are already coherent). Memory: each worker holds scratch of about 72 bytes (double; 48 in float) a ray of
-  // its largest block, each of its arrays in whole 2 MB pages (about 4 MB a worker at the smallest sorted block), so
-  // at most ~76 MB (double) a worker, freed on return unless `scratch` keeps it.
+  // that are already coherent). On more than one worker the order needs a kept `scratch`: without one such a batch
+  // keeps the input order, because faulting in fresh scratch on every worker at every call cost more than the order
+  // gains (1M bunny rays on 2 threads: 235 ms in coherent order with fresh scratch, 187 ms with a kept one, 190 ms
+  // in input order; docs/performance.md). Memory: each worker holds scratch of about 72 bytes (double; 48 in float)
+  // a ray of its largest block, each of its arrays in whole 2 MB pages (about 4 MB a worker at the smallest sorted
+  // block), so at most ~76 MB (double) a worker, freed on return unless `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };

@@ -438,8 +438,19 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   return failed;
 }
 
-// Casts the mesh rays of a batch: in key order by blocks (RayOrderSettings) when the settings ask for it and every
-// worker gets at least minRays rays, else in input order. Blocks are at least as many as the workers.
+// Whether a batch on `slots` workers casts in key order: asked for, at least minRays rays a worker, and, on more than
+// one worker, a kept scratch (BatchSettings::scratch). Without one, every worker would fault its scratch into huge
+// pages on each call, and at two workers those faults (the kernel compacting memory for them) cost more than the
+// order gains: 1M bunny rays on 2 threads took 235 ms in key order with fresh scratch, 187 ms with a kept one and
+// 190 ms in input order, against 358 ms on 1 thread in key order (docs/performance.md).
+inline bool castsInKeyOrder(const BatchSettings& settings, std::size_t n, std::size_t slots,
+                            const detail::RayOrderSettings& order) {
+  if (!settings.coherentRayOrder || n / slots < order.minRays) return false;
+  return slots == 1 || settings.scratch != nullptr;
+}
+
+// Casts the mesh rays of a batch: in key order by blocks (RayOrderSettings) when castsInKeyOrder, else in input
+// order. Blocks are at least as many as the workers.
 template <class T, class Out>
 std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, const Out& out,
                              Status* statuses, const BatchSettings& settings) {
@@ -448,7 +459,7 @@ std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, con
   const detail::RayOrderSettings order;
   const std::size_t slots = batchSlots(settings);
   Bounds3<T> box;
-  if (!settings.coherentRayOrder || n / slots < order.minRays || !computeGeomBounds(box, shape, pose).ok()) {
+  if (!castsInKeyOrder(settings, n, slots, order) || !computeGeomBounds(box, shape, pose).ok()) {
     return runItems(n, settings, items);
   }
   const detail::RayOrderKey<T> key(box);
