@@ -245,10 +245,17 @@ template <class T> struct TriangleHits4 {
 namespace lanes {
 // Lanes [lane0, lane0 + width) of the wide test: returns their candidate bits (shifted to lane0) and adds the decided
 // and front-face bits to `hits`.
-// With R = Reg256d (256-bit vectors) rayLanes and exactLanes are instantiated only inside the AVX2 walk, which inlines
-// them whole (flatten): their vectors never cross a call between AVX and non-AVX code, which the ABI warning is about.
+// With R = Reg256d (256-bit vectors) rayLanes and exactLanes are instantiated only inside the AVX2 walk, which GCC
+// inlines whole (flatten): their vectors never cross a call between AVX and non-AVX code, which the ABI warning is
+// about. Clang compiles every function for its own target whatever it is inlined into and rejects 256-bit vectors in
+// these generic functions, so under clang the AVX2 walk tests double leaves as two SSE halves (the same bits).
+#if defined(__clang__)
+inline constexpr bool kAvx2DoubleLeaves = false;
+#else
+inline constexpr bool kAvx2DoubleLeaves = true;
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 // The ray's origin and shear on the permuted axes in registers of R: the per-ray broadcasts, or (other widths)
 // broadcast here from the scalar constants.
 template <class R> struct RayLanes {
@@ -329,21 +336,23 @@ inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r4
   hits.decided |= decided << lane0;
   return (candidates | zeroEdge) << lane0;
 }
+#if !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 }  // namespace lanes
 #endif
 
 // Bit i set: the scalar watertight test of triangle i of the leaf may accept the ray within [0, maxT]. A candidate
 // lane without an exactly zero edge function and with a finite hit is decided here: the scalar test accepts it with
 // the hit written to `hits` (bit i of hits.decided).
-// kAvx2 (callers on CPUs with AVX2): double lanes 4 to a register instead of 2.
+// kAvx2 (callers on CPUs with AVX2): double lanes 4 to a register instead of 2 (GCC builds, see kAvx2DoubleLeaves).
 template <class T, bool kAvx2 = false>
 inline int exactTriangleHits(const TriangleVertices4<T>& p, const WatertightRay4<T>& r, T maxT, bool cullBackFaces,
                              TriangleHits4<T>& hits) {
   hits.decided = 0;
   hits.frontMask = 0;
 #ifdef GQ_SSE42
-  if constexpr (kAvx2 && std::is_same_v<T, double>) {
+  if constexpr (kAvx2 && lanes::kAvx2DoubleLeaves && std::is_same_v<T, double>) {
     return lanes::exactLanes<T, lanes::Reg256d>(p, r, 0, maxT, cullBackFaces, hits);
   } else {
     int mask = 0;
