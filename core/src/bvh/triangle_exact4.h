@@ -1,6 +1,7 @@
 #pragma once
 // The watertight ray/triangle test (mesh/triangle.h, intersectRayTriangle<T>) on the (up to) 4 triangles of a leaf at
-// once, in the mesh's own precision: float 4 lanes per SSE register, double 2. Every lane performs the scalar test's
+// once, in the mesh's own precision: float 4 lanes per SSE register, double 2 (4 per AVX2 register in the AVX2
+// walk). Every lane performs the scalar test's
 // IEEE operations in the same order on the same inputs, so a lane it rejects is one the scalar test rejects (or,
 // with a NaN edge function from overflow, accepts with a NaN hit, which the mesh raycast rejects): no margin and no
 // pre-test copy of the triangles are needed. Lanes it cannot decide exactly the same way are kept as candidates for
@@ -243,117 +244,40 @@ template <class T> struct TriangleHits4 {
 
 #ifdef GQ_SSE42
 namespace lanes {
-// Lanes [lane0, lane0 + width) of the wide test: returns their candidate bits (shifted to lane0) and adds the decided
-// and front-face bits to `hits`.
-// With R = Reg256d (256-bit vectors) rayLanes and exactLanes are instantiated only inside the AVX2 walk, which GCC
-// inlines whole (flatten): their vectors never cross a call between AVX and non-AVX code, which the ABI warning is
-// about. Clang compiles every function for its own target whatever it is inlined into and rejects 256-bit vectors in
-// these generic functions, so under clang the AVX2 walk tests double leaves as two SSE halves (the same bits).
-#if defined(__clang__)
-inline constexpr bool kAvx2DoubleLeaves = false;
-#else
-inline constexpr bool kAvx2DoubleLeaves = true;
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-// The ray's origin and shear on the permuted axes in registers of R: the per-ray broadcasts, or (other widths)
-// broadcast here from the scalar constants.
-template <class R> struct RayLanes {
-  typename R::type ox, oy, oz, sx, sy, sz;
-};
-// (Written to `out`, not returned: a 256-bit vector returned by a function compiled without AVX changes the ABI.)
-template <class R, class T> inline void rayLanes(const WatertightRay4<T>& r, RayLanes<R>& out) {
-  if constexpr (std::is_same_v<R, Reg<T>>) {
-    out = RayLanes<R>{r.ox, r.oy, r.oz, r.sx, r.sy, r.sz};
-  } else {
-    const WatertightRay<T>& ray = r.ray;
-    out = RayLanes<R>{R::set1(ray.org[ray.kx]), R::set1(ray.org[ray.ky]), R::set1(ray.org[ray.kz]),
-                      R::set1(ray.sx), R::set1(ray.sy), R::set1(ray.sz)};
-  }
-}
+// The wide test for registers R, compiled for the baseline (exactLanesWith) and for AVX2 as a whole (exactLanesAvx2,
+// the 256-bit double form, called only on CPUs with AVX2).
+#define GQ_EXACT_LANES_NAME exactLanesWith
+#define GQ_EXACT_LANES_TARGET
+#include "bvh/triangle_exact4_lanes.inc"
+#undef GQ_EXACT_LANES_NAME
+#undef GQ_EXACT_LANES_TARGET
+#define GQ_EXACT_LANES_NAME exactLanesAvx2
+#define GQ_EXACT_LANES_TARGET __attribute__((target("avx2")))
+#include "bvh/triangle_exact4_lanes.inc"
+#undef GQ_EXACT_LANES_NAME
+#undef GQ_EXACT_LANES_TARGET
 
-template <class T, class R = Reg<T>>
+// The SSE form (float 4 lanes, double 2).
+template <class T>
 inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r4, int lane0, T maxT,
                       bool cullBackFaces, TriangleHits4<T>& hits) {
-  using V = typename R::type;
-  const WatertightRay<T>& ray = r4.ray;
-  RayLanes<R> r;
-  rayLanes<R>(r4, r);
-  const V zero = R::set1(T(0));
-  auto at = [&](int vertex, int axis) { return &p.v[vertex][axis][lane0]; };  // loaded by R::load
-  // a = v0 - org, b = v1 - org, c = v2 - org on the permuted axes, then the shear. The sheared x and y are computed
-  // negated, nax = (ox - v0x) + sx * akz = -((v0x - ox) - sx * akz) (rounding is symmetric), so the vertex is the
-  // subtraction's second operand (read from memory on x86); the edge functions below multiply them in pairs, so they
-  // are the scalar test's bit for bit but for the sign of an exact zero (which goes to the scalar test).
-  const V akz = sub(R::load(at(0, ray.kz)), r.oz), bkz = sub(R::load(at(1, ray.kz)), r.oz);
-  const V ckz = sub(R::load(at(2, ray.kz)), r.oz);
-  const V nax = add(sub(r.ox, R::load(at(0, ray.kx))), mul(r.sx, akz));
-  const V nay = add(sub(r.oy, R::load(at(0, ray.ky))), mul(r.sy, akz));
-  const V nbx = add(sub(r.ox, R::load(at(1, ray.kx))), mul(r.sx, bkz));
-  const V nby = add(sub(r.oy, R::load(at(1, ray.ky))), mul(r.sy, bkz));
-  const V ncx = add(sub(r.ox, R::load(at(2, ray.kx))), mul(r.sx, ckz));
-  const V ncy = add(sub(r.oy, R::load(at(2, ray.ky))), mul(r.sy, ckz));
-  // edgeFunction(cx, cy, bx, by), edgeFunction(ax, ay, cx, cy), edgeFunction(bx, by, ax, ay).
-  const V eu = sub(mul(ncx, nby), mul(ncy, nbx));
-  const V ev = sub(mul(nax, ncy), mul(nay, ncx));
-  const V ew = sub(mul(nbx, nay), mul(nby, nax));
-  const V anyZero = bitOr(bitOr(eq(eu, zero), eq(ev, zero)), eq(ew, zero));
-  // Edge functions of both signs (the scalar test's anyNeg && anyPos on lanes without a zero one): sign bits that
-  // differ. Only sign bits are read from here on (movemask), so masks of all bits and of the sign bit mix freely. A
-  // NaN edge function (overflow) may land either way: its lane's hit is NaN, which the mesh raycast rejects.
-  V reject = bitOr(bitXor(eu, ev), bitXor(eu, ew));
-  const V det = add(add(eu, ev), ew);
-  reject = bitOr(reject, eq(det, zero));
-  const V front = lt(zero, det);
-  if (cullBackFaces) reject = bitOr(reject, le(det, zero));  // !(det > 0)
-  const V tScaled = add(add(mul(eu, mul(r.sz, akz)), mul(ev, mul(r.sz, bkz))),
-                                 mul(ew, mul(r.sz, ckz)));
-  // sign = det > 0 ? 1 : -1; multiplying by -1 only flips the sign bit, as the xor below does.
-  const V flip = andNot(front, R::signBit());
-  const V absDet = bitXor(det, flip), st = bitXor(tScaled, flip);
-  const V limit = mul(R::set1(maxT), absDet);
-  reject = bitOr(reject, bitOr(lt(st, zero), lt(limit, st)));
-  // An exactly zero edge function: the scalar test re-evaluates it in a wider type, so it decides.
-  const int zeroEdge = R::mask(anyZero);
-  const int full = (1 << R::kWidth) - 1;
-  const int candidates = ~R::mask(reject) & full;
-  // Decided: no zero edge function and t, u, v finite (the mesh raycast requires a finite hit). The scalar test then
-  // rejects exactly what `reject` holds (on a NaN comparison it accepts, and so does this test; a NaN edge function or
-  // det gives a NaN t, never decided), so a candidate is its hit.
-  int decided = candidates & ~zeroEdge;
-  if (decided) {
-    const V inv = div(R::set1(T(1)), det);
-    const V t = mul(tScaled, inv), u = mul(ev, inv), v = mul(ew, inv);
-    const V big = R::set1(std::numeric_limits<T>::max());
-    const V sign = R::signBit();
-    const V finite = bitAnd(bitAnd(le(andNot(sign, t), big), le(andNot(sign, u), big)), le(andNot(sign, v), big));
-    decided &= R::mask(finite);
-    R::store(hits.t + lane0, t);
-    R::store(hits.u + lane0, u);
-    R::store(hits.v + lane0, v);
-    hits.frontMask |= (R::mask(front) & decided) << lane0;
-  }
-  hits.decided |= decided << lane0;
-  return (candidates | zeroEdge) << lane0;
+  return exactLanesWith<T, Reg<T>>(p, r4, lane0, maxT, cullBackFaces, hits);
 }
-#if !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 }  // namespace lanes
 #endif
 
 // Bit i set: the scalar watertight test of triangle i of the leaf may accept the ray within [0, maxT]. A candidate
 // lane without an exactly zero edge function and with a finite hit is decided here: the scalar test accepts it with
 // the hit written to `hits` (bit i of hits.decided).
-// kAvx2 (callers on CPUs with AVX2): double lanes 4 to a register instead of 2 (GCC builds, see kAvx2DoubleLeaves).
+// kAvx2 (callers on CPUs with AVX2): double lanes 4 to a register instead of 2.
 template <class T, bool kAvx2 = false>
 inline int exactTriangleHits(const TriangleVertices4<T>& p, const WatertightRay4<T>& r, T maxT, bool cullBackFaces,
                              TriangleHits4<T>& hits) {
   hits.decided = 0;
   hits.frontMask = 0;
 #ifdef GQ_SSE42
-  if constexpr (kAvx2 && lanes::kAvx2DoubleLeaves && std::is_same_v<T, double>) {
-    return lanes::exactLanes<T, lanes::Reg256d>(p, r, 0, maxT, cullBackFaces, hits);
+  if constexpr (kAvx2 && std::is_same_v<T, double>) {
+    return lanes::exactLanesAvx2<T, lanes::Reg256d>(p, r, 0, maxT, cullBackFaces, hits);
   } else {
     int mask = 0;
     for (int lane0 = 0; lane0 < 4; lane0 += lanes::Reg<T>::kWidth)
