@@ -35,7 +35,7 @@ ROWS = {
                             "1M bunny rays as one raycastBatch, 2 threads (input order: no BatchScratch kept)"),
     "BunnyRaycastBatchInputOrder/2": ("BunnyRaycastBatchInputOrder/1", "the input-order batch, 2 threads"),
     "BunnyRaycastBatchKeptScratch/1": ("BunnyRaycastLoop", "the coherent batch with a BatchScratch kept across calls, 1 thread"),
-    "BunnyRaycastBatchKeptScratch/2": ("BunnyRaycastBatchKeptScratch/1", "the same, 2 threads (coherent order)"),
+    "BunnyRaycastBatchKeptScratch/2": ("BunnyRaycastBatchKeptScratch/1", "the same, 2 threads (input order: two workers keep it)"),
     "GqFloatBunnyRaycastBatch/1": ("EmbreeBunnyIntersect1M", "1M bunny rays, float mesh, one raycastBatch, 1 thread"),
     "GqFloatBunnyRaycastBatch/2": ("GqFloatBunnyRaycastBatch/1", "the same, 2 threads (input order: no BatchScratch kept)"),
     "EmbreeBunnyIntersect1": ("", "Embree 3 rtcIntersect1 per ray, 1M bunny rays (float)"),

@@ -65,8 +65,8 @@ class BatchScratchAccess;
 
 // Scratch memory kept between batch calls by their caller: a mesh ray batch cast in coherent order (below) that is
 // given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (about 72
-// bytes a ray of a block per worker in double; 1M rays on 2 threads: ~36 MB a worker). A caller casting batch after
-// batch keeps one; one batch call at a time may use it. The memory is held until release() or destruction.
+// bytes a ray of a block in double: ~72 MB for 1M rays). A caller casting batch after batch on one thread keeps one;
+// one batch call at a time may use it. The memory is held until release() or destruction.
 class BatchScratch {
  public:
   BatchScratch() noexcept;
@@ -87,16 +87,13 @@ struct BatchSettings {
   // runs the hardware's count.
   std::uint32_t threads = 0;
   std::size_t grain = 64;     // items per task (at least 1)
-  // Ray batches against a triangle mesh with at least 32,768 rays per worker cast their rays in a coherent order:
-  // in blocks of up to 1,048,576 input rays (at least one per worker), sorted by where each ray passes the mesh's
-  // bounds and by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not
-  // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays
-  // that are already coherent). On more than one worker the order needs a kept `scratch`: without one such a batch
-  // keeps the input order, because faulting in fresh scratch on every worker at every call cost more than the order
-  // gains (1M bunny rays on 2 threads: 235 ms in coherent order with fresh scratch, 187 ms with a kept one, 190 ms
-  // in input order; docs/performance.md). Memory: each worker holds scratch of about 72 bytes (double; 48 in float)
-  // a ray of its largest block, each of its arrays in whole 2 MB pages (about 4 MB a worker at the smallest sorted
-  // block), so at most ~76 MB (double) a worker, freed on return unless `scratch` keeps it.
+  // Ray batches against a triangle mesh of at least 32,768 rays run on one worker (threads == 1) cast their rays in a
+  // coherent order: in blocks of up to 1,048,576 input rays, sorted by where each ray passes the mesh's bounds and
+  // by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not apply to
+  // them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that are
+  // already coherent). On more than one worker the batch keeps the input order, which was measured faster there
+  // (docs/performance.md). Memory: about 72 bytes (double; 48 in float) a ray of the largest block, each array in
+  // whole 2 MB pages, so at most ~76 MB (double), freed on return unless `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };

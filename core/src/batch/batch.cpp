@@ -438,15 +438,13 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   return failed;
 }
 
-// Whether a batch on `slots` workers casts in key order: asked for, at least minRays rays a worker, and, on more than
-// one worker, a kept scratch (BatchSettings::scratch). Without one, every worker would fault its scratch into huge
-// pages on each call, and at two workers those faults (the kernel compacting memory for them) cost more than the
-// order gains: 1M bunny rays on 2 threads took 235 ms in key order with fresh scratch, 187 ms with a kept one and
-// 190 ms in input order, against 358 ms on 1 thread in key order (docs/performance.md).
+// Whether a batch on `slots` workers casts in key order: asked for, at least minRays rays, and one worker. On two
+// workers the input order was measured faster, with or without a kept scratch: the order's own passes (keys, copies,
+// sorts, scattered hit writes) compete for memory with the other worker, and fresh scratch is faulted into huge pages
+// by every worker at every call (docs/performance.md).
 inline bool castsInKeyOrder(const BatchSettings& settings, std::size_t n, std::size_t slots,
                             const detail::RayOrderSettings& order) {
-  if (!settings.coherentRayOrder || n / slots < order.minRays) return false;
-  return slots == 1 || settings.scratch != nullptr;
+  return settings.coherentRayOrder && slots == 1 && n >= order.minRays;
 }
 
 // Casts the mesh rays of a batch: in key order by blocks (RayOrderSettings) when castsInKeyOrder, else in input
