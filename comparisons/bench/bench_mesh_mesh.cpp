@@ -1,4 +1,4 @@
-// Bunny vs bunny boolean overlap: gq::overlap (dual BVH4 traversal + exact triangle-triangle SAT, double and float)
+// Bunny vs bunny boolean overlap: gq::overlap (dual BVH traversal + exact triangle-triangle SAT, double and float)
 // vs FCL 0.7 collide on BVHModel<OBBRSS> (num_max_contacts = 1, the boolean query), on the same 64 seeded poses
 // (the second bunny moved by up to its own size, about half of the poses overlapping). Counter `overlapping` = pairs
 // reported as intersecting, so the two backends' answers can be compared in the output.

@@ -8,8 +8,7 @@
 
 namespace gq {
 
-// W children per node. 4-wide: 112 bytes used, 64-byte aligned (two cache lines); 8-wide: 224 bytes, 32-byte aligned
-// (one AVX load per bound plane).
+// W children per node. The trees built are 8-wide: 224 bytes, 32-byte aligned (one AVX load per bound plane).
 template <int W> struct alignas(W == 4 ? 64 : 32) BvhNode {
   static constexpr int kWidth = W;
   // Structure-of-arrays child bounds: lane i belongs to child i.
@@ -31,7 +30,6 @@ template <int W> struct alignas(W == 4 ? 64 : 32) BvhNode {
   static constexpr std::uint32_t leafFirst(std::uint32_t ref) { return ref & kLeafFirstMask; }
   static constexpr std::uint32_t leafCount(std::uint32_t ref) { return ((ref >> kLeafCountShift) & 7u) + 1u; }
 };
-using Bvh4Node = BvhNode<4>;
 using Bvh8Node = BvhNode<8>;
 
 template <int W> struct Bvh {
@@ -39,7 +37,6 @@ template <int W> struct Bvh {
   std::uint32_t rootChild = BvhNode<W>::kEmpty;  // root reference: node index or a leaf
   std::size_t bytes() const { return nodes.size() * sizeof(BvhNode<W>); }
 };
-using Bvh4 = Bvh<4>;
 using Bvh8 = Bvh<8>;
 // The tree cooked meshes hold (MeshAccel).
 using MeshBvhNode = Bvh8Node;
@@ -49,8 +46,7 @@ namespace detail {
 // What cookTriangleMesh builds for the queries (declared opaque in gq/cooking.h): the BVH over the cooked
 // triangles. Leaves hold no triangle data of their own: a leaf's triangles are contiguous in the mesh's
 // triangleVertices (cooked order), which the ray kernels read directly (bvh/triangle_exact4.h).
-// 8-wide: a ray visits fewer nodes than in a 4-wide tree over the same leaves, each tested by one AVX2 instruction
-// per plane (or two SSE halves).
+// 8-wide: each node's children are tested by one AVX2 instruction per plane (or two SSE halves).
 struct MeshAccel {
   Bvh8 bvh;
 };

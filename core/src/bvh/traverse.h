@@ -18,7 +18,7 @@ namespace gq::detail {
 
 // Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels, each
 // node's first split of its range halving it) times the 7 siblings an 8-wide node leaves behind, plus slack (which
-// also holds the 8 entries Bvh8LanesAvx2::sortHits writes past the top).
+// also holds the 8 entries Bvh8LanesAvx2::sortHits and pushLanes write past the top).
 inline constexpr int kBvhStackSize = 512;
 
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
@@ -340,8 +340,8 @@ struct Bvh8LanesAvx2 {
   }
 
   // The lanes of `mask` pushed in lane order without a loop: their references and entry distances gathered by one
-  // permutation each (lane lists from kBvhLaneLists) and written by two 8-entry stores from `stack` on (the stack bound
-  // leaves that room).
+  // permutation each (lane lists from kBvhLaneLists) and written as 8 entries by two 32-byte stores from `stack` on
+  // (the stack bound leaves that room).
   __attribute__((target("avx2"))) static void pushLanes(const Bvh8Node& node, const float* tNear, int mask,
                                                         BvhWalkEntry* stack) {
     const __m256i shifts = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);

@@ -41,7 +41,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
     std::uint32_t ref;
     T lower;
   };
-  // A fixed stack (no allocation): at most 4 pushes per level of a BVH's bounded depth (bvh/traverse.h).
+  // A fixed stack (no allocation): at most 7 entries left per level of a BVH's bounded depth (bvh/traverse.h).
   Entry stack[kBvhStackSize];
   int top = 0;
   stack[top++] = {bvh.rootChild, T(0)};

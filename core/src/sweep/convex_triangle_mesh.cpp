@@ -17,8 +17,8 @@
 namespace gq::detail {
 namespace {
 
-// Visits the cooked triangle indices in leaves whose boxes overlap `q`. A fixed stack (no allocation): at most 4
-// pushes per level of a BVH's bounded depth (bvh/traverse.h).
+// Visits the cooked triangle indices in leaves whose boxes overlap `q`. A fixed stack (no allocation): at most 7
+// entries left per level of a BVH's bounded depth (bvh/traverse.h's kBvhStackSize).
 template <class Visit> void forTrianglesInBox(const MeshBvh& bvh, const FloatBounds& q, Visit&& visit) {
   if (bvh.rootChild == MeshBvhNode::kEmpty) return;
   std::uint32_t stack[kBvhStackSize];
