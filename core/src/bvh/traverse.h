@@ -71,7 +71,7 @@ template <class T> inline __m128 floatLanes(const Vec3<T>& v) {
 #endif
 
 template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
-  // Components this small would give infinite inverses (and 0 * inf = NaN); clamping keeps slabs correct.
+  // Components this small would give infinite inverses: they are clamped, but for an exact zero (below).
   constexpr float kTinyDir = 1e-20f;
   BvhRay<W> r;
   int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
@@ -109,6 +109,15 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
     }
   }
+  // An exactly zero component whose origin coordinate is exactly the float one: the axis admits the ray iff the origin
+  // is within the slab, faces included. With an infinite inverse a slab distance is -inf or +inf, or NaN (0 * inf)
+  // when the origin is on that plane, which the node tests ignore (NaN-first min/max order): the face is entered.
+  // (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit it at 0.) Other zeros keep
+  // the clamp: the slack of their inexact origin then widens the slab as for any direction.
+  for (int i = 0; i < 3; ++i)
+    if (dir[i] == T(0) && r.slack[i] == 0.0f)
+      r.negInvDir[i] = std::signbit(dir[i]) ? std::numeric_limits<float>::infinity()
+                                            : -std::numeric_limits<float>::infinity();
   for (int i = 0; i < 3; ++i) {
     r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);
     r.farInv[i] = r.negInvDir[i] * (1.0f + BvhRay<W>::kRelPad);
@@ -166,9 +175,11 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
     farY = _mm_add_ps(farY, ray.slack[1]);
     farZ = _mm_add_ps(farZ, ray.slack[2]);
   }
-  const __m128 tn = _mm_max_ps(_mm_max_ps(nearX, nearY), _mm_max_ps(nearZ, _mm_setzero_ps()));
+  // NaN-first order (maxps / minps return their second operand when either is NaN): an axis whose distance is NaN
+  // (an origin on the plane of an axis the ray is parallel to, see makeBvhRay) is ignored.
+  const __m128 tn = _mm_max_ps(nearX, _mm_max_ps(nearY, _mm_max_ps(nearZ, _mm_setzero_ps())));
   const __m128 tf =
-      _mm_min_ps(_mm_min_ps(farX, farY), _mm_min_ps(farZ, _mm_set1_ps(tMax * (1.0f + BvhRay<W>::kRelPad))));
+      _mm_min_ps(farX, _mm_min_ps(farY, _mm_min_ps(farZ, _mm_set1_ps(tMax * (1.0f + BvhRay<W>::kRelPad)))));
   _mm_store_ps(tNear + lane0, tn);
   // Empty lanes (all-+inf boxes) fail the slab test only for a finite float origin and tMax; an origin beyond the
   // float range (|x| > 3.4e38 in mesh space) gives inf - inf = NaN there, so they are masked out explicitly.
@@ -204,9 +215,10 @@ __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node,
     farY = _mm256_add_ps(farY, _mm256_broadcast_ss(&ray.slack[1]));
     farZ = _mm256_add_ps(farZ, _mm256_broadcast_ss(&ray.slack[2]));
   }
-  const __m256 tn = _mm256_max_ps(_mm256_max_ps(nearX, nearY), _mm256_max_ps(nearZ, _mm256_setzero_ps()));
-  const __m256 tf = _mm256_min_ps(_mm256_min_ps(farX, farY),
-                                  _mm256_min_ps(farZ, _mm256_set1_ps(tMax * (1.0f + BvhRay<8>::kRelPad))));
+  // NaN-first order, as intersectLanes4.
+  const __m256 tn = _mm256_max_ps(nearX, _mm256_max_ps(nearY, _mm256_max_ps(nearZ, _mm256_setzero_ps())));
+  const __m256 tf = _mm256_min_ps(
+      farX, _mm256_min_ps(farY, _mm256_min_ps(farZ, _mm256_set1_ps(tMax * (1.0f + BvhRay<8>::kRelPad)))));
   _mm256_store_ps(tNear, tn);
   const __m256i empty = _mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
                                            _mm256_set1_epi32(-1));
@@ -246,11 +258,12 @@ template <int W> struct BvhLanesScalar {
     for (int i = 0; i < W; ++i) {
       float tn = 0.0f, tf = tMax * (1.0f + BvhRay<W>::kRelPad);
       for (int a = 0; a < 3; ++a) {
-        const float t0n = (ray.org[a] - lo[a][i]) * ray.nearInv[a], t1n = (ray.org[a] - hi[a][i]) * ray.nearInv[a];
-        const float t0f = (ray.org[a] - lo[a][i]) * ray.farInv[a], t1f = (ray.org[a] - hi[a][i]) * ray.farInv[a];
-        // The near (far) plane gives the smaller (larger) distance, as the SIMD tests pick it by the direction's sign.
-        tn = std::max(tn, std::min(t0n, t1n) - ray.slack[a]);
-        tf = std::min(tf, std::max(t0f, t1f) + ray.slack[a]);
+        // The near and far planes by the direction's sign, as the SIMD tests' plane offsets; a NaN distance (see
+        // makeBvhRay) leaves tn and tf as they are (std::max / std::min keep their first operand then).
+        const bool negative = ray.negInvDir[a] > 0.0f;
+        const float nearPlane = negative ? hi[a][i] : lo[a][i], farPlane = negative ? lo[a][i] : hi[a][i];
+        tn = std::max(tn, (ray.org[a] - nearPlane) * ray.nearInv[a] - ray.slack[a]);
+        tf = std::min(tf, (ray.org[a] - farPlane) * ray.farInv[a] + ray.slack[a]);
       }
       tNear[i] = tn;
       if (tn <= tf && node.child[i] != BvhNode<W>::kEmpty) mask |= 1 << i;
