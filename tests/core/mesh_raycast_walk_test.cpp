@@ -11,6 +11,7 @@
 #include "bvh/build.h"
 #include "gq/query.h"
 #include "gq/shape.h"
+#include "mesh/triangle.h"
 #include "mesh_test_helpers.h"
 #include "raycast/raycast.h"
 
@@ -139,6 +140,57 @@ template <int W> struct TreeWalk {
     return all;
   }
 };
+
+// The closest hit is the least distance, then the least input index, over every triangle the watertight test hits at
+// t <= maxDist, bit for bit, whichever walk runs: brute force over all triangles, on rays aimed at vertices (ties
+// between the triangles around them) and at random points, both culling modes, and maxDist equal to the hit distance
+// itself (a hit at the bound is kept).
+TYPED_TEST(MeshRaycastWalks, ClosestHitIsTheLeastDistanceThenInputIndexOverAllTriangles) {
+  using T = TypeParam;
+  const MeshData<T> m = meshtest::icosphere<T>(3);
+  const auto mesh = meshtest::cook(m.vertices, m.triangles);
+  Shape<T> shape;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(mesh), shape).ok());
+  std::vector<Vec3<T>> origins, dirs;
+  rays(m, 2000, origins, dirs);
+  std::size_t hits = 0, differ = 0;
+  for (const bool baselineOnly : {false, true}) {
+    detail::setMeshRaycastBaselineOnly(baselineOnly);
+    for (const bool bothSides : {false, true}) {
+      for (std::size_t r = 0; r < origins.size(); ++r) {
+        // Brute force: the least (t, input index).
+        const detail::WatertightRay<T> ray = detail::makeWatertightRay(origins[r], dirs[r]);
+        bool found = false;
+        std::uint32_t bestCooked = 0;
+        detail::TriangleRayHit<T> best;
+        for (std::uint32_t c = 0; c < mesh->inputIndex.size(); ++c) {
+          const Vec3<T>* v = &mesh->triangleVertices[3 * std::size_t(c)];
+          detail::TriangleRayHit<T> h;
+          if (!detail::intersectRayTriangle(ray, v[0], v[1], v[2], std::numeric_limits<T>::infinity(), !bothSides, h))
+            continue;
+          if (found && !(h.t < best.t || (h.t == best.t && mesh->inputIndex[c] < mesh->inputIndex[bestCooked]))) continue;
+          found = true;
+          best = h;
+          bestCooked = c;
+        }
+        const HitFlags flags = kDefaultHitFlags | HitFlag::UV | (bothSides ? HitFlag::MeshBothSides : HitFlags());
+        for (const T maxDist : {T(100), found ? best.t : T(100)}) {
+          RaycastHit<T> hit;
+          std::uint32_t n = 0;
+          ASSERT_TRUE(raycast(origins[r], dirs[r], shape, Transform<T>(), maxDist, flags, 1, &hit, n).ok());
+          hits += n;
+          differ += n != (found ? 1u : 0u) ||
+                    (found && (hit.faceIndex != mesh->inputIndex[bestCooked] ||
+                               std::memcmp(&hit.distance, &best.t, sizeof(T)) != 0 ||
+                               std::memcmp(&hit.u, &best.u, sizeof(T)) != 0 || std::memcmp(&hit.v, &best.v, sizeof(T)) != 0));
+        }
+      }
+    }
+  }
+  detail::setMeshRaycastBaselineOnly(false);
+  EXPECT_EQ(differ, 0u);
+  EXPECT_GT(hits, origins.size());  // most rays hit: the comparison is not of empty answers
+}
 
 // The tree over the triangle boxes of an icosphere of 20,480 triangles.
 Bvh8 icosphereTree(std::vector<Bounds3<float>>& prims, std::vector<std::uint32_t>& order) {

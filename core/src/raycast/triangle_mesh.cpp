@@ -104,27 +104,32 @@ template <class T> class MeshRaycaster {
     return testTriangle(cooked, maxT, h);
   }
 
-  // Closest hit within maxDist: leaves nearest first, each hit lowering the walk's bound.
+  // Closest hit within maxDist: leaves nearest first, each hit lowering the walk's bound. The hit is the least
+  // distance, then the least input index (shared edges), over the triangles hit at t <= maxDist, whatever order the
+  // leaves come in: the triangle tests compare t scaled by their determinant against the bound, which rounds either
+  // way of a hit at the bound itself, so they get a bound a few units above bestT and the order is decided on the
+  // hits' distances.
   template <class Lanes> bool closest(T maxDist, RawHit<T>& best) const {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = MeshBvhNode::leafFirst(ref);
+      const T bound = bestT * (T(1) + T(8) * std::numeric_limits<T>::epsilon()) + std::numeric_limits<T>::min();
       bool lowered = false;
       TriangleHits4<T> laneHits;
-      for (int mask = candidates<Lanes::kAvx2>(ref, bestT, laneHits); mask; mask &= mask - 1) {
+      for (int mask = candidates<Lanes::kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
-        if (!laneHit(laneHits, lane, c, bestT, h)) continue;
-        // Equal distances (shared edges) keep the lower input index, so the answer does not depend on the tree.
-        if (found && h.t == bestT && mesh_.inputIndex[c] > mesh_.inputIndex[best.cooked]) continue;
+        if (!laneHit(laneHits, lane, c, bound, h)) continue;
+        const bool before = found ? h.t < bestT || (h.t == bestT && mesh_.inputIndex[c] < mesh_.inputIndex[best.cooked])
+                                  : h.t <= maxDist;
+        if (!before) continue;
         best = RawHit<T>{c, h};
         bestT = h.t;
         found = true;
         lowered = true;
-        laneHits.decided = 0;  // decided against the old bound: the rest of the leaf takes the scalar test
       }
       if (lowered) tMax = floatCeil(bestT);
       return false;
