@@ -144,7 +144,7 @@ template <int W> struct TreeWalk {
 // The closest hit is the least distance, then the least input index, over every triangle the watertight test hits at
 // t <= maxDist, bit for bit, whichever walk runs: brute force over all triangles, on rays aimed at vertices (ties
 // between the triangles around them) and at random points, both culling modes, and maxDist equal to the hit distance
-// itself (a hit at the bound is kept).
+// itself (a hit at the bound is kept, by the any-hit and all-hits modes too, whose first hit has that distance).
 TYPED_TEST(MeshRaycastWalks, ClosestHitIsTheLeastDistanceThenInputIndexOverAllTriangles) {
   using T = TypeParam;
   const MeshData<T> m = meshtest::icosphere<T>(3);
@@ -183,6 +183,16 @@ TYPED_TEST(MeshRaycastWalks, ClosestHitIsTheLeastDistanceThenInputIndexOverAllTr
                     (found && (hit.faceIndex != mesh->inputIndex[bestCooked] ||
                                std::memcmp(&hit.distance, &best.t, sizeof(T)) != 0 ||
                                std::memcmp(&hit.u, &best.u, sizeof(T)) != 0 || std::memcmp(&hit.v, &best.v, sizeof(T)) != 0));
+          // Any hit and all hits find one within the same bound (the closest one's distance included).
+          RaycastHit<T> all[4];
+          std::uint32_t anyCount = 0, allCount = 0;
+          ASSERT_TRUE(raycast(origins[r], dirs[r], shape, Transform<T>(), maxDist, flags | HitFlag::AnyHit, 1, &hit,
+                              anyCount).ok());
+          ASSERT_TRUE(raycast(origins[r], dirs[r], shape, Transform<T>(), maxDist, flags | HitFlag::MeshMultiple, 4,
+                              all, allCount).ok());
+          differ += (anyCount == 1) != found || (anyCount == 1 && !(hit.distance <= maxDist));
+          differ += (allCount >= 1) != found ||
+                    (allCount >= 1 && std::memcmp(&all[0].distance, &best.t, sizeof(T)) != 0);
         }
       }
     }

@@ -104,18 +104,23 @@ template <class T> class MeshRaycaster {
     return testTriangle(cooked, maxT, h);
   }
 
+  // A bound a few units above b for the triangle tests: they compare t scaled by their determinant, which rounds
+  // either way of a hit at the bound itself, so the walks give them this one and compare the hits' own distances
+  // with b.
+  static T widened(T b) {
+    return b * (T(1) + T(8) * std::numeric_limits<T>::epsilon()) + std::numeric_limits<T>::min();
+  }
+
   // Closest hit within maxDist: leaves nearest first, each hit lowering the walk's bound. The hit is the least
   // distance, then the least input index (shared edges), over the triangles hit at t <= maxDist, whatever order the
-  // leaves come in: the triangle tests compare t scaled by their determinant against the bound, which rounds either
-  // way of a hit at the bound itself, so they get a bound a few units above bestT and the order is decided on the
-  // hits' distances.
+  // leaves come in (the triangle tests get widened(bestT); the hits' distances decide).
   template <class Lanes> bool closest(T maxDist, RawHit<T>& best) const {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = MeshBvhNode::leafFirst(ref);
-      const T bound = bestT * (T(1) + T(8) * std::numeric_limits<T>::epsilon()) + std::numeric_limits<T>::min();
+      const T bound = widened(bestT);
       bool lowered = false;
       TriangleHits4<T> laneHits;
       for (int mask = candidates<Lanes::kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
@@ -143,14 +148,15 @@ template <class T> class MeshRaycaster {
   template <class Lanes> bool any(T maxDist, RawHit<T>& best) const {
     float tMax = floatCeil(maxDist);
     bool found = false;
+    const T bound = widened(maxDist);
     walkRayLeaves<false, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = MeshBvhNode::leafFirst(ref);
       TriangleHits4<T> laneHits;
-      for (int mask = candidates<Lanes::kAvx2>(ref, maxDist, laneHits); mask; mask &= mask - 1) {
+      for (int mask = candidates<Lanes::kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
-        if (!laneHit(laneHits, lane, c, maxDist, h)) continue;
+        if (!laneHit(laneHits, lane, c, bound, h) || !(h.t <= maxDist)) continue;
         best = RawHit<T>{c, h};
         found = true;
         return true;
@@ -167,12 +173,14 @@ template <class T> class MeshRaycaster {
     float tMax = floatCeil(maxDist);
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       const std::uint32_t first = MeshBvhNode::leafFirst(ref);
+      const T bound = widened(limit);
       TriangleHits4<T> laneHits;
-      for (int mask = candidates<Lanes::kAvx2>(ref, limit, laneHits); mask; mask &= mask - 1) {
+      for (int mask = candidates<Lanes::kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
         const int lane = __builtin_ctz(unsigned(mask));
         const std::uint32_t c = first + std::uint32_t(lane);
         TriangleRayHit<T> h;
-        if (!laneHit(laneHits, lane, c, limit, h)) continue;
+        if (!laneHit(laneHits, lane, c, bound, h) || !(h.t <= maxDist)) continue;
+        if (hits.size() == cap && !(h.t < limit)) continue;  // full: only hits closer than the farthest kept one
         if (hits.size() == cap) {
           std::pop_heap(hits.begin(), hits.end(), farther);
           hits.pop_back();
@@ -183,7 +191,6 @@ template <class T> class MeshRaycaster {
         if (hits.size() == cap) {
           limit = hits.front().tri.t;
           tMax = floatCeil(limit);
-          laneHits.decided = 0;  // decided against the old limit: the rest of the leaf takes the scalar test
         }
       }
       return false;
