@@ -340,13 +340,7 @@ struct Bvh8LanesAvx2 {
     // Entry j of the stack takes sorted key count - 1 - j (the farthest first).
     const int count = __builtin_popcount(unsigned(mask));
     const __m256i reversed = _mm256_permutevar8x32_epi32(k, _mm256_sub_epi32(_mm256_set1_epi32(count - 1), lane));
-    const __m256i lanes = _mm256_and_si256(reversed, _mm256_set1_epi32(7));
-    const __m256i refs = _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
-                                                     lanes);
-    const __m256i dists = _mm256_permutevar8x32_epi32(tBits, lanes);
-    const __m256i lo = _mm256_unpacklo_epi32(refs, dists), hi = _mm256_unpackhi_epi32(refs, dists);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack), _mm256_permute2x128_si256(lo, hi, 0x20));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(stack + 4), _mm256_permute2x128_si256(lo, hi, 0x31));
+    storeEntries(node, tNear, _mm256_and_si256(reversed, _mm256_set1_epi32(7)), stack);
     top += count - 1;
     const int nearest = _mm_cvtsi128_si32(_mm256_castsi256_si128(k)) & 7;
     return BvhWalkEntry{node.child[nearest], tNear[nearest]};
@@ -360,6 +354,14 @@ struct Bvh8LanesAvx2 {
     const __m256i shifts = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);
     const __m256i lanes = _mm256_and_si256(
         _mm256_srlv_epi32(_mm256_set1_epi32(int(kBvhLaneLists.lanes[mask])), shifts), _mm256_set1_epi32(7));
+    storeEntries(node, tNear, lanes, stack);
+  }
+
+ private:
+  // Stack entries j = 0..7 from lane `lanes[j]` of the node: its reference and entry distance, written by two 32-byte
+  // stores.
+  __attribute__((target("avx2"))) static void storeEntries(const Bvh8Node& node, const float* tNear, __m256i lanes,
+                                                           BvhWalkEntry* stack) {
     const __m256i refs = _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
                                                      lanes);
     const __m256i dists = _mm256_permutevar8x32_epi32(_mm256_castps_si256(_mm256_load_ps(tNear)), lanes);

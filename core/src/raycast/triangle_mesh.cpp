@@ -104,38 +104,43 @@ template <class T> class MeshRaycaster {
     return testTriangle(cooked, maxT, h);
   }
 
-  // A bound a few units above b for the triangle tests: they compare t scaled by their determinant, which rounds
-  // either way of a hit at the bound itself, so the walks give them this one and compare the hits' own distances
-  // with b.
-  static T widened(T b) {
-    return b * (T(1) + T(8) * std::numeric_limits<T>::epsilon()) + std::numeric_limits<T>::min();
+  // The leaf's triangles the watertight test hits at a distance up to about b, in lane order: fn(cooked, hit) for
+  // each until it returns true (then true). The tests compare t scaled by their determinant, which rounds either way of
+  // a hit at the bound itself, so they get a bound a few units above b, and callers compare the hits' own distances
+  // with b: the answers then do not depend on the order the leaves come in.
+  template <bool kAvx2, class Fn> bool forEachHitNear(std::uint32_t ref, T b, Fn&& fn) const {
+    const T bound = b * (T(1) + T(8) * std::numeric_limits<T>::epsilon()) + std::numeric_limits<T>::min();
+    const std::uint32_t first = MeshBvhNode::leafFirst(ref);
+    TriangleHits4<T> laneHits;
+    for (int mask = candidates<kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
+      const int lane = __builtin_ctz(unsigned(mask));
+      const std::uint32_t c = first + std::uint32_t(lane);
+      TriangleRayHit<T> h;
+      if (laneHit(laneHits, lane, c, bound, h) && fn(c, h)) return true;
+    }
+    return false;
   }
 
   // Closest hit within maxDist: leaves nearest first, each hit lowering the walk's bound. The hit is the least
   // distance, then the least input index (shared edges), over the triangles hit at t <= maxDist, whatever order the
-  // leaves come in (the triangle tests get widened(bestT); the hits' distances decide).
+  // leaves come in.
   template <class Lanes> bool closest(T maxDist, RawHit<T>& best) const {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
-      const std::uint32_t first = MeshBvhNode::leafFirst(ref);
-      const T bound = widened(bestT);
       bool lowered = false;
-      TriangleHits4<T> laneHits;
-      for (int mask = candidates<Lanes::kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
-        const int lane = __builtin_ctz(unsigned(mask));
-        const std::uint32_t c = first + std::uint32_t(lane);
-        TriangleRayHit<T> h;
-        if (!laneHit(laneHits, lane, c, bound, h)) continue;
+      forEachHitNear<Lanes::kAvx2>(ref, bestT, [&](std::uint32_t c, const TriangleRayHit<T>& h) {
         const bool before = found ? h.t < bestT || (h.t == bestT && mesh_.inputIndex[c] < mesh_.inputIndex[best.cooked])
                                   : h.t <= maxDist;
-        if (!before) continue;
-        best = RawHit<T>{c, h};
-        bestT = h.t;
-        found = true;
-        lowered = true;
-      }
+        if (before) {
+          best = RawHit<T>{c, h};
+          bestT = h.t;
+          found = true;
+          lowered = true;
+        }
+        return false;
+      });
       if (lowered) tMax = floatCeil(bestT);
       return false;
     });
@@ -148,20 +153,13 @@ template <class T> class MeshRaycaster {
   template <class Lanes> bool any(T maxDist, RawHit<T>& best) const {
     float tMax = floatCeil(maxDist);
     bool found = false;
-    const T bound = widened(maxDist);
     walkRayLeaves<false, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
-      const std::uint32_t first = MeshBvhNode::leafFirst(ref);
-      TriangleHits4<T> laneHits;
-      for (int mask = candidates<Lanes::kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
-        const int lane = __builtin_ctz(unsigned(mask));
-        const std::uint32_t c = first + std::uint32_t(lane);
-        TriangleRayHit<T> h;
-        if (!laneHit(laneHits, lane, c, bound, h) || !(h.t <= maxDist)) continue;
+      return forEachHitNear<Lanes::kAvx2>(ref, maxDist, [&](std::uint32_t c, const TriangleRayHit<T>& h) {
+        if (!(h.t <= maxDist)) return false;
         best = RawHit<T>{c, h};
         found = true;
         return true;
-      }
-      return false;
+      });
     });
     return found;
   }
@@ -172,27 +170,22 @@ template <class T> class MeshRaycaster {
     T limit = maxDist;
     float tMax = floatCeil(maxDist);
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
-      const std::uint32_t first = MeshBvhNode::leafFirst(ref);
-      const T bound = widened(limit);
-      TriangleHits4<T> laneHits;
-      for (int mask = candidates<Lanes::kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
-        const int lane = __builtin_ctz(unsigned(mask));
-        const std::uint32_t c = first + std::uint32_t(lane);
-        TriangleRayHit<T> h;
-        if (!laneHit(laneHits, lane, c, bound, h) || !(h.t <= maxDist)) continue;
-        if (hits.size() == cap && !(h.t < limit)) continue;  // full: only hits closer than the farthest kept one
-        if (hits.size() == cap) {
+      forEachHitNear<Lanes::kAvx2>(ref, limit, [&](std::uint32_t c, const TriangleRayHit<T>& h) {
+        // Once full, only hits closer than the farthest kept one matter (limit is then its distance).
+        const bool full = hits.size() == cap;
+        if (!(h.t <= maxDist) || (full && !(h.t < limit))) return false;
+        if (full) {
           std::pop_heap(hits.begin(), hits.end(), farther);
           hits.pop_back();
         }
         hits.push_back(RawHit<T>{c, h});
         std::push_heap(hits.begin(), hits.end(), farther);
-        // Once full, only hits closer than the farthest kept one matter.
         if (hits.size() == cap) {
           limit = hits.front().tri.t;
           tMax = floatCeil(limit);
         }
-      }
+        return false;
+      });
       return false;
     });
     std::sort_heap(hits.begin(), hits.end(), farther);
