@@ -15,8 +15,6 @@ namespace {
 constexpr int kBins = 16;
 constexpr int kWidth = 8;
 using Node = BvhNode<kWidth>;
-// Past this depth the splits fall back to the median, bounding the traversal stack (see bvh/traverse.h).
-constexpr int kMaxSahDepth = 32;
 
 struct Range {
   std::uint32_t begin, end;
@@ -32,8 +30,8 @@ float halfArea(const Bounds3<float>& b) {
 
 class Builder {
  public:
-  Builder(const std::vector<Bounds3<float>>& prims, std::vector<std::uint32_t>& order)
-      : prims_(prims), order_(order) {
+  Builder(const std::vector<Bounds3<float>>& prims, std::vector<std::uint32_t>& order, const BvhBuildSettings& settings)
+      : prims_(prims), order_(order), settings_(settings) {
     centroids_.reserve(prims.size());
     for (const auto& b : prims) centroids_.push_back(b.center());
   }
@@ -58,7 +56,7 @@ class Builder {
     Bounds3<float> cb;
     for (std::uint32_t i = r.begin; i < r.end; ++i) cb.include(centroids_[order_[i]]);
     const Vec3<float> ext = cb.max - cb.min;
-    if (depth < kMaxSahDepth && ext.maxCoeff() > 0.0f) {
+    if (depth < settings_.maxSahDepth && ext.maxCoeff() > 0.0f) {
       float bestCost = std::numeric_limits<float>::max();
       int bestAxis = -1, bestBin = -1;
       for (int axis = 0; axis < 3; ++axis) {
@@ -167,6 +165,7 @@ class Builder {
 
   const std::vector<Bounds3<float>>& prims_;
   std::vector<std::uint32_t>& order_;
+  BvhBuildSettings settings_;
   std::vector<Vec3<float>> centroids_;
   Bvh8 bvh_;
 };
@@ -182,11 +181,12 @@ template <class T> float roundUp(T x) {
 
 }  // namespace
 
-Bvh8 buildBvh8(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order) {
+Bvh8 buildBvh8(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order,
+               const BvhBuildSettings& settings) {
   order.resize(primBounds.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   if (primBounds.empty()) return Bvh8();
-  return Builder(primBounds, order).run();
+  return Builder(primBounds, order, settings).run();
 }
 
 template <class T> Bounds3<float> roundOutward(const Vec3<T>& lo, const Vec3<T>& hi) {

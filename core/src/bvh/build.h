@@ -8,10 +8,18 @@
 
 namespace gq::detail {
 
+struct BvhBuildSettings {
+  // Node levels split by the SAH; deeper ranges are split at the centroid median (as are ranges whose centroids
+  // coincide), which bounds the depth, and so the ray walk's fixed stack (bvh/traverse.h, kBvhStackSize, is sized
+  // for at most 32).
+  int maxSahDepth = 32;
+};
+
 // Builds the tree over primBounds (float boxes, already rounded outward by the caller). `order` receives the
 // primitive permutation: leaf ranges [first, first + count) index into `order` (cooked position -> input primitive).
 // A node's children are stored largest surface area first (the order the unordered any-hit walk takes them in).
-Bvh8 buildBvh8(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order);
+Bvh8 buildBvh8(const std::vector<Bounds3<float>>& primBounds, std::vector<std::uint32_t>& order,
+               const BvhBuildSettings& settings = BvhBuildSettings());
 
 // Float box that contains the exact box [lo, hi] of type T (rounded outward with nextafter).
 template <class T> Bounds3<float> roundOutward(const Vec3<T>& lo, const Vec3<T>& hi);

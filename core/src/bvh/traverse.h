@@ -16,9 +16,9 @@
 
 namespace gq::detail {
 
-// Depth-first stack bound: the build's depth limit (bvh/build.cpp: 32 SAH levels + at most 28 median levels, each
-// node's first split of its range halving it) times the 7 siblings an 8-wide node leaves behind, plus slack (which
-// also holds the 8 entries Bvh8LanesAvx2::sortHits and pushLanes write past the top).
+// Depth-first stack bound: the build's depth limit (bvh/build.h, BvhBuildSettings: 32 SAH levels + at most 28 median
+// levels, each node's first split of its range halving it) times the 7 siblings an 8-wide node leaves behind, plus
+// slack (which also holds the 8 entries Bvh8LanesAvx2::sortHits and pushLanes write past the top).
 inline constexpr int kBvhStackSize = 512;
 
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
