@@ -51,6 +51,8 @@ __attribute__((target("avx2"), flatten)) int exactTriangleHitsAvx2(const detail:
 #endif
 
 // The AVX2 form's mask and decided hits equal the baseline's, bit for bit (CPUs without AVX2 run only the baseline).
+// Double: a different kernel (4 lanes to a 256-bit register). Float: the same 4-lane kernel compiled into AVX2 code,
+// which must not change an operation (no contraction to FMA); the AVX2 walk's float loader is checked apart below.
 template <class T>
 void expectAvx2FormAgrees(const detail::TriangleVertices4<T>& tris, const detail::WatertightRay4<T>& ray, T maxT,
                           bool cull, int mask, const detail::TriangleHits4<T>& hits) {
