@@ -116,6 +116,83 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
   EXPECT_EQ(kept.bytes(), 0u);
 }
 
+// The batch keys rays 8 at a time with AVX2 where the CPU has it, else one at a time: the keys may differ, the
+// answers may not.
+TYPED_TEST(BatchRayOrder, WideAndScalarRayKeysGiveTheSameBatchBytes) {
+  using T = TypeParam;
+  Rng rng(4406);
+  const auto ico = meshtest::icosphere<T>(3);
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles)), mesh).ok());
+  const Transform<T> pose = rng.pose<T>(1);
+  std::vector<Vec3<T>> origins, dirs;
+  manyRays(rng, origins, dirs);
+  RayBatch<T> batch;
+  batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
+  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), dirs.size());
+  batch.maxDist = T(20);
+  struct Output {
+    std::vector<RaycastHit<T>> hits = std::vector<RaycastHit<T>>(kManyRays);
+    std::vector<std::uint8_t> has = std::vector<std::uint8_t>(kManyRays, 7);
+    std::vector<Status> statuses = std::vector<Status>(kManyRays);
+  };
+  auto run = [&](bool scalarKeys, Output& out) {
+    detail::setRayOrderKeysScalarOnly(scalarKeys);
+    const Status s = raycastBatch(batch, mesh, pose, out.hits.data(), out.has.data(), out.statuses.data(), {1, 64});
+    detail::setRayOrderKeysScalarOnly(false);
+    return s;
+  };
+  Output wide, scalar;
+  const Status sw = run(false, wide), ss = run(true, scalar);
+  EXPECT_EQ(sw.index(), 5u);
+  EXPECT_EQ(ss.index(), 5u);
+  EXPECT_EQ(std::memcmp(wide.hits.data(), scalar.hits.data(), kManyRays * sizeof(RaycastHit<T>)), 0);
+  EXPECT_EQ(wide.has, scalar.has);
+  std::size_t hits = 0;
+  for (std::size_t i = 0; i < kManyRays; ++i) {
+    ASSERT_EQ(wide.statuses[i].code, scalar.statuses[i].code) << i;
+    hits += wide.has[i] == 1 ? 1 : 0;
+  }
+  EXPECT_GT(hits, kManyRays / 4);
+}
+
+// keyRays gives every ray a 30-bit key or the miss mark, on both key paths and for any input; rays
+// aimed away from the box, or stopping before it, are marked (rays with a NaN may be marked either way: the cast
+// fails them).
+TEST(RayOrder, KeyRaysMarkRaysMissingTheBoxAndKeyAnyInput) {
+  const detail::RayOrderKey<double> key(Bounds3<double>::fromMinMax(Vec3<double>(-1, -1, -1), Vec3<double>(1, 1, 1)));
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  enum Enters { kNo, kYes, kEither };
+  struct Ray {
+    Vec3<double> origin, dir;
+    Enters enters;
+  };
+  std::vector<Ray> rays = {
+      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, -1), kYes},      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 1), kNo},
+      {Vec3<double>(0.2, 0.1, 0), Vec3<double>(1, 0, 0), kYes},   {Vec3<double>(0, 3, 0), Vec3<double>(1, 0, 0), kNo},
+      {Vec3<double>(0, 0, 50), Vec3<double>(0, 0, -1), kNo},  // enters at 49 > maxDist 10
+      {Vec3<double>(nan, 0, 0), Vec3<double>(1, 0, 0), kEither},  {Vec3<double>(0, 0, 5), Vec3<double>(nan, 0, 0), kEither},
+      {Vec3<double>(inf, 0, 0), Vec3<double>(-1, 0, 0), kNo},     {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 0), kNo},
+      {Vec3<double>(1e300, 0, 0), Vec3<double>(-1, 0, 0), kNo},   {Vec3<double>(-4, 0.5, -0.5), Vec3<double>(1, 0, 0), kYes},
+  };
+  for (int copy = 0; copy < 2; ++copy) rays.insert(rays.end(), rays.begin(), rays.begin() + 11);  // 33: 4 x 8 + 1
+  for (const bool scalar : {false, true}) {
+    SCOPED_TRACE(scalar ? "scalar keys" : "wide keys");
+    detail::setRayOrderKeysScalarOnly(scalar);
+    std::vector<std::uint32_t> keys(rays.size() + 1, 7u);
+    key.keyRays(&rays[0].origin, sizeof(Ray), &rays[0].dir, sizeof(Ray), rays.size(), 10.0, keys.data());
+    detail::setRayOrderKeysScalarOnly(false);
+    EXPECT_EQ(keys.back(), 7u) << "nothing written past the last ray";
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const std::uint32_t k = keys[i];
+      if (rays[i].enters != kEither) {
+        EXPECT_EQ(k != detail::RayOrderKey<double>::kMisses, rays[i].enters == kYes) << i;
+      }
+      EXPECT_TRUE(k < (1u << 30) || k == detail::RayOrderKey<double>::kMisses) << i;
+    }
+  }
+}
+
 TYPED_TEST(BatchRayOrder, LargeBatchesOfColumnsAndNormalizedDirectionsEqualTheInputOrder) {
   using T = TypeParam;
   Rng rng(4402);
