@@ -116,6 +116,58 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
   EXPECT_EQ(kept.bytes(), 0u);
 }
 
+template <class T> bool sameFields(const RaycastHit<T>& a, const RaycastHit<T>& b) {
+  return sameBytes(a, b) && std::memcmp(&a.u, &b.u, sizeof(T)) == 0 && std::memcmp(&a.v, &b.v, sizeof(T)) == 0;
+}
+
+// The coherent order writes each hit after its cast, from the raw hit and the normal found in key order: every
+// requested field (and the unrequested ones' defaults) must be the single query's, under a mirrored, rotated scale
+// (u and v swapped) and a rotated pose, for any hit flags.
+TYPED_TEST(BatchRayOrder, EveryHitFlagAndMirroredScaleGiveTheSingleRaycastsFields) {
+  using T = TypeParam;
+  Rng rng(4407);
+  const auto ico = meshtest::icosphere<T>(2);
+  const Quat<T> scaleRotation = Quat<T>(T(0.9), T(0.3), T(-0.2), T(0.1)).normalized();
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
+                                                     MeshScale<T>(Vec3<T>(T(-2), T(1.5), T(1)), scaleRotation)),
+                             mesh)
+                  .ok());
+  const Transform<T> pose = rng.pose<T>(1);
+  constexpr std::size_t n = 40000;  // above the order's 32,768-ray threshold at 1 thread
+  std::vector<Vec3<T>> origins(n), dirs(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    origins[i] = pose.p + rng.unitVector<T>() * T(5);
+    dirs[i] = (pose.p + rng.inBox<T>(1.5) - origins[i]).normalized();
+  }
+  const HitFlags flagSets[] = {HitFlag::Position | HitFlag::Normal | HitFlag::FaceIndex | HitFlag::UV,
+                               HitFlags(HitFlag::UV), HitFlags(HitFlag::Position),
+                               HitFlag::Normal | HitFlag::MeshBothSides, HitFlag::AnyHit | HitFlag::Normal};
+  for (const HitFlags flags : flagSets) {
+    SCOPED_TRACE(::testing::Message() << "flags " << flags.bits());
+    RayBatch<T> batch;
+    batch.origins = StridedArray<Vec3<T>>(origins.data(), n);
+    batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), n);
+    batch.maxDist = T(20);
+    batch.hitFlags = flags;
+    std::vector<RaycastHit<T>> hits(n);
+    std::vector<std::uint8_t> has(n, 7);
+    ASSERT_TRUE(raycastBatch(batch, mesh, pose, hits.data(), has.data(), nullptr, {1, 64}).ok());
+    std::size_t hitCount = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      RaycastHit<T> ref;
+      std::uint32_t count = 0;
+      ASSERT_TRUE(raycast(origins[i], dirs[i], mesh, pose, batch.maxDist, flags, 1u, &ref, count).ok());
+      ASSERT_EQ(has[i], count > 0 ? 1 : 0) << i;
+      if (count > 0) {
+        ASSERT_TRUE(sameFields(hits[i], ref)) << i;
+      }
+      hitCount += count;
+    }
+    EXPECT_GT(hitCount, n / 4);
+  }
+}
+
 // The batch keys rays 8 at a time with AVX2 where the CPU has it, else one at a time: the keys may differ, the
 // answers may not.
 TYPED_TEST(BatchRayOrder, WideAndScalarRayKeysGiveTheSameBatchBytes) {
