@@ -3,7 +3,6 @@
 #include "gq/batch.h"
 
 #include "batch/ray_order.h"
-#include "mesh/triangle.h"
 #include "raycast/raycast.h"
 
 #include <tbb/blocked_range.h>
@@ -244,35 +243,25 @@ template <class E> class ScratchArray {
 };
 
 // One worker's arrays for castBlockInKeyOrder, kept from block to block (their first use costs page faults), per ray
-// of a block: its key, then its slot (4 bytes), and a copy of each ray entering the bounds (56 bytes in double, 32 in
-// float; its raw hit once cast); 16 bytes a ray of the largest bucket for its sort.
+// of a block: its key, then its slot (4 bytes), and a slot holding its copy, then its hit (80 bytes in double, 44 in
+// float); 16 bytes a ray of the largest bucket for its sort.
 template <class T> struct KeyOrderScratch {
   struct Ray {  // a ray of the block, copied in coarse key order
     Vec3<T> origin, dir;
-    std::uint32_t index;  // in the block
     std::uint32_t key;
   };
-  // A ray's cast: its triangle and hit (TriangleMeshRays::castRaw) and the hit's normal (found in key order, where
-  // the triangles' vertices are in cache), written out in input order.
-  struct RawHit {
-    T t, u, v;
-    Vec3<T> normal;
-    std::uint32_t cooked;
-    std::uint8_t count;  // 0 or 1, or kByIndex
-    bool frontFace;
-  };
-  // A ray's copy until it is cast, then its raw hit (which fits in the copy).
+  // A ray's copy until it is cast, then its hit: the single raycast's output (flags 0: no hit; a hit has at least
+  // FaceIndex), or kByIndex.
   union Slot {
     Slot() {}  // no member alive: each is begun by placement new
     Ray ray;
-    RawHit hit;
+    RaycastHit<T> hit;
   };
-  static_assert(sizeof(RawHit) <= sizeof(Ray));
-  static constexpr std::uint8_t kByIndex = 0xff;           // a ray that takes the per-index path
+  static constexpr HitFlags kByIndex = HitFlags(std::uint16_t(0xffff));  // a ray that takes the per-index path
   static constexpr std::uint32_t kAnswered = 0xffffffffu;  // a ray answered by the key pass (rank)
   ScratchArray<std::uint64_t> items;  // a bucket's fine keys << 32 | ray in the bucket, and their sort's scratch
   ScratchArray<Slot> slots;
-  ScratchArray<std::uint32_t> rank;   // by ray within the block: its key, then its slot; or kAnswered
+  ScratchArray<std::uint32_t> rank;   // by ray within the block: its key, then its slot, or kAnswered
   std::vector<std::uint32_t> starts;  // where each coarse bucket begins in slots
   std::vector<std::uint32_t> next;    // where the next ray of each bucket is copied
 
@@ -335,13 +324,13 @@ namespace {
 
 // Rays [begin, end) of a batch cast in key order (batch/ray_order.h); returns how many failed. Rays that miss the
 // mesh's bounds are cast at once in input order. The others are copied, in one sequential pass over the caller's
-// arrays, into buckets of the key's top bits (RayOrderSettings::coarseBits); each bucket is then sorted by the
-// remaining bits and cast from its copies, each cast's raw hit (triangle, t, u, v) stored at the ray's place in key
-// order and that place at the ray's input index (rank). A last pass in input order writes each ray's output from its
-// raw hit (read a few rays ahead): the caller's arrays are written sequentially, not at scattered indices. The whole
-// block is so cast in key order while the scattered reads stay within a bucket's copies. A ray failing the quick
-// checks takes the per-index path (the single query's Status). Without memory for the scratch the block keeps input
-// order.
+// arrays, into buckets of the key's top bits (RayOrderSettings::coarseBits), each ray's slot noted at its index
+// (rank); each bucket is then sorted by the remaining bits and cast from its copies, each hit written over the copy
+// it was cast from. A last pass in input order copies each ray's hit from its slot (read a few rays ahead) to the
+// caller's arrays, written sequentially. So every write of the casts stays within a bucket's slots: a scattered
+// write there (the hits, or rank, at input indices) waits for its cache line and holds up the cast's own stores
+// behind it (a 4-byte rank write per cast cost about 60 ms a million rays). A ray failing the quick checks takes the
+// per-index path (the single query's Status). Without memory for the scratch the block keeps input order.
 template <class T, class Out>
 std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
                                 const detail::RayOrderSettings& order, KeyOrderScratch<T>& scratch,
@@ -359,7 +348,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     for (std::size_t i = begin; i < end; ++i) failed += items(i) ? 0 : 1;
     return failed;
   }
-  // Keys (in rank until each ray is cast), and the size of each bucket.
+  // Keys (in rank until the rays are copied), and the size of each bucket.
   std::uint32_t* rank = scratch.rank.data;
   key.keyRays(&rays.origins[begin], rays.origins.stride, &rays.unitDirs[begin], rays.unitDirs.stride, size,
               rays.maxDist, rank);
@@ -393,13 +382,14 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       const std::uint32_t k = rank[j];
       if (k == Scratch::kAnswered) continue;
       const std::size_t i = begin + j;
-      new (&scratch.slots.data[next[k >> fineBits]++].ray) Ray{rays.origins[i], rays.unitDirs[i], std::uint32_t(j), k};
+      const std::uint32_t slot = next[k >> fineBits]++;
+      new (&scratch.slots.data[slot].ray) Ray{rays.origins[i], rays.unitDirs[i], k};
+      rank[j] = slot;
     }
   }
   // Each bucket sorted and cast.
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
   typename Scratch::Slot* slots = scratch.slots.data;
-  const bool withNormal = rays.hitFlags.has(HitFlag::Normal);
   for (std::size_t b = 0; b < buckets; ++b) {
     const std::size_t first = starts[b], count = starts[b + 1] - first;
     if (count == 0) continue;
@@ -420,65 +410,33 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
       const std::size_t at = sorted[j] & 0xffffffffu;
       const Ray r = bucket[at].ray;
-      rank[r.index] = std::uint32_t(first + at);
-      typename Scratch::RawHit h;
-      h.count = Scratch::kByIndex;
+      RaycastHit<T>* hit = new (&bucket[at].hit) RaycastHit<T>;  // the copy is not read again
       Vec3<T> normalized;
       const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
       if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
-        const detail::RayQuery<T> query = detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u);
-        detail::TriangleRayHit<T> tri;
-        h.count = std::uint8_t(items.mesh.castRaw(query, nullptr, h.cooked, tri));
-        h.t = tri.t;
-        h.u = tri.u;
-        h.v = tri.v;
-        h.frontFace = tri.frontFace;
-        if (h.count != 0 && withNormal) {
-          RaycastHit<T> full;
-          items.mesh.writeHit(query, h.cooked, tri, full);
-          h.normal = full.normal;
-        }
+        (void)items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u), hit);
+      } else {
+        hit->flags = Scratch::kByIndex;
       }
-      new (&bucket[at].hit) typename Scratch::RawHit(h);  // the copy is not read again
     }
   }
-  // The outputs in input order (each raw hit read kRawAhead rays ahead; it may span two cache lines): writeHit
-  // without the normal, then the raw hit's.
-  constexpr std::size_t kRawAhead = 24;
-  const HitFlags outFlags = rays.hitFlags.without(HitFlag::Normal);
+  // The outputs in input order, each hit read kHitAhead rays ahead (two cache lines).
+  constexpr std::size_t kHitAhead = 24;
   for (std::size_t j = 0; j < size; ++j) {
-    if (j + kRawAhead < size && rank[j + kRawAhead] != Scratch::kAnswered) {
-      const typename Scratch::RawHit* ahead = &slots[rank[j + kRawAhead]].hit;
+    if (j + kHitAhead < size && rank[j + kHitAhead] != Scratch::kAnswered) {
+      const RaycastHit<T>* ahead = &slots[rank[j + kHitAhead]].hit;
       prefetchRead(ahead);
       prefetchRead(reinterpret_cast<const unsigned char*>(ahead + 1) - 1);
     }
     const std::uint32_t place = rank[j];
     if (place == Scratch::kAnswered) continue;
-    const typename Scratch::RawHit& h = slots[place].hit;
+    const RaycastHit<T>& h = slots[place].hit;
     const std::size_t i = begin + j;
-    if (h.count == Scratch::kByIndex) {
+    if (h.flags == Scratch::kByIndex) {
       failed += items(i) ? 0 : 1;
       continue;
     }
-    if (h.count != 0) {
-      Vec3<T> normalized;
-      const Vec3<T>* dir = rayDirection(rays, i, normalized);  // not null: the cast above checked it
-      typename Out::Local local;
-      RaycastHit<T>* slot = items.out.slot(i, local);
-      detail::TriangleRayHit<T> tri;
-      tri.t = h.t;
-      tri.u = h.u;
-      tri.v = h.v;
-      tri.frontFace = h.frontFace;
-      items.mesh.writeHit(detail::rayQuery(rays.origins[i], *dir, rays.maxDist, outFlags, 1u), h.cooked, tri, *slot);
-      if (withNormal) {
-        slot->normal = h.normal;
-        slot->flags |= HitFlag::Normal;
-      }
-      items.out.store(i, 1u, *slot);
-    } else {
-      items.out.store(i, 0u, RaycastHit<T>());
-    }
+    items.out.store(i, h.flags.bits() != 0 ? 1u : 0u, h);
     failed += record(items.statuses, i, Status()) ? 0 : 1;
   }
   return failed;

@@ -97,20 +97,14 @@ template <class T> class TriangleMeshRays {
   // `scaled`: !g.scale.isIdentity(), as a prepared shape keeps it.
   TriangleMeshRays(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, bool scaled);
   std::uint32_t cast(const RayQuery<T>& ray, RaycastHit<T>* hits) const;
-  // The walk, returning the number of hits: several (ray.maxHits > 1) are written to hits; the hit of a one-hit ray
-  // is returned raw (its triangle's cooked index and hit), hits untouched. cast() is castRaw, then writeHit on a
-  // one-hit ray's hit.
-  std::uint32_t castRaw(const RayQuery<T>& ray, RaycastHit<T>* hits, std::uint32_t& cooked,
-                        TriangleRayHit<T>& tri) const;
-  // The requested fields of the hit of `ray` on triangle `cooked`, written in place.
-  void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
-                RaycastHit<T>& hit) const;
 
  private:
   [[gnu::always_inline]] Vec3<T> toMesh(const Vec3<T>& v) const {
     if (!scaled_) return v;
     return diagonal_ ? Vec3<T>(v.cwiseProduct(invScaleDiagonal_)) : Vec3<T>(invScale_ * v);
   }
+  void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
+                RaycastHit<T>& hit) const;
   void writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir, bool frontFace, Vec3<T>& normal) const;
 
   const TriangleMeshGeometry<T>& g_;

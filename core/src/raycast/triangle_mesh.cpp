@@ -366,9 +366,8 @@ void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked,
 }
 
 template <class T>
-[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::castRaw(const RayQuery<T>& ray, RaycastHit<T>* hits,
-                                                                         std::uint32_t& cooked,
-                                                                         TriangleRayHit<T>& tri) const {
+[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
+                                                                      RaycastHit<T>* hits) const {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
   // The ray in mesh space (one branch per frame step, the identity ones skipped).
   Vec3<T> org = ray.origin - pose_.p, dir = ray.dir;
@@ -395,19 +394,8 @@ template <class T>
   const bool found = ray.flags.has(HitFlag::AnyHit) ? withLanes<AnyWalk>(walk, caster, ray.maxDist, best)
                                                     : withLanes<ClosestWalk>(walk, caster, ray.maxDist, best);
   if (!found) return 0;
-  cooked = best.cooked;
-  tri = best.tri;
+  writeHit(ray, best.cooked, best.tri, hits[0]);
   return 1;
-}
-
-template <class T>
-[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
-                                                                      RaycastHit<T>* hits) const {
-  std::uint32_t cooked = 0;
-  TriangleRayHit<T> tri;
-  const std::uint32_t n = castRaw(ray, hits, cooked, tri);
-  if (n != 0 && ray.maxHits <= 1) writeHit(ray, cooked, tri, hits[0]);
-  return n;
 }
 
 template class TriangleMeshRays<float>;
