@@ -219,15 +219,21 @@ TEST(RayOrder, KeyRaysMarkRaysMissingTheBoxAndKeyAnyInput) {
     Vec3<double> origin, dir;
     Enters enters;
   };
-  std::vector<Ray> rays = {
-      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, -1), kYes},      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 1), kNo},
-      {Vec3<double>(0.2, 0.1, 0), Vec3<double>(1, 0, 0), kYes},   {Vec3<double>(0, 3, 0), Vec3<double>(1, 0, 0), kNo},
+  const std::vector<Ray> kinds = {
+      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, -1), kYes},
+      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 1), kNo},
+      {Vec3<double>(0.2, 0.1, 0), Vec3<double>(1, 0, 0), kYes},  // inside
+      {Vec3<double>(0, 3, 0), Vec3<double>(1, 0, 0), kNo},
       {Vec3<double>(0, 0, 50), Vec3<double>(0, 0, -1), kNo},  // enters at 49 > maxDist 10
-      {Vec3<double>(nan, 0, 0), Vec3<double>(1, 0, 0), kEither},  {Vec3<double>(0, 0, 5), Vec3<double>(nan, 0, 0), kEither},
-      {Vec3<double>(inf, 0, 0), Vec3<double>(-1, 0, 0), kNo},     {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 0), kNo},
-      {Vec3<double>(1e300, 0, 0), Vec3<double>(-1, 0, 0), kNo},   {Vec3<double>(-4, 0.5, -0.5), Vec3<double>(1, 0, 0), kYes},
+      {Vec3<double>(nan, 0, 0), Vec3<double>(1, 0, 0), kEither},
+      {Vec3<double>(0, 0, 5), Vec3<double>(nan, 0, 0), kEither},
+      {Vec3<double>(inf, 0, 0), Vec3<double>(-1, 0, 0), kNo},
+      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 0), kNo},
+      {Vec3<double>(1e300, 0, 0), Vec3<double>(-1, 0, 0), kNo},
+      {Vec3<double>(-4, 0.5, -0.5), Vec3<double>(1, 0, 0), kYes},
   };
-  for (int copy = 0; copy < 2; ++copy) rays.insert(rays.end(), rays.begin(), rays.begin() + 11);  // 33: 4 x 8 + 1
+  std::vector<Ray> rays;  // 33: four groups of 8 and one more, each kind in several lanes
+  for (int copy = 0; copy < 3; ++copy) rays.insert(rays.end(), kinds.begin(), kinds.end());
   for (const bool scalar : {false, true}) {
     SCOPED_TRACE(scalar ? "scalar keys" : "wide keys");
     detail::setRayOrderKeysScalarOnly(scalar);

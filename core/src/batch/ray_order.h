@@ -12,9 +12,9 @@ namespace gq::detail {
 // Settings of the reordering (counts of rays).
 struct RayOrderSettings {
   // Batches smaller than this keep the input order: their rays are too sparse for neighbours in key order to share
-  // nodes, and the key, sort and copies (~300 instructions a ray) would be lost.
+  // nodes, and the keys, sorts and copies would be lost.
   std::size_t minRays = 32768;
-  // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 72 bytes a ray in double,
+  // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 84 bytes a ray in double,
   // 48 in float; each array at least one 2 MB page). The whole block is cast in key order: the larger the block, the
   // nearer neighbours in key order are (docs/performance.md: one 1M block against 128k blocks).
   std::size_t blockRays = std::size_t(1) << 20;
