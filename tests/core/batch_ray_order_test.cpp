@@ -120,9 +120,9 @@ template <class T> bool sameFields(const RaycastHit<T>& a, const RaycastHit<T>& 
   return sameBytes(a, b) && std::memcmp(&a.u, &b.u, sizeof(T)) == 0 && std::memcmp(&a.v, &b.v, sizeof(T)) == 0;
 }
 
-// The coherent order writes each hit after its cast, from the raw hit and the normal found in key order: every
-// requested field (and the unrequested ones' defaults) must be the single query's, under a mirrored, rotated scale
-// (u and v swapped) and a rotated pose, for any hit flags.
+// The coherent order casts in key order and copies each hit out in input order: every requested field (and the
+// unrequested ones' defaults) must be the single query's, under a mirrored, rotated scale (u and v swapped) and a
+// rotated pose, for any hit flags.
 TYPED_TEST(BatchRayOrder, EveryHitFlagAndMirroredScaleGiveTheSingleRaycastsFields) {
   using T = TypeParam;
   Rng rng(4407);
