@@ -340,7 +340,9 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   constexpr std::size_t kPrefetchAhead = 16;  // rays
   constexpr std::size_t kComparisonSortRays = 256;
   const RayBatch<T>& rays = items.rays;
-  const int fineBits = 30 - order.coarseBits;
+  // A key's bits: coarseBits (its bucket), fineBits (its place in the bucket), unsortedBits.
+  const int fineBits = order.sortedBits - order.coarseBits, unsortedBits = 30 - order.sortedBits;
+  const int bucketShift = fineBits + unsortedBits;
   const std::size_t buckets = std::size_t(1) << order.coarseBits;
   const std::size_t size = end - begin;
   std::size_t failed = 0;
@@ -360,7 +362,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       failed += items(begin + j) ? 0 : 1;
       rank[j] = Scratch::kAnswered;
     } else {
-      ++starts[(k >> fineBits) + 1];
+      ++starts[(k >> bucketShift) + 1];
     }
   }
   std::uint32_t largest = 0;  // bucket
@@ -382,7 +384,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       const std::uint32_t k = rank[j];
       if (k == Scratch::kAnswered) continue;
       const std::size_t i = begin + j;
-      const std::uint32_t slot = next[k >> fineBits]++;
+      const std::uint32_t slot = next[k >> bucketShift]++;
       new (&scratch.slots.data[slot].ray) Ray{rays.origins[i], rays.unitDirs[i], k};
       rank[j] = slot;
     }
@@ -396,7 +398,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     typename Scratch::Slot* bucket = slots + first;
     std::uint64_t* fine = scratch.items.data;
     for (std::size_t j = 0; j < count; ++j) {
-      fine[j] = std::uint64_t(bucket[j].ray.key & fineMask) << 32 | std::uint64_t(j);
+      fine[j] = std::uint64_t((bucket[j].ray.key >> unsortedBits) & fineMask) << 32 | std::uint64_t(j);
     }
     // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's): a
     // radix pass costs two histograms of 1,024 counts whatever the bucket's size.
