@@ -27,7 +27,7 @@ ROWS = {
     "EmbreeSceneRaycast": ("SceneRaycast", "Embree 3 BVH over the objects, gq's raycast per object (float rays)"),
     "SceneRaycastBatch/1": ("SceneRaycast", "raycastBatch over the scene, 1 thread"),
     "SceneRaycastBatch/2": ("SceneRaycastBatch/1", "raycastBatch over the scene, 2 threads"),
-    "BunnyRaycastLoop": ("", "1M rays at the bunny, a loop of single prepared raycasts"),
+    "BunnyRaycastLoop": ("", "1M rays at the bunny, a loop of single prepared raycasts storing hits into arrays"),
     "BunnyRaycastBatch/1": ("BunnyRaycastLoop", "1M bunny rays as one raycastBatch (coherent ray order), 1 thread"),
     "BunnyRaycastBatchInputOrder/1": ("BunnyRaycastLoop",
                                       "the same batch in input order (coherentRayOrder false), 1 thread"),

@@ -116,6 +116,141 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
   EXPECT_EQ(kept.bytes(), 0u);
 }
 
+template <class T> bool sameFields(const RaycastHit<T>& a, const RaycastHit<T>& b) {
+  return sameBytes(a, b) && std::memcmp(&a.u, &b.u, sizeof(T)) == 0 && std::memcmp(&a.v, &b.v, sizeof(T)) == 0;
+}
+
+// The coherent order casts in key order and copies each hit out in input order: every requested field (and the
+// unrequested ones' defaults) must be the single query's, under a mirrored, rotated scale (u and v swapped) and a
+// rotated pose, for any hit flags.
+TYPED_TEST(BatchRayOrder, EveryHitFlagAndMirroredScaleGiveTheSingleRaycastsFields) {
+  using T = TypeParam;
+  Rng rng(4407);
+  const auto ico = meshtest::icosphere<T>(2);
+  const Quat<T> scaleRotation = Quat<T>(T(0.9), T(0.3), T(-0.2), T(0.1)).normalized();
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
+                                                     MeshScale<T>(Vec3<T>(T(-2), T(1.5), T(1)), scaleRotation)),
+                             mesh)
+                  .ok());
+  const Transform<T> pose = rng.pose<T>(1);
+  constexpr std::size_t n = 40000;  // above the order's 32,768-ray threshold at 1 thread
+  std::vector<Vec3<T>> origins(n), dirs(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    origins[i] = pose.p + rng.unitVector<T>() * T(5);
+    dirs[i] = (pose.p + rng.inBox<T>(1.5) - origins[i]).normalized();
+  }
+  const HitFlags flagSets[] = {HitFlag::Position | HitFlag::Normal | HitFlag::FaceIndex | HitFlag::UV,
+                               HitFlags(HitFlag::UV), HitFlags(HitFlag::Position),
+                               HitFlag::Normal | HitFlag::MeshBothSides, HitFlag::AnyHit | HitFlag::Normal};
+  for (const HitFlags flags : flagSets) {
+    SCOPED_TRACE(::testing::Message() << "flags " << flags.bits());
+    RayBatch<T> batch;
+    batch.origins = StridedArray<Vec3<T>>(origins.data(), n);
+    batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), n);
+    batch.maxDist = T(20);
+    batch.hitFlags = flags;
+    std::vector<RaycastHit<T>> hits(n);
+    std::vector<std::uint8_t> has(n, 7);
+    ASSERT_TRUE(raycastBatch(batch, mesh, pose, hits.data(), has.data(), nullptr, {1, 64}).ok());
+    std::size_t hitCount = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      RaycastHit<T> ref;
+      std::uint32_t count = 0;
+      ASSERT_TRUE(raycast(origins[i], dirs[i], mesh, pose, batch.maxDist, flags, 1u, &ref, count).ok());
+      ASSERT_EQ(has[i], count > 0 ? 1 : 0) << i;
+      if (count > 0) {
+        ASSERT_TRUE(sameFields(hits[i], ref)) << i;
+      }
+      hitCount += count;
+    }
+    EXPECT_GT(hitCount, n / 4);
+  }
+}
+
+// The batch keys rays 8 at a time with AVX2 where the CPU has it, else one at a time: the keys may differ, the
+// answers may not.
+TYPED_TEST(BatchRayOrder, WideAndScalarRayKeysGiveTheSameBatchBytes) {
+  using T = TypeParam;
+  Rng rng(4406);
+  const auto ico = meshtest::icosphere<T>(3);
+  Shape<T> mesh;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles)), mesh).ok());
+  const Transform<T> pose = rng.pose<T>(1);
+  std::vector<Vec3<T>> origins, dirs;
+  manyRays(rng, origins, dirs);
+  RayBatch<T> batch;
+  batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
+  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), dirs.size());
+  batch.maxDist = T(20);
+  struct Output {
+    std::vector<RaycastHit<T>> hits = std::vector<RaycastHit<T>>(kManyRays);
+    std::vector<std::uint8_t> has = std::vector<std::uint8_t>(kManyRays, 7);
+    std::vector<Status> statuses = std::vector<Status>(kManyRays);
+  };
+  auto run = [&](bool scalarKeys, Output& out) {
+    detail::setRayOrderKeysScalarOnly(scalarKeys);
+    const Status s = raycastBatch(batch, mesh, pose, out.hits.data(), out.has.data(), out.statuses.data(), {1, 64});
+    detail::setRayOrderKeysScalarOnly(false);
+    return s;
+  };
+  Output wide, scalar;
+  const Status sw = run(false, wide), ss = run(true, scalar);
+  EXPECT_EQ(sw.index(), 5u);
+  EXPECT_EQ(ss.index(), 5u);
+  EXPECT_EQ(std::memcmp(wide.hits.data(), scalar.hits.data(), kManyRays * sizeof(RaycastHit<T>)), 0);
+  EXPECT_EQ(wide.has, scalar.has);
+  std::size_t hits = 0;
+  for (std::size_t i = 0; i < kManyRays; ++i) {
+    ASSERT_EQ(wide.statuses[i].code, scalar.statuses[i].code) << i;
+    hits += wide.has[i] == 1 ? 1 : 0;
+  }
+  EXPECT_GT(hits, kManyRays / 4);
+}
+
+// keyRays gives every ray a 30-bit key or the miss mark, on both key paths and for any input; rays
+// aimed away from the box, or stopping before it, are marked (rays with a NaN may be marked either way: the cast
+// fails them).
+TEST(RayOrder, KeyRaysMarkRaysMissingTheBoxAndKeyAnyInput) {
+  const detail::RayOrderKey<double> key(Bounds3<double>::fromMinMax(Vec3<double>(-1, -1, -1), Vec3<double>(1, 1, 1)));
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  enum Enters { kNo, kYes, kEither };
+  struct Ray {
+    Vec3<double> origin, dir;
+    Enters enters;
+  };
+  const std::vector<Ray> kinds = {
+      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, -1), kYes},
+      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 1), kNo},
+      {Vec3<double>(0.2, 0.1, 0), Vec3<double>(1, 0, 0), kYes},  // inside
+      {Vec3<double>(0, 3, 0), Vec3<double>(1, 0, 0), kNo},
+      {Vec3<double>(0, 0, 50), Vec3<double>(0, 0, -1), kNo},  // enters at 49 > maxDist 10
+      {Vec3<double>(nan, 0, 0), Vec3<double>(1, 0, 0), kEither},
+      {Vec3<double>(0, 0, 5), Vec3<double>(nan, 0, 0), kEither},
+      {Vec3<double>(inf, 0, 0), Vec3<double>(-1, 0, 0), kNo},
+      {Vec3<double>(0, 0, 5), Vec3<double>(0, 0, 0), kNo},
+      {Vec3<double>(1e300, 0, 0), Vec3<double>(-1, 0, 0), kNo},
+      {Vec3<double>(-4, 0.5, -0.5), Vec3<double>(1, 0, 0), kYes},
+  };
+  std::vector<Ray> rays;  // 33: four groups of 8 and one more, each kind in several lanes
+  for (int copy = 0; copy < 3; ++copy) rays.insert(rays.end(), kinds.begin(), kinds.end());
+  for (const bool scalar : {false, true}) {
+    SCOPED_TRACE(scalar ? "scalar keys" : "wide keys");
+    detail::setRayOrderKeysScalarOnly(scalar);
+    std::vector<std::uint32_t> keys(rays.size() + 1, 7u);
+    key.keyRays(&rays[0].origin, sizeof(Ray), &rays[0].dir, sizeof(Ray), rays.size(), 10.0, keys.data());
+    detail::setRayOrderKeysScalarOnly(false);
+    EXPECT_EQ(keys.back(), 7u) << "nothing written past the last ray";
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const std::uint32_t k = keys[i];
+      if (rays[i].enters != kEither) {
+        EXPECT_EQ(k != detail::RayOrderKey<double>::kMisses, rays[i].enters == kYes) << i;
+      }
+      EXPECT_TRUE(k < (1u << 30) || k == detail::RayOrderKey<double>::kMisses) << i;
+    }
+  }
+}
+
 TYPED_TEST(BatchRayOrder, LargeBatchesOfColumnsAndNormalizedDirectionsEqualTheInputOrder) {
   using T = TypeParam;
   Rng rng(4402);

@@ -64,8 +64,8 @@ class BatchScratchAccess;
 }
 
 // Scratch memory kept between batch calls by their caller: a mesh ray batch cast in coherent order (below) that is
-// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (about 72
-// bytes a ray of a block in double: ~72 MB for 1M rays). A caller casting batch after batch on one thread keeps one;
+// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (about 88
+// bytes a ray of a block in double: ~88 MB for 1M rays). A caller casting batch after batch on one thread keeps one;
 // one batch call at a time may use it. The memory is held until release() or destruction.
 class BatchScratch {
  public:
@@ -91,9 +91,10 @@ struct BatchSettings {
   // coherent order: in blocks of up to 1,048,576 input rays, sorted by where each ray passes the mesh's bounds and
   // by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not apply to
   // them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that are
-  // already coherent). On more than one worker the batch keeps the input order, which was measured faster there
-  // (docs/performance.md). Memory: about 72 bytes (double; 48 in float) a ray of the largest block, each array in
-  // whole 2 MB pages, so at most ~76 MB (double), freed on return unless `scratch` keeps it.
+  // already coherent). On more than one worker the batch keeps the input order, which was measured as fast there
+  // without the scratch (docs/performance.md). Memory: 84 bytes (double; 48 in float) a ray of the largest block and
+  // 16 bytes a ray of its largest bucket, each array in whole 2 MB pages, so about 88 MB (double) for 1M rays, freed
+  // on return unless `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };

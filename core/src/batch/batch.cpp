@@ -129,17 +129,10 @@ template <class T> const Vec3<T>* rayDirection(const RayBatch<T>& rays, std::siz
 
 Status zeroLengthDirection() { return Status::invalid("zero-length ray direction (it cannot be normalized)"); }
 
-// Cache-line prefetches (no-ops where the compiler has no builtin).
+// A cache-line prefetch (a no-op where the compiler has no builtin).
 inline void prefetchRead(const void* p) {
 #if defined(__GNUC__)
   __builtin_prefetch(p, 0, 3);
-#else
-  (void)p;
-#endif
-}
-inline void prefetchWrite(const void* p) {
-#if defined(__GNUC__)
-  __builtin_prefetch(p, 1, 3);
 #else
   (void)p;
 #endif
@@ -156,11 +149,6 @@ template <class T> struct HitArrayOut {
   void store(std::size_t i, std::uint32_t count, const RaycastHit<T>& h) const {
     if (count > 0 && &h != hits + i) hits[i] = h;
     hasHit[i] = count > 0 ? 1 : 0;
-  }
-  void prefetch(std::size_t i) const {
-    prefetchWrite(hits + i);
-    prefetchWrite(reinterpret_cast<const unsigned char*>(hits + i + 1) - 1);
-    prefetchWrite(hasHit + i);
   }
 };
 
@@ -179,13 +167,6 @@ template <class T> struct HitColumnsOut {
     }
     if (columns.faceIndex)
       columns.faceIndex[i] = hit && h.faceIndex != kInvalidFaceIndex ? std::int64_t(h.faceIndex) : std::int64_t(-1);
-  }
-  void prefetch(std::size_t i) const {
-    if (columns.hit) prefetchWrite(columns.hit + i);
-    if (columns.distance) prefetchWrite(columns.distance + i);
-    if (columns.position) prefetchWrite(columns.position + 3 * i);
-    if (columns.normal) prefetchWrite(columns.normal + 3 * i);
-    if (columns.faceIndex) prefetchWrite(columns.faceIndex + i);
   }
 };
 
@@ -261,36 +242,38 @@ template <class E> class ScratchArray {
   std::size_t size = 0;
 };
 
-// One worker's arrays for castBlockInKeyOrder, kept from block to block (their first use costs page faults):
-// 16 bytes a ray of a block for the keys and their sort, a copy of each ray entering the bounds (56 bytes in double,
-// 32 in float), and the hits of one chunk.
+// One worker's arrays for castBlockInKeyOrder, kept from block to block (their first use costs page faults), per ray
+// of a block: its key, then its slot (4 bytes), and a slot holding its copy, then its hit (80 bytes in double, 44 in
+// float); 16 bytes a ray of the largest bucket for its sort.
 template <class T> struct KeyOrderScratch {
   struct Ray {  // a ray of the block, copied in coarse key order
     Vec3<T> origin, dir;
-    std::uint32_t index;  // in the block
     std::uint32_t key;
   };
-  static constexpr std::size_t kChunk = 1024;  // rays cast into `hits` before their hits are written out
-  static constexpr std::uint8_t kByIndex = 0xff;  // a ray that takes the per-index path
-  ScratchArray<std::uint64_t> items;  // key << 32 | ray within the block; then a bucket's fine keys and scratch
-  ScratchArray<Ray> rays;
-  std::vector<std::uint32_t> starts;       // where each coarse bucket begins in rays
-  std::vector<std::uint32_t> next;         // where the next ray of each bucket is copied
-  std::vector<RaycastHit<T>> hits;         // a chunk's hits in key order
-  std::vector<std::uint8_t> counts;        // their hit counts, or kByIndex
+  // A ray's copy until it is cast, then its hit: the single raycast's output (flags 0: no hit; a hit has at least
+  // FaceIndex), or kByIndex.
+  union Slot {
+    Slot() {}  // no member alive: each is begun by placement new
+    Ray ray;
+    RaycastHit<T> hit;
+  };
+  static constexpr HitFlags kByIndex = HitFlags(std::uint16_t(0xffff));  // a ray that takes the per-index path
+  static constexpr std::uint32_t kAnswered = 0xffffffffu;  // a ray answered by the key pass (rank)
+  ScratchArray<std::uint64_t> items;  // a bucket's fine keys << 32 | ray in the bucket, and their sort's scratch
+  ScratchArray<Slot> slots;
+  ScratchArray<std::uint32_t> rank;   // by ray within the block: its key, then its slot, or kAnswered
+  std::vector<std::uint32_t> starts;  // where each coarse bucket begins in slots
+  std::vector<std::uint32_t> next;    // where the next ray of each bucket is copied
 
   std::size_t bytes() const noexcept {
-    return items.size * sizeof(std::uint64_t) + rays.size * sizeof(Ray) +
-           (starts.capacity() + next.capacity()) * sizeof(std::uint32_t) + hits.capacity() * sizeof(RaycastHit<T>) +
-           counts.capacity();
+    return items.size * sizeof(std::uint64_t) + slots.size * sizeof(Slot) + rank.size * sizeof(std::uint32_t) +
+           (starts.capacity() + next.capacity()) * sizeof(std::uint32_t);
   }
   bool reserve(std::size_t m, std::size_t buckets) {
     try {
-      if (!items.reserve(2 * m) || !rays.reserve(m)) return false;
+      if (!slots.reserve(m) || !rank.reserve(m)) return false;
       starts.resize(buckets + 1);
       next.resize(buckets);
-      hits.resize(kChunk);
-      counts.resize(kChunk);
       return true;
     } catch (const std::bad_alloc&) {
       return false;
@@ -341,65 +324,82 @@ namespace {
 
 // Rays [begin, end) of a batch cast in key order (batch/ray_order.h); returns how many failed. Rays that miss the
 // mesh's bounds are cast at once in input order. The others are copied, in one sequential pass over the caller's
-// arrays, into buckets of the key's top bits (RayOrderSettings::coarseBits); each bucket is then sorted by the
-// remaining bits and cast from its copies in chunks: a chunk's rays are cast into the chunk's hit array, then each
-// hit is written at its input index. The whole block is so cast in key order while the scattered reads stay within
-// a bucket's copies, and the scattered writes run in a tight loop of their own (prefetched, they overlap one
-// another instead of each waiting behind a cast). A ray failing the quick checks takes the per-index path
-// (the single query's Status). Without memory for the scratch the block keeps input order.
+// arrays, into buckets of the key's top bits (RayOrderSettings::coarseBits), each ray's slot noted at its index
+// (rank); each bucket is then sorted by the remaining bits and cast from its copies, each hit written over the copy
+// it was cast from. A last pass in input order copies each ray's hit from its slot (read a few rays ahead) to the
+// caller's arrays, written sequentially. So every write of the casts stays within a bucket's slots: a scattered
+// write there (the hits, or rank, at input indices) waits for its cache line and holds up the cast's own stores
+// behind it (a 4-byte rank write per cast cost about 60 ms a million rays). A ray failing the quick checks takes the
+// per-index path (the single query's Status). Without memory for the scratch the block keeps input order.
 template <class T, class Out>
 std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
                                 const detail::RayOrderSettings& order, KeyOrderScratch<T>& scratch,
                                 std::size_t begin, std::size_t end) {
-  using Ray = typename KeyOrderScratch<T>::Ray;
+  using Scratch = KeyOrderScratch<T>;
+  using Ray = typename Scratch::Ray;
   constexpr std::size_t kPrefetchAhead = 16;  // rays
   constexpr std::size_t kComparisonSortRays = 256;
   const RayBatch<T>& rays = items.rays;
-  const int fineBits = 30 - order.coarseBits;
+  // A key's bits: coarseBits (its bucket), fineBits (its place in the bucket), unsortedBits.
+  const int fineBits = order.sortedBits - order.coarseBits, unsortedBits = 30 - order.sortedBits;
+  const int bucketShift = fineBits + unsortedBits;
   const std::size_t buckets = std::size_t(1) << order.coarseBits;
+  const std::size_t size = end - begin;
   std::size_t failed = 0;
-  if (!scratch.reserve(end - begin, buckets)) {
+  if (!scratch.reserve(size, buckets)) {
     for (std::size_t i = begin; i < end; ++i) failed += items(i) ? 0 : 1;
     return failed;
   }
-  // Keys, and the size of each bucket.
+  // Keys (in rank until the rays are copied), and the size of each bucket.
+  std::uint32_t* rank = scratch.rank.data;
+  key.keyRays(&rays.origins[begin], rays.origins.stride, &rays.unitDirs[begin], rays.unitDirs.stride, size,
+              rays.maxDist, rank);
   std::uint32_t* starts = scratch.starts.data();
   std::fill(starts, starts + buckets + 1, 0u);
-  std::size_t m = 0;  // rays that enter the bounds
-  for (std::size_t i = begin; i < end; ++i) {
-    std::uint32_t k = 0;
-    if (key(rays.origins[i], rays.unitDirs[i], rays.maxDist, k)) {
-      scratch.items.data[m++] = std::uint64_t(k) << 32 | std::uint64_t(i - begin);
-      ++starts[(k >> fineBits) + 1];
+  for (std::size_t j = 0; j < size; ++j) {
+    const std::uint32_t k = rank[j];
+    if (k == detail::RayOrderKey<T>::kMisses) {
+      failed += items(begin + j) ? 0 : 1;
+      rank[j] = Scratch::kAnswered;
     } else {
-      failed += items(i) ? 0 : 1;
+      ++starts[(k >> bucketShift) + 1];
     }
   }
+  std::uint32_t largest = 0;  // bucket
+  for (std::size_t b = 1; b <= buckets; ++b) {
+    largest = std::max(largest, starts[b]);
+    starts[b] += starts[b - 1];
+  }
+  if (!scratch.items.reserve(2 * std::size_t(largest))) {  // no memory to sort the buckets: input order
+    for (std::size_t j = 0; j < size; ++j) {
+      if (rank[j] != Scratch::kAnswered) failed += items(begin + j) ? 0 : 1;
+    }
+    return failed;
+  }
   // The rays copied into their buckets.
-  for (std::size_t b = 1; b <= buckets; ++b) starts[b] += starts[b - 1];
   {
     std::uint32_t* next = scratch.next.data();
     std::copy(starts, starts + buckets, next);
-    for (std::size_t j = 0; j < m; ++j) {
-      const std::uint32_t k = std::uint32_t(scratch.items.data[j] >> 32);
-      const std::size_t i = begin + std::size_t(scratch.items.data[j] & 0xffffffffu);
-      Ray& r = scratch.rays.data[next[k >> fineBits]++];
-      r.origin = rays.origins[i];
-      r.dir = rays.unitDirs[i];
-      r.index = std::uint32_t(i - begin);
-      r.key = k;
+    for (std::size_t j = 0; j < size; ++j) {
+      const std::uint32_t k = rank[j];
+      if (k == Scratch::kAnswered) continue;
+      const std::size_t i = begin + j;
+      const std::uint32_t slot = next[k >> bucketShift]++;
+      new (&scratch.slots.data[slot].ray) Ray{rays.origins[i], rays.unitDirs[i], k};
+      rank[j] = slot;
     }
   }
   // Each bucket sorted and cast.
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
-  RaycastHit<T>* hits = scratch.hits.data();
-  std::uint8_t* counts = scratch.counts.data();
+  typename Scratch::Slot* slots = scratch.slots.data;
   for (std::size_t b = 0; b < buckets; ++b) {
     const std::size_t first = starts[b], count = starts[b + 1] - first;
     if (count == 0) continue;
-    const Ray* bucket = scratch.rays.data + first;
+    typename Scratch::Slot* bucket = slots + first;
     std::uint64_t* fine = scratch.items.data;
-    for (std::size_t j = 0; j < count; ++j) fine[j] = std::uint64_t(bucket[j].key & fineMask) << 32 | std::uint64_t(j);
+    for (std::size_t j = 0; j < count; ++j) {
+      fine[j] = std::uint64_t((bucket[j].ray.key >> unsortedBits) & fineMask) << 32 | std::uint64_t(j);
+    }
     // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's): a
     // radix pass costs two histograms of 1,024 counts whatever the bucket's size.
     const std::uint64_t* sorted = fine;
@@ -408,32 +408,38 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     } else {
       sorted = detail::sortByKey(fine, fine + count, count, fineBits);
     }
-    auto rayAt = [&](std::size_t k) -> const Ray& { return bucket[sorted[k] & 0xffffffffu]; };
-    for (std::size_t c = 0; c < count; c += KeyOrderScratch<T>::kChunk) {
-      const std::size_t n = std::min(count - c, KeyOrderScratch<T>::kChunk);
-      for (std::size_t j = 0; j < n; ++j) {
-        if (j + kPrefetchAhead < n) prefetchRead(&rayAt(c + j + kPrefetchAhead));
-        const Ray& r = rayAt(c + j);
-        Vec3<T> normalized;
-        const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
-        if (dir == nullptr || !detail::rayIsValid(r.origin, *dir, items.pose.p)) {
-          counts[j] = KeyOrderScratch<T>::kByIndex;
-          continue;
-        }
-        counts[j] =
-            std::uint8_t(items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u), &hits[j]));
-      }
-      for (std::size_t j = 0; j < n; ++j) {
-        if (j + kPrefetchAhead < n) items.out.prefetch(begin + rayAt(c + j + kPrefetchAhead).index);
-        const std::size_t i = begin + rayAt(c + j).index;
-        if (counts[j] == KeyOrderScratch<T>::kByIndex) {
-          failed += items(i) ? 0 : 1;
-          continue;
-        }
-        items.out.store(i, counts[j], hits[j]);
-        failed += record(items.statuses, i, Status()) ? 0 : 1;
+    for (std::size_t j = 0; j < count; ++j) {
+      if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
+      const std::size_t at = sorted[j] & 0xffffffffu;
+      const Ray r = bucket[at].ray;
+      RaycastHit<T>* hit = new (&bucket[at].hit) RaycastHit<T>;  // the copy is not read again
+      Vec3<T> normalized;
+      const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
+      if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
+        (void)items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u), hit);
+      } else {
+        hit->flags = Scratch::kByIndex;
       }
     }
+  }
+  // The outputs in input order, each hit read kHitAhead rays ahead (two cache lines).
+  constexpr std::size_t kHitAhead = 24;
+  for (std::size_t j = 0; j < size; ++j) {
+    if (j + kHitAhead < size && rank[j + kHitAhead] != Scratch::kAnswered) {
+      const RaycastHit<T>* ahead = &slots[rank[j + kHitAhead]].hit;
+      prefetchRead(ahead);
+      prefetchRead(reinterpret_cast<const unsigned char*>(ahead + 1) - 1);
+    }
+    const std::uint32_t place = rank[j];
+    if (place == Scratch::kAnswered) continue;
+    const RaycastHit<T>& h = slots[place].hit;
+    const std::size_t i = begin + j;
+    if (h.flags == Scratch::kByIndex) {
+      failed += items(i) ? 0 : 1;
+      continue;
+    }
+    items.out.store(i, h.flags.bits() != 0 ? 1u : 0u, h);
+    failed += record(items.statuses, i, Status()) ? 0 : 1;
   }
   return failed;
 }

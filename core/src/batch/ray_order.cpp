@@ -3,8 +3,15 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
+
+#include "bvh/traverse.h"  // hasAvx2
+
+#ifdef GQ_SSE42
+#include <immintrin.h>
+#endif
 
 namespace gq::detail {
 
@@ -87,6 +94,137 @@ bool RayOrderKey<T>::operator()(const Vec3<T>& origin, const Vec3<T>& dir, T max
   key |= kSpread[cell((u + T(1)) * T(0.5))] << 1;
   key |= kSpread[cell((v + T(1)) * T(0.5))];
   return true;
+}
+
+namespace {
+
+std::atomic<bool> gKeysScalarOnly{false};
+
+template <class T> const Vec3<T>& at(const void* base, std::size_t stride, std::size_t i) {
+  return *reinterpret_cast<const Vec3<T>*>(static_cast<const unsigned char*>(base) + i * stride);
+}
+
+#ifdef GQ_SSE42
+// Bits 0..5 of each lane spread 5 apart (bit b to bit 5b), as kSpread.
+__attribute__((target("avx2"))) inline __m256i spread8(__m256i c) {
+  __m256i s = _mm256_setzero_si256();
+  for (int b = 0; b < kBitsPerAxis; ++b) {
+    s = _mm256_or_si256(s, _mm256_slli_epi32(_mm256_and_si256(c, _mm256_set1_epi32(1 << b)), (kAxes - 1) * b));
+  }
+  return s;
+}
+
+// cell() on 8 lanes of x in [0, 1]: below 0 or NaN gives 0 (max returns its second operand for a NaN), above 1 the
+// last cell.
+__attribute__((target("avx2"))) inline __m256i cell8(__m256 x) {
+  const __m256 scaled = _mm256_max_ps(_mm256_mul_ps(x, _mm256_set1_ps(float(kCells))), _mm256_setzero_ps());
+  return _mm256_cvttps_epi32(_mm256_min_ps(scaled, _mm256_set1_ps(float(kCells) - 0.5f)));
+}
+
+// RayOrderKey::operator() for 8 rays in float, without branches. Per-axis slab parameters: an axis the ray is
+// parallel to gives +-inf (or NaN for an origin on the slab's plane, which min / max drop: the running value is their
+// second operand). The octahedral fold by copysign: -0 folds as a negative.
+struct Keys8 {
+  __m256 lo[3], hi[3], invExtent[3];
+  float maxDist2;
+
+  __attribute__((target("avx2"))) void operator()(const float (&o)[3][8], const float (&d)[3][8],
+                                                  std::uint32_t* keys) const {
+    const __m256 signBit = _mm256_set1_ps(-0.0f);
+    __m256 org[3], dir[3];
+    __m256 enter = _mm256_setzero_ps(), exit = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+    for (int k = 0; k < 3; ++k) {
+      org[k] = _mm256_loadu_ps(o[k]);
+      dir[k] = _mm256_loadu_ps(d[k]);
+      const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), dir[k]);
+      const __m256 t0 = _mm256_mul_ps(_mm256_sub_ps(lo[k], org[k]), inv);
+      const __m256 t1 = _mm256_mul_ps(_mm256_sub_ps(hi[k], org[k]), inv);
+      enter = _mm256_max_ps(_mm256_min_ps(t0, t1), enter);
+      exit = _mm256_min_ps(_mm256_max_ps(t0, t1), exit);
+    }
+    const __m256 dd = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dir[0], dir[0]), _mm256_mul_ps(dir[1], dir[1])),
+                                    _mm256_mul_ps(dir[2], dir[2]));
+    const __m256 reach = _mm256_mul_ps(_mm256_mul_ps(enter, enter), dd);
+    const __m256 enters = _mm256_and_ps(_mm256_cmp_ps(enter, exit, _CMP_LE_OQ),
+                                        _mm256_cmp_ps(reach, _mm256_set1_ps(maxDist2), _CMP_LE_OQ));
+    __m256i key = _mm256_setzero_si256();
+    for (int k = 0; k < 3; ++k) {
+      const __m256 entry = _mm256_add_ps(org[k], _mm256_mul_ps(enter, dir[k]));
+      const __m256i c = cell8(_mm256_mul_ps(_mm256_sub_ps(entry, lo[k]), invExtent[k]));
+      key = _mm256_or_si256(key, _mm256_slli_epi32(spread8(c), kAxes - 1 - k));
+    }
+    const __m256 l1 = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(signBit, dir[0]), _mm256_andnot_ps(signBit, dir[1])),
+                                    _mm256_andnot_ps(signBit, dir[2]));
+    const __m256 inv1 = _mm256_div_ps(_mm256_set1_ps(1.0f), l1);
+    __m256 u = _mm256_mul_ps(dir[0], inv1), v = _mm256_mul_ps(dir[1], inv1);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256 fu = _mm256_or_ps(_mm256_sub_ps(one, _mm256_andnot_ps(signBit, v)), _mm256_and_ps(signBit, u));
+    const __m256 fv = _mm256_or_ps(_mm256_sub_ps(one, _mm256_andnot_ps(signBit, u)), _mm256_and_ps(signBit, v));
+    const __m256 below = _mm256_cmp_ps(dir[2], _mm256_setzero_ps(), _CMP_LT_OQ);
+    u = _mm256_blendv_ps(u, fu, below);
+    v = _mm256_blendv_ps(v, fv, below);
+    const __m256 half = _mm256_set1_ps(0.5f);
+    key = _mm256_or_si256(key, _mm256_slli_epi32(spread8(cell8(_mm256_mul_ps(_mm256_add_ps(u, one), half))), 1));
+    key = _mm256_or_si256(key, spread8(cell8(_mm256_mul_ps(_mm256_add_ps(v, one), half))));
+    key = _mm256_blendv_epi8(_mm256_set1_epi32(int(RayOrderKey<float>::kMisses)), key, _mm256_castps_si256(enters));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(keys), key);
+  }
+};
+
+// The AVX2 keys of keyRays: 8 rays' coordinates gathered into float lanes, the last n % 8 by the scalar key.
+template <class T>
+__attribute__((target("avx2"))) void keyRaysAvx2(const Bounds3<T>& box, const Vec3<T>& invExtent, const void* origins,
+                                                 std::size_t originStride, const void* dirs, std::size_t dirStride,
+                                                 std::size_t n, T maxDist, std::uint32_t* out) {
+  Keys8 keys;
+  for (int k = 0; k < 3; ++k) {
+    keys.lo[k] = _mm256_set1_ps(float(box.min[k]));
+    keys.hi[k] = _mm256_set1_ps(float(box.max[k]));
+    keys.invExtent[k] = _mm256_set1_ps(float(invExtent[k]));
+  }
+  const float maxDistF = float(maxDist);
+  keys.maxDist2 = maxDistF * maxDistF;  // +inf for a maxDist beyond float's range
+  alignas(32) float o[3][8], d[3][8];
+  const std::size_t whole = n / 8 * 8;
+  for (std::size_t i = 0; i < whole; i += 8) {
+    for (int l = 0; l < 8; ++l) {
+      const Vec3<T>& org = at<T>(origins, originStride, i + std::size_t(l));
+      const Vec3<T>& dir = at<T>(dirs, dirStride, i + std::size_t(l));
+      for (int k = 0; k < 3; ++k) {
+        o[k][l] = float(org[k]);
+        d[k][l] = float(dir[k]);
+      }
+    }
+    keys(o, d, out + i);
+  }
+}
+#endif
+
+}  // namespace
+
+void setRayOrderKeysScalarOnly(bool scalarOnly) { gKeysScalarOnly.store(scalarOnly); }
+
+template <class T>
+void RayOrderKey<T>::keyRaysScalar(const void* origins, std::size_t originStride, const void* dirs,
+                                   std::size_t dirStride, std::size_t n, T maxDist, std::uint32_t* keys) const {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(*this)(at<T>(origins, originStride, i), at<T>(dirs, dirStride, i), maxDist, keys[i])) keys[i] = kMisses;
+  }
+}
+
+template <class T>
+void RayOrderKey<T>::keyRays(const void* origins, std::size_t originStride, const void* dirs, std::size_t dirStride,
+                             std::size_t n, T maxDist, std::uint32_t* keys) const {
+  std::size_t done = 0;
+#ifdef GQ_SSE42
+  if (hasAvx2() && !gKeysScalarOnly.load(std::memory_order_relaxed)) {
+    done = n / 8 * 8;
+    keyRaysAvx2(Bounds3<T>::fromMinMax(lo_, hi_), invExtent_, origins, originStride, dirs, dirStride, done, maxDist,
+                keys);
+  }
+#endif
+  keyRaysScalar(static_cast<const unsigned char*>(origins) + done * originStride, originStride,
+                static_cast<const unsigned char*>(dirs) + done * dirStride, dirStride, n - done, maxDist, keys + done);
 }
 
 std::uint64_t* sortByKey(std::uint64_t* items, std::uint64_t* scratch, std::size_t n, int keyBits) {

@@ -12,15 +12,20 @@ namespace gq::detail {
 // Settings of the reordering (counts of rays).
 struct RayOrderSettings {
   // Batches smaller than this keep the input order: their rays are too sparse for neighbours in key order to share
-  // nodes, and the key, sort and copies (~300 instructions a ray) would be lost.
+  // nodes, and the keys, sorts and copies would be lost.
   std::size_t minRays = 32768;
-  // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 72 bytes a ray in double,
+  // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 84 bytes a ray in double,
   // 48 in float; each array at least one 2 MB page). The whole block is cast in key order: the larger the block, the
   // nearer neighbours in key order are (docs/performance.md: one 1M block against 128k blocks).
   std::size_t blockRays = std::size_t(1) << 20;
   // A block's rays are first copied into buckets of this many top bits of the key (a histogram and 1,024 write
-  // streams stay in L1 and L2), then each bucket is sorted by the other bits and cast from its copies.
+  // streams stay in L1 and L2), then each bucket is sorted by the next sortedBits - coarseBits bits and cast from its
+  // copies.
   int coarseBits = 10;
+  // The key's top bits the order sorts by; rays differing only in the others keep their input order. Sorting the
+  // 9 lowest bits too changed no cache miss of the casts (callgrind, 1M bunny rays) and cost a second radix pass of
+  // each bucket (20 instructions a ray).
+  int sortedBits = 21;
 };
 
 // A 30-bit key of a ray against a target box: the Morton interleave of the point where the ray enters the box
@@ -35,10 +40,23 @@ template <class T> class RayOrderKey {
   bool operator()(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, std::uint32_t& key) const;
   // The key for any maxDist (0 for a ray that misses the box).
   std::uint32_t operator()(const Vec3<T>& origin, const Vec3<T>& dir) const;
+  // Keys rays [0, n) of strided arrays (ray i's origin `originStride` bytes after ray i - 1's, likewise its
+  // direction): keys[i] = the key, or kMisses for a ray not entering the box within maxDist. With AVX2 (where the
+  // CPU has it) 8 rays at a time in float: those keys and entry decisions may differ from operator()'s near cell and
+  // box borders (they only choose an order), and any input is keyed without fault.
+  void keyRays(const void* origins, std::size_t originStride, const void* dirs, std::size_t dirStride, std::size_t n,
+               T maxDist, std::uint32_t* keys) const;
+  static constexpr std::uint32_t kMisses = 1u << 31;
 
  private:
+  void keyRaysScalar(const void* origins, std::size_t originStride, const void* dirs, std::size_t dirStride,
+                     std::size_t n, T maxDist, std::uint32_t* keys) const;
   Vec3<T> lo_, hi_, invExtent_;
 };
+
+// keyRays uses the scalar operator() on any CPU when true (so tests can compare both key paths on one machine). Not
+// for use while a batch runs.
+void setRayOrderKeysScalarOnly(bool scalarOnly);
 
 // Sorts items of the form (key << 32 | payload), key below 2^keyBits (keyBits at most 32), by key: LSD radix sort
 // in as few passes of at most 11 bits as the key needs (a pass whose digit is the same for every item is skipped);
