@@ -384,14 +384,87 @@ using Bvh8LanesBaseline = Bvh8LanesSse;
 using Bvh8LanesBaseline = BvhLanesScalar<8>;
 #endif
 
+// One inner node of the ray walk: tests its children for t in [0, tMax], continues `e` with one of those the ray
+// enters (the nearest when ordered) and pushes the others on the stack. False when the ray enters none (e unchanged).
+// Ordered: the other children pushed farthest first; unordered: as found (see walkRayLeaves).
+template <bool kOrdered, bool kSlack, class Lanes>
+[[gnu::always_inline]] inline bool descendNode(const Bvh<Lanes::kWidth>& bvh, const typename Lanes::Ray& lanesRay,
+                                               float tMax, BvhWalkEntry& e, BvhWalkEntry* stack, int& top) {
+  constexpr int W = Lanes::kWidth;
+  using Node = BvhNode<W>;
+  using Entry = BvhWalkEntry;
+  const Node& node = bvh.nodes[e.ref];
+  alignas(32) float tn[W];
+  int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);  // empty lanes never set
+  if (mask == 0) return false;
+  int i = __builtin_ctz(unsigned(mask));
+  mask &= mask - 1;
+  if (mask == 0) {  // one child entered: no stack traffic
+    e = Entry{node.child[i], tn[i]};
+    return true;
+  }
+  if (!kOrdered) {
+    e = Entry{node.child[i], tn[i]};
+    if constexpr (Lanes::kSortsHits) {
+      Lanes::pushLanes(node, tn, mask, stack + top);
+      top += __builtin_popcount(unsigned(mask));
+    } else {
+      do {
+        i = __builtin_ctz(unsigned(mask));
+        mask &= mask - 1;
+        stack[top++] = Entry{node.child[i], tn[i]};
+      } while (mask);
+    }
+    return true;
+  }
+  const int j = __builtin_ctz(unsigned(mask));
+  if ((mask & (mask - 1)) == 0) {  // two children entered (the common case): push the farther one
+    // Without a branch: which child is nearer is a coin toss for rays in all directions (a branch on it was
+    // mispredicted about half the time).
+    const int swap = -int(tn[j] < tn[i]);
+    const int nearLane = i ^ ((i ^ j) & swap), farLane = i ^ j ^ nearLane;
+    stack[top++] = Entry{node.child[farLane], tn[farLane]};
+    // Its node is fetched while the nearer subtree is walked (measured 1 % off the walk on the bunny).
+    if (!(node.child[farLane] & Node::kLeafBit)) __builtin_prefetch(&bvh.nodes[node.child[farLane]]);
+    e = Entry{node.child[nearLane], tn[nearLane]};
+    return true;
+  }
+  if constexpr (Lanes::kSortsHits) {
+    e = Lanes::sortHits(node, tn, mask | 1 << i, stack + top, top);
+    return true;
+  }
+  // Push the hit children sorted by bvhSortKey (insertion sort on the stack, nearest on top): the order of
+  // Bvh8LanesAvx2::sortHits, so both walks visit the same nodes in the same order.
+  const int base = top;
+  std::uint32_t keys[W];  // keys[k - base]: the key of stack[k]
+  keys[0] = bvhSortKey(tn[i], i);
+  stack[top++] = Entry{node.child[i], tn[i]};
+  while (mask) {
+    i = __builtin_ctz(unsigned(mask));
+    mask &= mask - 1;
+    const Entry c{node.child[i], tn[i]};
+    const std::uint32_t key = bvhSortKey(tn[i], i);
+    int k = top++;
+    while (k > base && keys[k - 1 - base] < key) {
+      stack[k] = stack[k - 1];
+      keys[k - base] = keys[k - 1 - base];
+      --k;
+    }
+    stack[k] = c;
+    keys[k - base] = key;
+  }
+  e = stack[--top];
+  return true;
+}
+
 // Walks the leaves whose boxes the ray enters within [0, tMax]. Ordered: nearest child first, and entries whose entry
 // distance passed tMax (lowered by the leaf handler since they were pushed) are dropped. Unordered: the children are
 // pushed as found (no compare per node, but on closed meshes the nearest child is likelier to hold a first hit).
+// leaf(ref) returns true to end the walk.
 template <bool kOrdered, bool kSlack, class Lanes, class LeafFn>
 inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWidth>& ray, float& tMax,
                           LeafFn&& leaf) {
-  constexpr int W = Lanes::kWidth;
-  using Node = BvhNode<W>;
+  using Node = BvhNode<Lanes::kWidth>;
   using Entry = BvhWalkEntry;
   if (bvh.rootChild == Node::kEmpty) return;
   const auto& lanesRay = Lanes::prepare(ray);  // a reference to `ray`, or a copy the node test reads faster
@@ -401,72 +474,14 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
   while (top > 0) {
     Entry e = stack[--top];
     if (kOrdered && e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
-    // Descend through inner nodes, pushing the other children and continuing with one (the nearest when ordered).
-    // (Entries are never kEmpty: the root is checked above and empty lanes are never in a mask, so the leaf bit alone
-    // tells a leaf.)
+    // Descend through inner nodes. (Entries are never kEmpty: the root is checked above and empty lanes are never in
+    // a mask, so the leaf bit alone tells a leaf.)
     bool missed = false;
     while (!(e.ref & Node::kLeafBit)) {
-      const Node& node = bvh.nodes[e.ref];
-      alignas(32) float tn[W];
-      int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);  // empty lanes never set
-      if (mask == 0) { missed = true; break; }
-      int i = __builtin_ctz(unsigned(mask));
-      mask &= mask - 1;
-      if (mask == 0) {  // one child entered: no stack traffic
-        e = Entry{node.child[i], tn[i]};
-        continue;
+      if (!descendNode<kOrdered, kSlack, Lanes>(bvh, lanesRay, tMax, e, stack, top)) {
+        missed = true;
+        break;
       }
-      if (!kOrdered) {
-        e = Entry{node.child[i], tn[i]};
-        if constexpr (Lanes::kSortsHits) {
-          Lanes::pushLanes(node, tn, mask, stack + top);
-          top += __builtin_popcount(unsigned(mask));
-        } else {
-          do {
-            i = __builtin_ctz(unsigned(mask));
-            mask &= mask - 1;
-            stack[top++] = Entry{node.child[i], tn[i]};
-          } while (mask);
-        }
-        continue;
-      }
-      const int j = __builtin_ctz(unsigned(mask));
-      if ((mask & (mask - 1)) == 0) {  // two children entered (the common case): push the farther one
-        // Without a branch: which child is nearer is a coin toss for rays in all directions (a branch on it was
-        // mispredicted about half the time).
-        const int swap = -int(tn[j] < tn[i]);
-        const int nearLane = i ^ ((i ^ j) & swap), farLane = i ^ j ^ nearLane;
-        stack[top++] = Entry{node.child[farLane], tn[farLane]};
-        // Its node is fetched while the nearer subtree is walked (measured 1 % off the walk on the bunny).
-        if (!(node.child[farLane] & Node::kLeafBit)) __builtin_prefetch(&bvh.nodes[node.child[farLane]]);
-        e = Entry{node.child[nearLane], tn[nearLane]};
-        continue;
-      }
-      if constexpr (Lanes::kSortsHits) {
-        e = Lanes::sortHits(node, tn, mask | 1 << i, stack + top, top);
-        continue;
-      }
-      // Push the hit children sorted by bvhSortKey (insertion sort on the stack, nearest on top): the order of
-      // Bvh8LanesAvx2::sortHits, so both walks visit the same nodes in the same order.
-      const int base = top;
-      std::uint32_t keys[W];  // keys[k - base]: the key of stack[k]
-      keys[0] = bvhSortKey(tn[i], i);
-      stack[top++] = Entry{node.child[i], tn[i]};
-      while (mask) {
-        i = __builtin_ctz(unsigned(mask));
-        mask &= mask - 1;
-        const Entry c{node.child[i], tn[i]};
-        const std::uint32_t key = bvhSortKey(tn[i], i);
-        int k = top++;
-        while (k > base && keys[k - 1 - base] < key) {
-          stack[k] = stack[k - 1];
-          keys[k - base] = keys[k - 1 - base];
-          --k;
-        }
-        stack[k] = c;
-        keys[k - base] = key;
-      }
-      e = stack[--top];
     }
     if (missed) continue;
     if (leaf(e.ref)) return;
