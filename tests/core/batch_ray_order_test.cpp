@@ -24,7 +24,7 @@ using test::Rng;
 template <class T> class BatchRayOrder : public ::testing::Test {};
 TYPED_TEST_SUITE(BatchRayOrder, test::Scalars);
 
-// One block of the coherent order at 1 thread, two at 2 or more (one per worker), of unequal rays entering the
+// One block of the coherent order at 1 thread (more threads keep the input order), of rays most of which enter the
 // mesh's bounds.
 constexpr std::size_t kManyRays = 140001;
 
@@ -45,9 +45,12 @@ template <class T> void manyRays(Rng& rng, std::vector<Vec3<T>>& origins, std::v
   dirs[69999] = Vec3<T>::Zero();
 }
 
+// The hits' distance, position, normal, face and flags, bit for bit (not their padding).
 template <class T> bool sameBytes(const RaycastHit<T>& a, const RaycastHit<T>& b) {
-  return std::memcmp(&a.distance, &b.distance, sizeof(T)) == 0 && a.position == b.position &&
-         a.normal == b.normal && a.faceIndex == b.faceIndex && a.flags == b.flags;
+  return std::memcmp(&a.distance, &b.distance, sizeof(T)) == 0 &&
+         std::memcmp(a.position.data(), b.position.data(), sizeof(Vec3<T>)) == 0 &&
+         std::memcmp(a.normal.data(), b.normal.data(), sizeof(Vec3<T>)) == 0 && a.faceIndex == b.faceIndex &&
+         a.flags == b.flags;
 }
 
 TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThreadCount) {
@@ -172,6 +175,7 @@ TYPED_TEST(BatchRayOrder, EveryHitFlagAndMirroredScaleGiveTheSingleRaycastsField
 // answers may not.
 TYPED_TEST(BatchRayOrder, WideAndScalarRayKeysGiveTheSameBatchBytes) {
   using T = TypeParam;
+  if (!detail::rayOrderKeysHaveWidePath()) GTEST_SKIP() << "this build or CPU keys rays one at a time only";
   Rng rng(4406);
   const auto ico = meshtest::icosphere<T>(3);
   Shape<T> mesh;
@@ -198,11 +202,11 @@ TYPED_TEST(BatchRayOrder, WideAndScalarRayKeysGiveTheSameBatchBytes) {
   const Status sw = run(false, wide), ss = run(true, scalar);
   EXPECT_EQ(sw.index(), 5u);
   EXPECT_EQ(ss.index(), 5u);
-  EXPECT_EQ(std::memcmp(wide.hits.data(), scalar.hits.data(), kManyRays * sizeof(RaycastHit<T>)), 0);
   EXPECT_EQ(wide.has, scalar.has);
   std::size_t hits = 0;
   for (std::size_t i = 0; i < kManyRays; ++i) {
     ASSERT_EQ(wide.statuses[i].code, scalar.statuses[i].code) << i;
+    if (wide.has[i] == 1) ASSERT_TRUE(sameFields(wide.hits[i], scalar.hits[i])) << i;
     hits += wide.has[i] == 1 ? 1 : 0;
   }
   EXPECT_GT(hits, kManyRays / 4);
@@ -238,7 +242,8 @@ TEST(RayOrder, KeyRaysMarkRaysMissingTheBoxAndKeyAnyInput) {
     SCOPED_TRACE(scalar ? "scalar keys" : "wide keys");
     detail::setRayOrderKeysScalarOnly(scalar);
     std::vector<std::uint32_t> keys(rays.size() + 1, 7u);
-    key.keyRays(&rays[0].origin, sizeof(Ray), &rays[0].dir, sizeof(Ray), rays.size(), 10.0, keys.data());
+    key.keyRays(StridedArray<Vec3<double>>(&rays[0].origin, rays.size(), sizeof(Ray)),
+                StridedArray<Vec3<double>>(&rays[0].dir, rays.size(), sizeof(Ray)), 10.0, keys.data());
     detail::setRayOrderKeysScalarOnly(false);
     EXPECT_EQ(keys.back(), 7u) << "nothing written past the last ray";
     for (std::size_t i = 0; i < rays.size(); ++i) {

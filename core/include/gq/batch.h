@@ -64,9 +64,9 @@ class BatchScratchAccess;
 }
 
 // Scratch memory kept between batch calls by their caller: a mesh ray batch cast in coherent order (below) that is
-// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (about 88
-// bytes a ray of a block in double: ~88 MB for 1M rays). A caller casting batch after batch on one thread keeps one;
-// one batch call at a time may use it. The memory is held until release() or destruction.
+// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (88-100
+// bytes a ray of a block in double, 52-64 in float: see BatchSettings::coherentRayOrder). A caller casting batch
+// after batch on one thread keeps one; one batch call at a time may use it. The memory is held until release() or destruction.
 class BatchScratch {
  public:
   BatchScratch() noexcept;
@@ -93,8 +93,9 @@ struct BatchSettings {
   // them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that are
   // already coherent). On more than one worker the batch keeps the input order, which was measured as fast there
   // without the scratch (docs/performance.md). Memory: 84 bytes (double; 48 in float) a ray of the largest block and
-  // 16 bytes a ray of its largest bucket, each array in whole 2 MB pages, so about 88 MB (double) for 1M rays, freed
-  // on return unless `scratch` keeps it.
+  // 16 bytes a ray of its largest bucket, each array in whole 2 MB pages: for 1M rays about 88 MB (double) when they
+  // spread over the buckets, at most 100 MB (64 MB in float) when they all fall in one; freed on return unless
+  // `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };

@@ -352,8 +352,8 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   }
   // Keys (in rank until the rays are copied), and the size of each bucket.
   std::uint32_t* rank = scratch.rank.data;
-  key.keyRays(&rays.origins[begin], rays.origins.stride, &rays.unitDirs[begin], rays.unitDirs.stride, size,
-              rays.maxDist, rank);
+  key.keyRays(StridedArray<Vec3<T>>(&rays.origins[begin], size, rays.origins.stride),
+              StridedArray<Vec3<T>>(&rays.unitDirs[begin], size, rays.unitDirs.stride), rays.maxDist, rank);
   std::uint32_t* starts = scratch.starts.data();
   std::fill(starts, starts + buckets + 1, 0u);
   for (std::size_t j = 0; j < size; ++j) {
@@ -400,8 +400,8 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     for (std::size_t j = 0; j < count; ++j) {
       fine[j] = std::uint64_t((bucket[j].ray.key >> unsortedBits) & fineMask) << 32 | std::uint64_t(j);
     }
-    // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's): a
-    // radix pass costs two histograms of 1,024 counts whatever the bucket's size.
+    // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's): the
+    // radix pass clears and sums a histogram of 2^fineBits counts whatever the bucket's size.
     const std::uint64_t* sorted = fine;
     if (count <= kComparisonSortRays) {
       std::sort(fine, fine + count);
@@ -445,9 +445,9 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
 }
 
 // Whether a batch on `slots` workers casts in key order: asked for, at least minRays rays, and one worker. On two
-// workers the input order was measured faster, with or without a kept scratch: the order's own passes (keys, copies,
-// sorts, scattered hit writes) compete for memory with the other worker, and fresh scratch is faulted into huge pages
-// by every worker at every call (docs/performance.md).
+// workers the input order was measured as fast, with or without a kept scratch, and needs no scratch: the order's own
+// passes (keys, copies, sorts, hits copied out) compete for memory with the other worker, and fresh scratch is
+// faulted in by every worker at every call (docs/performance.md).
 inline bool castsInKeyOrder(const BatchSettings& settings, std::size_t n, std::size_t slots,
                             const detail::RayOrderSettings& order) {
   return settings.coherentRayOrder && slots == 1 && n >= order.minRays;

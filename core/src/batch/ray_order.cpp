@@ -100,10 +100,6 @@ namespace {
 
 std::atomic<bool> gKeysScalarOnly{false};
 
-template <class T> const Vec3<T>& at(const void* base, std::size_t stride, std::size_t i) {
-  return *reinterpret_cast<const Vec3<T>*>(static_cast<const unsigned char*>(base) + i * stride);
-}
-
 #ifdef GQ_SSE42
 // Bits 0..5 of each lane spread 5 apart (bit b to bit 5b), as kSpread.
 __attribute__((target("avx2"))) inline __m256i spread8(__m256i c) {
@@ -173,10 +169,12 @@ struct Keys8 {
 
 // The AVX2 keys of keyRays: 8 rays' coordinates gathered into float lanes, the last n % 8 by the scalar key.
 template <class T>
-__attribute__((target("avx2"))) void keyRaysAvx2(const Bounds3<T>& box, const Vec3<T>& invExtent, const void* origins,
-                                                 std::size_t originStride, const void* dirs, std::size_t dirStride,
-                                                 std::size_t n, T maxDist, std::uint32_t* out) {
+__attribute__((target("avx2"))) void keyRaysAvx2(const Bounds3<T>& box, const Vec3<T>& invExtent,
+                                                 const StridedArray<Vec3<T>>& origins,
+                                                 const StridedArray<Vec3<T>>& dirs, std::size_t n, T maxDist,
+                                                 std::uint32_t* out) {
   Keys8 keys;
+  // Conversions to float of values beyond its range give +-inf (IEEE 754), which the keys treat as any far value.
   for (int k = 0; k < 3; ++k) {
     keys.lo[k] = _mm256_set1_ps(float(box.min[k]));
     keys.hi[k] = _mm256_set1_ps(float(box.max[k]));
@@ -188,8 +186,8 @@ __attribute__((target("avx2"))) void keyRaysAvx2(const Bounds3<T>& box, const Ve
   const std::size_t whole = n / 8 * 8;
   for (std::size_t i = 0; i < whole; i += 8) {
     for (int l = 0; l < 8; ++l) {
-      const Vec3<T>& org = at<T>(origins, originStride, i + std::size_t(l));
-      const Vec3<T>& dir = at<T>(dirs, dirStride, i + std::size_t(l));
+      const Vec3<T>& org = origins[i + std::size_t(l)];
+      const Vec3<T>& dir = dirs[i + std::size_t(l)];
       for (int k = 0; k < 3; ++k) {
         o[k][l] = float(org[k]);
         d[k][l] = float(dir[k]);
@@ -204,27 +202,33 @@ __attribute__((target("avx2"))) void keyRaysAvx2(const Bounds3<T>& box, const Ve
 
 void setRayOrderKeysScalarOnly(bool scalarOnly) { gKeysScalarOnly.store(scalarOnly); }
 
+bool rayOrderKeysHaveWidePath() {
+#ifdef GQ_SSE42
+  return hasAvx2();
+#else
+  return false;
+#endif
+}
+
 template <class T>
-void RayOrderKey<T>::keyRaysScalar(const void* origins, std::size_t originStride, const void* dirs,
-                                   std::size_t dirStride, std::size_t n, T maxDist, std::uint32_t* keys) const {
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!(*this)(at<T>(origins, originStride, i), at<T>(dirs, dirStride, i), maxDist, keys[i])) keys[i] = kMisses;
+void RayOrderKey<T>::keyRaysScalar(const StridedArray<Vec3<T>>& origins, const StridedArray<Vec3<T>>& dirs,
+                                   std::size_t first, T maxDist, std::uint32_t* keys) const {
+  for (std::size_t i = first; i < origins.count; ++i) {
+    if (!(*this)(origins[i], dirs[i], maxDist, keys[i])) keys[i] = kMisses;
   }
 }
 
 template <class T>
-void RayOrderKey<T>::keyRays(const void* origins, std::size_t originStride, const void* dirs, std::size_t dirStride,
-                             std::size_t n, T maxDist, std::uint32_t* keys) const {
+void RayOrderKey<T>::keyRays(const StridedArray<Vec3<T>>& origins, const StridedArray<Vec3<T>>& dirs, T maxDist,
+                             std::uint32_t* keys) const {
   std::size_t done = 0;
 #ifdef GQ_SSE42
   if (hasAvx2() && !gKeysScalarOnly.load(std::memory_order_relaxed)) {
-    done = n / 8 * 8;
-    keyRaysAvx2(Bounds3<T>::fromMinMax(lo_, hi_), invExtent_, origins, originStride, dirs, dirStride, done, maxDist,
-                keys);
+    done = origins.count / 8 * 8;
+    keyRaysAvx2(Bounds3<T>::fromMinMax(lo_, hi_), invExtent_, origins, dirs, done, maxDist, keys);
   }
 #endif
-  keyRaysScalar(static_cast<const unsigned char*>(origins) + done * originStride, originStride,
-                static_cast<const unsigned char*>(dirs) + done * dirStride, dirStride, n - done, maxDist, keys + done);
+  keyRaysScalar(origins, dirs, done, maxDist, keys);
 }
 
 std::uint64_t* sortByKey(std::uint64_t* items, std::uint64_t* scratch, std::size_t n, int keyBits) {

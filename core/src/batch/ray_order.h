@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "gq/batch.h"
 #include "gq/math.h"
 
 namespace gq::detail {
@@ -40,23 +41,26 @@ template <class T> class RayOrderKey {
   bool operator()(const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, std::uint32_t& key) const;
   // The key for any maxDist (0 for a ray that misses the box).
   std::uint32_t operator()(const Vec3<T>& origin, const Vec3<T>& dir) const;
-  // Keys rays [0, n) of strided arrays (ray i's origin `originStride` bytes after ray i - 1's, likewise its
-  // direction): keys[i] = the key, or kMisses for a ray not entering the box within maxDist. With AVX2 (where the
-  // CPU has it) 8 rays at a time in float: those keys and entry decisions may differ from operator()'s near cell and
-  // box borders (they only choose an order), and any input is keyed without fault.
-  void keyRays(const void* origins, std::size_t originStride, const void* dirs, std::size_t dirStride, std::size_t n,
-               T maxDist, std::uint32_t* keys) const;
+  // Keys the rays of two strided arrays of the same count: keys[i] = ray i's key, or kMisses for a ray not entering
+  // the box within maxDist. With AVX2 (x86-64 builds with GQ_SSE42, on CPUs that have it) 8 rays at a time in float:
+  // those keys and entry decisions may differ from operator()'s near cell and box borders (they only choose an
+  // order), and any input is keyed without fault.
+  void keyRays(const StridedArray<Vec3<T>>& origins, const StridedArray<Vec3<T>>& dirs, T maxDist,
+               std::uint32_t* keys) const;
   static constexpr std::uint32_t kMisses = 1u << 31;
 
  private:
-  void keyRaysScalar(const void* origins, std::size_t originStride, const void* dirs, std::size_t dirStride,
-                     std::size_t n, T maxDist, std::uint32_t* keys) const;
+  // keyRays for rays [first, count) by operator().
+  void keyRaysScalar(const StridedArray<Vec3<T>>& origins, const StridedArray<Vec3<T>>& dirs, std::size_t first,
+                     T maxDist, std::uint32_t* keys) const;
   Vec3<T> lo_, hi_, invExtent_;
 };
 
 // keyRays uses the scalar operator() on any CPU when true (so tests can compare both key paths on one machine). Not
 // for use while a batch runs.
 void setRayOrderKeysScalarOnly(bool scalarOnly);
+// Whether keyRays keys 8 rays at a time on this build and CPU (when not set scalar-only).
+bool rayOrderKeysHaveWidePath();
 
 // Sorts items of the form (key << 32 | payload), key below 2^keyBits (keyBits at most 32), by key: LSD radix sort
 // in as few passes of at most 11 bits as the key needs (a pass whose digit is the same for every item is skipped);

@@ -15,6 +15,8 @@ namespace {
 constexpr int kBins = 16;
 constexpr int kWidth = 8;
 using Node = BvhNode<kWidth>;
+// The most SAH levels the ray walk's stack allows (bvh/traverse.h, kBvhStackSize).
+constexpr int kMaxSahDepth = 32;
 
 struct Range {
   std::uint32_t begin, end;
@@ -31,7 +33,7 @@ float halfArea(const Bounds3<float>& b) {
 class Builder {
  public:
   Builder(const std::vector<Bounds3<float>>& prims, std::vector<std::uint32_t>& order, const BvhBuildSettings& settings)
-      : prims_(prims), order_(order), settings_(settings) {
+      : prims_(prims), order_(order), maxSahDepth_(std::clamp(settings.maxSahDepth, 0, kMaxSahDepth)) {
     centroids_.reserve(prims.size());
     for (const auto& b : prims) centroids_.push_back(b.center());
   }
@@ -56,7 +58,7 @@ class Builder {
     Bounds3<float> cb;
     for (std::uint32_t i = r.begin; i < r.end; ++i) cb.include(centroids_[order_[i]]);
     const Vec3<float> ext = cb.max - cb.min;
-    if (depth < settings_.maxSahDepth && ext.maxCoeff() > 0.0f) {
+    if (depth < maxSahDepth_ && ext.maxCoeff() > 0.0f) {
       float bestCost = std::numeric_limits<float>::max();
       int bestAxis = -1, bestBin = -1;
       for (int axis = 0; axis < 3; ++axis) {
@@ -165,7 +167,7 @@ class Builder {
 
   const std::vector<Bounds3<float>>& prims_;
   std::vector<std::uint32_t>& order_;
-  BvhBuildSettings settings_;
+  int maxSahDepth_;
   std::vector<Vec3<float>> centroids_;
   Bvh8 bvh_;
 };

@@ -9,9 +9,9 @@
 namespace gq::detail {
 
 struct BvhBuildSettings {
-  // Node levels split by the SAH; deeper ranges are split at the centroid median (as are ranges whose centroids
-  // coincide), which bounds the depth, and so the ray walk's fixed stack (bvh/traverse.h, kBvhStackSize, is sized
-  // for at most 32).
+  // Node levels split by the SAH (0 to 32; other values are clamped); deeper ranges are split at the centroid median
+  // (as are ranges whose centroids coincide), which bounds the depth, and so the ray walk's fixed stack
+  // (bvh/traverse.h, kBvhStackSize, sized for 32).
   int maxSahDepth = 32;
 };
 
