@@ -46,6 +46,15 @@ template <class T> void manyRays(Rng& rng, std::vector<Vec3<T>>& origins, std::v
 }
 
 // The hits' distance, position, normal, face and flags, bit for bit (not their padding).
+// The rays as a batch with maxDist 20.
+template <class T> RayBatch<T> batchOf(const std::vector<Vec3<T>>& origins, const std::vector<Vec3<T>>& dirs) {
+  RayBatch<T> batch;
+  batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
+  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), dirs.size());
+  batch.maxDist = T(20);
+  return batch;
+}
+
 template <class T> bool sameBytes(const RaycastHit<T>& a, const RaycastHit<T>& b) {
   return std::memcmp(&a.distance, &b.distance, sizeof(T)) == 0 &&
          std::memcmp(a.position.data(), b.position.data(), sizeof(Vec3<T>)) == 0 &&
@@ -65,10 +74,7 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
   const Transform<T> pose = rng.pose<T>(1);
   std::vector<Vec3<T>> origins, dirs;
   manyRays(rng, origins, dirs);
-  RayBatch<T> batch;
-  batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
-  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), dirs.size());
-  batch.maxDist = T(20);
+  RayBatch<T> batch = batchOf(origins, dirs);
   batch.hitFlags = kDefaultHitFlags | HitFlag::MeshBothSides;
 
   // The single query per ray.
@@ -183,10 +189,7 @@ TYPED_TEST(BatchRayOrder, WideAndScalarRayKeysGiveTheSameBatchBytes) {
   const Transform<T> pose = rng.pose<T>(1);
   std::vector<Vec3<T>> origins, dirs;
   manyRays(rng, origins, dirs);
-  RayBatch<T> batch;
-  batch.origins = StridedArray<Vec3<T>>(origins.data(), origins.size());
-  batch.unitDirs = StridedArray<Vec3<T>>(dirs.data(), dirs.size());
-  batch.maxDist = T(20);
+  RayBatch<T> batch = batchOf(origins, dirs);
   struct Output {
     std::vector<RaycastHit<T>> hits = std::vector<RaycastHit<T>>(kManyRays);
     std::vector<std::uint8_t> has = std::vector<std::uint8_t>(kManyRays, 7);

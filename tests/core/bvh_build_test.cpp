@@ -130,15 +130,21 @@ template <class T> std::vector<RaycastHit<T>> allHits(const Shape<T>& shape, std
   return hits;
 }
 
+// A mesh shape of crossings at the planes x = c for each c of `planes` (input order).
+template <class T> bool crossingsShape(const std::vector<T>& planes, MeshData<T>& m, Shape<T>& shape) {
+  for (const T c : planes) addCrossing(m, c);
+  const auto mesh = meshtest::cook(m.vertices, m.triangles);
+  return mesh != nullptr && Shape<T>::make(TriangleMeshGeometry<T>(mesh), shape).ok();
+}
+
 TYPED_TEST(BvhBuildRays, ARayThroughADeepTreeCrossesEveryTriangleInOrder) {
   using T = TypeParam;
-  MeshData<T> m;
   const int n = 3000;
-  for (int i = 0; i < n; ++i) addCrossing(m, T(std::pow(1.02, double(i))));
-  const auto mesh = meshtest::cook(m.vertices, m.triangles);
-  ASSERT_NE(mesh, nullptr);
+  std::vector<T> planes;
+  for (int i = 0; i < n; ++i) planes.push_back(T(std::pow(1.02, double(i))));
+  MeshData<T> m;
   Shape<T> shape;
-  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(mesh), shape).ok());
+  ASSERT_TRUE(crossingsShape(planes, m, shape));
   const std::vector<RaycastHit<T>> hits = allHits(shape, std::size_t(n));
   ASSERT_EQ(hits.size(), std::size_t(n));
   for (int i = 0; i < n; ++i) {
@@ -151,13 +157,10 @@ TYPED_TEST(BvhBuildRays, ARayThroughADeepTreeCrossesEveryTriangleInOrder) {
 
 TYPED_TEST(BvhBuildRays, CoincidentTrianglesAreAllHitAndTheClosestIsTheFirstInInputOrder) {
   using T = TypeParam;
-  MeshData<T> m;
   const int n = 1000;
-  for (int i = 0; i < n; ++i) addCrossing(m, T(2));
-  const auto mesh = meshtest::cook(m.vertices, m.triangles);
-  ASSERT_NE(mesh, nullptr);
+  MeshData<T> m;
   Shape<T> shape;
-  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(mesh), shape).ok());
+  ASSERT_TRUE(crossingsShape(std::vector<T>(std::size_t(n), T(2)), m, shape));
   const std::vector<RaycastHit<T>> hits = allHits(shape, std::size_t(n));
   ASSERT_EQ(hits.size(), std::size_t(n));
   std::vector<int> seen(std::size_t(n), 0);
