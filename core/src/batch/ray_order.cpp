@@ -167,7 +167,7 @@ struct Keys8 {
   }
 };
 
-// The AVX2 keys of keyRays: 8 rays' coordinates gathered into float lanes, the last n % 8 by the scalar key.
+// The AVX2 keys of keyRays for its first n rays (n a multiple of 8): 8 rays' coordinates gathered into float lanes.
 template <class T>
 __attribute__((target("avx2"))) void keyRaysAvx2(const Bounds3<T>& box, const Vec3<T>& invExtent,
                                                  const StridedArray<Vec3<T>>& origins,
@@ -183,8 +183,7 @@ __attribute__((target("avx2"))) void keyRaysAvx2(const Bounds3<T>& box, const Ve
   const float maxDistF = float(maxDist);
   keys.maxDist2 = maxDistF * maxDistF;  // +inf for a maxDist beyond float's range
   alignas(32) float o[3][8], d[3][8];
-  const std::size_t whole = n / 8 * 8;
-  for (std::size_t i = 0; i < whole; i += 8) {
+  for (std::size_t i = 0; i + 8 <= n; i += 8) {
     for (int l = 0; l < 8; ++l) {
       const Vec3<T>& org = origins[i + std::size_t(l)];
       const Vec3<T>& dir = dirs[i + std::size_t(l)];
@@ -223,8 +222,8 @@ void RayOrderKey<T>::keyRays(const StridedArray<Vec3<T>>& origins, const Strided
                              std::uint32_t* keys) const {
   std::size_t done = 0;
 #ifdef GQ_SSE42
-  if (hasAvx2() && !gKeysScalarOnly.load(std::memory_order_relaxed)) {
-    done = origins.count / 8 * 8;
+  if (rayOrderKeysHaveWidePath() && !gKeysScalarOnly.load(std::memory_order_relaxed)) {
+    done = origins.count / 8 * 8;  // the rest by the scalar key
     keyRaysAvx2(Bounds3<T>::fromMinMax(lo_, hi_), invExtent_, origins, dirs, done, maxDist, keys);
   }
 #endif
