@@ -1,9 +1,9 @@
 // Scenes and batches (double). A seeded scene of 1000 mixed objects in a 40-unit cube: spheres, capsules, boxes, hulls
 // (24 points on an ellipsoid) and 8 bunnies scaled to about 2 units, every object 0.2 to 2 units.
-//  - SceneRaycast: 100k rays (origins in the cube, random directions, maxDist 80), Scene::raycastClosest per ray.
+//  - SceneRaycast: 1M rays (origins in the cube, random directions, maxDist 80), Scene::raycastClosest per ray.
 //  - BruteRaycast: the same rays against every object through the single raycast (the first 2000 rays: the loop is
 //    slow); items_per_second of both are rays per second.
-//  - SceneRaycastBatch/threads: the 100k rays as one raycastBatch, 1 and 2 threads (the speedup is the ratio).
+//  - SceneRaycastBatch/threads: the 1M rays as one raycastBatch, 1 and 2 threads (the speedup is the ratio).
 //  - BunnyRaycastLoop, BunnyRaycastBatch/threads: 1M rays at the bunny, a loop of single raycasts vs a batch with the
 //    default settings (coherent ray order on 1 thread; input order on 2). The loop stores each ray's hit and hit flag
 //    into arrays of 1M entries, as the batch does (and as a caller's loop keeping the answers does);

@@ -19,10 +19,10 @@ import results_csv  # noqa: E402
 HEADER = ["date", "machine", "commit", "benchmark", "time_ms", "clock", "items_per_second", "answers", "versus",
           "speed_vs", "note"]
 COMMENTS = ["# bench_scene (double unless noted): 1000 mixed objects (spheres, capsules, boxes, hulls, 8 bunnies) in a"
-            " 40-unit cube, 100k rays into it, 1M rays at the bunny; peers on the same objects and rays in the same run."]
+            " 40-unit cube, 1M rays into it, 1M rays at the bunny; peers on the same objects and rays in the same run."]
 # benchmark -> (the row it is compared with, what it is)
 ROWS = {
-    "SceneRaycast": ("BruteRaycast", "Scene::raycastClosest, 100k rays"),
+    "SceneRaycast": ("BruteRaycast", "Scene::raycastClosest, 1M rays"),
     "BruteRaycast": ("", "every object's raycast per ray (2000 rays; per-ray speed compared)"),
     "EmbreeSceneRaycast": ("SceneRaycast", "Embree 3 BVH over the objects, gq's raycast per object (float rays)"),
     "SceneRaycastBatch/1": ("SceneRaycast", "raycastBatch over the scene, 1 thread"),

@@ -13,7 +13,7 @@ using T = double;
 using V = gq::Vec3<T>;
 
 constexpr int kObjects = 1000;
-constexpr int kRays = 100000;        // into the scene
+constexpr int kRays = 1000000;       // into the scene
 constexpr int kBunnyRays = 1000000;  // at the bunny alone
 constexpr int kBruteRays = 2000;
 constexpr double kHalf = 20;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "bvh/build.h"
@@ -27,10 +28,12 @@ struct TreeShape {
   int depth = 0;
   int stackEntries = 0;
   std::vector<int> leafCount;  // per cooked position: how many leaves hold it
+  std::uint32_t largestLeaf = 0;
 };
 
 void measure(const Bvh8& bvh, std::uint32_t ref, int depth, int entries, TreeShape& shape) {
   if (Bvh8Node::isLeaf(ref)) {
+    shape.largestLeaf = std::max(shape.largestLeaf, Bvh8Node::leafCount(ref));
     for (std::uint32_t k = 0; k < Bvh8Node::leafCount(ref); ++k) ++shape.leafCount[Bvh8Node::leafFirst(ref) + k];
     return;
   }
@@ -71,6 +74,22 @@ std::vector<Bounds3<float>> geometricBoxes(int n) {
 // Median splits: a node's first split halves its range, so each level at least halves the largest range below it and
 // n primitives in leaves of 4 are at most ceil(log2(n / 4)) + 1 levels deep (the bound the walk's stack assumes).
 int medianDepthBound(std::size_t n) { return int(std::ceil(std::log2(double(n) / 4.0))) + 1; }
+
+TEST(BvhBuild, LeavesHoldAtMostTheLeafSizeClampedToOneToFour) {
+  std::vector<Bounds3<float>> prims;
+  for (int i = 0; i < 1000; ++i) {  // a 10 x 10 x 10 grid of unit boxes
+    const Vec3<float> lo(float(i % 10), float(i / 10 % 10), float(i / 100));
+    prims.push_back(Bounds3<float>::fromMinMax(lo, lo + Vec3<float>::Constant(0.9f)));
+  }
+  for (const auto& [asked, expected] : {std::pair<std::uint32_t, std::uint32_t>{1, 1}, {2, 2}, {4, 4}, {0, 1}, {9, 4}}) {
+    SCOPED_TRACE(asked);
+    detail::BvhBuildSettings settings;
+    settings.maxLeafSize = asked;
+    const TreeShape shape = shapeOf(prims, settings);
+    EXPECT_EQ(shape.largestLeaf, expected);
+    EXPECT_TRUE(eachInOneLeaf(shape));
+  }
+}
 
 TEST(BvhBuild, RangesPastTheSahDepthLimitAreSplitAtTheMedian) {
   const std::vector<Bounds3<float>> prims = geometricBoxes(3000);

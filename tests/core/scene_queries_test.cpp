@@ -231,6 +231,37 @@ TYPED_TEST(SceneQueries, ManyMovesRebuildTheTreeAndKeepAnswers) {
   expectPairsMatch(w);
 }
 
+// From a rebuild on, rays walk the 8-wide ray tree; moves refit it, adds and removes leave it stale (rays walk the
+// binary tree) until the next rebuild; an instance beyond float's reach keeps rays on the binary tree. Every stage
+// answers as the loop over all instances.
+TYPED_TEST(SceneQueries, RaysAnswerAsTheLoopOnTheRayTreeRefitStaleAndRebuilt) {
+  using T = TypeParam;
+  Rng rng(51);
+  Library<T> lib(rng);
+  World<T> w;
+  scenetest::populate(w, rng, lib, 150);
+  w.scene.rebuild();
+  expectRaysMatch(w, rng, 80);
+  std::vector<InstanceId> ids;
+  for (const auto& [id, it] : w.items) ids.push_back(id);
+  for (std::size_t i = 0; i < ids.size(); i += 2) w.setPose(ids[i], rng.pose<T>(w.half));
+  expectRaysMatch(w, rng, 60);
+  for (std::size_t i = 1; i < ids.size(); i += 5) w.remove(ids[i]);
+  scenetest::populate(w, rng, lib, 30, 9000);
+  expectRaysMatch(w, rng, 40);
+  w.scene.rebuild();
+  expectRaysMatch(w, rng, 60);
+  // A large sphere far out: the ray tree is not built over it, rays still find it.
+  w.add(20000, SphereGeometry<T>(T(1e29)), Transform<T>(Vec3<T>(T(1e31), T(0), T(0))));
+  w.scene.rebuild();
+  expectRaysMatch(w, rng, 40);
+  SceneRaycastHit<T> hit;
+  bool has = false;
+  ASSERT_TRUE(w.scene.raycastClosest(Vec3<T>(T(5e30), T(0), T(0)), Vec3<T>::UnitX(), T(1e31), hit, has).ok());
+  ASSERT_TRUE(has);
+  EXPECT_EQ(hit.id, 20000u);
+}
+
 TYPED_TEST(SceneQueries, PlanesAreTestedByEveryQuery) {
   using T = TypeParam;
   Rng rng(49);
@@ -290,13 +321,18 @@ TYPED_TEST(SceneQueries, ConcurrentQueriesAnswerAsOneThread) {
       (void)w.scene.overlapAll(Geometry<T>(SphereGeometry<T>(T(1))), Transform<T>(origins[i]), ids);
     }
   };
-  std::vector<T> serial;
-  castAll(serial);
-  std::vector<std::vector<T>> results(8);  // eight threads over one scene (the TSan build checks them too)
-  std::vector<std::thread> threads;
-  for (auto& r : results) threads.emplace_back([&castAll, &r] { castAll(r); });
-  for (auto& t : threads) t.join();
-  for (const auto& r : results) EXPECT_EQ(r, serial);
+  // The tree grown by insertions, then the one rebuilt top down (rays then walk the 8-wide ray tree).
+  for (const bool rebuilt : {false, true}) {
+    SCOPED_TRACE(rebuilt);
+    if (rebuilt) w.scene.rebuild();
+    std::vector<T> serial;
+    castAll(serial);
+    std::vector<std::vector<T>> results(8);  // eight threads over one scene (the TSan build checks them too)
+    std::vector<std::thread> threads;
+    for (auto& r : results) threads.emplace_back([&castAll, &r] { castAll(r); });
+    for (auto& t : threads) t.join();
+    for (const auto& r : results) EXPECT_EQ(r, serial);
+  }
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Binned SAH BVH8 build: binary SAH splits (16 bins on each axis over the centroid bounds) are applied repeatedly to
 // the child with the largest surface area until a node has 8 children or all children fit in a leaf. The SAH counts
-// a side's triangles in leaves of 4 (ceil(n / 4)): a leaf is tested 4 triangles at once, so a split that fills
-// leaves costs less than one that leaves them part empty.
+// a side's primitives in leaves of the leaf size (triangles: ceil(n / 4)): a leaf is tested 4 triangles at once, so
+// a split that fills leaves costs less than one that leaves them part empty.
 #include "bvh/build.h"
 
 #include <algorithm>
@@ -33,7 +33,8 @@ float halfArea(const Bounds3<float>& b) {
 class Builder {
  public:
   Builder(const std::vector<Bounds3<float>>& prims, std::vector<std::uint32_t>& order, const BvhBuildSettings& settings)
-      : prims_(prims), order_(order), maxSahDepth_(std::clamp(settings.maxSahDepth, 0, kMaxSahDepth)) {
+      : prims_(prims), order_(order), maxSahDepth_(std::clamp(settings.maxSahDepth, 0, kMaxSahDepth)),
+        leafSize_(std::clamp(settings.maxLeafSize, 1u, Node::kMaxLeafSize)) {
     centroids_.reserve(prims.size());
     for (const auto& b : prims) centroids_.push_back(b.center());
   }
@@ -112,7 +113,7 @@ class Builder {
   }
 
   // The leaves of 4 that n triangles fill at least.
-  static float leafBlocks(std::uint32_t n) { return float((n + Node::kMaxLeafSize - 1) / Node::kMaxLeafSize); }
+  float leafBlocks(std::uint32_t n) const { return float((n + leafSize_ - 1) / leafSize_); }
 
   // Clamped in float before the conversion: with extents beyond the float range (scale 0, offsets inf) or tiny ones
   // (scale inf) the product is NaN or inf, which int() must never see (found by fuzz_raycast under UBSan).
@@ -124,7 +125,7 @@ class Builder {
 
   // Reference to the subtree over r.
   std::uint32_t buildRef(const Range& r, int depth) {
-    if (r.count() <= Node::kMaxLeafSize) return Node::makeLeaf(r.begin, r.count());
+    if (r.count() <= leafSize_) return Node::makeLeaf(r.begin, r.count());
     std::array<Range, kWidth> kids;
     int n = 1;
     kids[0] = r;
@@ -133,7 +134,7 @@ class Builder {
       int pick = -1;
       float best = -1.0f;
       for (int i = 0; i < n; ++i) {
-        if (kids[i].count() <= Node::kMaxLeafSize) continue;
+        if (kids[i].count() <= leafSize_) continue;
         const float a = halfArea(kids[i].bounds);
         if (a > best) { best = a; pick = i; }
       }
@@ -168,6 +169,7 @@ class Builder {
   const std::vector<Bounds3<float>>& prims_;
   std::vector<std::uint32_t>& order_;
   int maxSahDepth_;
+  std::uint32_t leafSize_;
   std::vector<Vec3<float>> centroids_;
   Bvh8 bvh_;
 };

@@ -13,6 +13,9 @@ struct BvhBuildSettings {
   // (as are ranges whose centroids coincide), which bounds the depth, and so the ray walk's fixed stack
   // (bvh/traverse.h, kBvhStackSize, sized for 32).
   int maxSahDepth = 32;
+  // Most primitives a leaf holds (1 to BvhNode::kMaxLeafSize = 4; others are clamped). Triangles: 4, tested at once
+  // by the leaf test; scene instances: 1, so the 8-wide node test bounds each instance by its own box.
+  std::uint32_t maxLeafSize = 4;
 };
 
 // Builds the tree over primBounds (float boxes, already rounded outward by the caller). `order` receives the

@@ -70,6 +70,12 @@ template <class T> inline __m128 floatLanes(const Vec3<T>& v) {
 }
 #endif
 
+// The least float at or above a T distance: the walk's float tMax for a T bound.
+template <class T> inline float floatCeil(T t) {
+  const float f = static_cast<float>(t);
+  return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
 template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   // Components this small would give infinite inverses: they are clamped, but for an exact zero (below).
   constexpr float kTinyDir = 1e-20f;

@@ -26,12 +26,6 @@ template <class T> struct RawHit {
   TriangleRayHit<T> tri;
 };
 
-// Float upper bound of a T distance, for the BVH's float slab tests.
-template <class T> float floatCeil(T t) {
-  const float f = static_cast<float>(t);
-  return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
 #ifdef GQ_SSE42
 // The unit normal of the float triangle whose 9 coordinates start at v: (v1 - v0) x (v2 - v0) as Eigen's cross()
 // computes each lane (a.y b.z - a.z b.y ...), divided by sqrt(x^2 + (y^2 + z^2)) as tryUnit does (the order of

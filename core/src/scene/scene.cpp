@@ -13,6 +13,7 @@
 
 #include "common/validate.h"
 #include "scene/aabb_tree.h"
+#include "scene/ray_tree.h"
 
 namespace gq {
 
@@ -121,6 +122,8 @@ template <class T> struct Scene<T>::Impl {
   std::unordered_map<InstanceId, std::uint32_t> indexOf;
   std::vector<std::uint32_t> unbounded;  // instances whose box has no finite area (planes)
   AabbTree<T> tree;
+  // The bounded instances in an 8-wide tree for rays, built with each top-down rebuild (scene/ray_tree.h).
+  detail::SceneRayTree<T> rayTree;
   std::uint64_t rebuilds = 0;
 
   static bool isBounded(const Bounds3<T>& b) { return std::isfinite(detail::boxArea(b)); }
@@ -169,8 +172,40 @@ template <class T> struct Scene<T>::Impl {
     }
   }
 
+  // Builds the ray tree over the bounded instances (after the binary tree's rebuild); without memory it stays
+  // cleared and rays walk the binary tree.
+  void buildRayTree() noexcept {
+    try {
+      std::vector<std::uint32_t> bounded;
+      std::vector<Bounds3<T>> boxes;
+      bounded.reserve(instances.size());
+      boxes.reserve(instances.size());
+      for (std::uint32_t i = 0; i < instances.size(); ++i) {
+        if (instances[i].leaf == AabbTree<T>::kNull) continue;
+        bounded.push_back(i);
+        boxes.push_back(instances[i].box);
+      }
+      (void)rayTree.build(bounded, boxes);
+    } catch (const std::bad_alloc&) {
+      rayTree.clear();
+    }
+  }
+
+  // The ray tree's visit of an instance (whose own box its node test found the ray entering).
+  template <class Visit> struct RayTreeVisit {
+    const Visit& visit;
+    T limit;
+    static T call(void* context, std::uint32_t index) {
+      auto& c = *static_cast<RayTreeVisit*>(context);
+      c.limit = std::min(c.limit, c.visit(index));
+      return c.limit;
+    }
+  };
+
   // Front-to-back ray walk: visit(index) returns the parameter beyond which nothing matters any more (tMax to go
-  // on, a smaller value to prune, negative to stop). `grow` widens each box (a swept shape's extents).
+  // on, a smaller value to prune, negative to stop). `grow` widens each box (a swept shape's extents). Rays (no
+  // growth) walk the ray tree when it is current, else the binary tree: both visit every instance whose box the
+  // ray enters before the limit.
   template <class Visit>
   void walkRay(const Vec3<T>& o, const Vec3<T>& d, T tMax, const Vec3<T>& grow, const Visit& visit) const {
     T limit = tMax;
@@ -179,6 +214,10 @@ template <class T> struct Scene<T>::Impl {
       if (limit < T(0)) return;
     }
     if (tree.root() == AabbTree<T>::kNull) return;
+    if (rayTree.ready() && grow == Vec3<T>::Zero()) {
+      RayTreeVisit<Visit> context{visit, limit};
+      if (rayTree.walkRay(o, d, limit, &RayTreeVisit<Visit>::call, &context)) return;
+    }
     struct Entry {
       std::int32_t node;
       T t;
@@ -224,6 +263,7 @@ template <class T> struct Scene<T>::Impl {
     if (tree.degraded(kRebuildAreaFactor)) {
       tree.rebuild();
       ++rebuilds;
+      buildRayTree();
     }
   }
 };
@@ -277,6 +317,7 @@ Status Scene<T>::add(InstanceId id, const Shape<T>& shape, const Transform<T>& p
   } catch (const std::bad_alloc&) {
     return outOfMemory();
   }
+  m.rayTree.clear();  // stale until the next rebuild
   return {};
 }
 
@@ -304,6 +345,7 @@ template <class T> Status Scene<T>::remove(InstanceId id) noexcept {
     }
   }
   m.instances.pop_back();
+  m.rayTree.clear();  // instances renumbered: stale until the next rebuild
   return {};
 }
 
@@ -326,6 +368,7 @@ template <class T> Status Scene<T>::setPose(InstanceId id, const Transform<T>& p
   inst.box = box;
   if (inst.leaf != AabbTree<T>::kNull) {
     m.tree.refit(inst.leaf, box);
+    (void)m.rayTree.refit(it->second, box);
     try {
       m.maybeRebuild();
     } catch (const std::bad_alloc&) {
@@ -351,6 +394,7 @@ template <class T> void Scene<T>::rebuild() noexcept {
   } catch (const std::bad_alloc&) {
     // rebuild allocates before it changes the tree: the tree stays as it was.
   }
+  impl_->buildRayTree();
 }
 
 template <class T> void Scene<T>::clear() noexcept {
@@ -359,6 +403,7 @@ template <class T> void Scene<T>::clear() noexcept {
   impl_->indexOf.clear();
   impl_->unbounded.clear();
   impl_->tree.clear();
+  impl_->rayTree.clear();
 }
 
 // ---- inspection -------------------------------------------------------------------------------------------------

@@ -1,0 +1,184 @@
+// The scene's 8-wide ray tree (scene/ray_tree.h).
+#include "scene/ray_tree.h"
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "bvh/build.h"
+#include "bvh/traverse.h"
+
+namespace gq::detail {
+namespace {
+
+// Coordinates the float tree takes: well inside float's range, so that a box rounded outward stays finite.
+constexpr double kFloatReach = 1e30;
+
+template <class T> bool withinFloatReach(const Vec3<T>& v) {
+  return std::abs(double(v.x())) <= kFloatReach && std::abs(double(v.y())) <= kFloatReach &&
+         std::abs(double(v.z())) <= kFloatReach;
+}
+
+template <class T> bool withinFloatReach(const Bounds3<T>& b) { return withinFloatReach(b.min) && withinFloatReach(b.max); }
+
+Bounds3<float> emptyLaneBox() {
+  const float inf = std::numeric_limits<float>::infinity();
+  return Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf), Vec3<float>::Constant(inf));
+}
+
+Bounds3<float> unite(const Bounds3<float>& a, const Bounds3<float>& b) {
+  return Bounds3<float>::fromMinMax(a.min.cwiseMin(b.min), a.max.cwiseMax(b.max));
+}
+
+// The walk for one node test (Lanes), the leaves' instances handed to visit.
+template <class Lanes, class T>
+void walkLeaves(const Bvh8& bvh, const std::uint32_t* instanceOf, const BvhRay<8>& ray, T limit,
+                typename SceneRayTree<T>::Visit visit, void* context) {
+  float tMax = floatCeil(limit);
+  walkRayLeaves<true, std::is_same_v<T, double>, Lanes>(bvh, ray, tMax, [&](std::uint32_t ref) {
+    const std::uint32_t first = Bvh8Node::leafFirst(ref), end = first + Bvh8Node::leafCount(ref);
+    for (std::uint32_t k = first; k < end; ++k) {
+      limit = visit(context, instanceOf[k]);
+      if (limit < T(0)) return true;
+    }
+    tMax = floatCeil(limit);
+    return false;
+  });
+}
+
+#ifdef GQ_SSE42
+template <class T>
+__attribute__((target("avx2"), flatten)) void walkAvx2(const Bvh8& bvh, const std::uint32_t* instanceOf,
+                                                      const BvhRay<8>& ray, T limit,
+                                                      typename SceneRayTree<T>::Visit visit, void* context) {
+  walkLeaves<Bvh8LanesAvx2>(bvh, instanceOf, ray, limit, visit, context);
+}
+#endif
+
+}  // namespace
+
+template <class T>
+bool SceneRayTree<T>::build(const std::vector<std::uint32_t>& instances, const std::vector<Bounds3<T>>& boxes) {
+  clear();
+  std::vector<Bounds3<float>> prims;
+  prims.reserve(boxes.size());
+  for (const Bounds3<T>& b : boxes) {
+    if (!withinFloatReach(b)) return false;
+    prims.push_back(roundOutward(b.min, b.max));
+  }
+  try {
+    std::vector<std::uint32_t> order;
+    BvhBuildSettings settings;
+    settings.maxLeafSize = 1;  // each instance's own box in its parent's node test
+    bvh_ = buildBvh8(prims, order, settings);
+    std::uint32_t maxInstance = 0;
+    for (std::uint32_t i : instances) maxInstance = std::max(maxInstance, i);
+    instanceOf_.resize(order.size());
+    boxes_.resize(order.size());
+    positionOf_.assign(instances.empty() ? 0 : std::size_t(maxInstance) + 1, kNone);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      instanceOf_[k] = instances[order[k]];
+      boxes_[k] = prims[order[k]];
+      positionOf_[instanceOf_[k]] = std::uint32_t(k);
+    }
+    // Where each node and each position hangs: the path a refit climbs.
+    leafSlot_.assign(order.size(), kNone);
+    parentSlot_.assign(bvh_.nodes.size(), kNone);
+    for (std::uint32_t n = 0; n < bvh_.nodes.size(); ++n) {
+      for (std::uint32_t lane = 0; lane < 8; ++lane) {
+        const std::uint32_t ref = bvh_.nodes[n].child[lane];
+        if (ref == Bvh8Node::kEmpty) continue;
+        if (Bvh8Node::isLeaf(ref)) {
+          const std::uint32_t first = Bvh8Node::leafFirst(ref);
+          for (std::uint32_t k = first; k < first + Bvh8Node::leafCount(ref); ++k) leafSlot_[k] = 8 * n + lane;
+        } else {
+          parentSlot_[ref] = 8 * n + lane;
+        }
+      }
+    }
+  } catch (...) {
+    clear();
+    throw;
+  }
+  ready_ = true;
+  return true;
+}
+
+template <class T> void SceneRayTree<T>::clear() noexcept {
+  bvh_.nodes.clear();
+  bvh_.rootChild = Bvh8Node::kEmpty;
+  boxes_.clear();
+  instanceOf_.clear();
+  positionOf_.clear();
+  leafSlot_.clear();
+  parentSlot_.clear();
+  ready_ = false;
+}
+
+template <class T> void SceneRayTree<T>::writeLane(std::uint32_t slot, const Bounds3<float>& b) noexcept {
+  Bvh8Node& node = bvh_.nodes[slot / 8];
+  const std::uint32_t lane = slot % 8;
+  node.minX[lane] = b.min.x();
+  node.minY[lane] = b.min.y();
+  node.minZ[lane] = b.min.z();
+  node.maxX[lane] = b.max.x();
+  node.maxY[lane] = b.max.y();
+  node.maxZ[lane] = b.max.z();
+}
+
+template <class T> Bounds3<float> SceneRayTree<T>::leafUnion(std::uint32_t ref) const noexcept {
+  const std::uint32_t first = Bvh8Node::leafFirst(ref);
+  Bounds3<float> u = boxes_[first];
+  for (std::uint32_t k = first + 1; k < first + Bvh8Node::leafCount(ref); ++k) u = unite(u, boxes_[k]);
+  return u;
+}
+
+template <class T> Bounds3<float> SceneRayTree<T>::nodeUnion(std::uint32_t n) const noexcept {
+  const Bvh8Node& node = bvh_.nodes[n];
+  Bounds3<float> u = emptyLaneBox();
+  bool any = false;
+  for (int lane = 0; lane < 8; ++lane) {
+    if (node.child[lane] == Bvh8Node::kEmpty) continue;
+    const Bounds3<float> b = Bounds3<float>::fromMinMax(Vec3<float>(node.minX[lane], node.minY[lane], node.minZ[lane]),
+                                                        Vec3<float>(node.maxX[lane], node.maxY[lane], node.maxZ[lane]));
+    u = any ? unite(u, b) : b;
+    any = true;
+  }
+  return u;
+}
+
+template <class T> bool SceneRayTree<T>::refit(std::uint32_t instance, const Bounds3<T>& box) noexcept {
+  if (!ready_ || instance >= positionOf_.size() || positionOf_[instance] == kNone) return ready_;
+  if (!withinFloatReach(box)) {
+    clear();
+    return false;
+  }
+  const std::uint32_t k = positionOf_[instance];
+  boxes_[k] = roundOutward(box.min, box.max);
+  std::uint32_t slot = leafSlot_[k];
+  if (slot == kNone) return true;  // the root is a leaf: no boxes are tested
+  writeLane(slot, leafUnion(bvh_.nodes[slot / 8].child[slot % 8]));
+  for (std::uint32_t n = slot / 8; parentSlot_[n] != kNone; n = parentSlot_[n] / 8) {
+    writeLane(parentSlot_[n], nodeUnion(n));
+  }
+  return true;
+}
+
+template <class T>
+bool SceneRayTree<T>::walkRay(const Vec3<T>& o, const Vec3<T>& d, T limit, Visit visit, void* context) const {
+  if (!ready_ || !withinFloatReach(o)) return false;
+  const BvhRay<8> ray = makeBvhRay<8>(o, d);
+#ifdef GQ_SSE42
+  if (hasAvx2()) {
+    walkAvx2<T>(bvh_, instanceOf_.data(), ray, limit, visit, context);
+    return true;
+  }
+#endif
+  walkLeaves<Bvh8LanesBaseline>(bvh_, instanceOf_.data(), ray, limit, visit, context);
+  return true;
+}
+
+template class SceneRayTree<float>;
+template class SceneRayTree<double>;
+
+}  // namespace gq::detail

@@ -1,0 +1,170 @@
+// The scene's 8-wide ray tree (scene/ray_tree.h) visits every instance whose box a ray enters within its limit,
+// each once, after a build and after refits; a visit's lowered limit prunes farther boxes; boxes or origins beyond
+// float's reach leave the tree unused rather than tested wrongly. Boxes entered are decided in long double.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "scene/ray_tree.h"
+#include "test_util.h"
+
+namespace gq {
+namespace {
+
+using test::Rng;
+
+template <class T> class SceneRayTreeTest : public ::testing::Test {};
+TYPED_TEST_SUITE(SceneRayTreeTest, test::Scalars);
+
+// Whether o + t d enters [lo, hi] for some t in [0, limit], by slabs in long double.
+template <class T> bool entersExactly(const Vec3<T>& o, const Vec3<T>& d, const Bounds3<T>& b, T limit) {
+  long double t0 = 0, t1 = limit;
+  for (int a = 0; a < 3; ++a) {
+    const long double oa = o[a], da = d[a], lo = b.min[a], hi = b.max[a];
+    if (da == 0) {
+      if (oa < lo || oa > hi) return false;
+      continue;
+    }
+    long double ta = (lo - oa) / da, tb = (hi - oa) / da;
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1;
+}
+
+template <class T> Bounds3<T> randomBox(Rng& rng, double half) {
+  const Vec3<T> c = rng.inBox<T>(half);
+  const Vec3<T> e = rng.vec<T>(0.05, 1.0);
+  return Bounds3<T>{Vec3<T>(c - e), Vec3<T>(c + e)};
+}
+
+// Collects the instances visited; the limit stays, or drops to `prune` once `stopAt` is visited.
+template <class T> struct Collect {
+  std::vector<std::uint32_t> visited;
+  T limit;
+  static T call(void* context, std::uint32_t instance) {
+    auto& c = *static_cast<Collect*>(context);
+    c.visited.push_back(instance);
+    return c.limit;
+  }
+};
+
+template <class T>
+void expectVisitsEveryBoxEntered(const detail::SceneRayTree<T>& tree, const std::vector<std::uint32_t>& instances,
+                                 const std::vector<Bounds3<T>>& boxes, Rng& rng, int rays) {
+  for (int r = 0; r < rays; ++r) {
+    SCOPED_TRACE(r);
+    const Vec3<T> o = rng.inBox<T>(15);
+    Vec3<T> d = rng.unitVector<T>();
+    if (r % 4 == 0) d = Vec3<T>(T(0), T(0), d.z() < 0 ? T(-1) : T(1));  // axis-aligned: zero components
+    const T limit = T(rng.uniform(1, 40));
+    Collect<T> c{{}, limit};
+    ASSERT_TRUE(tree.walkRay(o, d, limit, &Collect<T>::call, &c));
+    std::vector<std::uint32_t> visited = c.visited;
+    std::sort(visited.begin(), visited.end());
+    EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end()) << "an instance visited twice";
+    for (std::size_t j = 0; j < instances.size(); ++j) {
+      if (entersExactly(o, d, boxes[j], limit)) {
+        EXPECT_TRUE(std::binary_search(visited.begin(), visited.end(), instances[j])) << "missed " << instances[j];
+      }
+    }
+  }
+}
+
+TYPED_TEST(SceneRayTreeTest, VisitsEveryInstanceWhoseBoxTheRayEntersAfterBuildAndRefits) {
+  using T = TypeParam;
+  Rng rng(81);
+  std::vector<std::uint32_t> instances;
+  std::vector<Bounds3<T>> boxes;
+  for (std::uint32_t i = 0; i < 600; ++i) {
+    instances.push_back(3 * i + 1);  // instance numbers need not be dense
+    boxes.push_back(randomBox<T>(rng, 12));
+  }
+  detail::SceneRayTree<T> tree;
+  ASSERT_TRUE(tree.build(instances, boxes));
+  ASSERT_TRUE(tree.ready());
+  expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 300);
+  // Moves: a third jump anywhere (their leaves' and ancestors' lanes grow), a third shrink to points.
+  for (std::size_t j = 0; j < boxes.size(); j += 3) {
+    boxes[j] = randomBox<T>(rng, 14);
+    ASSERT_TRUE(tree.refit(instances[j], boxes[j]));
+  }
+  for (std::size_t j = 1; j < boxes.size(); j += 3) {
+    const Vec3<T> c = boxes[j].center();
+    boxes[j] = Bounds3<T>{c, c};
+    ASSERT_TRUE(tree.refit(instances[j], boxes[j]));
+  }
+  expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 300);
+}
+
+TYPED_TEST(SceneRayTreeTest, ALoweredLimitPrunesFartherBoxes) {
+  using T = TypeParam;
+  // Unit boxes along +x at 10, 20, ..., 100: a ray from the origin along +x whose visits lower the limit to 15
+  // visits the box at 10 and none beyond 20.
+  std::vector<std::uint32_t> instances;
+  std::vector<Bounds3<T>> boxes;
+  for (std::uint32_t i = 1; i <= 10; ++i) {
+    instances.push_back(i);
+    boxes.push_back(Bounds3<T>{Vec3<T>(T(10 * i), T(-1), T(-1)), Vec3<T>(T(10 * i + 1), T(1), T(1))});
+  }
+  detail::SceneRayTree<T> tree;
+  ASSERT_TRUE(tree.build(instances, boxes));
+  Collect<T> c{{}, T(15)};
+  ASSERT_TRUE(tree.walkRay(Vec3<T>::Zero(), Vec3<T>::UnitX(), T(200), &Collect<T>::call, &c));
+  ASSERT_FALSE(c.visited.empty());
+  EXPECT_EQ(c.visited.front(), 1u);
+  for (std::uint32_t v : c.visited) EXPECT_LE(v, 2u);
+}
+
+TYPED_TEST(SceneRayTreeTest, ANegativeLimitStopsTheWalk) {
+  using T = TypeParam;
+  Rng rng(82);
+  std::vector<std::uint32_t> instances;
+  std::vector<Bounds3<T>> boxes;
+  for (std::uint32_t i = 0; i < 200; ++i) {
+    instances.push_back(i);
+    const T x = T(i);
+    boxes.push_back(Bounds3<T>{Vec3<T>(x, T(-1), T(-1)), Vec3<T>(x + T(0.5), T(1), T(1))});
+  }
+  detail::SceneRayTree<T> tree;
+  ASSERT_TRUE(tree.build(instances, boxes));
+  Collect<T> c{{}, T(-1)};
+  ASSERT_TRUE(tree.walkRay(Vec3<T>(T(-1), T(0), T(0)), Vec3<T>::UnitX(), T(500), &Collect<T>::call, &c));
+  EXPECT_EQ(c.visited.size(), 1u);
+}
+
+TYPED_TEST(SceneRayTreeTest, BoxesAndOriginsBeyondFloatReachLeaveTheTreeUnused) {
+  using T = TypeParam;
+  std::vector<std::uint32_t> instances{0, 1};
+  std::vector<Bounds3<T>> boxes{Bounds3<T>{Vec3<T>::Zero(), Vec3<T>::Ones()},
+                                Bounds3<T>{Vec3<T>(T(1e31), T(0), T(0)), Vec3<T>(T(2e31), T(1), T(1))}};
+  detail::SceneRayTree<T> tree;
+  EXPECT_FALSE(tree.build(instances, boxes));
+  EXPECT_FALSE(tree.ready());
+  Collect<T> c{{}, T(10)};
+  EXPECT_FALSE(tree.walkRay(Vec3<T>::Zero(), Vec3<T>::UnitX(), T(10), &Collect<T>::call, &c));
+
+  boxes.pop_back();
+  instances.pop_back();
+  ASSERT_TRUE(tree.build(instances, boxes));
+  EXPECT_FALSE(tree.walkRay(Vec3<T>(T(-1e31), T(0), T(0)), Vec3<T>::UnitX(), T(10), &Collect<T>::call, &c));
+  EXPECT_TRUE(c.visited.empty());
+  // A move beyond reach clears the tree (the scene then walks its binary tree).
+  EXPECT_FALSE(tree.refit(0, Bounds3<T>{Vec3<T>(T(5e30), T(0), T(0)), Vec3<T>(T(6e30), T(1), T(1))}));
+  EXPECT_FALSE(tree.ready());
+}
+
+TYPED_TEST(SceneRayTreeTest, AnEmptySceneBuildsATreeThatVisitsNothing) {
+  using T = TypeParam;
+  detail::SceneRayTree<T> tree;
+  ASSERT_TRUE(tree.build({}, {}));
+  Collect<T> c{{}, T(10)};
+  EXPECT_TRUE(tree.walkRay(Vec3<T>::Zero(), Vec3<T>::UnitX(), T(10), &Collect<T>::call, &c));
+  EXPECT_TRUE(c.visited.empty());
+}
+
+}  // namespace
+}  // namespace gq
