@@ -72,8 +72,18 @@ std::vector<Bounds3<float>> geometricBoxes(int n) {
 }
 
 // Median splits: a node's first split halves its range, so each level at least halves the largest range below it and
-// n primitives in leaves of 4 are at most ceil(log2(n / 4)) + 1 levels deep (the bound the walk's stack assumes).
-int medianDepthBound(std::size_t n) { return int(std::ceil(std::log2(double(n) / 4.0))) + 1; }
+// n primitives in leaves of at most s are at most ceil(log2(n / s)) + 1 levels deep (the bound the walk's stack
+// assumes).
+int medianDepthBound(std::size_t n, std::uint32_t leafSize = 4) {
+  return int(std::ceil(std::log2(double(n) / double(leafSize)))) + 1;
+}
+
+// Settings with leaves of at most leafSize primitives (4: triangles; 1: scene instances).
+detail::BvhBuildSettings leavesOf(std::uint32_t leafSize) {
+  detail::BvhBuildSettings settings;
+  settings.maxLeafSize = leafSize;
+  return settings;
+}
 
 TEST(BvhBuild, LeavesHoldAtMostTheLeafSizeClampedToOneToFour) {
   std::vector<Bounds3<float>> prims;
@@ -110,18 +120,24 @@ TEST(BvhBuild, RangesPastTheSahDepthLimitAreSplitAtTheMedian) {
 // The SAH tree of a skewed input (deeper than a balanced one) within the stack the walk has: a guard for changes to
 // the builder or to the stack's size.
 TEST(BvhBuild, SkewedInputsStayWithinTheWalkStack) {
-  const TreeShape shape = shapeOf(geometricBoxes(3000));
-  EXPECT_LE(shape.depth, detail::BvhBuildSettings().maxSahDepth + 28);
-  EXPECT_LE(shape.stackEntries, detail::kBvhStackSize);
-  EXPECT_TRUE(eachInOneLeaf(shape));
+  for (const std::uint32_t leafSize : {4u, 1u}) {
+    SCOPED_TRACE(leafSize);
+    const TreeShape shape = shapeOf(geometricBoxes(3000), leavesOf(leafSize));
+    EXPECT_LE(shape.depth, detail::BvhBuildSettings().maxSahDepth + 28);
+    EXPECT_LE(shape.stackEntries, detail::kBvhStackSize);
+    EXPECT_TRUE(eachInOneLeaf(shape));
+  }
 }
 
 TEST(BvhBuild, CoincidentCentroidsAreSplitAtTheMedian) {
   const std::vector<Bounds3<float>> prims(
       3000, Bounds3<float>::fromMinMax(Vec3<float>(-1.0f, -2.0f, -3.0f), Vec3<float>(1.0f, 2.0f, 3.0f)));
-  const TreeShape shape = shapeOf(prims);
-  EXPECT_LE(shape.depth, medianDepthBound(prims.size()));
-  EXPECT_TRUE(eachInOneLeaf(shape));
+  for (const std::uint32_t leafSize : {4u, 1u}) {
+    SCOPED_TRACE(leafSize);
+    const TreeShape shape = shapeOf(prims, leavesOf(leafSize));
+    EXPECT_LE(shape.depth, medianDepthBound(prims.size(), leafSize));
+    EXPECT_TRUE(eachInOneLeaf(shape));
+  }
 }
 
 template <class T> class BvhBuildRays : public ::testing::Test {};

@@ -2,7 +2,9 @@
 // of spheres, capsules, boxes, hulls and meshes, after adds, moves and removes (float and double).
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <thread>
+#include <type_traits>
 
 #include "gq/scene.h"
 #include "scene_test_support.h"
@@ -231,29 +233,41 @@ TYPED_TEST(SceneQueries, ManyMovesRebuildTheTreeAndKeepAnswers) {
   expectPairsMatch(w);
 }
 
-// From a rebuild on, rays walk the 8-wide ray tree; moves refit it, adds and removes leave it stale (rays walk the
-// binary tree) until the next rebuild; an instance beyond float's reach keeps rays on the binary tree. Every stage
-// answers as the loop over all instances.
+// From a rebuild on, rays walk the 8-wide ray tree; moves refit it, removals empty their lanes, adds leave it stale
+// (rays walk the binary tree) until the next rebuild; an instance beyond float's reach keeps rays on the binary tree.
+// Every stage answers as the loop over all instances.
 TYPED_TEST(SceneQueries, RaysAnswerAsTheLoopOnTheRayTreeRefitStaleAndRebuilt) {
   using T = TypeParam;
   Rng rng(51);
   Library<T> lib(rng);
   World<T> w;
   scenetest::populate(w, rng, lib, 150);
+  EXPECT_FALSE(w.scene.rayTreeCurrent());
   w.scene.rebuild();
+  EXPECT_TRUE(w.scene.rayTreeCurrent());
   expectRaysMatch(w, rng, 80);
   std::vector<InstanceId> ids;
   for (const auto& [id, it] : w.items) ids.push_back(id);
   for (std::size_t i = 0; i < ids.size(); i += 2) w.setPose(ids[i], rng.pose<T>(w.half));
+  EXPECT_TRUE(w.scene.rayTreeCurrent());
   expectRaysMatch(w, rng, 60);
   for (std::size_t i = 1; i < ids.size(); i += 5) w.remove(ids[i]);
-  scenetest::populate(w, rng, lib, 30, 9000);
-  expectRaysMatch(w, rng, 40);
-  w.scene.rebuild();
+  EXPECT_TRUE(w.scene.rayTreeCurrent());
   expectRaysMatch(w, rng, 60);
-  // A large sphere far out: the ray tree is not built over it, rays still find it.
+  scenetest::populate(w, rng, lib, 30, 9000);
+  EXPECT_FALSE(w.scene.rayTreeCurrent());
+  expectRaysMatch(w, rng, 40);
+  for (std::size_t i = 0; i < ids.size(); i += 7) {  // moves while it is stale
+    if (w.items.count(ids[i])) w.setPose(ids[i], rng.pose<T>(w.half));
+  }
+  w.scene.rebuild();
+  EXPECT_TRUE(w.scene.rayTreeCurrent());
+  expectRaysMatch(w, rng, 60);
+  // A large sphere far out: the ray tree is not built over it (in float its box's area overflows, so it is kept
+  // beside the trees as planes are), rays still find it.
   w.add(20000, SphereGeometry<T>(T(1e29)), Transform<T>(Vec3<T>(T(1e31), T(0), T(0))));
   w.scene.rebuild();
+  EXPECT_EQ(w.scene.rayTreeCurrent(), (std::is_same_v<T, float>));
   expectRaysMatch(w, rng, 40);
   SceneRaycastHit<T> hit;
   bool has = false;

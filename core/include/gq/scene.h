@@ -21,8 +21,9 @@
 // Tree upkeep: add() inserts a leaf where it grows the tree's surface area least (surface-area heuristic); setPose()
 // refits the leaf's ancestors; when refits have grown the summed area of the tree's inner boxes beyond
 // kRebuildAreaFactor times what insertions alone made, the next mutation rebuilds the tree top down. Each top-down
-// rebuild also builds an 8-wide tree for rays (the mesh raycast's tree, one instance a leaf): rays walk it until the
-// next add() or remove(), setPose() refits it, and without it rays walk the binary tree (same answers).
+// rebuild also builds an 8-wide tree for rays (the mesh raycast's tree, one instance a leaf): setPose() refits it,
+// remove() empties the instance's lane, and rays walk it until the next add(); without it rays walk the binary tree
+// (the same hits).
 //
 // Threads: the query functions are const and touch no shared mutable state: any number of threads may query one
 // scene at once. Mutation (add, remove, setPose, setMask, rebuild) is single-threaded: no query may run on the
@@ -104,9 +105,9 @@ template <class T> class Scene {
   Status setPose(InstanceId id, const Transform<T>& pose) noexcept;
   Status setMask(InstanceId id, std::uint32_t mask) noexcept;
   // Rebuilds the tree top down now, and the 8-wide tree rays walk (setPose does both when refits have degraded the
-  // tree). Call it after adding or removing many instances: on 1000 mixed objects rays then run about 3x as fast
-  // (bench_scene), and the top-down tree answers the other queries in fewer instructions than one grown by
-  // insertions.
+  // tree). Call it after adding many instances (rays walk the binary tree from an add() until then) or removing
+  // many (emptied lanes stay in the ray tree); a top-down tree also answers the other queries in fewer
+  // instructions than one grown by insertions.
   void rebuild() noexcept;
   void clear() noexcept;
 
@@ -122,6 +123,9 @@ template <class T> class Scene {
   std::uint32_t treeDepth() const noexcept;
   // Number of tree rebuilds so far (explicit and triggered), for diagnostics.
   std::uint64_t rebuildCount() const noexcept;
+  // Whether rays walk the 8-wide ray tree (built by each rebuild, kept by setPose and remove, left by add until the
+  // next rebuild; not built over boxes beyond 1e30), for diagnostics.
+  bool rayTreeCurrent() const noexcept;
 
   // ---- queries (const, thread-safe) ----
   // The nearest hit within maxDist; hasHit says whether `hit` was written. Each instance is cast with maxHits 1.

@@ -112,7 +112,7 @@ class Builder {
     return m;
   }
 
-  // The leaves of 4 that n triangles fill at least.
+  // The fewest leaves n primitives fill (leaves of leafSize_).
   float leafBlocks(std::uint32_t n) const { return float((n + leafSize_ - 1) / leafSize_); }
 
   // Clamped in float before the conversion: with extents beyond the float range (scale 0, offsets inf) or tiny ones

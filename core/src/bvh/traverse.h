@@ -81,6 +81,7 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   constexpr float kTinyDir = 1e-20f;
   BvhRay<W> r;
   int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
+  int clampedAxes;  // bit i: |dir[i]| in float below kTinyDir (zero included)
 #ifdef GQ_SSE42
   // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
   // and the same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the
@@ -92,6 +93,7 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   const __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
   negative = _mm_movemask_ps(clamped) & 7;
+  clampedAxes = _mm_movemask_ps(small) & 7;
   alignas(16) float lanes[2][4];
   _mm_store_ps(lanes[0], floatLanes(org));
   _mm_store_ps(lanes[1], negInv);
@@ -99,9 +101,11 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   std::memcpy(r.negInvDir, lanes[1], sizeof(r.negInvDir));
 #else
   negative = 0;
+  clampedAxes = 0;
   for (int i = 0; i < 3; ++i) {
     r.org[i] = static_cast<float>(org[i]);
     float d = static_cast<float>(dir[i]);
+    clampedAxes |= int(std::abs(d) < kTinyDir) << i;
     if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
     r.negInvDir[i] = -1.0f / d;
     negative |= int(r.negInvDir[i] > 0.0f) << i;
@@ -124,9 +128,15 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
     if (dir[i] == T(0) && r.slack[i] == 0.0f)
       r.negInvDir[i] = std::signbit(dir[i]) ? std::numeric_limits<float>::infinity()
                                             : -std::numeric_limits<float>::infinity();
+  // A clamped axis leaves the slab no sooner than the ray does along it, or never: the clamp's exit distance,
+  // |gap| / kTinyDir, can come before the ray's own, so the far inverse is infinite there (far distances +inf inside
+  // the slab, -inf past its far plane, NaN on it, which the tests ignore; the float origin is inside the float slab
+  // whenever the T origin is inside the T box, rounding being monotonic and the planes rounded outward). The clamped
+  // near distance comes no later than the ray's own entry: conservative as it is.
   for (int i = 0; i < 3; ++i) {
     r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);
-    r.farInv[i] = r.negInvDir[i] * (1.0f + BvhRay<W>::kRelPad);
+    r.farInv[i] = ((clampedAxes >> i) & 1) ? std::copysign(std::numeric_limits<float>::infinity(), r.negInvDir[i])
+                                           : r.negInvDir[i] * (1.0f + BvhRay<W>::kRelPad);
   }
   std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
   std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));

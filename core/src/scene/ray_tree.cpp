@@ -1,6 +1,7 @@
 // The scene's 8-wide ray tree (scene/ray_tree.h).
 #include "scene/ray_tree.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -60,6 +61,7 @@ __attribute__((target("avx2"), flatten)) void walkAvx2(const Bvh8& bvh, const st
 template <class T>
 bool SceneRayTree<T>::build(const std::vector<std::uint32_t>& instances, const std::vector<Bounds3<T>>& boxes) {
   clear();
+  if (boxes.size() > Bvh8Node::kLeafFirstMask) return false;
   std::vector<Bounds3<float>> prims;
   prims.reserve(boxes.size());
   for (const Bounds3<T>& b : boxes) {
@@ -158,10 +160,34 @@ template <class T> bool SceneRayTree<T>::refit(std::uint32_t instance, const Bou
   std::uint32_t slot = leafSlot_[k];
   if (slot == kNone) return true;  // the root is a leaf: no boxes are tested
   writeLane(slot, leafUnion(bvh_.nodes[slot / 8].child[slot % 8]));
-  for (std::uint32_t n = slot / 8; parentSlot_[n] != kNone; n = parentSlot_[n] / 8) {
-    writeLane(parentSlot_[n], nodeUnion(n));
-  }
+  refitAncestors(slot / 8);
   return true;
+}
+
+template <class T> void SceneRayTree<T>::refitAncestors(std::uint32_t node) noexcept {
+  for (std::uint32_t n = node; parentSlot_[n] != kNone; n = parentSlot_[n] / 8) writeLane(parentSlot_[n], nodeUnion(n));
+}
+
+template <class T> void SceneRayTree<T>::remove(std::uint32_t instance, std::uint32_t moved) noexcept {
+  if (!ready_) return;
+  if (instance < positionOf_.size() && positionOf_[instance] != kNone) {
+    const std::uint32_t k = positionOf_[instance];
+    positionOf_[instance] = kNone;
+    const std::uint32_t slot = leafSlot_[k];
+    if (slot == kNone) {  // the root is its leaf
+      bvh_.rootChild = Bvh8Node::kEmpty;
+    } else {  // leaves hold one instance: its lane empties (an all-+inf box, which every slab test rejects)
+      bvh_.nodes[slot / 8].child[slot % 8] = Bvh8Node::kEmpty;
+      writeLane(slot, emptyLaneBox());
+      refitAncestors(slot / 8);
+    }
+  }
+  if (moved != instance && moved < positionOf_.size() && positionOf_[moved] != kNone) {
+    const std::uint32_t k = positionOf_[moved];
+    positionOf_[moved] = kNone;
+    positionOf_[instance] = k;  // instance < moved: within the array
+    instanceOf_[k] = instance;
+  }
 }
 
 template <class T>

@@ -2,9 +2,8 @@
 // The scene's tree for rays: the mesh raycast's 8-wide BVH (bvh/build.h) and front-to-back walk (bvh/traverse.h)
 // over the scene's bounded instance boxes, built when the scene's tree is rebuilt top down. Its float child boxes
 // are tested 8 at a time (one AVX2 test where the CPU has it), where the dynamic binary tree (scene/aabb_tree.h)
-// tests two double boxes a node; a moved instance refits its leaf and the leaf's ancestors. Instances added or
-// removed since the last rebuild leave it stale (the scene then walks the binary tree), since removal renumbers
-// instances.
+// tests two double boxes a node; a moved instance refits its leaf and the leaf's ancestors, a removed one empties its
+// lane. Instances added since the last rebuild leave it stale (the scene then walks the binary tree).
 #include <cstdint>
 #include <vector>
 
@@ -20,13 +19,17 @@ template <class T> class SceneRayTree {
   using Visit = T (*)(void* context, std::uint32_t instance);
 
   // Builds the tree over boxes[j] of instances[j]; false (and the tree cleared) when a box does not fit float's
-  // range, whose boxes the float slab tests cannot bound. May throw std::bad_alloc (the tree is then cleared).
+  // range, whose boxes the float slab tests cannot bound, or there are more boxes than leaf references can number
+  // (2^28). May throw std::bad_alloc (the tree is then cleared).
   bool build(const std::vector<std::uint32_t>& instances, const std::vector<Bounds3<T>>& boxes);
   void clear() noexcept;
   bool ready() const noexcept { return ready_; }
-  // An instance's new box: its leaf's lane and every ancestor's lane become the unions again. False when the box
-  // does not fit float's range (the tree is then cleared).
+  // An instance's new box: its leaf's lane and every ancestor's lane become the unions again. Returns whether the
+  // tree is ready afterwards: a box beyond float's range clears it; an instance not in it changes nothing.
   bool refit(std::uint32_t instance, const Bounds3<T>& box) noexcept;
+  // An instance removed, whose index the instance numbered `moved` takes (the scene's last one; moved == instance
+  // when it was the last): its lane is emptied and the ancestors' lanes refit, and the moved one keeps its leaf.
+  void remove(std::uint32_t instance, std::uint32_t moved) noexcept;
   // Walks the leaves the ray o + t d (t in [0, limit]) enters, nearest first, calling visit on each of their
   // instances (in no particular order: the callers' answers do not depend on it). False when the ray cannot be
   // walked in float (an origin beyond float's range): the caller walks the binary tree instead.
@@ -35,6 +38,7 @@ template <class T> class SceneRayTree {
  private:
   static constexpr std::uint32_t kNone = 0xffffffffu;
   void writeLane(std::uint32_t slot, const Bounds3<float>& box) noexcept;
+  void refitAncestors(std::uint32_t node) noexcept;
   Bounds3<float> nodeUnion(std::uint32_t node) const noexcept;
   Bounds3<float> leafUnion(std::uint32_t ref) const noexcept;
 

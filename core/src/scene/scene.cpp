@@ -191,7 +191,7 @@ template <class T> struct Scene<T>::Impl {
     }
   }
 
-  // The ray tree's visit of an instance (whose own box its node test found the ray entering).
+  // The ray tree's visit of an instance in a leaf the ray enters.
   template <class Visit> struct RayTreeVisit {
     const Visit& visit;
     T limit;
@@ -345,7 +345,7 @@ template <class T> Status Scene<T>::remove(InstanceId id) noexcept {
     }
   }
   m.instances.pop_back();
-  m.rayTree.clear();  // instances renumbered: stale until the next rebuild
+  m.rayTree.remove(index, last);
   return {};
 }
 
@@ -441,6 +441,7 @@ template <class T> Status Scene<T>::ids(std::vector<InstanceId>& out) const noex
 }
 
 template <class T> std::uint32_t Scene<T>::treeDepth() const noexcept { return impl_ ? impl_->tree.depth() : 0; }
+template <class T> bool Scene<T>::rayTreeCurrent() const noexcept { return impl_ && impl_->rayTree.ready(); }
 template <class T> std::uint64_t Scene<T>::rebuildCount() const noexcept { return impl_ ? impl_->rebuilds : 0; }
 
 // ---- raycasts ---------------------------------------------------------------------------------------------------
