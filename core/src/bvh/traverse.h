@@ -81,7 +81,6 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   constexpr float kTinyDir = 1e-20f;
   BvhRay<W> r;
   int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
-  int clampedAxes;  // bit i: |dir[i]| in float below kTinyDir (zero included)
 #ifdef GQ_SSE42
   // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
   // and the same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the
@@ -93,7 +92,6 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   const __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
   negative = _mm_movemask_ps(clamped) & 7;
-  clampedAxes = _mm_movemask_ps(small) & 7;
   alignas(16) float lanes[2][4];
   _mm_store_ps(lanes[0], floatLanes(org));
   _mm_store_ps(lanes[1], negInv);
@@ -101,7 +99,7 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   std::memcpy(r.negInvDir, lanes[1], sizeof(r.negInvDir));
 #else
   negative = 0;
-  clampedAxes = 0;
+  int clampedAxes = 0;  // bit i: |dir[i]| in float below kTinyDir (zero included)
   for (int i = 0; i < 3; ++i) {
     r.org[i] = static_cast<float>(org[i]);
     float d = static_cast<float>(dir[i]);
@@ -133,11 +131,24 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // the slab, -inf past its far plane, NaN on it, which the tests ignore; the float origin is inside the float slab
   // whenever the T origin is inside the T box, rounding being monotonic and the planes rounded outward). The clamped
   // near distance comes no later than the ray's own entry: conservative as it is.
+#ifdef GQ_SSE42
+  // The loop below, 3 lanes at once (a fourth lane, read from nearInv[0], is computed and dropped).
+  r.nearInv[0] = 0.0f;
+  const __m128 inv = _mm_loadu_ps(r.negInvDir);
+  const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad),
+                                        _mm_set1_ps(std::numeric_limits<float>::infinity()), small);
+  _mm_store_ps(lanes[0], _mm_mul_ps(inv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));
+  _mm_store_ps(lanes[1], _mm_mul_ps(inv, farScale));
+  std::memcpy(r.nearInv, lanes[0], sizeof(r.nearInv));
+  std::memcpy(r.farInv, lanes[1], sizeof(r.farInv));
+#else
   for (int i = 0; i < 3; ++i) {
     r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);
-    r.farInv[i] = ((clampedAxes >> i) & 1) ? std::copysign(std::numeric_limits<float>::infinity(), r.negInvDir[i])
-                                           : r.negInvDir[i] * (1.0f + BvhRay<W>::kRelPad);
+    // Times inf: inf with negInvDir's sign (never 0).
+    r.farInv[i] = r.negInvDir[i] * (((clampedAxes >> i) & 1) ? std::numeric_limits<float>::infinity()
+                                                              : 1.0f + BvhRay<W>::kRelPad);
   }
+#endif
   std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
   std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));
   return r;
