@@ -91,7 +91,8 @@ TEST(BvhBuild, LeavesHoldAtMostTheLeafSizeClampedToOneToFour) {
     const Vec3<float> lo(float(i % 10), float(i / 10 % 10), float(i / 100));
     prims.push_back(Bounds3<float>::fromMinMax(lo, lo + Vec3<float>::Constant(0.9f)));
   }
-  for (const auto& [asked, expected] : {std::pair<std::uint32_t, std::uint32_t>{1, 1}, {2, 2}, {4, 4}, {0, 1}, {9, 4}}) {
+  using Sizes = std::pair<std::uint32_t, std::uint32_t>;  // asked, expected
+  for (const auto& [asked, expected] : {Sizes{1, 1}, Sizes{2, 2}, Sizes{4, 4}, Sizes{0, 1}, Sizes{9, 4}}) {
     SCOPED_TRACE(asked);
     detail::BvhBuildSettings settings;
     settings.maxLeafSize = asked;

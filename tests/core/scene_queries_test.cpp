@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <memory>
 #include <thread>
 #include <type_traits>
+#include <vector>
 
+#include "gq/custom.h"
 #include "gq/scene.h"
 #include "scene_test_support.h"
 
@@ -274,6 +277,72 @@ TYPED_TEST(SceneQueries, RaysAnswerAsTheLoopOnTheRayTreeRefitStaleAndRebuilt) {
   ASSERT_TRUE(w.scene.raycastClosest(Vec3<T>(T(5e30), T(0), T(0)), Vec3<T>::UnitX(), T(1e31), hit, has).ok());
   ASSERT_TRUE(has);
   EXPECT_EQ(hit.id, 20000u);
+}
+
+// A custom unit cube (a box of half-extent 1) whose raycast records the ray lengths it is asked with.
+template <class T> class RecordingCube : public CustomGeometryCallbacks<T> {
+ public:
+  const char* name() const override { return "recording cube"; }
+  Bounds3<T> localBounds() const override { return Bounds3<T>{Vec3<T>::Constant(T(-1)), Vec3<T>::Constant(T(1))}; }
+  Vec3<T> support(const Vec3<T>& d) const override {
+    return Vec3<T>(d.x() < 0 ? T(-1) : T(1), d.y() < 0 ? T(-1) : T(1), d.z() < 0 ? T(-1) : T(1));
+  }
+  bool raycast(const Vec3<T>& o, const Vec3<T>& d, T maxDist, HitFlags, RaycastHit<T>& hit) const override {
+    lengths.push_back(maxDist);
+    RaycastHit<T> h[1];
+    std::uint32_t n = 0;
+    if (!gq::raycast(o, d, Geometry<T>(BoxGeometry<T>(T(1), T(1), T(1))), Transform<T>(), maxDist, kDefaultHitFlags,
+                     1u, h, n)
+             .ok() ||
+        n == 0)
+      return false;
+    hit = h[0];
+    return true;
+  }
+  mutable std::vector<T> lengths;
+};
+
+// Instances hit at the same distance: the smaller id wins whichever the walk asks first. An instance asked after a
+// closer hit gets one step more than that distance as its ray's length (a mesh hit at distance 0 is still found), a
+// custom shape the query's maxDist.
+TYPED_TEST(SceneQueries, TiesAtTheClosestDistanceGoToTheSmallerIdWhicheverIsAskedFirst) {
+  using T = TypeParam;
+  Rng rng(52);
+  Library<T> lib(rng);
+  for (const bool smallerFirst : {true, false}) {
+    SCOPED_TRACE(smallerFirst);
+    // Two open quads at z = 0 (both faces): a ray starting on them hits both at distance 0.
+    World<T> quads;
+    const TriangleMeshGeometry<T> quad(lib.quads, MeshScale<T>(), MeshGeometryFlag::DoubleSided);
+    quads.add(smallerFirst ? 2 : 5, quad, Transform<T>());
+    quads.add(smallerFirst ? 5 : 2, quad, Transform<T>());
+    // Two recording cubes at the same place: both hit at distance 4.
+    World<T> cubes;
+    auto a = std::make_shared<RecordingCube<T>>(), b = std::make_shared<RecordingCube<T>>();
+    cubes.add(smallerFirst ? 4 : 9, CustomGeometry<T>(a), Transform<T>(Vec3<T>(T(0), T(0), T(5))));
+    cubes.add(smallerFirst ? 9 : 4, CustomGeometry<T>(b), Transform<T>(Vec3<T>(T(0), T(0), T(5))));
+    for (const bool rebuilt : {false, true}) {
+      if (rebuilt) {
+        quads.scene.rebuild();
+        cubes.scene.rebuild();
+      }
+      SceneRaycastHit<T> hit;
+      bool has = false;
+      ASSERT_TRUE(quads.scene.raycastClosest(Vec3<T>(T(0.1), T(0.2), T(0)), Vec3<T>::UnitZ(), T(10), hit, has).ok());
+      ASSERT_TRUE(has);
+      EXPECT_EQ(hit.id, 2u);
+      EXPECT_EQ(hit.hit.distance, T(0));
+      ASSERT_TRUE(cubes.scene.raycastClosest(Vec3<T>::Zero(), Vec3<T>::UnitZ(), T(100), hit, has).ok());
+      ASSERT_TRUE(has);
+      EXPECT_EQ(hit.id, 4u);
+      EXPECT_EQ(hit.hit.distance, T(4));
+      for (const auto& cube : {a, b}) {
+        ASSERT_FALSE(cube->lengths.empty());
+        for (T length : cube->lengths) EXPECT_EQ(length, T(100));
+        cube->lengths.clear();
+      }
+    }
+  }
 }
 
 TYPED_TEST(SceneQueries, PlanesAreTestedByEveryQuery) {

@@ -134,7 +134,9 @@ TYPED_TEST(SceneRayTreeTest, RemovalsEmptyTheirLanesAndRenumberTheLastInstance) 
   }
   detail::SceneRayTree<T> tree;
   ASSERT_TRUE(tree.build(instances, boxes));
-  for (int k = 0; k < 150; ++k) removeAsTheScene(tree, instances, boxes, std::size_t(rng.uniform(0, double(instances.size()))));
+  for (int k = 0; k < 150; ++k) {
+    removeAsTheScene(tree, instances, boxes, std::size_t(rng.uniform(0, double(instances.size()))));
+  }
   ASSERT_TRUE(tree.ready());
   for (std::size_t j = 0; j < boxes.size(); j += 4) {  // the renumbered instances still refit their own leaves
     boxes[j] = randomBox<T>(rng, 12);

@@ -20,7 +20,9 @@ template <class T> bool withinFloatReach(const Vec3<T>& v) {
          std::abs(double(v.z())) <= kFloatReach;
 }
 
-template <class T> bool withinFloatReach(const Bounds3<T>& b) { return withinFloatReach(b.min) && withinFloatReach(b.max); }
+template <class T> bool withinFloatReach(const Bounds3<T>& b) {
+  return withinFloatReach(b.min) && withinFloatReach(b.max);
+}
 
 Bounds3<float> emptyLaneBox() {
   const float inf = std::numeric_limits<float>::infinity();

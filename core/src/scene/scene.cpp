@@ -453,6 +453,13 @@ template <class T> Status checkRay(const Vec3<T>& origin, const Vec3<T>& unitDir
   return detail::checkMaxDist(maxDist);
 }
 
+// The length of an instance's raycast once the hits kept end at distance d: one step beyond d (within maxDist), so
+// that a hit at exactly d (a tie the smaller id may win) is found, and a ray starting on a surface (d = 0) still has a
+// length.
+template <class T> T reachOf(T d, T maxDist) {
+  return std::min(std::nextafter(d, std::numeric_limits<T>::infinity()), maxDist);
+}
+
 // (distance, id) order; ties in both keep the earlier.
 template <class T> bool hitBefore(T d0, InstanceId id0, T d1, InstanceId id1) {
   return d0 < d1 || (d0 == d1 && id0 < id1);
@@ -472,10 +479,16 @@ template <class T> struct SceneRayWalk {
   std::uint32_t skipped = 0;
 
   // The hits written to `hits` (at most maxHits; 0 when filtered out or left out), or -1 when the walk must stop.
-  template <class Instance> int cast(const Instance& inst, std::uint32_t maxHits, RaycastHit<T>* hits) {
+  // `reach`: the distance beyond which the caller keeps no hit (the early-out fed to the instance's raycast), at
+  // most maxDist. Every kernel but a custom shape's computes its hits whatever the ray's length and keeps those at or
+  // before it, so the hits kept are the ones a raycast to maxDist returns; a custom shape's callback gets maxDist, as
+  // in the loop over all instances.
+  template <class Instance>
+  int cast(const Instance& inst, std::uint32_t maxHits, RaycastHit<T>* hits, T reach) {
     if (!passes(filter, inst.mask, inst.id)) return 0;
     std::uint32_t n = 0;
-    const Status s = raycast(origin, unitDir, inst.shape, inst.pose, maxDist, hitFlags, maxHits, hits, n);
+    const T length = inst.shape.geometry().type() == GeometryType::Custom ? maxDist : reach;
+    const Status s = raycast(origin, unitDir, inst.shape, inst.pose, length, hitFlags, maxHits, hits, n);
     if (s.ok()) return int(n);
     if (isInputError(s)) {
       failure = s;
@@ -499,7 +512,7 @@ Status Scene<T>::raycastClosest(const Vec3<T>& origin, const Vec3<T>& unitDir, T
     if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
           const auto& inst = m.instances[i];
           RaycastHit<T> h;
-          const int n = walk.cast(inst, 1u, &h);
+          const int n = walk.cast(inst, 1u, &h, found ? reachOf(best.hit.distance, maxDist) : maxDist);
           if (n < 0) return T(-1);
           if (n > 0 && (!found || hitBefore(h.distance, inst.id, best.hit.distance, best.id))) {
             best.id = inst.id;
@@ -529,7 +542,7 @@ Status Scene<T>::raycastAny(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
     if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
           const auto& inst = m.instances[i];
           RaycastHit<T> h;
-          const int n = walk.cast(inst, 1u, &h);
+          const int n = walk.cast(inst, 1u, &h, maxDist);
           if (n < 0) return T(-1);
           if (n == 0) return maxDist;
           any.id = inst.id;
@@ -565,7 +578,8 @@ Status Scene<T>::raycastAll(const Vec3<T>& origin, const Vec3<T>& unitDir, T max
       const Impl& m = *impl_;
       if (!m.forRay(origin, unitDir, maxDist, Vec3<T>::Zero(), [&](std::uint32_t i) -> T {
             const auto& inst = m.instances[i];
-            const int n = walk.cast(inst, maxHits, local.data());
+            const T reach = best.size() == maxHits ? reachOf(best.back().hit.distance, maxDist) : maxDist;
+            const int n = walk.cast(inst, maxHits, local.data(), reach);
             if (n < 0) return T(-1);
             for (int k = 0; k < n; ++k) {
               const SceneRaycastHit<T> h{inst.id, local[k]};
