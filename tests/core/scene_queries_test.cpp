@@ -236,16 +236,16 @@ TYPED_TEST(SceneQueries, ManyMovesRebuildTheTreeAndKeepAnswers) {
   expectPairsMatch(w);
 }
 
-// From a rebuild on, rays walk the 8-wide ray tree; moves refit it, removals empty their lanes, adds leave it stale
-// (rays walk the binary tree) until the next rebuild; an instance beyond float's reach keeps rays on the binary tree.
-// Every stage answers as the loop over all instances.
-TYPED_TEST(SceneQueries, RaysAnswerAsTheLoopOnTheRayTreeRefitStaleAndRebuilt) {
+// Rays walk the 8-wide ray tree: grown by adds, rebuilt top down, refit by moves, with lanes emptied by removals; an
+// instance beyond float's reach keeps rays on the binary tree. Every stage answers as the loop over all instances.
+TYPED_TEST(SceneQueries, RaysAnswerAsTheLoopOnTheRayTreeGrownRebuiltRefitAndEmptied) {
   using T = TypeParam;
   Rng rng(51);
   Library<T> lib(rng);
   World<T> w;
   scenetest::populate(w, rng, lib, 150);
-  EXPECT_FALSE(w.scene.rayTreeCurrent());
+  EXPECT_TRUE(w.scene.rayTreeCurrent());
+  expectRaysMatch(w, rng, 60);
   w.scene.rebuild();
   EXPECT_TRUE(w.scene.rayTreeCurrent());
   expectRaysMatch(w, rng, 80);
@@ -257,18 +257,21 @@ TYPED_TEST(SceneQueries, RaysAnswerAsTheLoopOnTheRayTreeRefitStaleAndRebuilt) {
   for (std::size_t i = 1; i < ids.size(); i += 5) w.remove(ids[i]);
   EXPECT_TRUE(w.scene.rayTreeCurrent());
   expectRaysMatch(w, rng, 60);
-  scenetest::populate(w, rng, lib, 30, 9000);
-  EXPECT_FALSE(w.scene.rayTreeCurrent());
+  scenetest::populate(w, rng, lib, 30, 9000);  // into lanes the removals emptied, and new ones
+  EXPECT_TRUE(w.scene.rayTreeCurrent());
   expectRaysMatch(w, rng, 40);
-  for (std::size_t i = 0; i < ids.size(); i += 7) {  // moves while it is stale
+  for (std::size_t i = 0; i < ids.size(); i += 7) {
     if (w.items.count(ids[i])) w.setPose(ids[i], rng.pose<T>(w.half));
   }
+  expectRaysMatch(w, rng, 40);
   w.scene.rebuild();
   EXPECT_TRUE(w.scene.rayTreeCurrent());
   expectRaysMatch(w, rng, 60);
   // A large sphere far out: the ray tree is not built over it (in float its box's area overflows, so it is kept
   // beside the trees as planes are), rays still find it.
   w.add(20000, SphereGeometry<T>(T(1e29)), Transform<T>(Vec3<T>(T(1e31), T(0), T(0))));
+  EXPECT_EQ(w.scene.rayTreeCurrent(), (std::is_same_v<T, float>));
+  expectRaysMatch(w, rng, 20);
   w.scene.rebuild();
   EXPECT_EQ(w.scene.rayTreeCurrent(), (std::is_same_v<T, float>));
   expectRaysMatch(w, rng, 40);
@@ -277,6 +280,35 @@ TYPED_TEST(SceneQueries, RaysAnswerAsTheLoopOnTheRayTreeRefitStaleAndRebuilt) {
   ASSERT_TRUE(w.scene.raycastClosest(Vec3<T>(T(5e30), T(0), T(0)), Vec3<T>::UnitX(), T(1e31), hit, has).ok());
   ASSERT_TRUE(has);
   EXPECT_EQ(hit.id, 20000u);
+}
+
+// Boxes added along x in increasing order chain the ray tree's insertions past the depth its walk allows: the tree is
+// left, and built again once the adds since its last build reach an eighth of the instances, so rays walk it after
+// most adds.
+TYPED_TEST(SceneQueries, InstancesAddedInSortedOrderKeepRaysOnTheRayTreeAfterMostAdds) {
+  using T = TypeParam;
+  Rng rng(53);
+  World<T> w;
+  int current = 0;
+  constexpr int kBoxes = 2000;
+  for (int i = 0; i < kBoxes; ++i) {
+    w.add(InstanceId(i + 1), BoxGeometry<T>(T(0.25), T(0.5), T(0.5)), Transform<T>(Vec3<T>(T(i), T(0), T(0))));
+    current += w.scene.rayTreeCurrent() ? 1 : 0;
+  }
+  EXPECT_GE(current, kBoxes * 3 / 4);
+  for (int r = 0; r < 40; ++r) {
+    SCOPED_TRACE(r);
+    const Vec3<T> o(T(rng.uniform(-5, 2005)), T(rng.uniform(-1, 1)), T(rng.uniform(-3, 3)));
+    const Vec3<T> d = rng.unitVector<T>();
+    SceneRaycastHit<T> hit, ref;
+    bool has = false;
+    ASSERT_TRUE(w.scene.raycastClosest(o, d, T(100), hit, has).ok());
+    ASSERT_EQ(has, scenetest::bruteClosestRay(w, o, d, T(100), kDefaultHitFlags, ref, {}));
+    if (has) {
+      EXPECT_EQ(hit.id, ref.id);
+      EXPECT_EQ(hit.hit.distance, ref.hit.distance);
+    }
+  }
 }
 
 // A custom unit cube (a box of half-extent 1) whose raycast records the ray lengths it is asked with.

@@ -151,6 +151,61 @@ TYPED_TEST(SceneRayTreeTest, RemovalsEmptyTheirLanesAndRenumberTheLastInstance) 
   }
 }
 
+TYPED_TEST(SceneRayTreeTest, InsertionsFromEmptyAndIntoEmptiedLanesVisitEveryBoxEntered) {
+  using T = TypeParam;
+  Rng rng(84);
+  detail::SceneRayTree<T> tree;  // constructed empty and ready
+  ASSERT_TRUE(tree.ready());
+  std::vector<std::uint32_t> instances;
+  std::vector<Bounds3<T>> boxes;
+  for (std::uint32_t i = 0; i < 500; ++i) {
+    instances.push_back(i);
+    boxes.push_back(randomBox<T>(rng, 12));
+    ASSERT_TRUE(tree.insert(i, boxes.back()));
+    if (i < 3) expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 20);  // a root leaf, then a root node
+  }
+  expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 300);
+  for (int k = 0; k < 200; ++k) {
+    removeAsTheScene(tree, instances, boxes, std::size_t(rng.uniform(0, double(instances.size()))));
+  }
+  for (int k = 0; k < 300; ++k) {
+    const auto i = std::uint32_t(instances.size());
+    instances.push_back(i);
+    boxes.push_back(randomBox<T>(rng, 12));
+    ASSERT_TRUE(tree.insert(i, boxes.back()));
+  }
+  expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 300);
+}
+
+TYPED_TEST(SceneRayTreeTest, InsertionsInSortedOrderStayWithinTheWalkStackOrLeaveTheTree) {
+  using T = TypeParam;
+  Rng rng(85);
+  detail::SceneRayTree<T> tree;
+  std::vector<std::uint32_t> instances;
+  std::vector<Bounds3<T>> boxes;
+  // Boxes along x in increasing order: each lands in the lane of the last, chaining nodes.
+  bool ready = true;
+  for (std::uint32_t i = 0; i < 3000 && ready; ++i) {
+    instances.push_back(i);
+    const T x = T(i);
+    boxes.push_back(Bounds3<T>{Vec3<T>(x, T(0), T(0)), Vec3<T>(x + T(0.5), T(1), T(1))});
+    ready = tree.insert(i, boxes.back());
+    EXPECT_EQ(ready, tree.ready());
+  }
+  if (ready) {
+    for (int r = 0; r < 50; ++r) {
+      const Vec3<T> o(T(-1), T(rng.uniform(0, 1)), T(rng.uniform(0, 1)));
+      expectVisitsEveryBoxEntered(tree, instances, boxes, o, Vec3<T>(Vec3<T>::UnitX()), T(4000));
+    }
+  } else {
+    Collect<T> c{{}, T(10)};
+    EXPECT_FALSE(tree.walkRay(Vec3<T>::Zero(), Vec3<T>::UnitX(), T(10), &Collect<T>::call, &c));
+    ASSERT_TRUE(tree.build(instances, boxes));  // a build starts it again
+    expectVisitsEveryBoxEntered(tree, instances, boxes, Vec3<T>(T(-1), T(0.5), T(0.5)), Vec3<T>(Vec3<T>::UnitX()),
+                                T(4000));
+  }
+}
+
 TYPED_TEST(SceneRayTreeTest, OneInstanceIsTheRootLeafAndRefitsAndLeaves) {
   using T = TypeParam;
   std::vector<std::uint32_t> instances{0};

@@ -20,10 +20,11 @@
 //
 // Tree upkeep: add() inserts a leaf where it grows the tree's surface area least (surface-area heuristic); setPose()
 // refits the leaf's ancestors; when refits have grown the summed area of the tree's inner boxes beyond
-// kRebuildAreaFactor times what insertions alone made, the next mutation rebuilds the tree top down. Each top-down
-// rebuild also builds an 8-wide tree for rays (the mesh raycast's tree, one instance a leaf): setPose() refits it,
-// remove() empties the instance's lane, and rays walk it until the next add(); without it rays walk the binary tree
-// (the same hits).
+// kRebuildAreaFactor times what insertions alone made, the next mutation rebuilds the tree top down. Rays walk a
+// second, 8-wide tree (the mesh raycast's tree, one instance a leaf): add() inserts into it, setPose() refits it,
+// remove() empties the instance's lane, and each top-down rebuild builds it again; without it (boxes beyond 1e30, or
+// after an insertion path deeper than its walk allows, until a rebuild or the add that brings the adds since its last
+// build to an eighth of the instances) rays walk the binary tree (the same hits).
 //
 // Threads: the query functions are const and touch no shared mutable state: any number of threads may query one
 // scene at once. Mutation (add, remove, setPose, setMask, rebuild) is single-threaded: no query may run on the
@@ -105,9 +106,8 @@ template <class T> class Scene {
   Status setPose(InstanceId id, const Transform<T>& pose) noexcept;
   Status setMask(InstanceId id, std::uint32_t mask) noexcept;
   // Rebuilds the tree top down now, and the 8-wide tree rays walk (setPose does both when refits have degraded the
-  // tree). Call it after adding many instances (rays walk the binary tree from an add() until then) or removing
-  // many (emptied lanes stay in the ray tree); a top-down tree also answers the other queries in fewer
-  // instructions than one grown by insertions.
+  // tree). Call it after adding or removing many instances: trees built top down answer every query in fewer
+  // instructions than trees grown by insertions (and keep no lanes emptied by removals).
   void rebuild() noexcept;
   void clear() noexcept;
 
@@ -123,8 +123,7 @@ template <class T> class Scene {
   std::uint32_t treeDepth() const noexcept;
   // Number of tree rebuilds so far (explicit and triggered), for diagnostics.
   std::uint64_t rebuildCount() const noexcept;
-  // Whether rays walk the 8-wide ray tree (built by each rebuild, kept by setPose and remove, left by add until the
-  // next rebuild; not built over boxes beyond 1e30), for diagnostics.
+  // Whether rays walk the 8-wide ray tree (see Tree upkeep above), for diagnostics.
   bool rayTreeCurrent() const noexcept;
 
   // ---- queries (const, thread-safe) ----

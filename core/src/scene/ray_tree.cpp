@@ -8,6 +8,7 @@
 
 #include "bvh/build.h"
 #include "bvh/traverse.h"
+#include "scene/aabb_tree.h"
 
 namespace gq::detail {
 namespace {
@@ -108,6 +109,11 @@ bool SceneRayTree<T>::build(const std::vector<std::uint32_t>& instances, const s
   return true;
 }
 
+template <class T> void SceneRayTree<T>::reset() noexcept {
+  clear();
+  ready_ = true;
+}
+
 template <class T> void SceneRayTree<T>::clear() noexcept {
   bvh_.nodes.clear();
   bvh_.rootChild = Bvh8Node::kEmpty;
@@ -190,6 +196,102 @@ template <class T> void SceneRayTree<T>::remove(std::uint32_t instance, std::uin
     positionOf_[instance] = k;  // instance < moved: within the array
     instanceOf_[k] = instance;
   }
+}
+
+template <class T> std::uint32_t SceneRayTree<T>::newNode(std::uint32_t parentSlot) {
+  const auto n = std::uint32_t(bvh_.nodes.size());
+  bvh_.nodes.emplace_back();
+  parentSlot_.push_back(parentSlot);
+  for (std::uint32_t lane = 0; lane < 8; ++lane) {
+    bvh_.nodes[n].child[lane] = Bvh8Node::kEmpty;
+    writeLane(8 * n + lane, emptyLaneBox());
+  }
+  return n;
+}
+
+// Lane `slot` holds the leaf leafRef: its reference, its box, and where its positions hang.
+template <class T> void SceneRayTree<T>::setLeafLane(std::uint32_t slot, std::uint32_t leafRef) {
+  bvh_.nodes[slot / 8].child[slot % 8] = leafRef;
+  writeLane(slot, leafUnion(leafRef));
+  const std::uint32_t first = Bvh8Node::leafFirst(leafRef);
+  for (std::uint32_t k = first; k < first + Bvh8Node::leafCount(leafRef); ++k) leafSlot_[k] = slot;
+}
+
+template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bounds3<T>& box) noexcept {
+  if (!ready_) return false;
+  if (!withinFloatReach(box) || instanceOf_.size() >= Bvh8Node::kLeafFirstMask) {
+    clear();
+    return false;
+  }
+  try {
+    // Everything that allocates, first.
+    const auto k = std::uint32_t(instanceOf_.size());
+    instanceOf_.reserve(k + 1);
+    boxes_.reserve(k + 1);
+    leafSlot_.reserve(k + 1);
+    bvh_.nodes.reserve(bvh_.nodes.size() + 1);
+    parentSlot_.reserve(bvh_.nodes.size() + 1);
+    if (positionOf_.size() <= instance) positionOf_.resize(std::size_t(instance) + 1, kNone);
+    instanceOf_.push_back(instance);
+    boxes_.push_back(roundOutward(box.min, box.max));
+    leafSlot_.push_back(kNone);
+    positionOf_[instance] = k;
+    const std::uint32_t leaf = Bvh8Node::makeLeaf(k, 1);
+    const std::uint32_t root = bvh_.rootChild;
+    if (root == Bvh8Node::kEmpty) {
+      bvh_.rootChild = leaf;
+      return true;
+    }
+    if (Bvh8Node::isLeaf(root)) {  // a root node over the root leaf and the new one
+      const std::uint32_t n = newNode(kNone);
+      setLeafLane(8 * n, root);
+      setLeafLane(8 * n + 1, leaf);
+      bvh_.rootChild = n;
+      return true;
+    }
+    const Bounds3<float>& b = boxes_[k];
+    std::uint32_t n = root;
+    for (int depth = 1;; ++depth) {
+      const Bvh8Node& node = bvh_.nodes[n];
+      int pick = -1;
+      float growth = std::numeric_limits<float>::infinity(), area = growth;
+      for (int lane = 0; lane < 8; ++lane) {
+        if (node.child[lane] == Bvh8Node::kEmpty) {  // an empty lane takes the leaf
+          setLeafLane(8 * n + std::uint32_t(lane), leaf);
+          refitAncestors(n);
+          return true;
+        }
+        const Bounds3<float> c = Bounds3<float>::fromMinMax(
+            Vec3<float>(node.minX[lane], node.minY[lane], node.minZ[lane]),
+            Vec3<float>(node.maxX[lane], node.maxY[lane], node.maxZ[lane]));
+        const float a = boxArea(c), g = boxArea(unite(c, b)) - a;
+        if (g < growth || (g == growth && a < area)) {
+          pick = lane;
+          growth = g;
+          area = a;
+        }
+      }
+      if (pick < 0) pick = 0;  // every lane's area overflowed: any lane bounds the new box as well
+      const std::uint32_t slot = 8 * n + std::uint32_t(pick), ref = node.child[pick];
+      if (!Bvh8Node::isLeaf(ref)) {
+        n = ref;
+        if (depth + 1 > kMaxInsertDepth) break;
+        continue;
+      }
+      if (depth + 1 > kMaxInsertDepth) break;
+      // The leaf lane becomes a node over that leaf and the new one.
+      const std::uint32_t m = newNode(slot);
+      setLeafLane(8 * m, ref);
+      setLeafLane(8 * m + 1, leaf);
+      bvh_.nodes[n].child[pick] = m;
+      writeLane(slot, nodeUnion(m));
+      refitAncestors(n);
+      return true;
+    }
+  } catch (const std::bad_alloc&) {
+  }
+  clear();
+  return false;
 }
 
 template <class T>

@@ -2,8 +2,9 @@
 // The scene's tree for rays: the mesh raycast's 8-wide BVH (bvh/build.h) and front-to-back walk (bvh/traverse.h)
 // over the scene's bounded instance boxes, built when the scene's tree is rebuilt top down. Its float child boxes
 // are tested 8 at a time (one AVX2 test where the CPU has it), where the dynamic binary tree (scene/aabb_tree.h)
-// tests two double boxes a node; a moved instance refits its leaf and the leaf's ancestors, a removed one empties its
-// lane. Instances added since the last rebuild leave it stale (the scene then walks the binary tree).
+// tests two double boxes a node. An added instance takes an empty lane on the path of least area growth (a leaf lane
+// there becomes a node over both), a moved one refits its leaf's lane and the ancestors', a removed one empties its
+// lane; a rebuild builds it again top down.
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +23,8 @@ template <class T> class SceneRayTree {
   // range, whose boxes the float slab tests cannot bound, or there are more boxes than leaf references can number
   // (2^28). May throw std::bad_alloc (the tree is then cleared).
   bool build(const std::vector<std::uint32_t>& instances, const std::vector<Bounds3<T>>& boxes);
+  // The tree of no instances, ready (as constructed); clear() leaves no tree (not ready) until the next build.
+  void reset() noexcept;
   void clear() noexcept;
   bool ready() const noexcept { return ready_; }
   // An instance's new box: its leaf's lane and every ancestor's lane become the unions again. Returns whether the
@@ -30,6 +33,10 @@ template <class T> class SceneRayTree {
   // An instance removed, whose index the instance numbered `moved` takes (the scene's last one; moved == instance
   // when it was the last): its lane is emptied and the ancestors' lanes refit, and the moved one keeps its leaf.
   void remove(std::uint32_t instance, std::uint32_t moved) noexcept;
+  // An instance added with its box. Returns whether the tree is ready afterwards: a box beyond float's range, a
+  // path deeper than the walk's stack allows (kMaxInsertDepth) or no memory clears it (rays then walk the binary
+  // tree until the next build).
+  bool insert(std::uint32_t instance, const Bounds3<T>& box) noexcept;
   // Walks the leaves the ray o + t d (t in [0, limit]) enters, nearest first, calling visit on each of their
   // instances (in no particular order: the callers' answers do not depend on it). False when the ray cannot be
   // walked in float (an origin beyond float's range): the caller walks the binary tree instead.
@@ -37,6 +44,11 @@ template <class T> class SceneRayTree {
 
  private:
   static constexpr std::uint32_t kNone = 0xffffffffu;
+  // Nodes on an inserted leaf's path at most: the depth the walk's fixed stack is sized for (bvh/traverse.h,
+  // kBvhStackSize: 7 entries a level). Insertions in sorted order can otherwise chain nodes.
+  static constexpr int kMaxInsertDepth = 60;
+  std::uint32_t newNode(std::uint32_t parentSlot);
+  void setLeafLane(std::uint32_t slot, std::uint32_t leafRef);
   void writeLane(std::uint32_t slot, const Bounds3<float>& box) noexcept;
   void refitAncestors(std::uint32_t node) noexcept;
   Bounds3<float> nodeUnion(std::uint32_t node) const noexcept;
@@ -48,7 +60,7 @@ template <class T> class SceneRayTree {
   std::vector<std::uint32_t> positionOf_;   // instance index -> position (kNone: not in the tree)
   std::vector<std::uint32_t> leafSlot_;     // position -> node * 8 + lane of the leaf holding it (kNone: root leaf)
   std::vector<std::uint32_t> parentSlot_;   // node -> parent node * 8 + lane (kNone: the root)
-  bool ready_ = false;
+  bool ready_ = true;
 };
 
 }  // namespace gq::detail

@@ -122,8 +122,13 @@ template <class T> struct Scene<T>::Impl {
   std::unordered_map<InstanceId, std::uint32_t> indexOf;
   std::vector<std::uint32_t> unbounded;  // instances whose box has no finite area (planes)
   AabbTree<T> tree;
-  // The bounded instances in an 8-wide tree for rays, built with each top-down rebuild (scene/ray_tree.h).
+  // The bounded instances in an 8-wide tree for rays: instances inserted as they are added, the whole built again
+  // with each top-down rebuild (scene/ray_tree.h).
   detail::SceneRayTree<T> rayTree;
+  // Adds since the ray tree was last built: when the tree has been left (an insertion deeper than its walk allows,
+  // as instances added in sorted order make) and these reach an eighth of the instances (at least 64), the add builds
+  // it again: an amortized O(log n) an add.
+  std::size_t addsSinceRayTree = 0;
   std::uint64_t rebuilds = 0;
 
   static bool isBounded(const Bounds3<T>& b) { return std::isfinite(detail::boxArea(b)); }
@@ -175,6 +180,7 @@ template <class T> struct Scene<T>::Impl {
   // Builds the ray tree over the bounded instances (after the binary tree's rebuild); without memory it stays
   // cleared and rays walk the binary tree.
   void buildRayTree() noexcept {
+    addsSinceRayTree = 0;
     try {
       std::vector<std::uint32_t> bounded;
       std::vector<Bounds3<T>> boxes;
@@ -317,7 +323,9 @@ Status Scene<T>::add(InstanceId id, const Shape<T>& shape, const Transform<T>& p
   } catch (const std::bad_alloc&) {
     return outOfMemory();
   }
-  m.rayTree.clear();  // stale until the next rebuild
+  if (m.instances.back().leaf != AabbTree<T>::kNull) (void)m.rayTree.insert(std::uint32_t(m.instances.size() - 1), box);
+  ++m.addsSinceRayTree;
+  if (!m.rayTree.ready() && m.addsSinceRayTree >= std::max<std::size_t>(64, m.instances.size() / 8)) m.buildRayTree();
   return {};
 }
 
@@ -403,7 +411,7 @@ template <class T> void Scene<T>::clear() noexcept {
   impl_->indexOf.clear();
   impl_->unbounded.clear();
   impl_->tree.clear();
-  impl_->rayTree.clear();
+  impl_->rayTree.reset();
 }
 
 // ---- inspection -------------------------------------------------------------------------------------------------
