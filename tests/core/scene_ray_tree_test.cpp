@@ -65,6 +65,9 @@ void expectVisitsEveryBoxEntered(const detail::SceneRayTree<T>& tree, const std:
   std::vector<std::uint32_t> visited = c.visited;
   std::sort(visited.begin(), visited.end());
   EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end()) << "an instance visited twice";
+  for (std::uint32_t v : visited) {  // only live instances (a removed one's number may belong to another)
+    EXPECT_TRUE(std::find(instances.begin(), instances.end(), v) != instances.end()) << "visited " << v;
+  }
   for (std::size_t j = 0; j < instances.size(); ++j) {
     if (entersExactly(o, d, boxes[j], limit)) {
       EXPECT_TRUE(std::binary_search(visited.begin(), visited.end(), instances[j])) << "missed " << instances[j];
@@ -175,6 +178,29 @@ TYPED_TEST(SceneRayTreeTest, InsertionsFromEmptyAndIntoEmptiedLanesVisitEveryBox
     ASSERT_TRUE(tree.insert(i, boxes.back()));
   }
   expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 300);
+  // Inserted instances refit their own leaves (including those moved under a node an insertion made).
+  for (std::size_t j = 0; j < boxes.size(); j += 3) {
+    boxes[j] = randomBox<T>(rng, 14);
+    ASSERT_TRUE(tree.refit(instances[j], boxes[j]));
+  }
+  expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 200);
+  // Everything removed, then inserted again (a root node with every lane emptied takes them).
+  while (!instances.empty()) removeAsTheScene(tree, instances, boxes, instances.size() - 1);
+  Collect<T> none{{}, T(100)};
+  ASSERT_TRUE(tree.walkRay(Vec3<T>::Zero(), Vec3<T>::UnitX(), T(100), &Collect<T>::call, &none));
+  EXPECT_TRUE(none.visited.empty());
+  for (std::uint32_t i = 0; i < 50; ++i) {
+    instances.push_back(i);
+    boxes.push_back(randomBox<T>(rng, 12));
+    ASSERT_TRUE(tree.insert(i, boxes.back()));
+  }
+  expectVisitsEveryBoxEntered(tree, instances, boxes, rng, 200);
+  // A cleared tree takes no insertion until reset or built.
+  tree.clear();
+  EXPECT_FALSE(tree.insert(50, randomBox<T>(rng, 12)));
+  tree.reset();
+  EXPECT_TRUE(tree.ready());
+  EXPECT_TRUE(tree.insert(0, boxes[0]));
 }
 
 TYPED_TEST(SceneRayTreeTest, InsertionsInSortedOrderStayWithinTheWalkStackOrLeaveTheTree) {
@@ -183,27 +209,28 @@ TYPED_TEST(SceneRayTreeTest, InsertionsInSortedOrderStayWithinTheWalkStackOrLeav
   detail::SceneRayTree<T> tree;
   std::vector<std::uint32_t> instances;
   std::vector<Bounds3<T>> boxes;
-  // Boxes along x in increasing order: each lands in the lane of the last, chaining nodes.
+  // Boxes along x in increasing order: each lands in the lane of the last, chaining nodes. The ray along x enters
+  // every box, so its walk holds the most stack entries the chain makes (7 a level).
   bool ready = true;
+  std::uint32_t inserted = 0;
   for (std::uint32_t i = 0; i < 3000 && ready; ++i) {
     instances.push_back(i);
     const T x = T(i);
     boxes.push_back(Bounds3<T>{Vec3<T>(x, T(0), T(0)), Vec3<T>(x + T(0.5), T(1), T(1))});
     ready = tree.insert(i, boxes.back());
     EXPECT_EQ(ready, tree.ready());
-  }
-  if (ready) {
-    for (int r = 0; r < 50; ++r) {
+    if (ready && (++inserted % 25 == 0 || i + 1 == 3000)) {
       const Vec3<T> o(T(-1), T(rng.uniform(0, 1)), T(rng.uniform(0, 1)));
       expectVisitsEveryBoxEntered(tree, instances, boxes, o, Vec3<T>(Vec3<T>::UnitX()), T(4000));
     }
-  } else {
-    Collect<T> c{{}, T(10)};
-    EXPECT_FALSE(tree.walkRay(Vec3<T>::Zero(), Vec3<T>::UnitX(), T(10), &Collect<T>::call, &c));
-    ASSERT_TRUE(tree.build(instances, boxes));  // a build starts it again
-    expectVisitsEveryBoxEntered(tree, instances, boxes, Vec3<T>(T(-1), T(0.5), T(0.5)), Vec3<T>(Vec3<T>::UnitX()),
-                                T(4000));
   }
+  EXPECT_FALSE(ready);  // the chain reached the depth limit
+  EXPECT_GT(inserted, 300u);
+  Collect<T> c{{}, T(10)};
+  EXPECT_FALSE(tree.walkRay(Vec3<T>::Zero(), Vec3<T>::UnitX(), T(10), &Collect<T>::call, &c));
+  ASSERT_TRUE(tree.build(instances, boxes));  // a build starts it again
+  expectVisitsEveryBoxEntered(tree, instances, boxes, Vec3<T>(T(-1), T(0.5), T(0.5)), Vec3<T>(Vec3<T>::UnitX()),
+                              T(4000));
 }
 
 TYPED_TEST(SceneRayTreeTest, OneInstanceIsTheRootLeafAndRefitsAndLeaves) {

@@ -133,7 +133,7 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // near distance comes no later than the ray's own entry: conservative as it is.
 #ifdef GQ_SSE42
   // The loop below, 3 lanes at once (a fourth lane, read from nearInv[0], is computed and dropped).
-  r.nearInv[0] = 0.0f;
+  r.nearInv[0] = 1.0f;  // finite: the dropped lane's products raise no invalid-operation flag
   const __m128 inv = _mm_loadu_ps(r.negInvDir);
   const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad),
                                         _mm_set1_ps(std::numeric_limits<float>::infinity()), small);

@@ -30,6 +30,11 @@ Bounds3<float> emptyLaneBox() {
   return Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf), Vec3<float>::Constant(inf));
 }
 
+// Capacity for one more element, grown by doubling (insertions one at a time stay amortized O(1) in copies).
+template <class V> void roomForOneMore(V& v) {
+  if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(16, 2 * v.size()));
+}
+
 Bounds3<float> unite(const Bounds3<float>& a, const Bounds3<float>& b) {
   return Bounds3<float>::fromMinMax(a.min.cwiseMin(b.min), a.max.cwiseMax(b.max));
 }
@@ -148,7 +153,8 @@ template <class T> Bounds3<float> SceneRayTree<T>::nodeUnion(std::uint32_t n) co
   Bounds3<float> u = emptyLaneBox();
   bool any = false;
   for (int lane = 0; lane < 8; ++lane) {
-    if (node.child[lane] == Bvh8Node::kEmpty) continue;
+    // Empty lanes, and lanes over subtrees that removals emptied (their +inf boxes), bound nothing.
+    if (node.child[lane] == Bvh8Node::kEmpty || node.minX[lane] == std::numeric_limits<float>::infinity()) continue;
     const Bounds3<float> b = Bounds3<float>::fromMinMax(Vec3<float>(node.minX[lane], node.minY[lane], node.minZ[lane]),
                                                         Vec3<float>(node.maxX[lane], node.maxY[lane], node.maxZ[lane]));
     u = any ? unite(u, b) : b;
@@ -226,11 +232,11 @@ template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bo
   try {
     // Everything that allocates, first.
     const auto k = std::uint32_t(instanceOf_.size());
-    instanceOf_.reserve(k + 1);
-    boxes_.reserve(k + 1);
-    leafSlot_.reserve(k + 1);
-    bvh_.nodes.reserve(bvh_.nodes.size() + 1);
-    parentSlot_.reserve(bvh_.nodes.size() + 1);
+    roomForOneMore(instanceOf_);
+    roomForOneMore(boxes_);
+    roomForOneMore(leafSlot_);
+    roomForOneMore(bvh_.nodes);  // a node at most: its references stay valid below
+    roomForOneMore(parentSlot_);
     if (positionOf_.size() <= instance) positionOf_.resize(std::size_t(instance) + 1, kNone);
     instanceOf_.push_back(instance);
     boxes_.push_back(roundOutward(box.min, box.max));
@@ -242,7 +248,7 @@ template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bo
       bvh_.rootChild = leaf;
       return true;
     }
-    if (Bvh8Node::isLeaf(root)) {  // a root node over the root leaf and the new one
+    if (Bvh8Node::isLeaf(root)) {  // a root node over the root leaf and the inserted one
       const std::uint32_t n = newNode(kNone);
       setLeafLane(8 * n, root);
       setLeafLane(8 * n + 1, leaf);
@@ -271,7 +277,9 @@ template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bo
           area = a;
         }
       }
-      if (pick < 0) pick = 0;  // every lane's area overflowed: any lane bounds the new box as well
+      // No lane compared (areas overflowed, or lanes over emptied subtrees, whose +inf boxes give NaN): any lane
+      // will do, the refit below making its box the union.
+      if (pick < 0) pick = 0;
       const std::uint32_t slot = 8 * n + std::uint32_t(pick), ref = node.child[pick];
       if (!Bvh8Node::isLeaf(ref)) {
         n = ref;
@@ -279,7 +287,7 @@ template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bo
         continue;
       }
       if (depth + 1 > kMaxInsertDepth) break;
-      // The leaf lane becomes a node over that leaf and the new one.
+      // The leaf lane becomes a node over that leaf and the inserted one.
       const std::uint32_t m = newNode(slot);
       setLeafLane(8 * m, ref);
       setLeafLane(8 * m + 1, leaf);

@@ -27,6 +27,8 @@ template <class T> class SceneRayTree {
   void reset() noexcept;
   void clear() noexcept;
   bool ready() const noexcept { return ready_; }
+  // Leaf positions in use, removed instances' included (a build keeps only live ones).
+  std::size_t positions() const noexcept { return instanceOf_.size(); }
   // An instance's new box: its leaf's lane and every ancestor's lane become the unions again. Returns whether the
   // tree is ready afterwards: a box beyond float's range clears it; an instance not in it changes nothing.
   bool refit(std::uint32_t instance, const Bounds3<T>& box) noexcept;
@@ -34,8 +36,8 @@ template <class T> class SceneRayTree {
   // when it was the last): its lane is emptied and the ancestors' lanes refit, and the moved one keeps its leaf.
   void remove(std::uint32_t instance, std::uint32_t moved) noexcept;
   // An instance added with its box. Returns whether the tree is ready afterwards: a box beyond float's range, a
-  // path deeper than the walk's stack allows (kMaxInsertDepth) or no memory clears it (rays then walk the binary
-  // tree until the next build).
+  // path deeper than the walk's stack allows (kMaxInsertDepth), 2^28 positions (removals do not free theirs until
+  // the next build) or no memory clears it (rays then walk the binary tree until the next build).
   bool insert(std::uint32_t instance, const Bounds3<T>& box) noexcept;
   // Walks the leaves the ray o + t d (t in [0, limit]) enters, nearest first, calling visit on each of their
   // instances (in no particular order: the callers' answers do not depend on it). False when the ray cannot be

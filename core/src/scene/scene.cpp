@@ -127,7 +127,8 @@ template <class T> struct Scene<T>::Impl {
   detail::SceneRayTree<T> rayTree;
   // Adds since the ray tree was last built: when the tree has been left (an insertion deeper than its walk allows,
   // as instances added in sorted order make) and these reach an eighth of the instances (at least 64), the add builds
-  // it again: an amortized O(log n) an add.
+  // it again, as it does when removed instances' positions outnumber the live ones (adds and removes at a steady
+  // size): an amortized O(log n) an add.
   std::size_t addsSinceRayTree = 0;
   std::uint64_t rebuilds = 0;
 
@@ -325,7 +326,10 @@ Status Scene<T>::add(InstanceId id, const Shape<T>& shape, const Transform<T>& p
   }
   if (m.instances.back().leaf != AabbTree<T>::kNull) (void)m.rayTree.insert(std::uint32_t(m.instances.size() - 1), box);
   ++m.addsSinceRayTree;
-  if (!m.rayTree.ready() && m.addsSinceRayTree >= std::max<std::size_t>(64, m.instances.size() / 8)) m.buildRayTree();
+  const std::size_t n = m.instances.size();
+  if (m.rayTree.ready() ? m.rayTree.positions() > 2 * n + 64 : m.addsSinceRayTree >= std::max<std::size_t>(64, n / 8)) {
+    m.buildRayTree();
+  }
   return {};
 }
 
@@ -461,11 +465,11 @@ template <class T> Status checkRay(const Vec3<T>& origin, const Vec3<T>& unitDir
   return detail::checkMaxDist(maxDist);
 }
 
-// The length of an instance's raycast once the hits kept end at distance d: one step beyond d (within maxDist), so
-// that a hit at exactly d (a tie the smaller id may win) is found, and a ray starting on a surface (d = 0) still has a
-// length.
+// The length of an instance's raycast once the hits kept end at distance d: a few units beyond d (within maxDist), so
+// that a hit at exactly d (a tie the smaller id may win) is found by tests that compare t scaled by a determinant
+// (heightfield triangles), and a ray starting on a surface (d = 0) still has a length.
 template <class T> T reachOf(T d, T maxDist) {
-  return std::min(std::nextafter(d, std::numeric_limits<T>::infinity()), maxDist);
+  return std::min(d * (T(1) + T(16) * std::numeric_limits<T>::epsilon()) + std::numeric_limits<T>::min(), maxDist);
 }
 
 // (distance, id) order; ties in both keep the earlier.
@@ -488,14 +492,17 @@ template <class T> struct SceneRayWalk {
 
   // The hits written to `hits` (at most maxHits; 0 when filtered out or left out), or -1 when the walk must stop.
   // `reach`: the distance beyond which the caller keeps no hit (the early-out fed to the instance's raycast), at
-  // most maxDist. Every kernel but a custom shape's computes its hits whatever the ray's length and keeps those at or
-  // before it, so the hits kept are the ones a raycast to maxDist returns; a custom shape's callback gets maxDist, as
-  // in the loop over all instances.
+  // most maxDist. A kernel's closest hit does not depend on the ray's length once the length reaches it, so the hits
+  // kept are the ones a raycast to maxDist returns. Not so for a custom shape's callback, for an any-hit raycast (the
+  // first hit found within the length) or for several hits a mesh (ties at its maxHits-th hit kept by the order
+  // found): those get maxDist, as in the loop over all instances.
   template <class Instance>
   int cast(const Instance& inst, std::uint32_t maxHits, RaycastHit<T>* hits, T reach) {
     if (!passes(filter, inst.mask, inst.id)) return 0;
     std::uint32_t n = 0;
-    const T length = inst.shape.geometry().type() == GeometryType::Custom ? maxDist : reach;
+    const bool exact = inst.shape.geometry().type() == GeometryType::Custom || hitFlags.has(HitFlag::AnyHit) ||
+                       hitFlags.has(HitFlag::MeshMultiple);
+    const T length = exact ? maxDist : reach;
     const Status s = raycast(origin, unitDir, inst.shape, inst.pose, length, hitFlags, maxHits, hits, n);
     if (s.ok()) return int(n);
     if (isInputError(s)) {
