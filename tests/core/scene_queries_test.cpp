@@ -377,6 +377,40 @@ TYPED_TEST(SceneQueries, TiesAtTheClosestDistanceGoToTheSmallerIdWhicheverIsAske
   }
 }
 
+// Two copies of a bumpy heightfield at one pose: every ray hits both at the same distance, found by triangle tests
+// that compare t scaled by their determinant; the smaller id wins whichever copy the walk asks first.
+TYPED_TEST(SceneQueries, HeightfieldTiesGoToTheSmallerIdWhicheverIsAskedFirst) {
+  using T = TypeParam;
+  Rng rng(54);
+  HeightFieldDesc<T> desc;
+  desc.rows = desc.columns = 9;
+  for (std::uint32_t i = 0; i < desc.rows * desc.columns; ++i) desc.heights.push_back(T(rng.uniform(-0.5, 0.5)));
+  std::shared_ptr<const HeightField<T>> field;
+  ASSERT_TRUE(cookHeightField(desc, field).ok());
+  const HeightFieldGeometry<T> hf(field, T(1), T(1.25), T(1.25));
+  for (const bool smallerFirst : {true, false}) {
+    SCOPED_TRACE(smallerFirst);
+    World<T> w;
+    w.add(smallerFirst ? 3 : 8, hf, Transform<T>());
+    w.add(smallerFirst ? 8 : 3, hf, Transform<T>());
+    int hits = 0;
+    for (int r = 0; r < 400; ++r) {
+      const Vec3<T> o(T(rng.uniform(0, 10)), T(rng.uniform(1, 4)), T(rng.uniform(0, 10)));
+      const Vec3<T> target(T(rng.uniform(0, 10)), T(rng.uniform(-0.5, 0.5)), T(rng.uniform(0, 10)));
+      const Vec3<T> d = (target - o).normalized();
+      SceneRaycastHit<T> hit, ref;
+      bool has = false;
+      ASSERT_TRUE(w.scene.raycastClosest(o, d, T(30), hit, has).ok());
+      ASSERT_EQ(has, scenetest::bruteClosestRay(w, o, d, T(30), kDefaultHitFlags, ref, {}));
+      if (!has) continue;
+      ++hits;
+      EXPECT_EQ(hit.id, 3u);
+      EXPECT_EQ(hit.hit.distance, ref.hit.distance);
+    }
+    EXPECT_GT(hits, 300);
+  }
+}
+
 TYPED_TEST(SceneQueries, PlanesAreTestedByEveryQuery) {
   using T = TypeParam;
   Rng rng(49);
