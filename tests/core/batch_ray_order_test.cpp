@@ -279,6 +279,7 @@ TYPED_TEST(BatchRayOrder, LargeBatchesOfColumnsAndNormalizedDirectionsEqualTheIn
   struct Columns {
     std::vector<std::uint8_t> hit = std::vector<std::uint8_t>(kManyRays, 9);
     std::vector<T> distance = std::vector<T>(kManyRays, T(-1));
+    std::vector<T> position = std::vector<T>(3 * kManyRays, T(-1));
     std::vector<T> normal = std::vector<T>(3 * kManyRays, T(-1));
     std::vector<std::int64_t> face = std::vector<std::int64_t>(kManyRays, -7);
     std::vector<Status> statuses = std::vector<Status>(kManyRays);
@@ -287,6 +288,7 @@ TYPED_TEST(BatchRayOrder, LargeBatchesOfColumnsAndNormalizedDirectionsEqualTheIn
     RayHitColumns<T> out;
     out.hit = c.hit.data();
     out.distance = c.distance.data();
+    out.position = c.position.data();
     out.normal = c.normal.data();
     out.faceIndex = c.face.data();
     return raycastBatch(batch, mesh, Transform<T>(), out, c.statuses.data(), settings);
@@ -303,6 +305,7 @@ TYPED_TEST(BatchRayOrder, LargeBatchesOfColumnsAndNormalizedDirectionsEqualTheIn
     EXPECT_EQ(s.index(), se.index());
     EXPECT_EQ(c.hit, expected.hit);
     EXPECT_EQ(std::memcmp(c.distance.data(), expected.distance.data(), kManyRays * sizeof(T)), 0);
+    EXPECT_EQ(std::memcmp(c.position.data(), expected.position.data(), 3 * kManyRays * sizeof(T)), 0);
     EXPECT_EQ(std::memcmp(c.normal.data(), expected.normal.data(), 3 * kManyRays * sizeof(T)), 0);
     EXPECT_EQ(c.face, expected.face);
     for (std::size_t i = 0; i < kManyRays; ++i) ASSERT_EQ(c.statuses[i].code, expected.statuses[i].code) << i;

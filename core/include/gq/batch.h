@@ -64,8 +64,8 @@ class BatchScratchAccess;
 }
 
 // Scratch memory kept between batch calls by their caller: a mesh ray batch cast in coherent order (below) that is
-// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (88-100
-// bytes a ray of a block in double, 52-64 in float: see BatchSettings::coherentRayOrder). A caller casting batch
+// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (68-84
+// bytes a ray of a block in double, 36-52 in float: see BatchSettings::coherentRayOrder). A caller casting batch
 // after batch on one thread keeps one; one batch call at a time may use it. The memory is held until release() or destruction.
 class BatchScratch {
  public:
@@ -92,9 +92,9 @@ struct BatchSettings {
   // by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not apply to
   // them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that are
   // already coherent). On more than one worker the batch keeps the input order, which was measured as fast there
-  // without the scratch (docs/performance.md). Memory: 84 bytes (double; 48 in float) a ray of the largest block and
-  // 16 bytes a ray of its largest bucket, each array in whole 2 MB pages: for 1M rays about 88 MB (double) when they
-  // spread over the buckets, at most 100 MB (64 MB in float) when they all fall in one; freed on return unless
+  // without the scratch (docs/performance.md). Memory: 68 bytes (double; 36 in float) a ray of the largest block and
+  // 16 bytes a ray of its largest bucket, each array in whole 2 MB pages: for 1M rays about 72 MB (double) when they
+  // spread over the buckets, at most 84 MB (52 MB in float) when they all fall in one; freed on return unless
   // `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own

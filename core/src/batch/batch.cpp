@@ -243,19 +243,28 @@ template <class E> class ScratchArray {
 };
 
 // One worker's arrays for castBlockInKeyOrder, kept from block to block (their first use costs page faults), per ray
-// of a block: its key, then its slot (4 bytes), and a slot holding its copy, then its hit (80 bytes in double, 44 in
-// float); 16 bytes a ray of the largest bucket for its sort.
+// of a block: its key, then its slot (4 bytes), and a slot holding its copy, then its hit (one 64-byte cache line in
+// double, 32 bytes in float); 16 bytes a ray of the largest bucket for its sort.
 template <class T> struct KeyOrderScratch {
   struct Ray {  // a ray of the block, copied in coarse key order
     Vec3<T> origin, dir;
     std::uint32_t key;
   };
-  // A ray's copy until it is cast, then its hit: the single raycast's output (flags 0: no hit; a hit has at least
-  // FaceIndex), or kByIndex.
-  union Slot {
+  // The single raycast's output but its position, which the copy-out computes from the input ray as the raycast does
+  // (origin + dir * distance): so a slot fits a cache line (flags 0: no hit; a hit has at least FaceIndex; or
+  // kByIndex).
+  struct Hit {
+    Vec3<T> normal;
+    T distance;
+    T u, v;
+    std::uint32_t faceIndex;
+    HitFlags flags;
+  };
+  // A ray's copy until it is cast, then its hit.
+  union alignas(sizeof(T) == 8 ? 64 : 32) Slot {
     Slot() {}  // no member alive: each is begun by placement new
     Ray ray;
-    RaycastHit<T> hit;
+    Hit hit;
   };
   static constexpr HitFlags kByIndex = HitFlags(std::uint16_t(0xffff));  // a ray that takes the per-index path
   static constexpr std::uint32_t kAnswered = 0xffffffffu;  // a ray answered by the key pass (rank)
@@ -412,32 +421,40 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
       const std::size_t at = sorted[j] & 0xffffffffu;
       const Ray r = bucket[at].ray;
-      RaycastHit<T>* hit = new (&bucket[at].hit) RaycastHit<T>;  // the copy is not read again
+      RaycastHit<T> hit;
       Vec3<T> normalized;
       const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
       if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
-        (void)items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u), hit);
+        (void)items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u), &hit);
       } else {
-        hit->flags = Scratch::kByIndex;
+        hit.flags = Scratch::kByIndex;
       }
+      new (&bucket[at].hit) typename Scratch::Hit{hit.normal, hit.distance, hit.u, hit.v, hit.faceIndex, hit.flags};
     }
   }
-  // The outputs in input order, each hit read kHitAhead rays ahead (two cache lines).
+  // The outputs in input order, each hit read kHitAhead rays ahead (one cache line).
   constexpr std::size_t kHitAhead = 24;
   for (std::size_t j = 0; j < size; ++j) {
-    if (j + kHitAhead < size && rank[j + kHitAhead] != Scratch::kAnswered) {
-      const RaycastHit<T>* ahead = &slots[rank[j + kHitAhead]].hit;
-      prefetchRead(ahead);
-      prefetchRead(reinterpret_cast<const unsigned char*>(ahead + 1) - 1);
-    }
+    if (j + kHitAhead < size && rank[j + kHitAhead] != Scratch::kAnswered) prefetchRead(&slots[rank[j + kHitAhead]]);
     const std::uint32_t place = rank[j];
     if (place == Scratch::kAnswered) continue;
-    const RaycastHit<T>& h = slots[place].hit;
+    const typename Scratch::Hit& c = slots[place].hit;
     const std::size_t i = begin + j;
-    if (h.flags == Scratch::kByIndex) {
+    if (c.flags == Scratch::kByIndex) {
       failed += items(i) ? 0 : 1;
       continue;
     }
+    RaycastHit<T> h;
+    if (c.flags.has(HitFlag::Position)) {  // the mesh raycast's position: ray.origin + ray.dir * t
+      Vec3<T> normalized;
+      h.position = rays.origins[i] + *directionOf(rays, rays.unitDirs[i], normalized) * c.distance;
+    }
+    h.normal = c.normal;
+    h.distance = c.distance;
+    h.flags = c.flags;
+    h.faceIndex = c.faceIndex;
+    h.u = c.u;
+    h.v = c.v;
     items.out.store(i, h.flags.bits() != 0 ? 1u : 0u, h);
     failed += record(items.statuses, i, Status()) ? 0 : 1;
   }

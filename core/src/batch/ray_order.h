@@ -15,8 +15,8 @@ struct RayOrderSettings {
   // Batches smaller than this keep the input order: their rays are too sparse for neighbours in key order to share
   // nodes, and the keys, sorts and copies would be lost.
   std::size_t minRays = 32768;
-  // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 84 bytes a ray in double,
-  // 48 in float; each array at least one 2 MB page). The whole block is cast in key order: the larger the block, the
+  // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 68 bytes a ray in double,
+  // 36 in float; each array at least one 2 MB page). The whole block is cast in key order: the larger the block, the
   // nearer neighbours in key order are (docs/performance.md: one 1M block against 128k blocks).
   std::size_t blockRays = std::size_t(1) << 20;
   // A block's rays are first copied into buckets of this many top bits of the key (a histogram and 1,024 write
