@@ -35,8 +35,10 @@ template <class V> void roomForOneMore(V& v) {
   if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(16, 2 * v.size()));
 }
 
-Bounds3<float> unite(const Bounds3<float>& a, const Bounds3<float>& b) {
-  return Bounds3<float>::fromMinMax(a.min.cwiseMin(b.min), a.max.cwiseMax(b.max));
+// The box of a node's lane.
+Bounds3<float> laneBox(const Bvh8Node& node, int lane) {
+  return Bounds3<float>::fromMinMax(Vec3<float>(node.minX[lane], node.minY[lane], node.minZ[lane]),
+                                    Vec3<float>(node.maxX[lane], node.maxY[lane], node.maxZ[lane]));
 }
 
 // The walk for one node test (Lanes), the leaves' instances handed to visit.
@@ -99,8 +101,7 @@ bool SceneRayTree<T>::build(const std::vector<std::uint32_t>& instances, const s
         const std::uint32_t ref = bvh_.nodes[n].child[lane];
         if (ref == Bvh8Node::kEmpty) continue;
         if (Bvh8Node::isLeaf(ref)) {
-          const std::uint32_t first = Bvh8Node::leafFirst(ref);
-          for (std::uint32_t k = first; k < first + Bvh8Node::leafCount(ref); ++k) leafSlot_[k] = 8 * n + lane;
+          noteLeafSlot(8 * n + lane, ref);
         } else {
           parentSlot_[ref] = 8 * n + lane;
         }
@@ -144,7 +145,7 @@ template <class T> void SceneRayTree<T>::writeLane(std::uint32_t slot, const Bou
 template <class T> Bounds3<float> SceneRayTree<T>::leafUnion(std::uint32_t ref) const noexcept {
   const std::uint32_t first = Bvh8Node::leafFirst(ref);
   Bounds3<float> u = boxes_[first];
-  for (std::uint32_t k = first + 1; k < first + Bvh8Node::leafCount(ref); ++k) u = unite(u, boxes_[k]);
+  for (std::uint32_t k = first + 1; k < first + Bvh8Node::leafCount(ref); ++k) u = boxUnion(u, boxes_[k]);
   return u;
 }
 
@@ -155,9 +156,8 @@ template <class T> Bounds3<float> SceneRayTree<T>::nodeUnion(std::uint32_t n) co
   for (int lane = 0; lane < 8; ++lane) {
     // Empty lanes, and lanes over subtrees that removals emptied (their +inf boxes), bound nothing.
     if (node.child[lane] == Bvh8Node::kEmpty || node.minX[lane] == std::numeric_limits<float>::infinity()) continue;
-    const Bounds3<float> b = Bounds3<float>::fromMinMax(Vec3<float>(node.minX[lane], node.minY[lane], node.minZ[lane]),
-                                                        Vec3<float>(node.maxX[lane], node.maxY[lane], node.maxZ[lane]));
-    u = any ? unite(u, b) : b;
+    const Bounds3<float> b = laneBox(node, lane);
+    u = any ? boxUnion(u, b) : b;
     any = true;
   }
   return u;
@@ -215,12 +215,17 @@ template <class T> std::uint32_t SceneRayTree<T>::newNode(std::uint32_t parentSl
   return n;
 }
 
+// The leaf leafRef's positions hang at lane `slot`.
+template <class T> void SceneRayTree<T>::noteLeafSlot(std::uint32_t slot, std::uint32_t leafRef) noexcept {
+  const std::uint32_t first = Bvh8Node::leafFirst(leafRef);
+  for (std::uint32_t k = first; k < first + Bvh8Node::leafCount(leafRef); ++k) leafSlot_[k] = slot;
+}
+
 // Lane `slot` holds the leaf leafRef: its reference, its box, and where its positions hang.
 template <class T> void SceneRayTree<T>::setLeafLane(std::uint32_t slot, std::uint32_t leafRef) {
   bvh_.nodes[slot / 8].child[slot % 8] = leafRef;
   writeLane(slot, leafUnion(leafRef));
-  const std::uint32_t first = Bvh8Node::leafFirst(leafRef);
-  for (std::uint32_t k = first; k < first + Bvh8Node::leafCount(leafRef); ++k) leafSlot_[k] = slot;
+  noteLeafSlot(slot, leafRef);
 }
 
 template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bounds3<T>& box) noexcept {
@@ -267,10 +272,8 @@ template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bo
           refitAncestors(n);
           return true;
         }
-        const Bounds3<float> c = Bounds3<float>::fromMinMax(
-            Vec3<float>(node.minX[lane], node.minY[lane], node.minZ[lane]),
-            Vec3<float>(node.maxX[lane], node.maxY[lane], node.maxZ[lane]));
-        const float a = boxArea(c), g = boxArea(unite(c, b)) - a;
+        const Bounds3<float> c = laneBox(node, lane);
+        const float a = boxArea(c), g = boxArea(boxUnion(c, b)) - a;
         if (g < growth || (g == growth && a < area)) {
           pick = lane;
           growth = g;
@@ -281,12 +284,11 @@ template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bo
       // will do, the refit below making its box the union.
       if (pick < 0) pick = 0;
       const std::uint32_t slot = 8 * n + std::uint32_t(pick), ref = node.child[pick];
+      if (depth + 1 > kMaxInsertDepth) break;  // a node below this one would be deeper than the walk allows
       if (!Bvh8Node::isLeaf(ref)) {
         n = ref;
-        if (depth + 1 > kMaxInsertDepth) break;
         continue;
       }
-      if (depth + 1 > kMaxInsertDepth) break;
       // The leaf lane becomes a node over that leaf and the inserted one.
       const std::uint32_t m = newNode(slot);
       setLeafLane(8 * m, ref);

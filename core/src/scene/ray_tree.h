@@ -51,6 +51,7 @@ template <class T> class SceneRayTree {
   static constexpr int kMaxInsertDepth = 60;
   std::uint32_t newNode(std::uint32_t parentSlot);
   void setLeafLane(std::uint32_t slot, std::uint32_t leafRef);
+  void noteLeafSlot(std::uint32_t slot, std::uint32_t leafRef) noexcept;
   void writeLane(std::uint32_t slot, const Bounds3<float>& box) noexcept;
   void refitAncestors(std::uint32_t node) noexcept;
   Bounds3<float> nodeUnion(std::uint32_t node) const noexcept;

@@ -481,12 +481,14 @@ template <class T> bool hitBefore(T d0, InstanceId id0, T d1, InstanceId id1) {
 // and is returned; an instance that cannot answer (unsupported) is counted and left out.
 template <class T> struct SceneRayWalk {
   SceneRayWalk(const Vec3<T>& o, const Vec3<T>& d, T m, HitFlags f, const SceneFilter& fl)
-      : origin(o), unitDir(d), maxDist(m), hitFlags(f), filter(fl) {}
+      : origin(o), unitDir(d), maxDist(m), hitFlags(f), filter(fl),
+        fullLength(f.has(HitFlag::AnyHit) || f.has(HitFlag::MeshMultiple)) {}
   const Vec3<T>& origin;
   const Vec3<T>& unitDir;
   T maxDist;
   HitFlags hitFlags;
   const SceneFilter& filter;
+  bool fullLength;  // every instance's raycast runs to maxDist (see cast)
   Status failure;
   std::uint32_t skipped = 0;
 
@@ -500,9 +502,7 @@ template <class T> struct SceneRayWalk {
   int cast(const Instance& inst, std::uint32_t maxHits, RaycastHit<T>* hits, T reach) {
     if (!passes(filter, inst.mask, inst.id)) return 0;
     std::uint32_t n = 0;
-    const bool exact = inst.shape.geometry().type() == GeometryType::Custom || hitFlags.has(HitFlag::AnyHit) ||
-                       hitFlags.has(HitFlag::MeshMultiple);
-    const T length = exact ? maxDist : reach;
+    const T length = fullLength || inst.shape.geometry().type() == GeometryType::Custom ? maxDist : reach;
     const Status s = raycast(origin, unitDir, inst.shape, inst.pose, length, hitFlags, maxHits, hits, n);
     if (s.ok()) return int(n);
     if (isInputError(s)) {
