@@ -50,15 +50,15 @@ float floatAbove(long double x) {
 // The node with `box` in `lane` and the other lanes empty (as the build leaves unused lanes).
 Bvh8Node nodeWith(const Bounds3<float>& box, int lane) {
   Bvh8Node n;
-  const float inf = std::numeric_limits<float>::infinity();
   for (int i = 0; i < 8; ++i) {
     const bool used = i == lane;
-    n.minX[i] = used ? box.min.x() : inf;
-    n.minY[i] = used ? box.min.y() : inf;
-    n.minZ[i] = used ? box.min.z() : inf;
-    n.maxX[i] = used ? box.max.x() : inf;
-    n.maxY[i] = used ? box.max.y() : inf;
-    n.maxZ[i] = used ? box.max.z() : inf;
+    const Bounds3<float> b = used ? box : emptyBvhLaneBox();
+    n.minX[i] = b.min.x();
+    n.minY[i] = b.min.y();
+    n.minZ[i] = b.min.z();
+    n.maxX[i] = b.max.x();
+    n.maxY[i] = b.max.y();
+    n.maxZ[i] = b.max.z();
     n.child[i] = used ? Bvh8Node::makeLeaf(0, 1) : Bvh8Node::kEmpty;
   }
   return n;

@@ -202,6 +202,45 @@ TYPED_TEST(MeshRaycastWalks, ClosestHitIsTheLeastDistanceThenInputIndexOverAllTr
   EXPECT_GT(hits, origins.size());  // most rays hit: the comparison is not of empty answers
 }
 
+// A double ray whose origin is beyond float's range (1e39, the mesh's radius 1e38): its float slab distances are
+// infinite or NaN, so node tests may enter empty lanes (emptyBvhLaneBox); the walk skips them (a leaf reference read
+// from an empty lane would index far past the triangles) and both walks still find the closest hit of brute force.
+TEST(MeshRaycastWalks, RaysFromBeyondTheFloatRangeSkipEmptyLanesAndFindTheClosestHit) {
+  MeshData<double> m = meshtest::icosphere<double>(2);
+  for (auto& v : m.vertices) v *= 1e38;
+  const auto mesh = meshtest::cook(m.vertices, m.triangles);
+  Shape<double> shape;
+  ASSERT_TRUE(Shape<double>::make(TriangleMeshGeometry<double>(mesh), shape).ok());
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> n;
+  std::size_t hits = 0, differ = 0;
+  for (const bool baselineOnly : {false, true}) {
+    detail::setMeshRaycastBaselineOnly(baselineOnly);
+    for (int r = 0; r < 200; ++r) {
+      const Vec3<double> dir = -Vec3<double>(n(rng), n(rng), n(rng)).normalized();
+      const Vec3<double> origin = -dir * 1e39 + Vec3<double>(n(rng), n(rng), n(rng)) * 2e37;
+      const detail::WatertightRay<double> ray = detail::makeWatertightRay(origin, dir);
+      double best = std::numeric_limits<double>::infinity();
+      for (std::uint32_t c = 0; c < mesh->inputIndex.size(); ++c) {
+        const Vec3<double>* v = &mesh->triangleVertices[3 * std::size_t(c)];
+        detail::TriangleRayHit<double> h;
+        if (detail::intersectRayTriangle(ray, v[0], v[1], v[2], std::numeric_limits<double>::infinity(), true, h))
+          best = std::min(best, h.t);
+      }
+      RaycastHit<double> hit;
+      std::uint32_t count = 0;
+      ASSERT_TRUE(raycast(origin, dir, shape, Transform<double>(), std::numeric_limits<double>::infinity(),
+                          kDefaultHitFlags, 1, &hit, count).ok());
+      hits += count;
+      differ += (count == 1) != (best < std::numeric_limits<double>::infinity()) ||
+                (count == 1 && hit.distance != best);
+    }
+  }
+  detail::setMeshRaycastBaselineOnly(false);
+  EXPECT_EQ(differ, 0u);
+  EXPECT_GT(hits, 300u);  // the rays aim at the sphere: most hit
+}
+
 // The tree over the triangle boxes of an icosphere of 20,480 triangles.
 Bvh8 icosphereTree(std::vector<Bounds3<float>>& prims, std::vector<std::uint32_t>& order) {
   const MeshData<float> m = meshtest::icosphere<float>(5);

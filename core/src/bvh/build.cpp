@@ -154,12 +154,9 @@ class Builder {
     refs.fill(Node::kEmpty);
     for (int i = 0; i < n; ++i) refs[i] = buildRef(kids[i], depth + 1);
     Node& node = bvh_.nodes[nodeIndex];
-    const float inf = std::numeric_limits<float>::infinity();
     for (int i = 0; i < kWidth; ++i) {
       node.child[i] = refs[i];
-      // Empty lanes get an all-+inf box, which every slab test rejects.
-      const Bounds3<float> b = i < n ? kids[i].bounds : Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf),
-                                                                                  Vec3<float>::Constant(inf));
+      const Bounds3<float> b = i < n ? kids[i].bounds : emptyBvhLaneBox();
       node.minX[i] = b.min.x(); node.minY[i] = b.min.y(); node.minZ[i] = b.min.z();
       node.maxX[i] = b.max.x(); node.maxY[i] = b.max.y(); node.maxZ[i] = b.max.z();
     }

@@ -4,12 +4,16 @@
 // library: a cooked TriangleMesh holds it behind an opaque pointer (TriangleMesh::accel), so it can change without
 // changing the public headers.
 #include <cstdint>
+#include <limits>
 #include <vector>
+
+#include "gq/math.h"
 
 namespace gq {
 
-// W children per node. The trees built are 8-wide: 224 bytes, 32-byte aligned (one AVX load per bound plane).
-template <int W> struct alignas(W == 4 ? 64 : 32) BvhNode {
+// W children per node. The trees built are 8-wide: 224 bytes of bounds and references padded to 256, 64-byte aligned
+// (one AVX load per bound plane; a node is exactly 4 cache lines and its address a shift of its index).
+template <int W> struct alignas(64) BvhNode {
   static constexpr int kWidth = W;
   // Structure-of-arrays child bounds: lane i belongs to child i.
   float minX[W], minY[W], minZ[W];
@@ -31,6 +35,15 @@ template <int W> struct alignas(W == 4 ? 64 : 32) BvhNode {
   static constexpr std::uint32_t leafCount(std::uint32_t ref) { return ((ref >> kLeafCountShift) & 7u) + 1u; }
 };
 using Bvh8Node = BvhNode<8>;
+
+// The box of an empty lane: inverted (min +inf, max -inf). A slab test from a finite float origin rejects it whatever
+// its bound (on every axis its entry distance is +inf or its exit -inf), so the node tests need no mask for empty
+// lanes, and it is the identity of box unions. (A ray whose float slab distances are all NaN, an origin or direction
+// overflowing float, may enter it: the walk skips kEmpty references.)
+inline Bounds3<float> emptyBvhLaneBox() {
+  const float inf = std::numeric_limits<float>::infinity();
+  return Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf), Vec3<float>::Constant(-inf));
+}
 
 template <int W> struct Bvh {
   std::vector<BvhNode<W>> nodes;  // nodes[0] is the root (absent when the mesh has one leaf's worth or less)

@@ -24,16 +24,18 @@ inline constexpr int kBvhStackSize = 512;
 // The ray in the BVH's float frame, with the padding that keeps the float slab test conservative for the T-precision
 // ray that the triangles are tested against. W: the width of the nodes it walks (the plane offsets depend on it).
 template <int W> struct BvhRay {
-  alignas(16) float org[3];
+  // x, y, z in lanes 0-2 of each array (lane 3: unused), so the SSE setup stores each with one instruction.
+  alignas(16) float org[4];
   // -1 / dir: a slab distance is (org - plane) * negInvDir, the same float as (plane - org) / dir's product form
   // (both negations are exact), with the plane as the subtraction's second operand, which x86 reads from memory.
-  float negInvDir[3];
+  alignas(16) float negInvDir[4];
   // negInvDir times (1 - kRelPad) and (1 + kRelPad): the near and far slab distances come out padded from their one
   // product (no multiply between the slab test's min/max and its compare). A positive near (far) distance shrinks
   // (grows) by the pad, as when the padding scaled the test's [tNear, tFar]; negative ones never decide an entry
   // (tNear is at least 0, and a negative far distance rejects either way).
-  float nearInv[3], farInv[3];
-  float slack[3];  // per-axis absolute padding on slab distances: |org_T - org_float| * |negInvDir|
+  alignas(16) float nearInv[4];
+  alignas(16) float farInv[4];
+  alignas(16) float slack[4];  // per-axis absolute padding on slab distances: |org_T - org_float| * |negInvDir|
   // Per axis, the byte offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
   // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis. (In
   // bytes, so a node test adds them without a scaling per walk restart.)
@@ -79,7 +81,18 @@ template <class T> inline float floatCeil(T t) {
 template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   // Components this small would give infinite inverses: they are clamped, but for an exact zero (below).
   constexpr float kTinyDir = 1e-20f;
+  constexpr float kInf = std::numeric_limits<float>::infinity();
   BvhRay<W> r;
+#ifdef GQ_SSE42
+  _mm_store_ps(r.org, floatLanes(org));
+#else
+  for (int i = 0; i < 3; ++i) r.org[i] = static_cast<float>(org[i]);
+  r.org[3] = 0.0f;
+#endif
+  // The slack of an inexact origin (double queries; a float origin is exactly the float one).
+  for (int i = 0; i < 4; ++i) r.slack[i] = 0.0f;
+  // Axes whose component is exactly zero (T's own compare: a double too small for float is not zero).
+  const int zeroAxes = int(dir[0] == T(0)) | int(dir[1] == T(0)) << 1 | int(dir[2] == T(0)) << 2;
   int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
 #ifdef GQ_SSE42
   // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
@@ -90,29 +103,26 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   const __m128 d = floatLanes(dir);
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
-  const __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
+  __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
   negative = _mm_movemask_ps(clamped) & 7;
-  alignas(16) float lanes[2][4];
-  _mm_store_ps(lanes[0], floatLanes(org));
-  _mm_store_ps(lanes[1], negInv);
-  std::memcpy(r.org, lanes[0], sizeof(r.org));
-  std::memcpy(r.negInvDir, lanes[1], sizeof(r.negInvDir));
+  const int clampedAxes = _mm_movemask_ps(small) & 7;
 #else
   negative = 0;
   int clampedAxes = 0;  // bit i: |dir[i]| in float below kTinyDir (zero included)
   for (int i = 0; i < 3; ++i) {
-    r.org[i] = static_cast<float>(org[i]);
     float d = static_cast<float>(dir[i]);
     clampedAxes |= int(std::abs(d) < kTinyDir) << i;
     if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
     r.negInvDir[i] = -1.0f / d;
     negative |= int(r.negInvDir[i] > 0.0f) << i;
   }
+  r.negInvDir[3] = 1.0f;
 #endif
-  for (int i = 0; i < 3; ++i) {
-    if constexpr (std::is_same_v<T, float>) {
-      r.slack[i] = 0.0f;  // the origin is exactly the float one
-    } else {
+  if constexpr (!std::is_same_v<T, float>) {
+#ifdef GQ_SSE42
+    _mm_store_ps(r.negInvDir, negInv);
+#endif
+    for (int i = 0; i < 3; ++i) {
       const double originError = std::abs(double(org[i]) - double(r.org[i]));
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
     }
@@ -122,31 +132,33 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // when the origin is on that plane, which the node tests ignore (NaN-first min/max order): the face is entered.
   // (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit it at 0.) Other zeros keep
   // the clamp: the slack of their inexact origin then widens the slab as for any direction.
-  for (int i = 0; i < 3; ++i)
-    if (dir[i] == T(0) && r.slack[i] == 0.0f)
-      r.negInvDir[i] = std::signbit(dir[i]) ? std::numeric_limits<float>::infinity()
-                                            : -std::numeric_limits<float>::infinity();
+  if (zeroAxes != 0) [[unlikely]] {
+#ifdef GQ_SSE42
+    _mm_store_ps(r.negInvDir, negInv);
+#endif
+    for (int i = 0; i < 3; ++i)
+      if (((zeroAxes >> i) & 1) && r.slack[i] == 0.0f) r.negInvDir[i] = std::signbit(dir[i]) ? kInf : -kInf;
+#ifdef GQ_SSE42
+    negInv = _mm_load_ps(r.negInvDir);
+#endif
+  }
   // A clamped axis leaves the slab no sooner than the ray does along it, or never: the clamp's exit distance,
   // |gap| / kTinyDir, can come before the ray's own, so the far inverse is infinite there (far distances +inf inside
   // the slab, -inf past its far plane, NaN on it, which the tests ignore; the float origin is inside the float slab
   // whenever the T origin is inside the T box, rounding being monotonic and the planes rounded outward). The clamped
   // near distance comes no later than the ray's own entry: conservative as it is.
 #ifdef GQ_SSE42
-  // The loop below, 3 lanes at once (a fourth lane, read from nearInv[0], is computed and dropped).
-  r.nearInv[0] = 1.0f;  // finite: the dropped lane's products raise no invalid-operation flag
-  const __m128 inv = _mm_loadu_ps(r.negInvDir);
-  const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad),
-                                        _mm_set1_ps(std::numeric_limits<float>::infinity()), small);
-  _mm_store_ps(lanes[0], _mm_mul_ps(inv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));
-  _mm_store_ps(lanes[1], _mm_mul_ps(inv, farScale));
-  std::memcpy(r.nearInv, lanes[0], sizeof(r.nearInv));
-  std::memcpy(r.farInv, lanes[1], sizeof(r.farInv));
+  // The loop below, 3 lanes at once (the fourth, from floatLanes' 0 clamped to kTinyDir, is finite and unused).
+  _mm_store_ps(r.negInvDir, negInv);
+  const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad), _mm_set1_ps(kInf), small);
+  _mm_store_ps(r.nearInv, _mm_mul_ps(negInv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));
+  _mm_store_ps(r.farInv, _mm_mul_ps(negInv, farScale));
+  (void)clampedAxes;
 #else
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 4; ++i) {
     r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);
     // Times inf: inf with negInvDir's sign (never 0).
-    r.farInv[i] = r.negInvDir[i] * (((clampedAxes >> i) & 1) ? std::numeric_limits<float>::infinity()
-                                                              : 1.0f + BvhRay<W>::kRelPad);
+    r.farInv[i] = r.negInvDir[i] * (i < 3 && ((clampedAxes >> i) & 1) ? kInf : 1.0f + BvhRay<W>::kRelPad);
   }
 #endif
   std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
@@ -208,11 +220,7 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
   const __m128 tf =
       _mm_min_ps(farX, _mm_min_ps(farY, _mm_min_ps(farZ, _mm_set1_ps(tMax * (1.0f + BvhRay<W>::kRelPad)))));
   _mm_store_ps(tNear + lane0, tn);
-  // Empty lanes (all-+inf boxes) fail the slab test only for a finite float origin and tMax; an origin beyond the
-  // float range (|x| > 3.4e38 in mesh space) gives inf - inf = NaN there, so they are masked out explicitly.
-  const __m128i empty = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(node.child + lane0)),
-                                        _mm_set1_epi32(-1));
-  return _mm_movemask_ps(_mm_andnot_ps(_mm_castsi128_ps(empty), _mm_cmple_ps(tn, tf)));
+  return _mm_movemask_ps(_mm_cmple_ps(tn, tf));  // empty lanes: see emptyBvhLaneBox
 }
 
 // The 8-lane slab test with AVX2: the operations of intersectLanes4 on 8 lanes at once, so both give the same
@@ -247,9 +255,7 @@ __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node,
   const __m256 tf = _mm256_min_ps(
       farX, _mm256_min_ps(farY, _mm256_min_ps(farZ, _mm256_set1_ps(tMax * (1.0f + BvhRay<8>::kRelPad)))));
   _mm256_store_ps(tNear, tn);
-  const __m256i empty = _mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)),
-                                           _mm256_set1_epi32(-1));
-  return _mm256_movemask_ps(_mm256_andnot_ps(_mm256_castsi256_ps(empty), _mm256_cmp_ps(tn, tf, _CMP_LE_OQ)));
+  return _mm256_movemask_ps(_mm256_cmp_ps(tn, tf, _CMP_LE_OQ));
 }
 #endif
 
@@ -268,8 +274,9 @@ struct BvhWalkEntry {
   float tNear;
 };
 
-// Node tests for the walk below: the hit mask of a node's children for t in [0, tMax] (empty lanes never set) and
-// their entry distances in tNear. kSlack = false for rays whose origin is exactly the float one (float queries:
+// Node tests for the walk below: the hit mask of a node's children for t in [0, tMax] and their entry distances in
+// tNear. Empty lanes are rejected by their boxes (emptyBvhLaneBox), but for rays whose float slab distances are all
+// NaN, which the walk handles. kSlack = false for rays whose origin is exactly the float one (float queries:
 // slack is 0), which skips the padding adds.
 // Lanes::Ray is the ray as the node test reads it, made by Lanes::prepare once per walk.
 template <int W> struct BvhLanesScalar {
@@ -293,7 +300,7 @@ template <int W> struct BvhLanesScalar {
         tf = std::min(tf, (ray.org[a] - farPlane) * ray.farInv[a] + ray.slack[a]);
       }
       tNear[i] = tn;
-      if (tn <= tf && node.child[i] != BvhNode<W>::kEmpty) mask |= 1 << i;
+      if (tn <= tf) mask |= 1 << i;
     }
     return mask;
   }
@@ -422,7 +429,7 @@ template <bool kOrdered, bool kSlack, class Lanes>
   using Entry = BvhWalkEntry;
   const Node& node = bvh.nodes[e.ref];
   alignas(32) float tn[W];
-  int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);  // empty lanes never set
+  int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);
   if (mask == 0) return false;
   int i = __builtin_ctz(unsigned(mask));
   mask &= mask - 1;
@@ -501,8 +508,7 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
   while (top > 0) {
     Entry e = stack[--top];
     if (kOrdered && e.tNear > tMax) continue;  // a closer hit was found since this entry was pushed
-    // Descend through inner nodes. (Entries are never kEmpty: the root is checked above and empty lanes are never in
-    // a mask, so the leaf bit alone tells a leaf.)
+    // Descend through inner nodes (kEmpty has the leaf bit: an empty lane entered, see emptyBvhLaneBox, ends there).
     bool missed = false;
     while (!(e.ref & Node::kLeafBit)) {
       if (!descendNode<kOrdered, kSlack, Lanes>(bvh, lanesRay, tMax, e, stack, top)) {
@@ -510,7 +516,7 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
         break;
       }
     }
-    if (missed) continue;
+    if (missed || e.ref == Node::kEmpty) continue;
     if (leaf(e.ref)) return;
   }
 }

@@ -210,28 +210,16 @@ GQ_AVX2 inline __m256d le(__m256d a, __m256d b) { return _mm256_cmp_pd(a, b, _CM
 }  // namespace lanes
 #endif
 
-// Per-ray constants: the scalar test's WatertightRay<T> (permuted axes, shear, origin), and its origin and shear on
-// the permuted axes broadcast to the lanes once per ray.
+// Per-ray constants: the scalar test's WatertightRay<T> (permuted axes, shear, origin) and its origin on the permuted
+// axes, which the wide test broadcasts from memory at a leaf (one instruction a value with AVX; registers held for the
+// whole ray were stores in every ray's setup and loads at every leaf all the same).
 template <class T> struct WatertightRay4 {
   WatertightRay<T> ray;
-#ifdef GQ_SSE42
-  typename lanes::Reg<T>::type ox, oy, oz, sx, sy, sz;
-#endif
+  T ox, oy, oz;  // ray.org[ray.kx], ray.org[ray.ky], ray.org[ray.kz]
 };
 
 template <class T> inline WatertightRay4<T> makeWatertightRay4(const WatertightRay<T>& ray) {
-  WatertightRay4<T> r;
-  r.ray = ray;
-#ifdef GQ_SSE42
-  using R = lanes::Reg<T>;
-  r.ox = R::set1(ray.org[ray.kx]);
-  r.oy = R::set1(ray.org[ray.ky]);
-  r.oz = R::set1(ray.org[ray.kz]);
-  r.sx = R::set1(ray.sx);
-  r.sy = R::set1(ray.sy);
-  r.sz = R::set1(ray.sz);
-#endif
-  return r;
+  return WatertightRay4<T>{ray, ray.org[ray.kx], ray.org[ray.ky], ray.org[ray.kz]};
 }
 
 // The hits of the lanes the wide test decides alone (bit i of `decided`): the scalar test's t, u, v and side, bit for

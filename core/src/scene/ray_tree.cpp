@@ -25,11 +25,6 @@ template <class T> bool withinFloatReach(const Bounds3<T>& b) {
   return withinFloatReach(b.min) && withinFloatReach(b.max);
 }
 
-Bounds3<float> emptyLaneBox() {
-  const float inf = std::numeric_limits<float>::infinity();
-  return Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf), Vec3<float>::Constant(inf));
-}
-
 // Capacity for one more element, grown by doubling (insertions one at a time stay amortized O(1) in copies).
 template <class V> void roomForOneMore(V& v) {
   if (v.size() == v.capacity()) v.reserve(std::max<std::size_t>(16, 2 * v.size()));
@@ -151,10 +146,10 @@ template <class T> Bounds3<float> SceneRayTree<T>::leafUnion(std::uint32_t ref) 
 
 template <class T> Bounds3<float> SceneRayTree<T>::nodeUnion(std::uint32_t n) const noexcept {
   const Bvh8Node& node = bvh_.nodes[n];
-  Bounds3<float> u = emptyLaneBox();
+  Bounds3<float> u = emptyBvhLaneBox();
   bool any = false;
   for (int lane = 0; lane < 8; ++lane) {
-    // Empty lanes, and lanes over subtrees that removals emptied (their +inf boxes), bound nothing.
+    // Empty lanes, and lanes over subtrees that removals emptied (their empty boxes), bound nothing.
     if (node.child[lane] == Bvh8Node::kEmpty || node.minX[lane] == std::numeric_limits<float>::infinity()) continue;
     const Bounds3<float> b = laneBox(node, lane);
     u = any ? boxUnion(u, b) : b;
@@ -190,9 +185,9 @@ template <class T> void SceneRayTree<T>::remove(std::uint32_t instance, std::uin
     const std::uint32_t slot = leafSlot_[k];
     if (slot == kNone) {  // the root is its leaf
       bvh_.rootChild = Bvh8Node::kEmpty;
-    } else {  // leaves hold one instance: its lane empties (an all-+inf box, which every slab test rejects)
+    } else {  // leaves hold one instance: its lane empties (an empty box, which the slab tests reject)
       bvh_.nodes[slot / 8].child[slot % 8] = Bvh8Node::kEmpty;
-      writeLane(slot, emptyLaneBox());
+      writeLane(slot, emptyBvhLaneBox());
       refitAncestors(slot / 8);
     }
   }
@@ -210,7 +205,7 @@ template <class T> std::uint32_t SceneRayTree<T>::newNode(std::uint32_t parentSl
   parentSlot_.push_back(parentSlot);
   for (std::uint32_t lane = 0; lane < 8; ++lane) {
     bvh_.nodes[n].child[lane] = Bvh8Node::kEmpty;
-    writeLane(8 * n + lane, emptyLaneBox());
+    writeLane(8 * n + lane, emptyBvhLaneBox());
   }
   return n;
 }
