@@ -91,8 +91,6 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
 #endif
   // The slack of an inexact origin (double queries; a float origin is exactly the float one).
   for (int i = 0; i < 4; ++i) r.slack[i] = 0.0f;
-  // Axes whose component is exactly zero (T's own compare: a double too small for float is not zero).
-  const int zeroAxes = int(dir[0] == T(0)) | int(dir[1] == T(0)) << 1 | int(dir[2] == T(0)) << 2;
   int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
 #ifdef GQ_SSE42
   // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
@@ -101,12 +99,20 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // direction overflowing float, whose slab values are 0 or NaN with either plane order).
   const __m128 signBit = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(kTinyDir);
   const __m128 d = floatLanes(dir);
+  // Axes whose component is exactly zero (T's own compare: a double too small for float is not zero).
+  int zeroAxes;
+  if constexpr (std::is_same_v<T, float>) {
+    zeroAxes = _mm_movemask_ps(_mm_cmpeq_ps(d, _mm_setzero_ps())) & 7;
+  } else {
+    zeroAxes = _mm_movemask_pd(_mm_cmpeq_pd(_mm_loadu_pd(dir.data()), _mm_setzero_pd())) | int(dir[2] == 0.0) << 2;
+  }
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
   negative = _mm_movemask_ps(clamped) & 7;
   const int clampedAxes = _mm_movemask_ps(small) & 7;
 #else
+  const int zeroAxes = int(dir[0] == T(0)) | int(dir[1] == T(0)) << 1 | int(dir[2] == T(0)) << 2;
   negative = 0;
   int clampedAxes = 0;  // bit i: |dir[i]| in float below kTinyDir (zero included)
   for (int i = 0; i < 3; ++i) {

@@ -25,24 +25,20 @@ template <class T> struct WatertightRay {
 };
 
 template <class T> inline WatertightRay<T> makeWatertightRay(const Vec3<T>& org, const Vec3<T>& dir) {
-  WatertightRay<T> r;
-  r.org = org;
   // Written without branches: for rays in all directions each of these choices is a coin toss.
   const Vec3<T> a = dir.cwiseAbs();
   // kz: x if it exceeds y and z, else y if it exceeds z, else z.
   const int xWins = int(a.x() > a.y()) & int(a.x() > a.z());
   const int yWins = int(!(a.x() > a.y())) & int(a.y() > a.z());
-  r.kz = 2 - 2 * xWins - yWins;
-  r.kx = r.kz + 1 - 3 * int(r.kz == 2);  // (kz + 1) mod 3 without a division
-  r.ky = r.kx + 1 - 3 * int(r.kx == 2);
+  const int kz = 2 - 2 * xWins - yWins;
+  int kx = kz + 1 - 3 * int(kz == 2);  // (kz + 1) mod 3 without a division
+  int ky = kx + 1 - 3 * int(kx == 2);
   // Keep the winding: a negative dominant component mirrors the 2D frame, so swap the other two axes.
-  const int swap = (r.kx ^ r.ky) & -int(dir[r.kz] < T(0));
-  r.kx ^= swap;
-  r.ky ^= swap;
-  r.sx = dir[r.kx] / dir[r.kz];
-  r.sy = dir[r.ky] / dir[r.kz];
-  r.sz = T(1) / dir[r.kz];
-  return r;
+  const int swap = (kx ^ ky) & -int(dir[kz] < T(0));
+  kx ^= swap;
+  ky ^= swap;
+  // One aggregate (no default member values stored first and overwritten).
+  return WatertightRay<T>{org, kx, ky, kz, dir[kx] / dir[kz], dir[ky] / dir[kz], T(1) / dir[kz]};
 }
 
 template <class T> struct TriangleRayHit {
