@@ -31,7 +31,7 @@ template <class T> struct RawHit {
 // computes each lane (a.y b.z - a.z b.y ...), divided by sqrt(x^2 + (y^2 + z^2)) as tryUnit does (the order of
 // Eigen's squaredNorm on a 3-vector). False (unit unwritten) where tryUnit would rescale: a squared length outside
 // the normal float range.
-inline bool unitTriangleNormal(const float* v, __m128& unit) {
+[[gnu::always_inline]] inline bool unitTriangleNormal(const float* v, __m128& unit) {
   const __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 3);
   const __m128 z1v2 = _mm_loadu_ps(v + 5);                         // z1 x2 y2 z2 (the 4 loads stay inside the 9)
   const __m128 v2 = _mm_shuffle_ps(z1v2, z1v2, _MM_SHUFFLE(0, 3, 2, 1));  // x2 y2 z2 z1
