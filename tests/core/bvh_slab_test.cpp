@@ -117,6 +117,8 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
     if (trial % 10 == 0) dir[trial % 3] = u(rng) < 0.5 ? -0.0 : 0.0;
     if (trial % 50 == 0) dir = Vec3<double>::Unit(trial % 3) * (u(rng) < 0.5 ? -1.0 : 1.0);
     dir.normalize();
+    // A component below the walk's 1e-20 clamp but not zero (its far inverse is infinite).
+    if (trial % 10 == 5) dir[trial % 3] = u(rng) < 0.5 ? -1e-25 : 1e-25;
     const double dist = logUniform(1e-3, 1e3);
     const Vec3<T> org = (target - dir * dist).cast<T>();
     const Vec3<T> dirT = dir.cast<T>();
@@ -125,7 +127,8 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
     if (tEnter < 0) continue;
     ++entered;
     // The walk's tightest exit bound: a hit at the entry distance itself, rounded up to float.
-    const float tMax = trial % 2 == 0 ? floatAbove(tEnter) : std::numeric_limits<float>::infinity();
+    // Every kind of direction above meets both a tight and an infinite bound.
+    const float tMax = (trial / 10) % 2 == 0 ? floatAbove(tEnter) : std::numeric_limits<float>::infinity();
     const int lane = trial % 8;
     const Bvh8Node node = nodeWith(box, lane);
     const detail::BvhRay<8> ray = detail::makeBvhRay<8>(org, dirT);

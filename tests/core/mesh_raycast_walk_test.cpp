@@ -203,14 +203,19 @@ TYPED_TEST(MeshRaycastWalks, ClosestHitIsTheLeastDistanceThenInputIndexOverAllTr
 }
 
 // A double ray whose origin is beyond float's range (1e39, the mesh's radius 1e38): its float slab distances are
-// infinite or NaN, so node tests may enter empty lanes (emptyBvhLaneBox); the walk skips them (a leaf reference read
-// from an empty lane would index far past the triangles) and both walks still find the closest hit of brute force.
+// infinite or NaN on the axes whose origin overflows (all three for about a fifth of these rays), so node tests may
+// enter empty lanes (emptyBvhLaneBox); the walk skips them (a leaf reference read from an empty lane would index far
+// past the triangles) and both walks still find the closest hit of brute force, as closest, any and all hits.
 TEST(MeshRaycastWalks, RaysFromBeyondTheFloatRangeSkipEmptyLanesAndFindTheClosestHit) {
   MeshData<double> m = meshtest::icosphere<double>(2);
   for (auto& v : m.vertices) v *= 1e38;
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   Shape<double> shape;
   ASSERT_TRUE(Shape<double>::make(TriangleMeshGeometry<double>(mesh), shape).ok());
+  struct BaselineReset {
+    ~BaselineReset() { detail::setMeshRaycastBaselineOnly(false); }
+  } reset;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   std::mt19937_64 rng(11);
   std::normal_distribution<double> n;
   std::size_t hits = 0, differ = 0;
@@ -220,23 +225,26 @@ TEST(MeshRaycastWalks, RaysFromBeyondTheFloatRangeSkipEmptyLanesAndFindTheCloses
       const Vec3<double> dir = -Vec3<double>(n(rng), n(rng), n(rng)).normalized();
       const Vec3<double> origin = -dir * 1e39 + Vec3<double>(n(rng), n(rng), n(rng)) * 2e37;
       const detail::WatertightRay<double> ray = detail::makeWatertightRay(origin, dir);
-      double best = std::numeric_limits<double>::infinity();
+      double best = kInf;
       for (std::uint32_t c = 0; c < mesh->inputIndex.size(); ++c) {
         const Vec3<double>* v = &mesh->triangleVertices[3 * std::size_t(c)];
         detail::TriangleRayHit<double> h;
-        if (detail::intersectRayTriangle(ray, v[0], v[1], v[2], std::numeric_limits<double>::infinity(), true, h))
-          best = std::min(best, h.t);
+        if (detail::intersectRayTriangle(ray, v[0], v[1], v[2], kInf, true, h)) best = std::min(best, h.t);
       }
-      RaycastHit<double> hit;
-      std::uint32_t count = 0;
-      ASSERT_TRUE(raycast(origin, dir, shape, Transform<double>(), std::numeric_limits<double>::infinity(),
-                          kDefaultHitFlags, 1, &hit, count).ok());
+      const bool found = best < kInf;
+      RaycastHit<double> hit, all[4];
+      std::uint32_t count = 0, anyCount = 0, allCount = 0;
+      ASSERT_TRUE(raycast(origin, dir, shape, Transform<double>(), kInf, kDefaultHitFlags, 1, &hit, count).ok());
       hits += count;
-      differ += (count == 1) != (best < std::numeric_limits<double>::infinity()) ||
-                (count == 1 && hit.distance != best);
+      differ += (count == 1) != found || (count == 1 && hit.distance != best);
+      ASSERT_TRUE(raycast(origin, dir, shape, Transform<double>(), kInf, kDefaultHitFlags | HitFlag::AnyHit, 1, &hit,
+                          anyCount).ok());
+      differ += (anyCount == 1) != found;
+      ASSERT_TRUE(raycast(origin, dir, shape, Transform<double>(), kInf, kDefaultHitFlags | HitFlag::MeshMultiple, 4,
+                          all, allCount).ok());
+      differ += (allCount >= 1) != found || (allCount >= 1 && all[0].distance != best);
     }
   }
-  detail::setMeshRaycastBaselineOnly(false);
   EXPECT_EQ(differ, 0u);
   EXPECT_GT(hits, 300u);  // the rays aim at the sphere: most hit
 }

@@ -154,7 +154,7 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // whenever the T origin is inside the T box, rounding being monotonic and the planes rounded outward). The clamped
   // near distance comes no later than the ray's own entry: conservative as it is.
 #ifdef GQ_SSE42
-  // The loop below, 3 lanes at once (the fourth, from floatLanes' 0 clamped to kTinyDir, is finite and unused).
+  // The loop below, 3 lanes at once (the fourth, from floatLanes' 0 clamped to kTinyDir, is never read).
   _mm_store_ps(r.negInvDir, negInv);
   const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad), _mm_set1_ps(kInf), small);
   _mm_store_ps(r.nearInv, _mm_mul_ps(negInv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));

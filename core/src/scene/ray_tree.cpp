@@ -146,15 +146,10 @@ template <class T> Bounds3<float> SceneRayTree<T>::leafUnion(std::uint32_t ref) 
 
 template <class T> Bounds3<float> SceneRayTree<T>::nodeUnion(std::uint32_t n) const noexcept {
   const Bvh8Node& node = bvh_.nodes[n];
+  // Lanes over subtrees that removals emptied hold the empty box, the identity of unions: they bound nothing.
   Bounds3<float> u = emptyBvhLaneBox();
-  bool any = false;
-  for (int lane = 0; lane < 8; ++lane) {
-    // Empty lanes, and lanes over subtrees that removals emptied (their empty boxes), bound nothing.
-    if (node.child[lane] == Bvh8Node::kEmpty || node.minX[lane] == std::numeric_limits<float>::infinity()) continue;
-    const Bounds3<float> b = laneBox(node, lane);
-    u = any ? boxUnion(u, b) : b;
-    any = true;
-  }
+  for (int lane = 0; lane < 8; ++lane)
+    if (node.child[lane] != Bvh8Node::kEmpty) u = boxUnion(u, laneBox(node, lane));
   return u;
 }
 
@@ -275,8 +270,9 @@ template <class T> bool SceneRayTree<T>::insert(std::uint32_t instance, const Bo
           area = a;
         }
       }
-      // No lane compared (areas overflowed, or lanes over emptied subtrees, whose +inf boxes give NaN): any lane
-      // will do, the refit below making its box the union.
+      // A lane over a subtree that removals emptied (the empty box: infinite area, a growth of -inf) is taken first,
+      // so the new leaf reuses its nodes. No lane compared (areas overflowed to NaN): any lane will do, the refit
+      // below making its box the union.
       if (pick < 0) pick = 0;
       const std::uint32_t slot = 8 * n + std::uint32_t(pick), ref = node.child[pick];
       if (depth + 1 > kMaxInsertDepth) break;  // a node below this one would be deeper than the walk allows
