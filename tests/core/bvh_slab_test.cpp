@@ -52,13 +52,7 @@ Bvh8Node nodeWith(const Bounds3<float>& box, int lane) {
   Bvh8Node n;
   for (int i = 0; i < 8; ++i) {
     const bool used = i == lane;
-    const Bounds3<float> b = used ? box : emptyBvhLaneBox();
-    n.minX[i] = b.min.x();
-    n.minY[i] = b.min.y();
-    n.minZ[i] = b.min.z();
-    n.maxX[i] = b.max.x();
-    n.maxY[i] = b.max.y();
-    n.maxZ[i] = b.max.z();
+    setBvhLaneBox(n, i, used ? box : emptyBvhLaneBox());
     n.child[i] = used ? Bvh8Node::makeLeaf(0, 1) : Bvh8Node::kEmpty;
   }
   return n;

@@ -156,9 +156,7 @@ class Builder {
     Node& node = bvh_.nodes[nodeIndex];
     for (int i = 0; i < kWidth; ++i) {
       node.child[i] = refs[i];
-      const Bounds3<float> b = i < n ? kids[i].bounds : emptyBvhLaneBox();
-      node.minX[i] = b.min.x(); node.minY[i] = b.min.y(); node.minZ[i] = b.min.z();
-      node.maxX[i] = b.max.x(); node.maxY[i] = b.max.y(); node.maxZ[i] = b.max.z();
+      setBvhLaneBox(node, i, i < n ? kids[i].bounds : emptyBvhLaneBox());
     }
     return nodeIndex;
   }

@@ -46,6 +46,16 @@ inline Bounds3<float> emptyBvhLaneBox() {
   return Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf), Vec3<float>::Constant(-inf));
 }
 
+// Writes the box of a node's lane (its six planes).
+template <int W> inline void setBvhLaneBox(BvhNode<W>& node, int lane, const Bounds3<float>& b) {
+  node.minX[lane] = b.min.x();
+  node.minY[lane] = b.min.y();
+  node.minZ[lane] = b.min.z();
+  node.maxX[lane] = b.max.x();
+  node.maxY[lane] = b.max.y();
+  node.maxZ[lane] = b.max.z();
+}
+
 template <int W> struct Bvh {
   std::vector<BvhNode<W>> nodes;  // nodes[0] is the root (absent when the mesh has one leaf's worth or less)
   std::uint32_t rootChild = BvhNode<W>::kEmpty;  // root reference: node index or a leaf

@@ -127,14 +127,7 @@ template <class T> void SceneRayTree<T>::clear() noexcept {
 }
 
 template <class T> void SceneRayTree<T>::writeLane(std::uint32_t slot, const Bounds3<float>& b) noexcept {
-  Bvh8Node& node = bvh_.nodes[slot / 8];
-  const std::uint32_t lane = slot % 8;
-  node.minX[lane] = b.min.x();
-  node.minY[lane] = b.min.y();
-  node.minZ[lane] = b.min.z();
-  node.maxX[lane] = b.max.x();
-  node.maxY[lane] = b.max.y();
-  node.maxZ[lane] = b.max.z();
+  setBvhLaneBox(bvh_.nodes[slot / 8], int(slot % 8), b);
 }
 
 template <class T> Bounds3<float> SceneRayTree<T>::leafUnion(std::uint32_t ref) const noexcept {
