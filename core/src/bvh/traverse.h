@@ -109,8 +109,8 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
+  _mm_store_ps(r.negInvDir, negInv);
   negative = _mm_movemask_ps(clamped) & 7;
-  const int clampedAxes = _mm_movemask_ps(small) & 7;
 #else
   const int zeroAxes = int(dir[0] == T(0)) | int(dir[1] == T(0)) << 1 | int(dir[2] == T(0)) << 2;
   negative = 0;
@@ -125,9 +125,6 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   r.negInvDir[3] = 1.0f;
 #endif
   if constexpr (!std::is_same_v<T, float>) {
-#ifdef GQ_SSE42
-    _mm_store_ps(r.negInvDir, negInv);
-#endif
     for (int i = 0; i < 3; ++i) {
       const double originError = std::abs(double(org[i]) - double(r.org[i]));
       r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
@@ -139,9 +136,6 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit it at 0.) Other zeros keep
   // the clamp: the slack of their inexact origin then widens the slab as for any direction.
   if (zeroAxes != 0) [[unlikely]] {
-#ifdef GQ_SSE42
-    _mm_store_ps(r.negInvDir, negInv);
-#endif
     for (int i = 0; i < 3; ++i)
       if (((zeroAxes >> i) & 1) && r.slack[i] == 0.0f) r.negInvDir[i] = std::signbit(dir[i]) ? kInf : -kInf;
 #ifdef GQ_SSE42
@@ -155,11 +149,9 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   // near distance comes no later than the ray's own entry: conservative as it is.
 #ifdef GQ_SSE42
   // The loop below, 3 lanes at once (the fourth, from floatLanes' 0 clamped to kTinyDir, is never read).
-  _mm_store_ps(r.negInvDir, negInv);
   const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad), _mm_set1_ps(kInf), small);
   _mm_store_ps(r.nearInv, _mm_mul_ps(negInv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));
   _mm_store_ps(r.farInv, _mm_mul_ps(negInv, farScale));
-  (void)clampedAxes;
 #else
   for (int i = 0; i < 4; ++i) {
     r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);

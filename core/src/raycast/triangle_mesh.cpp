@@ -334,8 +334,9 @@ template <class T>
 
 // The requested fields of one hit, written in place.
 template <class T>
-[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
-                                   RaycastHit<T>& hit) const {
+[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked,
+                                                                  const TriangleRayHit<T>& tri,
+                                                                  RaycastHit<T>& hit) const {
   // Every field written once: the requested ones, RaycastHit's defaults for the others.
   const TriangleMesh<T>& mesh = *g_.mesh;
   HitFlags flags = HitFlag::FaceIndex;
