@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -141,3 +142,33 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
 
 }  // namespace
 }  // namespace gq
+
+// floatCeil (the walk's float bound for a T distance) is the least float at or above it: std::nextafter's value
+// wherever the conversion rounds down, on both signs, at powers of two, at the float range's ends and below it.
+TEST(BvhFloatCeil, IsTheLeastFloatAtOrAboveTheDistance) {
+  auto reference = [](double t) {
+    const float f = static_cast<float>(t);
+    return double(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  };
+  std::vector<double> ts = {0.0, -0.0, 1.0, 1.0 + 1e-12, 1.0 - 1e-12, -1.0 - 1e-12, -1.0 + 1e-12, 1e-45, 1e-46,
+                            -1e-46, -1.5e-45, 3.4028234663852886e38, 3.40282356e38, -3.40282356e38, 1e300, -1e300,
+                            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                            std::numeric_limits<double>::denorm_min()};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-160, 140);
+  for (int i = 0; i < 100000; ++i) ts.push_back(std::ldexp(mantissa(rng), exponent(rng)));
+  int roundedDown = 0;
+  for (double t : ts) {
+    const float c = gq::detail::floatCeil(t), r = reference(t);
+    roundedDown += double(static_cast<float>(t)) < t ? 1 : 0;
+    ASSERT_EQ(std::memcmp(&c, &r, sizeof c), 0) << t;
+    if (!std::isnan(t)) {
+      ASSERT_GE(double(c), t) << t;
+    }
+  }
+  EXPECT_GT(roundedDown, 40000);  // the case under test is common in the sample
+  const float nan = gq::detail::floatCeil(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_TRUE(std::isnan(nan));
+  EXPECT_EQ(gq::detail::floatCeil(2.5f), 2.5f);  // a float distance is its own bound
+}

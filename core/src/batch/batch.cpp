@@ -401,6 +401,9 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   // Each bucket sorted and cast.
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
   typename Scratch::Slot* slots = scratch.slots.data;
+  // The casts leave the position to the copy-out (which computes it from the input ray as the raycast does); a hit
+  // gets its flag back with the other fields.
+  const HitFlags castFlags = rays.hitFlags.without(HitFlag::Position), positionFlag = rays.hitFlags & HitFlag::Position;
   for (std::size_t b = 0; b < buckets; ++b) {
     const std::size_t first = starts[b], count = starts[b + 1] - first;
     if (count == 0) continue;
@@ -425,7 +428,8 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       Vec3<T> normalized;
       const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
       if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
-        (void)items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u), &hit);
+        if (items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, castFlags, 1u), &hit) != 0)
+          hit.flags |= positionFlag;
       } else {
         hit.flags = Scratch::kByIndex;
       }

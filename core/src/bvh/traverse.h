@@ -72,10 +72,18 @@ template <class T> inline __m128 floatLanes(const Vec3<T>& v) {
 }
 #endif
 
-// The least float at or above a T distance: the walk's float tMax for a T bound.
+// The least float at or above a T distance: the walk's float tMax for a T bound. A float rounded below t is finite
+// and not -0 (t > f), so the next float up is one unit of its bit pattern away: +1 for a positive f (FLT_MAX's next is
+// +inf), -1 for a negative one (std::nextafter's value without its library call, which double walks made per hit).
 template <class T> inline float floatCeil(T t) {
   const float f = static_cast<float>(t);
-  return T(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  if (!(T(f) < t)) return f;
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  bits += std::signbit(f) ? 0xffffffffu : 1u;
+  float up;
+  std::memcpy(&up, &bits, sizeof up);
+  return up;
 }
 
 template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {

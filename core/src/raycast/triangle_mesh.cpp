@@ -311,23 +311,21 @@ template <class T>
     }
   }
 #endif
-  if (!scaled_ && !rotated_) {
-    // The same operations written out in scalars (so the vectors stay in registers): a = v1 - v0, b = v2 - v0,
-    // a x b lane by lane, then Eigen's squared norm (its order of the sum). For float with SSE this is reached only
-    // when the SSE path's range test failed, which this one then fails too.
-    const T ax = v[1].x() - v[0].x(), ay = v[1].y() - v[0].y(), az = v[1].z() - v[0].z();
-    const T bx = v[2].x() - v[0].x(), by = v[2].y() - v[0].y(), bz = v[2].z() - v[0].z();
-    const T nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
-    const T len2 = Vec3<T>(nx, ny, nz).squaredNorm();
-    if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) {
-      const T len = flip ? -std::sqrt(len2) : std::sqrt(len2);
-      normal = Vec3<T>(nx / len, ny / len, nz / len);
-      return;
-    }
-  }
-  const Vec3<T> meshNormal = (v[1] - v[0]).cross(v[2] - v[0]);
-  Vec3<T> n = toMesh(meshNormal);  // S^-1 = S^-T is also the normal transform
+  // (v1 - v0) x (v2 - v0) in scalars, as Eigen's cross() computes each component (a.y b.z - a.z b.y ...), so the
+  // vectors stay in registers; for float with SSE this is reached only when the SSE path above does not apply or its
+  // range test failed (which the identity frame's test below then fails too).
+  const T ax = v[1].x() - v[0].x(), ay = v[1].y() - v[0].y(), az = v[1].z() - v[0].z();
+  const T bx = v[2].x() - v[0].x(), by = v[2].y() - v[0].y(), bz = v[2].z() - v[0].z();
+  Vec3<T> n(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx);
+  n = toMesh(n);  // S^-1 = S^-T is also the normal transform
   if (rotated_) n = pose_.rotate(n);
+  // tryUnit's common case inline (n / sqrt(|n|^2), Eigen's order of the squared norm); unitOr for the others.
+  const T len2 = n.squaredNorm();
+  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) {
+    const T len = flip ? -std::sqrt(len2) : std::sqrt(len2);
+    normal = Vec3<T>(n.x() / len, n.y() / len, n.z() / len);
+    return;
+  }
   n = unitOr(n, Vec3<T>(-rayDir));
   normal = flip ? Vec3<T>(-n) : n;
 }
