@@ -101,7 +101,10 @@ template <class T> class TriangleMeshRays {
  private:
   [[gnu::always_inline]] Vec3<T> toMesh(const Vec3<T>& v) const {
     if (!scaled_) return v;
-    return diagonal_ ? Vec3<T>(v.cwiseProduct(invScaleDiagonal_)) : Vec3<T>(invScale_ * v);
+    // The diagonal product in scalars (Eigen's cwiseProduct assignment was left an out-of-line call per hit normal).
+    const Vec3<T>& d = invScaleDiagonal_;
+    if (diagonal_) return Vec3<T>(v.x() * d.x(), v.y() * d.y(), v.z() * d.z());
+    return invScale_ * v;
   }
   void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
                 RaycastHit<T>& hit) const;
