@@ -154,6 +154,41 @@ TYPED_TEST(MeshRaycast, NormalIsTheUnitCrossProductOfTheHitTriangleBitForBit) {
   EXPECT_GT(checked, 1000);
 }
 
+// Under an axis-aligned scale and a rotated pose the normal is R S^-1 ((v1 - v0) x (v2 - v0)) made unit as tryUnit
+// does (n / sqrt(|n|^2)), bit for bit, and flipped for a double-sided mesh hit from the back.
+TYPED_TEST(MeshRaycast, NormalUnderScaleAndPoseIsTheUnitTransformedCrossProductBitForBit) {
+  using T = TypeParam;
+  const MeshData<T> ico = meshtest::icosphere<T>(1);
+  const auto mesh = meshtest::cook(ico.vertices, ico.triangles);
+  const Vec3<T> s(T(1.5), T(0.7), T(2.2));
+  const Transform<T> pose(Vec3<T>(1, -2, 3), Quat<T>(Eigen::AngleAxis<T>(T(1.1), Vec3<T>(-1, 0, 2).normalized())));
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for (const bool doubleSided : {false, true}) {
+    const TriangleMeshGeometry<T> g(mesh, MeshScale<T>(s),
+                                    doubleSided ? MeshGeometryFlag::DoubleSided : MeshGeometryFlag::None);
+    for (int i = 0; i < 200; ++i) {
+      const Vec3<T> target = pose.p + T(0.5) * draw3<T>(u, rng);
+      const Vec3<T> o = target + draw3<T>(u, rng).normalized() * T(10);
+      const Vec3<T> d = (target - o).normalized();
+      RaycastHit<T> hit;
+      if (this->cast(g, pose, o, d, T(100), kDefaultHitFlags | HitFlag::MeshBothSides, 1, &hit) == 0) continue;
+      const Vec3<T>* c = &mesh->triangleVertices[3 * std::size_t(mesh->cookedIndex[hit.faceIndex])];
+      Vec3<T> n = (c[1] - c[0]).cross(c[2] - c[0]);
+      n = Vec3<T>(n.x() * (T(1) / s.x()), n.y() * (T(1) / s.y()), n.z() * (T(1) / s.z()));
+      n = pose.rotate(n);
+      Vec3<T> expected = n / std::sqrt(n.squaredNorm());
+      if (doubleSided && expected.dot(d) > T(0)) expected = -expected;
+      EXPECT_EQ(hit.normal.x(), expected.x());
+      EXPECT_EQ(hit.normal.y(), expected.y());
+      EXPECT_EQ(hit.normal.z(), expected.z());
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 200);
+}
+
 TYPED_TEST(MeshRaycast, MaxDistZeroNeverHitsAMesh) {
   using T = TypeParam;
   RaycastHit<T> hit;
