@@ -423,7 +423,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     for (std::size_t j = 0; j < count; ++j) {
       if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
       const std::size_t at = sorted[j] & 0xffffffffu;
-      const Ray r = bucket[at].ray;
+      const Ray& r = bucket[at].ray;  // read until its slot takes the hit
       RaycastHit<T> hit;
       Vec3<T> normalized;
       const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
