@@ -60,17 +60,17 @@ Bvh8Node nodeWith(const Bounds3<float>& box, int lane) {
 }
 
 // The masks and entry distances of every node test this build and CPU run.
-template <bool kSlack> struct NodeTests {
+template <bool kFarOrigin> struct NodeTests {
   int masks[3] = {0, 0, 0};
   float entry[3] = {0, 0, 0};
   int count = 0;
   void run(const Bvh8Node& node, const detail::BvhRay<8>& ray, float tMax, int lane) {
     alignas(32) float tn[8];
-    masks[count] = detail::BvhLanesScalar<8>::test<kSlack>(node, ray, tMax, tn);
+    masks[count] = detail::BvhLanesScalar<8>::test<kFarOrigin>(node, ray, tMax, tn);
     entry[count++] = tn[lane];
 #ifdef GQ_SSE42
     const detail::BvhRaySse sse = detail::Bvh8LanesSse::prepare(ray);
-    masks[count] = detail::Bvh8LanesSse::test<kSlack>(node, sse, tMax, tn);
+    masks[count] = detail::Bvh8LanesSse::test<kFarOrigin>(node, sse, tMax, tn);
     entry[count++] = tn[lane];
     if (detail::hasAvx2()) {
       masks[count] = runAvx2(node, ray, tMax, tn);
@@ -81,14 +81,14 @@ template <bool kSlack> struct NodeTests {
 #ifdef GQ_SSE42
   __attribute__((target("avx2"))) static int runAvx2(const Bvh8Node& node, const detail::BvhRay<8>& ray, float tMax,
                                                      float* tn) {
-    return detail::Bvh8LanesAvx2::test<kSlack>(node, ray, tMax, tn);
+    return detail::Bvh8LanesAvx2::test<kFarOrigin>(node, ray, tMax, tn);
   }
 #endif
 };
 
 TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDistance) {
   using T = TypeParam;
-  constexpr bool kSlack = !std::is_same_v<T, float>;  // as the mesh walks: float origins are exact
+  constexpr bool kFarOrigin = !std::is_same_v<T, float>;  // as the mesh walks: float origins are exact
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> u(0, 1);
   std::normal_distribution<double> n;
@@ -115,7 +115,15 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
     // A component below the walk's 1e-20 clamp but not zero (its far inverse is infinite).
     if (trial % 10 == 5) dir[trial % 3] = u(rng) < 0.5 ? -1e-25 : 1e-25;
     const double dist = logUniform(1e-3, 1e3);
-    const Vec3<T> org = (target - dir * dist).cast<T>();
+    Vec3<T> org = (target - dir * dist).cast<T>();
+    // A double origin of a ray parallel to a face within a float unit of the face's plane, on either side: between
+    // two floats, the node test takes the one on each side of it.
+    if (!std::is_same_v<T, float> && trial % 20 == 0) {
+      const int a = trial % 3;
+      const float face = static_cast<float>(org[a]);
+      const double unit = double(std::nextafter(face, std::numeric_limits<float>::infinity())) - double(face);
+      org[a] = T(double(face) + (u(rng) - 0.5) * unit);
+    }
     const Vec3<T> dirT = dir.cast<T>();
     const Vec3<long double> oL = org.template cast<long double>(), dL = dirT.template cast<long double>();
     const long double tEnter = exactEntry(oL, dL, box, std::numeric_limits<long double>::infinity());
@@ -127,7 +135,7 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
     const int lane = trial % 8;
     const Bvh8Node node = nodeWith(box, lane);
     const detail::BvhRay<8> ray = detail::makeBvhRay<8>(org, dirT);
-    NodeTests<kSlack> tests;
+    NodeTests<kFarOrigin> tests;
     tests.run(node, ray, tMax, lane);
     for (int k = 0; k < tests.count; ++k) {
       missed += ((tests.masks[k] >> lane) & 1) == 0;
@@ -138,6 +146,44 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
   EXPECT_EQ(missed, 0);
   EXPECT_EQ(lateEntry, 0);
   EXPECT_GT(entered, 100000);  // most rays enter: the check is not vacuous
+}
+
+// A double origin gives the node tests two floats: the near planes' origin on the side that makes entries earlier and
+// the far planes' on the side that makes exits later (the floats just above and below it by the direction's sign; a
+// positive component enters by the min plane, whose distance grows with the origin). A float origin is both.
+TYPED_TEST(BvhSlab, NearAndFarOriginsAreTheFloatsAroundTheOriginOnTheConservativeSides) {
+  using T = TypeParam;
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0), u(0, 1);
+  std::uniform_int_distribution<int> exponent(-160, 140);
+  const float inf = std::numeric_limits<float>::infinity();
+  int between = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Vec3<T> org, dir;
+    for (int a = 0; a < 3; ++a) {
+      const double x = std::ldexp(mantissa(rng), exponent(rng));
+      org[a] = trial % 7 == 0 ? T(static_cast<float>(x)) : static_cast<T>(x);  // some exactly float
+      dir[a] = T(mantissa(rng));
+      if (trial % 11 == a) dir[a] = u(rng) < 0.5 ? T(-0.0) : T(0.0);
+    }
+    if (trial == 0) org = Vec3<T>(T(-0.0), T(1e-300), T(-1e-300));
+    if (trial == 1) org = Vec3<T>(T(1e39), T(-1e39), T(3.4028235e38));
+    const detail::BvhRay<8> ray = detail::makeBvhRay<8>(org, dir);
+    for (int a = 0; a < 3; ++a) {
+      const float f = static_cast<float>(org[a]);
+      const float below = double(f) > double(org[a]) ? std::nextafter(f, -inf) : f;
+      const float above = double(f) < double(org[a]) ? std::nextafter(f, inf) : f;
+      between += below != above;
+      const bool negative = std::signbit(dir[a]);
+      EXPECT_EQ(std::memcmp(&ray.org[a], negative ? &below : &above, sizeof(float)), 0) << org[a] << " " << dir[a];
+      EXPECT_EQ(std::memcmp(&ray.farOrg[a], negative ? &above : &below, sizeof(float)), 0) << org[a] << " " << dir[a];
+    }
+  }
+  if (std::is_same_v<T, float>) {
+    EXPECT_EQ(between, 0);
+  } else {
+    EXPECT_GT(between, 40000);  // most double origins lie between two floats
+  }
 }
 
 }  // namespace

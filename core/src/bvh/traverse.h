@@ -25,7 +25,12 @@ inline constexpr int kBvhStackSize = 512;
 // ray that the triangles are tested against. W: the width of the nodes it walks (the plane offsets depend on it).
 template <int W> struct BvhRay {
   // x, y, z in lanes 0-2 of each array (lane 3: unused), so the SSE setup stores each with one instruction.
+  // The origin the near planes' slab distances are taken from, and the one for the far planes. A float origin is
+  // exact and both are it; a double origin that float does not hold lies between two floats, and each side takes the
+  // one that moves its distances the conservative way (the near ones earlier, the far ones later: by the sign of the
+  // direction, the float above or below the origin), so no padding for the origin's rounding is added per node.
   alignas(16) float org[4];
+  alignas(16) float farOrg[4];
   // -1 / dir: a slab distance is (org - plane) * negInvDir, the same float as (plane - org) / dir's product form
   // (both negations are exact), with the plane as the subtraction's second operand, which x86 reads from memory.
   alignas(16) float negInvDir[4];
@@ -35,7 +40,6 @@ template <int W> struct BvhRay {
   // (tNear is at least 0, and a negative far distance rejects either way).
   alignas(16) float nearInv[4];
   alignas(16) float farInv[4];
-  alignas(16) float slack[4];  // per-axis absolute padding on slab distances: |org_T - org_float| * |negInvDir|
   // Per axis, the byte offset in a node of the child bounds the ray enters (near) and leaves (far) by: the min
   // plane when the direction is positive, the max plane otherwise. Slab tests then need no min/max per axis. (In
   // bytes, so a node test adds them without a scaling per walk restart.)
@@ -86,19 +90,19 @@ template <class T> inline float floatCeil(T t) {
   return up;
 }
 
+// The floats next to a T value below and above it (both the value when float holds it; NaN stays NaN, values beyond
+// float's range give +-FLT_MAX and +-inf).
+template <class T> inline void floatsAround(T x, float& below, float& above) {
+  const float f = static_cast<float>(x);
+  below = T(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  above = T(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
 template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   // Components this small would give infinite inverses: they are clamped, but for an exact zero (below).
   constexpr float kTinyDir = 1e-20f;
   constexpr float kInf = std::numeric_limits<float>::infinity();
   BvhRay<W> r;
-#ifdef GQ_SSE42
-  _mm_store_ps(r.org, floatLanes(org));
-#else
-  for (int i = 0; i < 3; ++i) r.org[i] = static_cast<float>(org[i]);
-  r.org[3] = 0.0f;
-#endif
-  // The slack of an inexact origin (double queries; a float origin is exactly the float one).
-  for (int i = 0; i < 4; ++i) r.slack[i] = 0.0f;
   int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
 #ifdef GQ_SSE42
   // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
@@ -117,8 +121,31 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
-  _mm_store_ps(r.negInvDir, negInv);
   negative = _mm_movemask_ps(clamped) & 7;
+  const __m128 o = floatLanes(org);
+  if constexpr (std::is_same_v<T, float>) {
+    _mm_store_ps(r.org, o);
+    _mm_store_ps(r.farOrg, o);
+  } else {
+    // floatsAround on 3 lanes: the rounded float's bit pattern moved one unit towards the double where it passed it
+    // (towards -inf: -1 on a positive float, +1 on a negative one; a double rounded to -0 is negative, to +0 positive).
+    const __m128d lo = _mm_loadu_pd(org.data()), hi = _mm_set_sd(org[2]);
+    const __m128d backLo = _mm_cvtps_pd(o), backHi = _mm_cvtps_pd(_mm_movehl_ps(o, o));
+    auto lanes3 = [](__m128d a, __m128d b) {  // the 64-bit masks' low halves as 32-bit lanes 0-2
+      return _mm_castps_si128(_mm_shuffle_ps(_mm_castpd_ps(a), _mm_castpd_ps(b), _MM_SHUFFLE(2, 0, 2, 0)));
+    };
+    const __m128i roundedUp = lanes3(_mm_cmpgt_pd(backLo, lo), _mm_cmpgt_pd(backHi, hi));
+    const __m128i roundedDown = lanes3(_mm_cmplt_pd(backLo, lo), _mm_cmplt_pd(backHi, hi));
+    const __m128i bits = _mm_castps_si128(o);
+    const __m128i up1 = _mm_or_si128(_mm_add_epi32(_mm_srai_epi32(bits, 31), _mm_srai_epi32(bits, 31)),
+                                     _mm_set1_epi32(1));  // +1 on a positive float, -1 on a negative one
+    const __m128 below = _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_and_si128(roundedUp, up1)));
+    const __m128 above = _mm_castsi128_ps(_mm_add_epi32(bits, _mm_and_si128(roundedDown, up1)));
+    // A positive direction enters by its min planes (the distance grows with the origin: the float above it gives
+    // an earlier entry) and leaves by its max planes (the float below: a later exit); a negative one the reverse.
+    _mm_store_ps(r.org, _mm_blendv_ps(above, below, clamped));
+    _mm_store_ps(r.farOrg, _mm_blendv_ps(below, above, clamped));
+  }
 #else
   const int zeroAxes = int(dir[0] == T(0)) | int(dir[1] == T(0)) << 1 | int(dir[2] == T(0)) << 2;
   negative = 0;
@@ -129,30 +156,33 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
     if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
     r.negInvDir[i] = -1.0f / d;
     negative |= int(r.negInvDir[i] > 0.0f) << i;
+    float below, above;
+    floatsAround(org[i], below, above);
+    r.org[i] = std::signbit(d) ? below : above;
+    r.farOrg[i] = std::signbit(d) ? above : below;
   }
   r.negInvDir[3] = 1.0f;
+  r.org[3] = r.farOrg[3] = 0.0f;
 #endif
-  if constexpr (!std::is_same_v<T, float>) {
-    for (int i = 0; i < 3; ++i) {
-      const double originError = std::abs(double(org[i]) - double(r.org[i]));
-      r.slack[i] = static_cast<float>(originError * std::abs(double(r.negInvDir[i])) * (1.0 + 1e-6));
-    }
-  }
-  // An exactly zero component whose origin coordinate is exactly the float one: the axis admits the ray iff the origin
-  // is within the slab, faces included. With an infinite inverse a slab distance is -inf or +inf, or NaN (0 * inf)
-  // when the origin is on that plane, which the node tests ignore (NaN-first min/max order): the face is entered.
-  // (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit it at 0.) Other zeros keep
-  // the clamp: the slack of their inexact origin then widens the slab as for any direction.
+#ifdef GQ_SSE42
+  _mm_store_ps(r.negInvDir, negInv);
+#endif
+  // An exactly zero component: with an infinite inverse the axis admits the ray iff its origin is within the slab,
+  // faces included. A slab distance is then -inf or +inf, or NaN (0 * inf) when the origin is on that plane, which
+  // the node tests ignore (NaN-first min/max order): the face is entered. The near and far origins (on the
+  // conservative sides of an inexact one) are within the float slab whenever the T origin is within the T box, the
+  // planes being rounded outward. (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit
+  // it at 0.)
   if (zeroAxes != 0) [[unlikely]] {
     for (int i = 0; i < 3; ++i)
-      if (((zeroAxes >> i) & 1) && r.slack[i] == 0.0f) r.negInvDir[i] = std::signbit(dir[i]) ? kInf : -kInf;
+      if ((zeroAxes >> i) & 1) r.negInvDir[i] = std::signbit(dir[i]) ? kInf : -kInf;
 #ifdef GQ_SSE42
     negInv = _mm_load_ps(r.negInvDir);
 #endif
   }
   // A clamped axis leaves the slab no sooner than the ray does along it, or never: the clamp's exit distance,
   // |gap| / kTinyDir, can come before the ray's own, so the far inverse is infinite there (far distances +inf inside
-  // the slab, -inf past its far plane, NaN on it, which the tests ignore; the float origin is inside the float slab
+  // the slab, -inf past its far plane, NaN on it, which the tests ignore; the far origin is inside the float slab
   // whenever the T origin is inside the T box, rounding being monotonic and the planes rounded outward). The clamped
   // near distance comes no later than the ray's own entry: conservative as it is.
 #ifdef GQ_SSE42
@@ -173,11 +203,11 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
 }
 
 #ifdef GQ_SSE42
-// The SSE node test's ray constants: org, nearInv, farInv and slack broadcast to 4 lanes once per walk, so a node test loads
-// them instead of splatting them, and the plane offsets. (The AVX2 test broadcasts from BvhRay as it loads: holding
+// The SSE node test's ray constants: org, farOrg, nearInv and farInv broadcast to 4 lanes once per walk, so a node
+// test loads them instead of splatting them, and the plane offsets. (The AVX2 test broadcasts from BvhRay as it loads: holding
 // 8-lane copies in the walk was measured 68 instructions more per bunny ray, spilled around the leaf tests.)
 struct BvhRaySse {
-  __m128 org[3], nearInv[3], farInv[3], slack[3];
+  __m128 org[3], farOrg[3], nearInv[3], farInv[3];
   std::uint32_t nearOffset[3], farOffset[3];
 };
 
@@ -187,7 +217,7 @@ template <int W> inline BvhRaySse broadcastSse(const BvhRay<W>& ray) {
     r.org[i] = _mm_set1_ps(ray.org[i]);
     r.nearInv[i] = _mm_set1_ps(ray.nearInv[i]);
     r.farInv[i] = _mm_set1_ps(ray.farInv[i]);
-    r.slack[i] = _mm_set1_ps(ray.slack[i]);
+    r.farOrg[i] = _mm_set1_ps(ray.farOrg[i]);
     r.nearOffset[i] = ray.nearOffset[i];
     r.farOffset[i] = ray.farOffset[i];
   }
@@ -200,26 +230,21 @@ inline const float* planeAt(const float* base, std::uint32_t byteOffset) {
   return reinterpret_cast<const float*>(reinterpret_cast<const char*>(base) + byteOffset);
 }
 
-template <bool kSlack, int W>
+template <bool kFarOrigin, int W>
 inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lane0, float tMax, float* tNear) {
   // With a positive (negative) inverse the min (max) plane gives the smaller slab distance, and rounding keeps that
   // order, so the near/far planes picked once per ray give the same distances as min/max of both planes.
   const float* base = node.minX + lane0;
-  auto slab = [&](std::uint32_t offset, int axis, const __m128* inv) {
-    return _mm_mul_ps(_mm_sub_ps(ray.org[axis], _mm_load_ps(planeAt(base, offset))), inv[axis]);
+  const __m128* farOrg = kFarOrigin ? ray.farOrg : ray.org;
+  auto slab = [&](std::uint32_t offset, const __m128& origin, const __m128& inv) {
+    return _mm_mul_ps(_mm_sub_ps(origin, _mm_load_ps(planeAt(base, offset))), inv);
   };
-  __m128 nearX = slab(ray.nearOffset[0], 0, ray.nearInv), nearY = slab(ray.nearOffset[1], 1, ray.nearInv);
-  __m128 nearZ = slab(ray.nearOffset[2], 2, ray.nearInv);
-  __m128 farX = slab(ray.farOffset[0], 0, ray.farInv), farY = slab(ray.farOffset[1], 1, ray.farInv);
-  __m128 farZ = slab(ray.farOffset[2], 2, ray.farInv);
-  if constexpr (kSlack) {
-    nearX = _mm_sub_ps(nearX, ray.slack[0]);
-    nearY = _mm_sub_ps(nearY, ray.slack[1]);
-    nearZ = _mm_sub_ps(nearZ, ray.slack[2]);
-    farX = _mm_add_ps(farX, ray.slack[0]);
-    farY = _mm_add_ps(farY, ray.slack[1]);
-    farZ = _mm_add_ps(farZ, ray.slack[2]);
-  }
+  const __m128 nearX = slab(ray.nearOffset[0], ray.org[0], ray.nearInv[0]);
+  const __m128 nearY = slab(ray.nearOffset[1], ray.org[1], ray.nearInv[1]);
+  const __m128 nearZ = slab(ray.nearOffset[2], ray.org[2], ray.nearInv[2]);
+  const __m128 farX = slab(ray.farOffset[0], farOrg[0], ray.farInv[0]);
+  const __m128 farY = slab(ray.farOffset[1], farOrg[1], ray.farInv[1]);
+  const __m128 farZ = slab(ray.farOffset[2], farOrg[2], ray.farInv[2]);
   // NaN-first order (maxps / minps return their second operand when either is NaN): an axis whose distance is NaN
   // (an origin on the plane of an axis the ray is parallel to, see makeBvhRay) is ignored.
   const __m128 tn = _mm_max_ps(nearX, _mm_max_ps(nearY, _mm_max_ps(nearZ, _mm_setzero_ps())));
@@ -232,30 +257,21 @@ inline int intersectLanes4(const BvhNode<W>& node, const BvhRaySse& ray, int lan
 // The 8-lane slab test with AVX2: the operations of intersectLanes4 on 8 lanes at once, so both give the same
 // masks and entry distances bit for bit (no FMA: a fused multiply-add would round differently).
 // (A helper function, not a lambda: a lambda does not inherit the target attribute.)
-__attribute__((target("avx2"))) inline __m256 slab8(const float* plane, const BvhRay<8>& ray, int axis,
-                                                   const float* inv) {
-  return _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&ray.org[axis]), _mm256_load_ps(plane)),
-                       _mm256_broadcast_ss(&inv[axis]));
+__attribute__((target("avx2"))) inline __m256 slab8(const float* plane, const float& origin, const float& inv) {
+  return _mm256_mul_ps(_mm256_sub_ps(_mm256_broadcast_ss(&origin), _mm256_load_ps(plane)), _mm256_broadcast_ss(&inv));
 }
 
-template <bool kSlack>
+template <bool kFarOrigin>
 __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
                                                             float* tNear) {
   const float* base = node.minX;
-  __m256 nearX = slab8(planeAt(base, ray.nearOffset[0]), ray, 0, ray.nearInv);
-  __m256 nearY = slab8(planeAt(base, ray.nearOffset[1]), ray, 1, ray.nearInv);
-  __m256 nearZ = slab8(planeAt(base, ray.nearOffset[2]), ray, 2, ray.nearInv);
-  __m256 farX = slab8(planeAt(base, ray.farOffset[0]), ray, 0, ray.farInv);
-  __m256 farY = slab8(planeAt(base, ray.farOffset[1]), ray, 1, ray.farInv);
-  __m256 farZ = slab8(planeAt(base, ray.farOffset[2]), ray, 2, ray.farInv);
-  if constexpr (kSlack) {
-    nearX = _mm256_sub_ps(nearX, _mm256_broadcast_ss(&ray.slack[0]));
-    nearY = _mm256_sub_ps(nearY, _mm256_broadcast_ss(&ray.slack[1]));
-    nearZ = _mm256_sub_ps(nearZ, _mm256_broadcast_ss(&ray.slack[2]));
-    farX = _mm256_add_ps(farX, _mm256_broadcast_ss(&ray.slack[0]));
-    farY = _mm256_add_ps(farY, _mm256_broadcast_ss(&ray.slack[1]));
-    farZ = _mm256_add_ps(farZ, _mm256_broadcast_ss(&ray.slack[2]));
-  }
+  const float* farOrg = kFarOrigin ? ray.farOrg : ray.org;
+  const __m256 nearX = slab8(planeAt(base, ray.nearOffset[0]), ray.org[0], ray.nearInv[0]);
+  const __m256 nearY = slab8(planeAt(base, ray.nearOffset[1]), ray.org[1], ray.nearInv[1]);
+  const __m256 nearZ = slab8(planeAt(base, ray.nearOffset[2]), ray.org[2], ray.nearInv[2]);
+  const __m256 farX = slab8(planeAt(base, ray.farOffset[0]), farOrg[0], ray.farInv[0]);
+  const __m256 farY = slab8(planeAt(base, ray.farOffset[1]), farOrg[1], ray.farInv[1]);
+  const __m256 farZ = slab8(planeAt(base, ray.farOffset[2]), farOrg[2], ray.farInv[2]);
   // NaN-first order, as intersectLanes4.
   const __m256 tn = _mm256_max_ps(nearX, _mm256_max_ps(nearY, _mm256_max_ps(nearZ, _mm256_setzero_ps())));
   const __m256 tf = _mm256_min_ps(
@@ -282,8 +298,9 @@ struct BvhWalkEntry {
 
 // Node tests for the walk below: the hit mask of a node's children for t in [0, tMax] and their entry distances in
 // tNear. Empty lanes are rejected by their boxes (emptyBvhLaneBox), but for rays whose float slab distances are all
-// NaN, which the walk handles. kSlack = false for rays whose origin is exactly the float one (float queries:
-// slack is 0), which skips the padding adds.
+// NaN, which the walk handles. kFarOrigin: the far planes' distances are taken from BvhRay::farOrg (double rays);
+// false for rays whose origin is exactly the float one (float queries: both origins are it), which keeps one origin
+// in registers.
 // Lanes::Ray is the ray as the node test reads it, made by Lanes::prepare once per walk.
 template <int W> struct BvhLanesScalar {
   static constexpr int kWidth = W;
@@ -291,7 +308,7 @@ template <int W> struct BvhLanesScalar {
   static constexpr bool kAvx2 = false;       // the walk's leaf code may use AVX2 (Bvh8LanesAvx2)
   using Ray = BvhRay<W>;
   static const Ray& prepare(const BvhRay<W>& ray) { return ray; }
-  template <bool kSlack> static int test(const BvhNode<W>& node, const Ray& ray, float tMax, float* tNear) {
+  template <bool kFarOrigin> static int test(const BvhNode<W>& node, const Ray& ray, float tMax, float* tNear) {
     const float* lo[3] = {node.minX, node.minY, node.minZ};
     const float* hi[3] = {node.maxX, node.maxY, node.maxZ};
     int mask = 0;
@@ -302,8 +319,8 @@ template <int W> struct BvhLanesScalar {
         // makeBvhRay) leaves tn and tf as they are (std::max / std::min keep their first operand then).
         const bool negative = ray.negInvDir[a] > 0.0f;
         const float nearPlane = negative ? hi[a][i] : lo[a][i], farPlane = negative ? lo[a][i] : hi[a][i];
-        tn = std::max(tn, (ray.org[a] - nearPlane) * ray.nearInv[a] - ray.slack[a]);
-        tf = std::min(tf, (ray.org[a] - farPlane) * ray.farInv[a] + ray.slack[a]);
+        tn = std::max(tn, (ray.org[a] - nearPlane) * ray.nearInv[a]);
+        tf = std::min(tf, ((kFarOrigin ? ray.farOrg[a] : ray.org[a]) - farPlane) * ray.farInv[a]);
       }
       tNear[i] = tn;
       if (tn <= tf) mask |= 1 << i;
@@ -320,8 +337,9 @@ struct Bvh8LanesSse {
   static constexpr bool kAvx2 = false;
   using Ray = BvhRaySse;
   static Ray prepare(const BvhRay<8>& ray) { return broadcastSse(ray); }
-  template <bool kSlack> static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
-    return intersectLanes4<kSlack>(node, ray, 0, tMax, tNear) | intersectLanes4<kSlack>(node, ray, 4, tMax, tNear) << 4;
+  template <bool kFarOrigin> static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
+    return intersectLanes4<kFarOrigin>(node, ray, 0, tMax, tNear) |
+           intersectLanes4<kFarOrigin>(node, ray, 4, tMax, tNear) << 4;
   }
 };
 
@@ -352,9 +370,9 @@ struct Bvh8LanesAvx2 {
   static constexpr bool kAvx2 = true;
   using Ray = BvhRay<8>;
   static const Ray& prepare(const BvhRay<8>& ray) { return ray; }
-  template <bool kSlack>
+  template <bool kFarOrigin>
   __attribute__((target("avx2"))) static int test(const Bvh8Node& node, const Ray& ray, float tMax, float* tNear) {
-    return intersectLanes8<kSlack>(node, ray, tMax, tNear);
+    return intersectLanes8<kFarOrigin>(node, ray, tMax, tNear);
   }
 
   // A node's hit children (`mask`, 3 or more lanes) in entry order, by a sorting network on one register: returns
@@ -427,7 +445,7 @@ using Bvh8LanesBaseline = BvhLanesScalar<8>;
 // One inner node of the ray walk: tests its children for t in [0, tMax], continues `e` with one of those the ray
 // enters (the nearest when ordered) and pushes the others on the stack. False when the ray enters none (e unchanged).
 // Ordered: the other children pushed farthest first; unordered: as found (see walkRayLeaves).
-template <bool kOrdered, bool kSlack, class Lanes>
+template <bool kOrdered, bool kFarOrigin, class Lanes>
 [[gnu::always_inline]] inline bool descendNode(const Bvh<Lanes::kWidth>& bvh, const typename Lanes::Ray& lanesRay,
                                                float tMax, BvhWalkEntry& e, BvhWalkEntry* stack, int& top) {
   constexpr int W = Lanes::kWidth;
@@ -435,7 +453,7 @@ template <bool kOrdered, bool kSlack, class Lanes>
   using Entry = BvhWalkEntry;
   const Node& node = bvh.nodes[e.ref];
   alignas(32) float tn[W];
-  int mask = Lanes::template test<kSlack>(node, lanesRay, tMax, tn);
+  int mask = Lanes::template test<kFarOrigin>(node, lanesRay, tMax, tn);
   if (mask == 0) return false;
   int i = __builtin_ctz(unsigned(mask));
   mask &= mask - 1;
@@ -501,7 +519,7 @@ template <bool kOrdered, bool kSlack, class Lanes>
 // distance passed tMax (lowered by the leaf handler since they were pushed) are dropped. Unordered: the children are
 // pushed as found (no compare per node, but on closed meshes the nearest child is likelier to hold a first hit).
 // leaf(ref) returns true to end the walk.
-template <bool kOrdered, bool kSlack, class Lanes, class LeafFn>
+template <bool kOrdered, bool kFarOrigin, class Lanes, class LeafFn>
 inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWidth>& ray, float& tMax,
                           LeafFn&& leaf) {
   using Node = BvhNode<Lanes::kWidth>;
@@ -517,7 +535,7 @@ inline void walkRayLeaves(const Bvh<Lanes::kWidth>& bvh, const BvhRay<Lanes::kWi
     // Descend through inner nodes (kEmpty has the leaf bit: an empty lane entered, see emptyBvhLaneBox, ends there).
     bool missed = false;
     while (!(e.ref & Node::kLeafBit)) {
-      if (!descendNode<kOrdered, kSlack, Lanes>(bvh, lanesRay, tMax, e, stack, top)) {
+      if (!descendNode<kOrdered, kFarOrigin, Lanes>(bvh, lanesRay, tMax, e, stack, top)) {
         missed = true;
         break;
       }
