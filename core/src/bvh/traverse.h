@@ -204,8 +204,9 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
 
 #ifdef GQ_SSE42
 // The SSE node test's ray constants: org, farOrg, nearInv and farInv broadcast to 4 lanes once per walk, so a node
-// test loads them instead of splatting them, and the plane offsets. (The AVX2 test broadcasts from BvhRay as it loads: holding
-// 8-lane copies in the walk was measured 68 instructions more per bunny ray, spilled around the leaf tests.)
+// test loads them instead of splatting them, and the plane offsets. (The AVX2 test broadcasts from BvhRay as it
+// loads: holding 8-lane copies in the walk was measured 68 instructions more per bunny ray, spilled around the leaf
+// tests.)
 struct BvhRaySse {
   __m128 org[3], farOrg[3], nearInv[3], farInv[3];
   std::uint32_t nearOffset[3], farOffset[3];
