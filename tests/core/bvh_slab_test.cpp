@@ -149,8 +149,8 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
 }
 
 // A double origin gives the node tests two floats: the near planes' origin on the side that makes entries earlier and
-// the far planes' on the side that makes exits later (the floats just above and below it by the direction's sign; a
-// positive component enters by the min plane, whose distance grows with the origin). A float origin is both.
+// the far planes' on the side that makes exits later (for a positive component the entry (min - org) / dir falls as
+// the origin rises: the float above it for the near planes, the one below for the far planes). A float origin is both.
 TYPED_TEST(BvhSlab, NearAndFarOriginsAreTheFloatsAroundTheOriginOnTheConservativeSides) {
   using T = TypeParam;
   std::mt19937_64 rng(99);

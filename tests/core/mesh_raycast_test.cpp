@@ -164,14 +164,16 @@ TYPED_TEST(MeshRaycast, NormalUnderScaleAndPoseIsTheUnitTransformedCrossProductB
   const Transform<T> pose(Vec3<T>(1, -2, 3), Quat<T>(Eigen::AngleAxis<T>(T(1.1), Vec3<T>(-1, 0, 2).normalized())));
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> u(-1, 1);
-  int checked = 0;
+  int checked = 0, flipped = 0;
   for (const bool doubleSided : {false, true}) {
     const TriangleMeshGeometry<T> g(mesh, MeshScale<T>(s),
                                     doubleSided ? MeshGeometryFlag::DoubleSided : MeshGeometryFlag::None);
     for (int i = 0; i < 200; ++i) {
+      // Half the rays from outside (front faces), half from inside the closed mesh (back faces).
       const Vec3<T> target = pose.p + T(0.5) * draw3<T>(u, rng);
-      const Vec3<T> o = target + draw3<T>(u, rng).normalized() * T(10);
-      const Vec3<T> d = (target - o).normalized();
+      const Vec3<T> o = i % 2 == 0 ? Vec3<T>(target + draw3<T>(u, rng).normalized() * T(10))
+                                   : Vec3<T>(pose.p + T(0.1) * draw3<T>(u, rng));
+      const Vec3<T> d = i % 2 == 0 ? Vec3<T>((target - o).normalized()) : Vec3<T>(draw3<T>(u, rng).normalized());
       RaycastHit<T> hit;
       if (this->cast(g, pose, o, d, T(100), kDefaultHitFlags | HitFlag::MeshBothSides, 1, &hit) == 0) continue;
       const Vec3<T>* c = &mesh->triangleVertices[3 * std::size_t(mesh->cookedIndex[hit.faceIndex])];
@@ -179,14 +181,18 @@ TYPED_TEST(MeshRaycast, NormalUnderScaleAndPoseIsTheUnitTransformedCrossProductB
       n = Vec3<T>(n.x() * (T(1) / s.x()), n.y() * (T(1) / s.y()), n.z() * (T(1) / s.z()));
       n = pose.rotate(n);
       Vec3<T> expected = n / std::sqrt(n.squaredNorm());
-      if (doubleSided && expected.dot(d) > T(0)) expected = -expected;
+      if (doubleSided && expected.dot(d) > T(0)) {
+        expected = -expected;
+        ++flipped;
+      }
       EXPECT_EQ(hit.normal.x(), expected.x());
       EXPECT_EQ(hit.normal.y(), expected.y());
       EXPECT_EQ(hit.normal.z(), expected.z());
       ++checked;
     }
   }
-  EXPECT_GT(checked, 200);
+  EXPECT_GT(checked, 300);
+  EXPECT_GT(flipped, 50);  // double-sided back hits: the flip is checked
 }
 
 TYPED_TEST(MeshRaycast, MaxDistZeroNeverHitsAMesh) {

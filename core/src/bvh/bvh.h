@@ -36,11 +36,11 @@ template <int W> struct alignas(64) BvhNode {
 };
 using Bvh8Node = BvhNode<8>;
 
-// The box of an empty lane: inverted (min +inf, max -inf). A slab test from a finite float origin with a finite slack
-// rejects it whatever its bound (on every axis its entry distance is +inf or its exit -inf), so the node tests need no
-// mask for empty lanes, and it is the identity of box unions. A ray whose float slab distances are NaN on every axis
-// (an origin or direction overflowing float, or a double origin's slack overflowing it) may enter it: the walk skips
-// kEmpty references.
+// The box of an empty lane: inverted (min +inf, max -inf). A slab test from finite float origins rejects it whatever
+// its bound (on every axis its entry distance is +inf or its exit -inf), so the node tests need no mask for empty
+// lanes, and it is the identity of box unions. A ray whose float slab distances are NaN on every axis (an origin or
+// direction overflowing float, or a double origin just beyond float's range, whose float above it is +inf) may enter
+// it: the walk skips kEmpty references.
 inline Bounds3<float> emptyBvhLaneBox() {
   const float inf = std::numeric_limits<float>::infinity();
   return Bounds3<float>::fromMinMax(Vec3<float>::Constant(inf), Vec3<float>::Constant(-inf));

@@ -76,9 +76,9 @@ template <class T> inline __m128 floatLanes(const Vec3<T>& v) {
 }
 #endif
 
-// The least float at or above a T distance: the walk's float tMax for a T bound. A float rounded below t is finite
-// and not -0 (t > f), so the next float up is one unit of its bit pattern away: +1 for a positive f (FLT_MAX's next is
-// +inf), -1 for a negative one (std::nextafter's value without its library call, which double walks made per hit).
+// The least float at or above a T distance: the walk's float tMax for a T bound. A float rounded below t is not +inf
+// or -0 (t > f), so the next float up is one unit of its bit pattern away: +1 for a positive f (FLT_MAX's next is
+// +inf), -1 for a negative one (-inf's next is -FLT_MAX): std::nextafter's value without a library call per hit.
 template <class T> inline float floatCeil(T t) {
   const float f = static_cast<float>(t);
   if (!(T(f) < t)) return f;
@@ -141,8 +141,9 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
                                      _mm_set1_epi32(1));  // +1 on a positive float, -1 on a negative one
     const __m128 below = _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_and_si128(roundedUp, up1)));
     const __m128 above = _mm_castsi128_ps(_mm_add_epi32(bits, _mm_and_si128(roundedDown, up1)));
-    // A positive direction enters by its min planes (the distance grows with the origin: the float above it gives
-    // an earlier entry) and leaves by its max planes (the float below: a later exit); a negative one the reverse.
+    // A positive direction enters by its min planes and leaves by its max planes; the entry distance (min - org) / dir
+    // falls as the origin rises, so the float above the origin gives the earlier entry and the float below it the
+    // later exit; a negative direction the reverse.
     _mm_store_ps(r.org, _mm_blendv_ps(above, below, clamped));
     _mm_store_ps(r.farOrg, _mm_blendv_ps(below, above, clamped));
   }

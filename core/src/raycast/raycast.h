@@ -101,7 +101,7 @@ template <class T> class TriangleMeshRays {
  private:
   [[gnu::always_inline]] Vec3<T> toMesh(const Vec3<T>& v) const {
     if (!scaled_) return v;
-    // The diagonal product in scalars (Eigen's cwiseProduct assignment was left an out-of-line call per hit normal).
+    // The diagonal product in scalars (GCC leaves Eigen's cwiseProduct assignment an out-of-line call per hit normal).
     const Vec3<T>& d = invScaleDiagonal_;
     if (diagonal_) return Vec3<T>(v.x() * d.x(), v.y() * d.y(), v.z() * d.z());
     return invScale_ * v;
