@@ -186,6 +186,38 @@ TYPED_TEST(BvhSlab, NearAndFarOriginsAreTheFloatsAroundTheOriginOnTheConservativ
   }
 }
 
+#ifdef GQ_SSE42
+// The SSE form of the BVH ray computes the portable loop's constants bit for bit (lanes 0-2): origins, inverses and
+// plane offsets, for exact zeros of both signs, components below and at the clamp, and origins of every magnitude.
+TYPED_TEST(BvhSlab, SseRayConstantsAreTheScalarLoopsBitForBit) {
+  using T = TypeParam;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0), u(0, 1);
+  std::uniform_int_distribution<int> exponent(-150, 127);
+  const double special[] = {0.0, -0.0, 1e-25, -1e-25, 1e-20, -1e-20, 9.99999e-21, 1.0, -1.0};
+  int zeros = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Vec3<T> org, dir;
+    for (int a = 0; a < 3; ++a) {
+      org[a] = static_cast<T>(std::ldexp(mantissa(rng), exponent(rng)));
+      dir[a] = static_cast<T>(u(rng) < 0.2 ? special[std::size_t(u(rng) * 9) % 9] : mantissa(rng));
+      zeros += dir[a] == T(0);
+    }
+    const detail::BvhRay<8> sse = detail::makeBvhRay<8>(org, dir), loop = detail::makeBvhRayScalar<8>(org, dir);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_EQ(std::memcmp(&sse.org[a], &loop.org[a], sizeof(float)), 0) << org[a];
+      EXPECT_EQ(std::memcmp(&sse.farOrg[a], &loop.farOrg[a], sizeof(float)), 0) << org[a];
+      EXPECT_EQ(std::memcmp(&sse.negInvDir[a], &loop.negInvDir[a], sizeof(float)), 0) << dir[a];
+      EXPECT_EQ(std::memcmp(&sse.nearInv[a], &loop.nearInv[a], sizeof(float)), 0) << dir[a];
+      EXPECT_EQ(std::memcmp(&sse.farInv[a], &loop.farInv[a], sizeof(float)), 0) << dir[a];
+      EXPECT_EQ(sse.nearOffset[a], loop.nearOffset[a]);
+      EXPECT_EQ(sse.farOffset[a], loop.farOffset[a]);
+    }
+  }
+  EXPECT_GT(zeros, 1000);  // exact zeros of both signs are among the components
+}
+#endif
+
 }  // namespace
 }  // namespace gq
 

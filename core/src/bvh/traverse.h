@@ -98,17 +98,76 @@ template <class T> inline void floatsAround(T x, float& below, float& above) {
   above = T(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
-  // Components this small would give infinite inverses: they are clamped, but for an exact zero (below).
-  constexpr float kTinyDir = 1e-20f;
-  constexpr float kInf = std::numeric_limits<float>::infinity();
+namespace bvh_ray {
+// Direction components this small would give infinite inverses: they are clamped, but for an exact zero (below).
+inline constexpr float kTinyDir = 1e-20f;
+inline constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// An exactly zero component (bit i of zeroAxes): with an infinite inverse the axis admits the ray iff its origin is
+// within the slab, faces included. A slab distance is then -inf or +inf, or NaN (0 * inf) when the origin is on that
+// plane, which the node tests ignore (NaN-first min/max order): the face is entered. The near and far origins (on
+// the conservative sides of an inexact one) are within the float slab whenever the T origin is within the T box, the
+// planes being rounded outward. (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit
+// it at 0.)
+template <int W, class T> inline void setZeroAxesInverse(BvhRay<W>& r, const Vec3<T>& dir, int zeroAxes) {
+  for (int i = 0; i < 3; ++i)
+    if ((zeroAxes >> i) & 1) r.negInvDir[i] = std::signbit(dir[i]) ? kInf : -kInf;
+}
+
+// The near and far plane offsets of a direction whose sign bits are `negative`.
+template <int W> inline void setPlaneOffsets(BvhRay<W>& r, int negative) {
+  std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
+  std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));
+}
+}  // namespace bvh_ray
+
+// The BVH ray of a T ray, one axis at a time: the portable form, which makeBvhRay is where SSE4.2 is not compiled in.
+// The SSE form computes the same constants bit for bit (lanes 0-2; BvhSlab compares them).
+template <int W, class T> inline BvhRay<W> makeBvhRayScalar(const Vec3<T>& org, const Vec3<T>& dir) {
+  using namespace bvh_ray;
   BvhRay<W> r;
-  int negative;  // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
+  const int zeroAxes = int(dir[0] == T(0)) | int(dir[1] == T(0)) << 1 | int(dir[2] == T(0)) << 2;
+  int negative = 0;     // bit i: dir[i] < 0, the index of the plane offsets in kBvhPlaneOffsets
+  int clampedAxes = 0;  // bit i: |dir[i]| in float below kTinyDir (zero included)
+  for (int i = 0; i < 3; ++i) {
+    float d = static_cast<float>(dir[i]);
+    clampedAxes |= int(std::abs(d) < kTinyDir) << i;
+    if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
+    r.negInvDir[i] = -1.0f / d;
+    negative |= int(r.negInvDir[i] > 0.0f) << i;
+    // A positive direction enters by its min planes and leaves by its max planes; the entry distance
+    // (min - org) / dir falls as the origin rises, so the float above the origin gives the earlier entry and the
+    // float below it the later exit; a negative direction the reverse.
+    float below, above;
+    floatsAround(org[i], below, above);
+    r.org[i] = std::signbit(d) ? below : above;
+    r.farOrg[i] = std::signbit(d) ? above : below;
+  }
+  r.negInvDir[3] = 1.0f;
+  r.org[3] = r.farOrg[3] = 0.0f;
+  if (zeroAxes != 0) [[unlikely]] setZeroAxesInverse(r, dir, zeroAxes);
+  // A clamped axis leaves the slab no sooner than the ray does along it, or never: the clamp's exit distance,
+  // |gap| / kTinyDir, can come before the ray's own, so the far inverse is infinite there (far distances +inf inside
+  // the slab, -inf past its far plane, NaN on it, which the tests ignore; the far origin is inside the float slab
+  // whenever the T origin is inside the T box, rounding being monotonic and the planes rounded outward). The clamped
+  // near distance comes no later than the ray's own entry: conservative as it is.
+  for (int i = 0; i < 4; ++i) {
+    r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);
+    // Times inf: inf with negInvDir's sign (never 0).
+    r.farInv[i] = r.negInvDir[i] * (i < 3 && ((clampedAxes >> i) & 1) ? kInf : 1.0f + BvhRay<W>::kRelPad);
+  }
+  setPlaneOffsets(r, negative);
+  return r;
+}
+
 #ifdef GQ_SSE42
-  // The scalar loop below on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included)
-  // and the same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the
-  // clamped direction are the loop's `negInvDir > 0` (-1 / x flips the sign; it is 0 only for an infinite x, a
-  // direction overflowing float, whose slab values are 0 or NaN with either plane order).
+// makeBvhRayScalar on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included) and the
+// same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the clamped
+// direction are the loop's `negInvDir > 0` (-1 / x flips the sign; it is 0 only for an infinite x, a direction
+// overflowing float, whose slab values are 0 or NaN with either plane order).
+template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
+  using namespace bvh_ray;
+  BvhRay<W> r;
   const __m128 signBit = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(kTinyDir);
   const __m128 d = floatLanes(dir);
   // Axes whose component is exactly zero (T's own compare: a double too small for float is not zero).
@@ -121,7 +180,7 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
-  negative = _mm_movemask_ps(clamped) & 7;
+  const int negative = _mm_movemask_ps(clamped) & 7;
   const __m128 o = floatLanes(org);
   if constexpr (std::is_same_v<T, float>) {
     _mm_store_ps(r.org, o);
@@ -141,67 +200,26 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
                                      _mm_set1_epi32(1));  // +1 on a positive float, -1 on a negative one
     const __m128 below = _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_and_si128(roundedUp, up1)));
     const __m128 above = _mm_castsi128_ps(_mm_add_epi32(bits, _mm_and_si128(roundedDown, up1)));
-    // A positive direction enters by its min planes and leaves by its max planes; the entry distance (min - org) / dir
-    // falls as the origin rises, so the float above the origin gives the earlier entry and the float below it the
-    // later exit; a negative direction the reverse.
-    _mm_store_ps(r.org, _mm_blendv_ps(above, below, clamped));
+    _mm_store_ps(r.org, _mm_blendv_ps(above, below, clamped));  // the scalar loop's choice by the sign bit
     _mm_store_ps(r.farOrg, _mm_blendv_ps(below, above, clamped));
   }
-#else
-  const int zeroAxes = int(dir[0] == T(0)) | int(dir[1] == T(0)) << 1 | int(dir[2] == T(0)) << 2;
-  negative = 0;
-  int clampedAxes = 0;  // bit i: |dir[i]| in float below kTinyDir (zero included)
-  for (int i = 0; i < 3; ++i) {
-    float d = static_cast<float>(dir[i]);
-    clampedAxes |= int(std::abs(d) < kTinyDir) << i;
-    if (std::abs(d) < kTinyDir) d = std::signbit(d) ? -kTinyDir : kTinyDir;
-    r.negInvDir[i] = -1.0f / d;
-    negative |= int(r.negInvDir[i] > 0.0f) << i;
-    float below, above;
-    floatsAround(org[i], below, above);
-    r.org[i] = std::signbit(d) ? below : above;
-    r.farOrg[i] = std::signbit(d) ? above : below;
-  }
-  r.negInvDir[3] = 1.0f;
-  r.org[3] = r.farOrg[3] = 0.0f;
-#endif
-#ifdef GQ_SSE42
   _mm_store_ps(r.negInvDir, negInv);
-#endif
-  // An exactly zero component: with an infinite inverse the axis admits the ray iff its origin is within the slab,
-  // faces included. A slab distance is then -inf or +inf, or NaN (0 * inf) when the origin is on that plane, which
-  // the node tests ignore (NaN-first min/max order): the face is entered. The near and far origins (on the
-  // conservative sides of an inexact one) are within the float slab whenever the T origin is within the T box, the
-  // planes being rounded outward. (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit
-  // it at 0.)
   if (zeroAxes != 0) [[unlikely]] {
-    for (int i = 0; i < 3; ++i)
-      if ((zeroAxes >> i) & 1) r.negInvDir[i] = std::signbit(dir[i]) ? kInf : -kInf;
-#ifdef GQ_SSE42
+    setZeroAxesInverse(r, dir, zeroAxes);
     negInv = _mm_load_ps(r.negInvDir);
-#endif
   }
-  // A clamped axis leaves the slab no sooner than the ray does along it, or never: the clamp's exit distance,
-  // |gap| / kTinyDir, can come before the ray's own, so the far inverse is infinite there (far distances +inf inside
-  // the slab, -inf past its far plane, NaN on it, which the tests ignore; the far origin is inside the float slab
-  // whenever the T origin is inside the T box, rounding being monotonic and the planes rounded outward). The clamped
-  // near distance comes no later than the ray's own entry: conservative as it is.
-#ifdef GQ_SSE42
-  // The loop below, 3 lanes at once (the fourth, from floatLanes' 0 clamped to kTinyDir, is never read).
+  // The loop's near and far inverses (the fourth lane, from floatLanes' 0 clamped to kTinyDir, is never read).
   const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad), _mm_set1_ps(kInf), small);
   _mm_store_ps(r.nearInv, _mm_mul_ps(negInv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));
   _mm_store_ps(r.farInv, _mm_mul_ps(negInv, farScale));
-#else
-  for (int i = 0; i < 4; ++i) {
-    r.nearInv[i] = r.negInvDir[i] * (1.0f - BvhRay<W>::kRelPad);
-    // Times inf: inf with negInvDir's sign (never 0).
-    r.farInv[i] = r.negInvDir[i] * (i < 3 && ((clampedAxes >> i) & 1) ? kInf : 1.0f + BvhRay<W>::kRelPad);
-  }
-#endif
-  std::memcpy(r.nearOffset, &kBvhPlaneOffsets<W>.bytes[negative][0], sizeof(r.nearOffset));
-  std::memcpy(r.farOffset, &kBvhPlaneOffsets<W>.bytes[negative][3], sizeof(r.farOffset));
+  setPlaneOffsets(r, negative);
   return r;
 }
+#else
+template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
+  return makeBvhRayScalar<W>(org, dir);
+}
+#endif
 
 #ifdef GQ_SSE42
 // The SSE node test's ray constants: org, farOrg, nearInv and farInv broadcast to 4 lanes once per walk, so a node
