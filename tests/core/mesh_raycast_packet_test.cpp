@@ -235,6 +235,7 @@ TYPED_TEST(MeshRaycastPacket, LeafTrianglesLoadTheSameFromRegistersAndLaneByLane
         EXPECT_EQ(wide.v[k][a][i], lanes.v[k][a][i]);
         EXPECT_EQ(wide.v[k][a][i], mesh->triangleVertices[3 * std::size_t(i) + std::size_t(k)][a]);
       }
+#ifdef GQ_SSE42
   // The AVX2 walk's 256-bit loads: the same rows.
   if (__builtin_cpu_supports("avx2")) {
     detail::TriangleVertices4<T> avx2;
@@ -243,6 +244,7 @@ TYPED_TEST(MeshRaycastPacket, LeafTrianglesLoadTheSameFromRegistersAndLaneByLane
       for (int a = 0; a < 3; ++a)
         for (int i = 0; i < 4; ++i) EXPECT_EQ(avx2.v[k][a][i], wide.v[k][a][i]);
   }
+#endif
   // Fewer than 4 triangles stored: the missing lanes are zero.
   detail::TriangleVertices4<T> three;
   detail::loadTriangles4(mesh->triangleVertices.data(), 3, false, three);
