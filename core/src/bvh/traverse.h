@@ -91,11 +91,11 @@ template <class T> inline float floatCeil(T t) {
 }
 
 // The floats next to a T value below and above it (both the value when float holds it; NaN stays NaN, values beyond
-// float's range give +-FLT_MAX and +-inf).
+// float's range give +-FLT_MAX and +-inf): floatCeil, and the floor as its mirror (negation is exact and rounding to
+// nearest symmetric).
 template <class T> inline void floatsAround(T x, float& below, float& above) {
-  const float f = static_cast<float>(x);
-  below = T(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-  above = T(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  below = -floatCeil(-x);
+  above = floatCeil(x);
 }
 
 namespace bvh_ray {
