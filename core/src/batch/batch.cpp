@@ -150,6 +150,21 @@ template <class T> struct HitArrayOut {
     if (count > 0 && &h != hits + i) hits[i] = h;
     hasHit[i] = count > 0 ? 1 : 0;
   }
+  // A mesh hit kept without its position (flags 0: none), and the position: the single raycast's hit field by field.
+  void store(std::size_t i, const detail::MeshRayHit<T>& c, const Vec3<T>& position) const {
+    const bool hit = c.flags.bits() != 0;
+    if (hit) {
+      RaycastHit<T>& h = hits[i];
+      h.position = position;
+      h.normal = c.normal;
+      h.distance = c.distance;
+      h.flags = c.flags;
+      h.faceIndex = c.faceIndex;
+      h.u = c.u;
+      h.v = c.v;
+    }
+    hasHit[i] = hit ? 1 : 0;
+  }
 };
 
 // Columns (RayHitColumns): the kernel writes into a local hit, copied field by field.
@@ -158,15 +173,21 @@ template <class T> struct HitColumnsOut {
   const RayHitColumns<T>& columns;
   RaycastHit<T>* slot(std::size_t, Local& local) const { return &local; }
   void store(std::size_t i, std::uint32_t count, const RaycastHit<T>& h) const {
-    const bool hit = count > 0;
+    write(i, count > 0, h.distance, h.position, h.normal, h.faceIndex);
+  }
+  void store(std::size_t i, const detail::MeshRayHit<T>& c, const Vec3<T>& position) const {
+    write(i, c.flags.bits() != 0, c.distance, position, c.normal, c.faceIndex);
+  }
+  void write(std::size_t i, bool hit, T distance, const Vec3<T>& position, const Vec3<T>& normal,
+             std::uint32_t faceIndex) const {
     if (columns.hit) columns.hit[i] = hit ? 1 : 0;
-    if (columns.distance) columns.distance[i] = hit ? h.distance : std::numeric_limits<T>::infinity();
+    if (columns.distance) columns.distance[i] = hit ? distance : std::numeric_limits<T>::infinity();
     for (int k = 0; k < 3; ++k) {
-      if (columns.position) columns.position[3 * i + std::size_t(k)] = hit ? h.position[k] : T(0);
-      if (columns.normal) columns.normal[3 * i + std::size_t(k)] = hit ? h.normal[k] : T(0);
+      if (columns.position) columns.position[3 * i + std::size_t(k)] = hit ? position[k] : T(0);
+      if (columns.normal) columns.normal[3 * i + std::size_t(k)] = hit ? normal[k] : T(0);
     }
     if (columns.faceIndex)
-      columns.faceIndex[i] = hit && h.faceIndex != kInvalidFaceIndex ? std::int64_t(h.faceIndex) : std::int64_t(-1);
+      columns.faceIndex[i] = hit && faceIndex != kInvalidFaceIndex ? std::int64_t(faceIndex) : std::int64_t(-1);
   }
 };
 
@@ -253,13 +274,7 @@ template <class T> struct KeyOrderScratch {
   // The single raycast's output but its position, which the copy-out computes from the input ray as the raycast does
   // (origin + dir * distance): so a slot fits a cache line (flags 0: no hit; a hit has at least FaceIndex; or
   // kByIndex).
-  struct Hit {
-    Vec3<T> normal;
-    T distance;
-    T u, v;
-    std::uint32_t faceIndex;
-    HitFlags flags;
-  };
+  using Hit = detail::MeshRayHit<T>;
   // A ray's copy until it is cast, then its hit.
   union alignas(sizeof(T) == 8 ? 64 : 32) Slot {
     Slot() {}  // no member alive: each is begun by placement new
@@ -401,9 +416,6 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   // Each bucket sorted and cast.
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
   typename Scratch::Slot* slots = scratch.slots.data;
-  // The casts leave the position to the copy-out (which computes it from the input ray as the raycast does); a hit
-  // gets its flag back with the other fields.
-  const HitFlags castFlags = rays.hitFlags.without(HitFlag::Position), positionFlag = rays.hitFlags & HitFlag::Position;
   for (std::size_t b = 0; b < buckets; ++b) {
     const std::size_t first = starts[b], count = starts[b + 1] - first;
     if (count == 0) continue;
@@ -423,17 +435,16 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     for (std::size_t j = 0; j < count; ++j) {
       if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
       const std::size_t at = sorted[j] & 0xffffffffu;
-      const Ray& r = bucket[at].ray;  // read until its slot takes the hit
-      RaycastHit<T> hit;
+      const Ray& r = bucket[at].ray;  // copied into the query before its slot takes the hit
       Vec3<T> normalized;
       const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
       if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
-        if (items.mesh.cast(detail::rayQuery(r.origin, *dir, rays.maxDist, castFlags, 1u), &hit) != 0)
-          hit.flags |= positionFlag;
+        const detail::RayQuery<T> query = detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u);
+        items.mesh.castOne(query, *new (&bucket[at].hit) typename Scratch::Hit);
       } else {
-        hit.flags = Scratch::kByIndex;
+        new (&bucket[at].hit) typename Scratch::Hit;
+        bucket[at].hit.flags = Scratch::kByIndex;
       }
-      new (&bucket[at].hit) typename Scratch::Hit{hit.normal, hit.distance, hit.u, hit.v, hit.faceIndex, hit.flags};
     }
   }
   // The outputs in input order, each hit read kHitAhead rays ahead (one cache line).
@@ -448,18 +459,13 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       failed += items(i) ? 0 : 1;
       continue;
     }
-    RaycastHit<T> h;
-    if (c.flags.has(HitFlag::Position)) {  // the mesh raycast's position: ray.origin + ray.dir * t
+    // The mesh raycast's position: ray.origin + ray.dir * t.
+    Vec3<T> position = Vec3<T>::Zero();
+    if (c.flags.has(HitFlag::Position)) {
       Vec3<T> normalized;
-      h.position = rays.origins[i] + *directionOf(rays, rays.unitDirs[i], normalized) * c.distance;
+      position = rays.origins[i] + *directionOf(rays, rays.unitDirs[i], normalized) * c.distance;
     }
-    h.normal = c.normal;
-    h.distance = c.distance;
-    h.flags = c.flags;
-    h.faceIndex = c.faceIndex;
-    h.u = c.u;
-    h.v = c.v;
-    items.out.store(i, h.flags.bits() != 0 ? 1u : 0u, h);
+    items.out.store(i, c, position);
     failed += record(items.statuses, i, Status()) ? 0 : 1;
   }
   return failed;

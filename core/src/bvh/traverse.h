@@ -165,7 +165,9 @@ template <int W, class T> inline BvhRay<W> makeBvhRayScalar(const Vec3<T>& org, 
 // same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the clamped
 // direction are the loop's `negInvDir > 0` (-1 / x flips the sign; it is 0 only for an infinite x, a direction
 // overflowing float, whose slab values are 0 or NaN with either plane order).
-template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
+// Forced inline (as the mesh kernel's ray constants): GCC left it out of line once the kernel had two instances.
+template <int W, class T>
+[[gnu::always_inline]] inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   using namespace bvh_ray;
   BvhRay<W> r;
   const __m128 signBit = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(kTinyDir);
@@ -216,7 +218,9 @@ template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const 
   return r;
 }
 #else
-template <int W, class T> inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
+// Forced inline (as the mesh kernel's ray constants): GCC left it out of line once the kernel had two instances.
+template <int W, class T>
+[[gnu::always_inline]] inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   return makeBvhRayScalar<W>(org, dir);
 }
 #endif

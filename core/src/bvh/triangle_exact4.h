@@ -218,7 +218,9 @@ template <class T> struct WatertightRay4 {
   T ox, oy, oz;  // ray.org[ray.kx], ray.org[ray.ky], ray.org[ray.kz]
 };
 
-template <class T> inline WatertightRay4<T> makeWatertightRay4(const WatertightRay<T>& ray) {
+// Forced inline (as the mesh kernel's ray constants): GCC left it out of line once the kernel had two instances.
+template <class T>
+[[gnu::always_inline]] inline WatertightRay4<T> makeWatertightRay4(const WatertightRay<T>& ray) {
   return WatertightRay4<T>{ray, ray.org[ray.kx], ray.org[ray.ky], ray.org[ray.kz]};
 }
 

@@ -24,7 +24,9 @@ template <class T> struct WatertightRay {
   T sx = T(0), sy = T(0), sz = T(1);  // shear constants: dir[kx]/dir[kz], dir[ky]/dir[kz], 1/dir[kz]
 };
 
-template <class T> inline WatertightRay<T> makeWatertightRay(const Vec3<T>& org, const Vec3<T>& dir) {
+// Forced inline (as the mesh kernel's ray constants): GCC left it out of line once the kernel had two instances.
+template <class T>
+[[gnu::always_inline]] inline WatertightRay<T> makeWatertightRay(const Vec3<T>& org, const Vec3<T>& dir) {
   // Written without branches: for rays in all directions each of these choices is a coin toss.
   const Vec3<T> a = dir.cwiseAbs();
   // kz: x if it exceeds y and z, else y if it exceeds z, else z.

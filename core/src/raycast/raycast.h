@@ -88,6 +88,16 @@ Status raycastShapeChecked(const Vec3<T>& origin, const Vec3<T>& unitDir, const 
                            const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
                            RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept;
 
+// A mesh raycast's hit without its position (which its caller computes from the ray as the raycast does, origin +
+// dir * distance): the fields a batch keeps per ray, one 64-byte cache line in double. flags is 0 for no hit.
+template <class T> struct MeshRayHit {
+  Vec3<T> normal;
+  T distance;
+  T u, v;
+  std::uint32_t faceIndex;
+  HitFlags flags;
+};
+
 // Raycasts against one mesh at one pose (a single raycast, or a batch's rays): the mesh frame and the node test the
 // CPU runs are found once; cast() is raycastTriangleMesh's kernel for one ray. Holds references to g and pose.
 template <class T> class TriangleMeshRays {
@@ -97,6 +107,9 @@ template <class T> class TriangleMeshRays {
   // `scaled`: !g.scale.isIdentity(), as a prepared shape keeps it.
   TriangleMeshRays(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, bool scaled);
   std::uint32_t cast(const RayQuery<T>& ray, RaycastHit<T>* hits) const;
+  // cast() for one hit (ray.maxHits 1) written as a MeshRayHit: its fields are cast()'s bit for bit but the position,
+  // whose flag it keeps when asked; flags 0 when nothing is hit. Returns the hit count.
+  std::uint32_t castOne(const RayQuery<T>& ray, MeshRayHit<T>& hit) const;
 
  private:
   [[gnu::always_inline]] Vec3<T> toMesh(const Vec3<T>& v) const {
@@ -106,8 +119,10 @@ template <class T> class TriangleMeshRays {
     if (diagonal_) return Vec3<T>(v.x() * d.x(), v.y() * d.y(), v.z() * d.z());
     return invScale_ * v;
   }
-  void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri,
-                RaycastHit<T>& hit) const;
+  // Hit: RaycastHit or MeshRayHit (no position).
+  template <class Hit>
+  void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri, Hit& hit) const;
+  template <class Hit> std::uint32_t castInto(const RayQuery<T>& ray, Hit* hits) const;
   void writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir, bool frontFace, Vec3<T>& normal) const;
 
   const TriangleMeshGeometry<T>& g_;

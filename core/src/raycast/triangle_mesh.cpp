@@ -49,7 +49,9 @@ template <class T> struct RawHit {
 
 template <class T> class MeshRaycaster {
  public:
-  MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir, bool cullBackFaces)
+  // Inlined into its callers (the single cast and a batch's), so the ray constants stay in registers.
+  [[gnu::always_inline]] MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir,
+                                       bool cullBackFaces)
       : mesh_(mesh), ray_(makeWatertightRay(org, dir)), ray4_(makeWatertightRay4(ray_)), bvhRay_(makeBvhRay<8>(org, dir)),
         cull_(cullBackFaces) {}
 
@@ -330,19 +332,19 @@ template <class T>
   normal = flip ? Vec3<T>(-n) : n;
 }
 
-// The requested fields of one hit, written in place.
+// The requested fields of one hit, written in place. A MeshRayHit has no position: it keeps the flag when asked.
 template <class T>
+template <class Hit>
 [[gnu::always_inline]] inline void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked,
-                                                                  const TriangleRayHit<T>& tri,
-                                                                  RaycastHit<T>& hit) const {
+                                                                  const TriangleRayHit<T>& tri, Hit& hit) const {
   // Every field written once: the requested ones, RaycastHit's defaults for the others.
   const TriangleMesh<T>& mesh = *g_.mesh;
   HitFlags flags = HitFlag::FaceIndex;
-  hit.position = Vec3<T>::Zero();
-  if (ray.flags.has(HitFlag::Position)) {
-    hit.position = ray.origin + ray.dir * tri.t;
-    flags |= HitFlag::Position;
+  if constexpr (std::is_same_v<Hit, RaycastHit<T>>) {
+    hit.position = Vec3<T>::Zero();
+    if (ray.flags.has(HitFlag::Position)) hit.position = ray.origin + ray.dir * tri.t;
   }
+  if (ray.flags.has(HitFlag::Position)) flags |= HitFlag::Position;
   hit.normal = Vec3<T>::Zero();
   if (ray.flags.has(HitFlag::Normal)) {
     writeNormal(&mesh.triangleVertices[3 * std::size_t(cooked)], ray.dir, tri.frontFace, hit.normal);
@@ -360,9 +362,10 @@ template <class T>
   hit.flags = flags;
 }
 
+// cast() into hits of type Hit (RaycastHit, or MeshRayHit for one hit).
 template <class T>
-[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
-                                                                      RaycastHit<T>* hits) const {
+template <class Hit>
+[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::castInto(const RayQuery<T>& ray, Hit* hits) const {
   if (!(ray.maxDist > T(0))) return 0;  // a zero-length ray never hits a mesh
   // The ray in mesh space (one branch per frame step, the identity ones skipped).
   Vec3<T> org = ray.origin - pose_.p, dir = ray.dir;
@@ -377,7 +380,7 @@ template <class T>
   const bool cull = !(g_.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
   const MeshRaycaster<T> caster(*g_.mesh, org, dir, cull);
   const MeshWalk walk = MeshWalk(walk_);
-  if (ray.maxHits > 1) {
+  if (std::is_same_v<Hit, RaycastHit<T>> && ray.maxHits > 1) {
     // Kept per thread (a mesh raycast runs no user code): no allocation once it holds the most hits a call kept.
     thread_local std::vector<RawHit<T>> raw;
     raw.clear();
@@ -391,6 +394,19 @@ template <class T>
   if (!found) return 0;
   writeHit(ray, best.cooked, best.tri, hits[0]);
   return 1;
+}
+
+template <class T>
+[[gnu::always_inline]] inline std::uint32_t TriangleMeshRays<T>::cast(const RayQuery<T>& ray,
+                                                                      RaycastHit<T>* hits) const {
+  return castInto(ray, hits);
+}
+
+template <class T>
+std::uint32_t TriangleMeshRays<T>::castOne(const RayQuery<T>& ray, MeshRayHit<T>& hit) const {
+  const std::uint32_t n = castInto(ray, &hit);
+  if (n == 0) hit.flags = HitFlags();
+  return n;
 }
 
 template class TriangleMeshRays<float>;
