@@ -5,11 +5,10 @@
 //    slow); items_per_second of both are rays per second.
 //  - SceneRaycastBatch/threads: the 1M rays as one raycastBatch, 1 and 2 threads (the speedup is the ratio).
 //  - BunnyRaycastLoop, BunnyRaycastBatch/threads: 1M rays at the bunny, a loop of single raycasts vs a batch with the
-//    default settings (coherent ray order on 1 thread; input order on 2). The loop stores each ray's hit and hit flag
+//    default settings (coherent ray order, each thread ordering its own blocks). The loop stores each ray's hit and hit flag
 //    into arrays of 1M entries, as the batch does (and as a caller's loop keeping the answers does);
 //    BunnyRaycastBatchInputOrder/threads: the batch in input order (coherentRayOrder false);
-//    BunnyRaycastBatchKeptScratch/threads: the batch with one BatchScratch kept across calls (used by the coherent
-//    order on 1 thread).
+//    BunnyRaycastBatchKeptScratch/threads: the batch with one BatchScratch kept across calls.
 //  - SelfPairs: Scene::overlappingPairs over the 1000 objects; BruteSelfPairs: every pair through overlap().
 // Counters `hits` / `pairs` let the answers of the two forms be compared in the output.
 #include <benchmark/benchmark.h>

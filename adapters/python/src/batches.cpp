@@ -89,8 +89,8 @@ void bindBatches(py::module_& m) {
       "Memory kept between ray batches against a triangle mesh (gq::BatchScratch): pass it as scratch= to"
       " raycast_batch or raycast_batch_faces casting batch after batch, and the batches reuse the arrays an earlier"
       " call grew instead of allocating and faulting in fresh ones (about 72 bytes a ray in float64, 48 in float32)."
-      " On more than one thread a batch casts in its coherent ray order only with one. Calls passing one scratch from"
-      " several Python threads take turns. The answers are the same with or without it.")
+      " Calls passing one scratch from several Python threads take turns. The answers are the same with or without"
+      " it.")
       .def(py::init<>())
       .def_property_readonly("bytes", [](BatchScratchObject& s) {
             py::gil_scoped_release release;  // a batch holding the lock takes the GIL back before it unlocks

@@ -87,15 +87,14 @@ struct BatchSettings {
   // runs the hardware's count.
   std::uint32_t threads = 0;
   std::size_t grain = 64;     // items per task (at least 1)
-  // Ray batches against a triangle mesh of at least 32,768 rays run on one worker (threads == 1) cast their rays in a
-  // coherent order: in blocks of up to 1,048,576 input rays, sorted by where each ray passes the mesh's bounds and
-  // by its direction, so neighbouring rays walk the same nodes while they are in cache (grain does not apply to
-  // them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that are
-  // already coherent). On more than one worker the batch keeps the input order, which was measured as fast there
-  // without the scratch (docs/performance.md). Memory: 68 bytes (double; 36 in float) a ray of the largest block and
-  // 16 bytes a ray of its largest bucket, each array in whole 2 MB pages: for 1M rays about 72 MB (double) when they
-  // spread over the buckets, at most 84 MB (52 MB in float) when they all fall in one; freed on return unless
-  // `scratch` keeps it.
+  // Ray batches against a triangle mesh of at least 32,768 rays per worker cast their rays in a coherent order: in
+  // blocks of up to 1,048,576 input rays (at least one a worker), each sorted by where its rays pass the mesh's
+  // bounds and by their direction, so neighbouring rays walk the same nodes while they are in cache (grain does not
+  // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that
+  // are already coherent). Memory, per worker: 68 bytes (double; 36 in float) a ray of its largest block and 16 bytes
+  // a ray of that block's largest bucket, each array in whole 2 MB pages: for 1M rays about 72 MB (double) in all
+  // when they spread over the buckets, at most 84 MB (52 MB in float) when they all fall in one; freed on return
+  // unless `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };

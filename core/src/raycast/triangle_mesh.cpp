@@ -52,7 +52,7 @@ template <class T> class MeshRaycaster {
   // Inlined into its callers (the single cast and a batch's), so the ray constants stay in registers.
   [[gnu::always_inline]] MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir,
                                        bool cullBackFaces)
-      : mesh_(mesh), ray_(makeWatertightRay(org, dir)), ray4_(makeWatertightRay4(ray_)), bvhRay_(makeBvhRay<8>(org, dir)),
+      : mesh_(mesh), ray4_(makeWatertightRay4(makeWatertightRay(org, dir))), bvhRay_(makeBvhRay<8>(org, dir)),
         cull_(cullBackFaces) {}
 
   // Out of line: it runs only on the lanes the wide test cannot decide (an exactly zero edge function, a non-finite
@@ -61,7 +61,7 @@ template <class T> class MeshRaycaster {
     const Vec3<T>* v = &mesh_.triangleVertices[3 * std::size_t(cooked)];
     // Coordinates near the scalar's limit (|x| ~ 1e307) overflow the watertight test's products: its NaN t would
     // pass the t <= maxT test, so a hit must also be finite.
-    return intersectRayTriangle(ray_, v[0], v[1], v[2], maxT, cull_, hit) && std::isfinite(hit.t) &&
+    return intersectRayTriangle(ray4_.ray, v[0], v[1], v[2], maxT, cull_, hit) && std::isfinite(hit.t) &&
            std::isfinite(hit.u) && std::isfinite(hit.v);
   }
 
@@ -193,8 +193,7 @@ template <class T> class MeshRaycaster {
  private:
   static constexpr bool kFloat = std::is_same_v<T, float>;
   const TriangleMesh<T>& mesh_;
-  WatertightRay<T> ray_;
-  WatertightRay4<T> ray4_;
+  WatertightRay4<T> ray4_;  // with the scalar test's WatertightRay
   BvhRay<8> bvhRay_;
   bool cull_;
 };
