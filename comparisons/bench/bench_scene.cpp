@@ -5,7 +5,7 @@
 //    slow); items_per_second of both are rays per second.
 //  - SceneRaycastBatch/threads: the 1M rays as one raycastBatch, 1 and 2 threads (the speedup is the ratio).
 //  - BunnyRaycastLoop, BunnyRaycastBatch/threads: 1M rays at the bunny, a loop of single raycasts vs a batch with the
-//    default settings (coherent ray order, each thread ordering its own blocks). The loop stores each ray's hit and hit flag
+//    default settings (coherent ray order, the threads sharing each block). The loop stores each ray's hit and hit flag
 //    into arrays of 1M entries, as the batch does (and as a caller's loop keeping the answers does);
 //    BunnyRaycastBatchInputOrder/threads: the batch in input order (coherentRayOrder false);
 //    BunnyRaycastBatchKeptScratch/threads: the batch with one BatchScratch kept across calls.

@@ -87,14 +87,14 @@ struct BatchSettings {
   // runs the hardware's count.
   std::uint32_t threads = 0;
   std::size_t grain = 64;     // items per task (at least 1)
-  // Ray batches against a triangle mesh of at least 32,768 rays per worker cast their rays in a coherent order: in
-  // blocks of up to 1,048,576 input rays (at least one a worker), each sorted by where its rays pass the mesh's
-  // bounds and by their direction, so neighbouring rays walk the same nodes while they are in cache (grain does not
+  // Ray batches against a triangle mesh of at least 32,768 rays cast their rays in a coherent order: in blocks of up
+  // to 1,048,576 input rays, each sorted by where its rays pass the mesh's bounds and by their direction, so
+  // neighbouring rays walk the same nodes while they are in cache; the workers share each block (grain does not
   // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that
-  // are already coherent). Memory, per worker: 68 bytes (double; 36 in float) a ray of its largest block and 16 bytes
-  // a ray of that block's largest bucket, each array in whole 2 MB pages: for 1M rays about 72 MB (double) in all
-  // when they spread over the buckets, at most 84 MB (52 MB in float) when they all fall in one; freed on return
-  // unless `scratch` keeps it.
+  // are already coherent). Memory: 68 bytes (double; 36 in float) a ray of the largest block and, per worker, 16
+  // bytes a ray of its largest bucket, each array in whole 2 MB pages: for 1M rays on one worker about 72 MB
+  // (double) when they spread over the buckets, at most 84 MB (52 MB in float) when they all fall in one; freed on
+  // return unless `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };

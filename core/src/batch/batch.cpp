@@ -263,9 +263,10 @@ template <class E> class ScratchArray {
   std::size_t size = 0;
 };
 
-// One worker's arrays for castBlockInKeyOrder, kept from block to block (their first use costs page faults), per ray
-// of a block: its key, then its slot (4 bytes), and a slot holding its copy, then its hit (one 64-byte cache line in
-// double, 32 bytes in float); 16 bytes a ray of the largest bucket for its sort.
+// The arrays of castBlockInKeyOrder, kept from block to block (their first use costs page faults). The block's, in
+// the first worker slot's scratch: per ray of a block its key, then its slot (4 bytes), and a slot holding its copy,
+// then its hit (one 64-byte cache line in double, 32 bytes in float); each worker's: 16 bytes a ray of the largest
+// bucket for its sorts.
 template <class T> struct KeyOrderScratch {
   struct Ray {  // a ray of the block, copied in coarse key order
     Vec3<T> origin, dir;
@@ -287,17 +288,18 @@ template <class T> struct KeyOrderScratch {
   ScratchArray<Slot> slots;
   ScratchArray<std::uint32_t> rank;   // by ray within the block: its key, then its slot, or kAnswered
   std::vector<std::uint32_t> starts;  // where each coarse bucket begins in slots
-  std::vector<std::uint32_t> next;    // where the next ray of each bucket is copied
+  // By part of the block (in input order) and bucket: the part's ray count, then where its next ray is copied.
+  std::vector<std::uint32_t> next;
 
   std::size_t bytes() const noexcept {
     return items.size * sizeof(std::uint64_t) + slots.size * sizeof(Slot) + rank.size * sizeof(std::uint32_t) +
            (starts.capacity() + next.capacity()) * sizeof(std::uint32_t);
   }
-  bool reserve(std::size_t m, std::size_t buckets) {
+  bool reserve(std::size_t m, std::size_t buckets, std::size_t parts) {
     try {
       if (!slots.reserve(m) || !rank.reserve(m)) return false;
       starts.resize(buckets + 1);
-      next.resize(buckets);
+      next.resize(buckets * parts);
       return true;
     } catch (const std::bad_alloc&) {
       return false;
@@ -346,154 +348,190 @@ void BatchScratch::release() noexcept { impl_.reset(); }
 
 namespace {
 
-// Rays [begin, end) of a batch cast in key order (batch/ray_order.h); returns how many failed. Rays that miss the
-// mesh's bounds are cast at once in input order. The others are copied, in one sequential pass over the caller's
-// arrays, into buckets of the key's top bits (RayOrderSettings::coarseBits), each ray's slot noted at its index
-// (rank); each bucket is then sorted by the remaining bits and cast from its copies, each hit written over the copy
-// it was cast from. A last pass in input order copies each ray's hit from its slot (read a few rays ahead) to the
-// caller's arrays, written sequentially. So every write of the casts stays within a bucket's slots: a scattered
+// Rays [begin, end) of a batch cast in key order (batch/ray_order.h) by the workers together; returns how many
+// failed. Rays that miss the mesh's bounds are cast at once in input order. The others are copied, in one sequential
+// pass over each part of the caller's arrays (a part a worker), into buckets of the key's top bits
+// (RayOrderSettings::coarseBits), each ray's slot noted at its index (rank); the buckets are then taken by the
+// workers as they come free, each sorted by the remaining bits and cast from its copies, each hit written over the
+// copy it was cast from. A last pass in input order copies each ray's hit from its slot (read a few rays ahead) to
+// the caller's arrays, written sequentially. So every write of the casts stays within a bucket's slots: a scattered
 // write there (the hits, or rank, at input indices) waits for its cache line and holds up the cast's own stores
 // behind it (a 4-byte rank write per cast cost about 60 ms a million rays). A ray failing the quick checks takes the
 // per-index path (the single query's Status). Without memory for the scratch the block keeps input order.
 template <class T, class Out>
 std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
-                                const detail::RayOrderSettings& order, KeyOrderScratch<T>& scratch,
-                                std::size_t begin, std::size_t end) {
+                                const detail::RayOrderSettings& order, const WorkerScratch<T>& workers,
+                                std::size_t workerCount, const BatchSettings& settings, std::size_t begin,
+                                std::size_t end) {
   using Scratch = KeyOrderScratch<T>;
   using Ray = typename Scratch::Ray;
   constexpr std::size_t kPrefetchAhead = 16;  // rays
   constexpr std::size_t kComparisonSortRays = 256;
+  constexpr std::size_t kHitAhead = 24;       // rays (one cache line each)
+  constexpr std::size_t kCopyOutGrain = 8192;  // rays
   const RayBatch<T>& rays = items.rays;
   // A key's bits: coarseBits (its bucket), fineBits (its place in the bucket), unsortedBits.
   const int fineBits = order.sortedBits - order.coarseBits, unsortedBits = 30 - order.sortedBits;
   const int bucketShift = fineBits + unsortedBits;
   const std::size_t buckets = std::size_t(1) << order.coarseBits;
-  const std::size_t size = end - begin;
-  std::size_t failed = 0;
-  if (!scratch.reserve(size, buckets)) {
-    for (std::size_t i = begin; i < end; ++i) failed += items(i) ? 0 : 1;
-    return failed;
-  }
-  // Keys (in rank until the rays are copied), and the size of each bucket.
+  const std::size_t size = end - begin, parts = workerCount;
+  const std::size_t partRays = (size + parts - 1) / parts;
+  Scratch& scratch = *workers[0];
+  // Input order for the rays [first, last) of the block whose rank passes `cast` (all when the keys are not made).
+  auto inputOrder = [&](auto&& cast) {
+    return runRanges(size, settings.grain, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+      std::size_t failed = 0;
+      for (std::size_t j = first; j < last; ++j) failed += cast(j) && !items(begin + j) ? 1 : 0;
+      return failed;
+    });
+  };
+  if (!scratch.reserve(size, buckets, parts)) return inputOrder([](std::size_t) { return true; });
   std::uint32_t* rank = scratch.rank.data;
-  key.keyRays(StridedArray<Vec3<T>>(&rays.origins[begin], size, rays.origins.stride),
-              StridedArray<Vec3<T>>(&rays.unitDirs[begin], size, rays.unitDirs.stride), rays.maxDist, rank);
   std::uint32_t* starts = scratch.starts.data();
-  std::fill(starts, starts + buckets + 1, 0u);
-  for (std::size_t j = 0; j < size; ++j) {
-    const std::uint32_t k = rank[j];
-    if (k == detail::RayOrderKey<T>::kMisses) {
-      failed += items(begin + j) ? 0 : 1;
-      rank[j] = Scratch::kAnswered;
-    } else {
-      ++starts[(k >> bucketShift) + 1];
-    }
-  }
-  std::uint32_t largest = 0;  // bucket
-  for (std::size_t b = 1; b <= buckets; ++b) {
-    largest = std::max(largest, starts[b]);
-    starts[b] += starts[b - 1];
-  }
-  if (!scratch.items.reserve(2 * std::size_t(largest))) {  // no memory to sort the buckets: input order
-    for (std::size_t j = 0; j < size; ++j) {
-      if (rank[j] != Scratch::kAnswered) failed += items(begin + j) ? 0 : 1;
-    }
-    return failed;
-  }
-  // The rays copied into their buckets.
-  {
-    std::uint32_t* next = scratch.next.data();
-    std::copy(starts, starts + buckets, next);
-    for (std::size_t j = 0; j < size; ++j) {
-      const std::uint32_t k = rank[j];
-      if (k == Scratch::kAnswered) continue;
-      const std::size_t i = begin + j;
-      const std::uint32_t slot = next[k >> bucketShift]++;
-      new (&scratch.slots.data[slot].ray) Ray{rays.origins[i], rays.unitDirs[i], k};
-      rank[j] = slot;
-    }
-  }
-  // Each bucket sorted and cast.
-  const std::uint32_t fineMask = (1u << fineBits) - 1u;
-  typename Scratch::Slot* slots = scratch.slots.data;
-  for (std::size_t b = 0; b < buckets; ++b) {
-    const std::size_t first = starts[b], count = starts[b + 1] - first;
-    if (count == 0) continue;
-    typename Scratch::Slot* bucket = slots + first;
-    std::uint64_t* fine = scratch.items.data;
-    for (std::size_t j = 0; j < count; ++j) {
-      fine[j] = std::uint64_t((bucket[j].ray.key >> unsortedBits) & fineMask) << 32 | std::uint64_t(j);
-    }
-    // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's): the
-    // radix pass clears and sums a histogram of 2^fineBits counts whatever the bucket's size.
-    const std::uint64_t* sorted = fine;
-    if (count <= kComparisonSortRays) {
-      std::sort(fine, fine + count);
-    } else {
-      sorted = detail::sortByKey(fine, fine + count, count, fineBits);
-    }
-    for (std::size_t j = 0; j < count; ++j) {
-      if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
-      const std::size_t at = sorted[j] & 0xffffffffu;
-      const Ray& r = bucket[at].ray;  // copied into the query before its slot takes the hit
-      Vec3<T> normalized;
-      const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
-      if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
-        const detail::RayQuery<T> query = detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u);
-        items.mesh.castOne(query, *new (&bucket[at].hit) typename Scratch::Hit);
-      } else {
-        new (&bucket[at].hit) typename Scratch::Hit;
-        bucket[at].hit.flags = Scratch::kByIndex;
+  std::uint32_t* next = scratch.next.data();
+  // Each part's keys (in rank until the rays are copied) and its count of rays in each bucket.
+  std::size_t failed = runRanges(parts, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+    std::size_t partFailed = 0;
+    for (std::size_t p = first; p < last; ++p) {
+      const std::size_t j0 = std::min(size, p * partRays), j1 = std::min(size, j0 + partRays);
+      std::uint32_t* counts = next + p * buckets;
+      std::fill(counts, counts + buckets, 0u);
+      if (j0 == j1) continue;
+      key.keyRays(StridedArray<Vec3<T>>(&rays.origins[begin + j0], j1 - j0, rays.origins.stride),
+                  StridedArray<Vec3<T>>(&rays.unitDirs[begin + j0], j1 - j0, rays.unitDirs.stride), rays.maxDist,
+                  rank + j0);
+      for (std::size_t j = j0; j < j1; ++j) {
+        const std::uint32_t k = rank[j];
+        if (k == detail::RayOrderKey<T>::kMisses) {
+          partFailed += items(begin + j) ? 0 : 1;
+          rank[j] = Scratch::kAnswered;
+        } else {
+          ++counts[k >> bucketShift];
+        }
       }
     }
-  }
-  // The outputs in input order, each hit read kHitAhead rays ahead (one cache line).
-  constexpr std::size_t kHitAhead = 24;
-  for (std::size_t j = 0; j < size; ++j) {
-    if (j + kHitAhead < size && rank[j + kHitAhead] != Scratch::kAnswered) prefetchRead(&slots[rank[j + kHitAhead]]);
-    const std::uint32_t place = rank[j];
-    if (place == Scratch::kAnswered) continue;
-    const typename Scratch::Hit& c = slots[place].hit;
-    const std::size_t i = begin + j;
-    if (c.flags == Scratch::kByIndex) {
-      failed += items(i) ? 0 : 1;
-      continue;
+    return partFailed;
+  });
+  // Where each bucket begins, and within it each part's rays in part order (so the slots hold each bucket's rays in
+  // input order, whatever the number of parts).
+  std::uint32_t largest = 0, placed = 0;  // the largest bucket; the rays placed so far
+  for (std::size_t b = 0; b < buckets; ++b) {
+    starts[b] = placed;
+    for (std::size_t p = 0; p < parts; ++p) {
+      const std::uint32_t count = next[p * buckets + b];
+      next[p * buckets + b] = placed;
+      placed += count;
     }
-    // The mesh raycast's position: ray.origin + ray.dir * t.
-    Vec3<T> position = Vec3<T>::Zero();
-    if (c.flags.has(HitFlag::Position)) {
-      Vec3<T> normalized;
-      position = rays.origins[i] + *directionOf(rays, rays.unitDirs[i], normalized) * c.distance;
-    }
-    items.out.store(i, c, position);
-    failed += record(items.statuses, i, Status()) ? 0 : 1;
+    largest = std::max(largest, placed - starts[b]);
   }
-  return failed;
+  starts[buckets] = placed;
+  for (std::size_t w = 0; w < workerCount; ++w) {
+    if (!workers[w]->items.reserve(2 * std::size_t(largest))) {  // no memory to sort the buckets: input order
+      return failed + inputOrder([&](std::size_t j) { return rank[j] != Scratch::kAnswered; });
+    }
+  }
+  // The rays copied into their buckets, part by part.
+  runRanges(parts, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+    for (std::size_t p = first; p < last; ++p) {
+      const std::size_t j0 = std::min(size, p * partRays), j1 = std::min(size, j0 + partRays);
+      std::uint32_t* partNext = next + p * buckets;
+      for (std::size_t j = j0; j < j1; ++j) {
+        const std::uint32_t k = rank[j];
+        if (k == Scratch::kAnswered) continue;
+        const std::size_t i = begin + j;
+        const std::uint32_t slot = partNext[k >> bucketShift]++;
+        new (&scratch.slots.data[slot].ray) Ray{rays.origins[i], rays.unitDirs[i], k};
+        rank[j] = slot;
+      }
+    }
+    return std::size_t(0);
+  });
+  // Each bucket sorted and cast by the worker that takes it.
+  const std::uint32_t fineMask = (1u << fineBits) - 1u;
+  typename Scratch::Slot* slots = scratch.slots.data;
+  runRanges(buckets, 1, settings, [&](std::size_t firstBucket, std::size_t lastBucket, std::uint32_t worker) {
+    for (std::size_t b = firstBucket; b < lastBucket; ++b) {
+      const std::size_t first = starts[b], count = starts[b + 1] - first;
+      if (count == 0) continue;
+      typename Scratch::Slot* bucket = slots + first;
+      std::uint64_t* fine = workers[worker]->items.data;
+      for (std::size_t j = 0; j < count; ++j) {
+        fine[j] = std::uint64_t((bucket[j].ray.key >> unsortedBits) & fineMask) << 32 | std::uint64_t(j);
+      }
+      // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's):
+      // the radix pass clears and sums a histogram of 2^fineBits counts whatever the bucket's size.
+      const std::uint64_t* sorted = fine;
+      if (count <= kComparisonSortRays) {
+        std::sort(fine, fine + count);
+      } else {
+        sorted = detail::sortByKey(fine, fine + count, count, fineBits);
+      }
+      for (std::size_t j = 0; j < count; ++j) {
+        if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
+        const std::size_t at = sorted[j] & 0xffffffffu;
+        const Ray& r = bucket[at].ray;  // copied into the query before its slot takes the hit
+        Vec3<T> normalized;
+        const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
+        if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
+          const detail::RayQuery<T> query = detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u);
+          items.mesh.castOne(query, *new (&bucket[at].hit) typename Scratch::Hit);
+        } else {
+          new (&bucket[at].hit) typename Scratch::Hit;
+          bucket[at].hit.flags = Scratch::kByIndex;
+        }
+      }
+    }
+    return std::size_t(0);
+  });
+  // The outputs in input order, each hit read kHitAhead rays ahead.
+  return failed + runRanges(size, kCopyOutGrain, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+    std::size_t rangeFailed = 0;
+    for (std::size_t j = first; j < last; ++j) {
+      if (j + kHitAhead < last && rank[j + kHitAhead] != Scratch::kAnswered) {
+        prefetchRead(&slots[rank[j + kHitAhead]]);
+      }
+      const std::uint32_t place = rank[j];
+      if (place == Scratch::kAnswered) continue;
+      const typename Scratch::Hit& c = slots[place].hit;
+      const std::size_t i = begin + j;
+      if (c.flags == Scratch::kByIndex) {
+        rangeFailed += items(i) ? 0 : 1;
+        continue;
+      }
+      // The mesh raycast's position: ray.origin + ray.dir * t.
+      Vec3<T> position = Vec3<T>::Zero();
+      if (c.flags.has(HitFlag::Position)) {
+        Vec3<T> normalized;
+        position = rays.origins[i] + *directionOf(rays, rays.unitDirs[i], normalized) * c.distance;
+      }
+      items.out.store(i, c, position);
+      rangeFailed += record(items.statuses, i, Status()) ? 0 : 1;
+    }
+    return rangeFailed;
+  });
 }
 
-// Whether a batch on `slots` workers casts in key order: asked for, and at least minRays rays a worker (each worker
-// orders its own blocks; on 2 workers 1.1-1.2x faster than input order, docs/performance.md).
-inline bool castsInKeyOrder(const BatchSettings& settings, std::size_t n, std::size_t slots,
-                            const detail::RayOrderSettings& order) {
-  return settings.coherentRayOrder && n >= order.minRays * slots;
+// Whether a batch casts in key order: asked for, and at least minRays rays.
+inline bool castsInKeyOrder(const BatchSettings& settings, std::size_t n, const detail::RayOrderSettings& order) {
+  return settings.coherentRayOrder && n >= order.minRays;
 }
 
-// Casts the mesh rays of a batch: in key order by blocks (RayOrderSettings) when castsInKeyOrder, else in input
-// order. Blocks are at least as many as the workers.
+// Casts the mesh rays of a batch: in key order by blocks (RayOrderSettings), all workers on one block at a time,
+// when castsInKeyOrder; else in input order.
 template <class T, class Out>
 std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, const Transform<T>& pose, const Out& out,
                              Status* statuses, const BatchSettings& settings) {
   const MeshRayItems<T, Out> items(rays, shape, pose, out, statuses);
   const std::size_t n = rays.origins.count;
   const detail::RayOrderSettings order;
-  const std::size_t slots = batchSlots(settings);
   Bounds3<T> box;
-  if (!castsInKeyOrder(settings, n, slots, order) || !computeGeomBounds(box, shape, pose).ok()) {
+  if (!castsInKeyOrder(settings, n, order) || !computeGeomBounds(box, shape, pose).ok()) {
     return runItems(n, settings, items);
   }
   const detail::RayOrderKey<T> key(box);
-  const std::size_t blocks = std::max((n + order.blockRays - 1) / order.blockRays, slots);
+  const std::size_t blocks = (n + order.blockRays - 1) / order.blockRays;
   const std::size_t blockRays = (n + blocks - 1) / blocks;
+  const std::size_t slots = batchSlots(settings);
   WorkerScratch<T> local;
   WorkerScratch<T>* scratch = &local;
   try {
@@ -502,14 +540,12 @@ std::size_t raycastMeshItems(const RayBatch<T>& rays, const Shape<T>& shape, con
   } catch (const std::bad_alloc&) {
     return runItems(n, settings, items);
   }
-  return runRanges(blocks, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t slot) {
-    std::size_t failed = 0;
-    for (std::size_t b = first; b < last; ++b) {
-      const std::size_t begin = std::min(n, b * blockRays), end = std::min(n, begin + blockRays);
-      if (begin < end) failed += castBlockInKeyOrder(items, key, order, *(*scratch)[slot], begin, end);
-    }
-    return failed;
-  });
+  std::size_t failed = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t begin = std::min(n, b * blockRays), end = std::min(n, begin + blockRays);
+    if (begin < end) failed += castBlockInKeyOrder(items, key, order, *scratch, slots, settings, begin, end);
+  }
+  return failed;
 }
 
 // Closest hits of a batch against one shape: the mesh items above, else the single raycast per ray.
