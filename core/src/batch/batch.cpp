@@ -390,7 +390,11 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   std::uint32_t* starts = scratch.starts.data();
   std::uint32_t* next = scratch.next.data();
   // Each part's keys (in rank until the rays are copied) and its count of rays in each bucket.
+  // (Each pass copies the values its loop reads into locals: read through the closure, they were loaded again after
+  // every store through a pointer that might alias them.)
   std::size_t failed = runRanges(parts, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+    const int shift = bucketShift;
+    std::uint32_t* const keys = rank;
     std::size_t partFailed = 0;
     for (std::size_t p = first; p < last; ++p) {
       const std::size_t j0 = std::min(size, p * partRays), j1 = std::min(size, j0 + partRays);
@@ -401,12 +405,12 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
                   StridedArray<Vec3<T>>(&rays.unitDirs[begin + j0], j1 - j0, rays.unitDirs.stride), rays.maxDist,
                   rank + j0);
       for (std::size_t j = j0; j < j1; ++j) {
-        const std::uint32_t k = rank[j];
+        const std::uint32_t k = keys[j];
         if (k == detail::RayOrderKey<T>::kMisses) {
           partFailed += items(begin + j) ? 0 : 1;
-          rank[j] = Scratch::kAnswered;
+          keys[j] = Scratch::kAnswered;
         } else {
-          ++counts[k >> bucketShift];
+          ++counts[k >> shift];
         }
       }
     }
@@ -432,16 +436,20 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   }
   // The rays copied into their buckets, part by part.
   runRanges(parts, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+    const int shift = bucketShift;
+    std::uint32_t* const ranks = rank;
+    typename Scratch::Slot* const to = scratch.slots.data;
+    const StridedArray<Vec3<T>> origins = rays.origins, dirs = rays.unitDirs;
     for (std::size_t p = first; p < last; ++p) {
       const std::size_t j0 = std::min(size, p * partRays), j1 = std::min(size, j0 + partRays);
       std::uint32_t* partNext = next + p * buckets;
       for (std::size_t j = j0; j < j1; ++j) {
-        const std::uint32_t k = rank[j];
+        const std::uint32_t k = ranks[j];
         if (k == Scratch::kAnswered) continue;
         const std::size_t i = begin + j;
-        const std::uint32_t slot = partNext[k >> bucketShift]++;
-        new (&scratch.slots.data[slot].ray) Ray{rays.origins[i], rays.unitDirs[i], k};
-        rank[j] = slot;
+        const std::uint32_t slot = partNext[k >> shift]++;
+        new (&to[slot].ray) Ray{origins[i], dirs[i], k};
+        ranks[j] = slot;
       }
     }
     return std::size_t(0);
@@ -450,13 +458,15 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
   typename Scratch::Slot* slots = scratch.slots.data;
   runRanges(buckets, 1, settings, [&](std::size_t firstBucket, std::size_t lastBucket, std::uint32_t worker) {
+    const int unsorted = unsortedBits;
+    const std::uint32_t mask = fineMask;
     for (std::size_t b = firstBucket; b < lastBucket; ++b) {
       const std::size_t first = starts[b], count = starts[b + 1] - first;
       if (count == 0) continue;
       typename Scratch::Slot* bucket = slots + first;
       std::uint64_t* fine = workers[worker]->items.data;
       for (std::size_t j = 0; j < count; ++j) {
-        fine[j] = std::uint64_t((bucket[j].ray.key >> unsortedBits) & fineMask) << 32 | std::uint64_t(j);
+        fine[j] = std::uint64_t((bucket[j].ray.key >> unsorted) & mask) << 32 | std::uint64_t(j);
       }
       // Small buckets by comparisons (the payloads differ, so this is the same order as the stable radix sort's):
       // the radix pass clears and sums a histogram of 2^fineBits counts whatever the bucket's size.
@@ -485,15 +495,18 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   });
   // The outputs in input order, each hit read kHitAhead rays ahead.
   return failed + runRanges(size, kCopyOutGrain, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+    const std::uint32_t* const ranks = rank;
+    const typename Scratch::Slot* const from = slots;
+    const std::size_t offset = begin;
     std::size_t rangeFailed = 0;
     for (std::size_t j = first; j < last; ++j) {
-      if (j + kHitAhead < last && rank[j + kHitAhead] != Scratch::kAnswered) {
-        prefetchRead(&slots[rank[j + kHitAhead]]);
+      if (j + kHitAhead < last && ranks[j + kHitAhead] != Scratch::kAnswered) {
+        prefetchRead(&from[ranks[j + kHitAhead]]);
       }
-      const std::uint32_t place = rank[j];
+      const std::uint32_t place = ranks[j];
       if (place == Scratch::kAnswered) continue;
-      const typename Scratch::Hit& c = slots[place].hit;
-      const std::size_t i = begin + j;
+      const typename Scratch::Hit& c = from[place].hit;
+      const std::size_t i = offset + j;
       if (c.flags == Scratch::kByIndex) {
         rangeFailed += items(i) ? 0 : 1;
         continue;
