@@ -24,8 +24,8 @@ using test::Rng;
 template <class T> class BatchRayOrder : public ::testing::Test {};
 TYPED_TEST_SUITE(BatchRayOrder, test::Scalars);
 
-// One block of the coherent order at 1 thread (more threads keep the input order), of rays most of which enter the
-// mesh's bounds.
+// One block of the coherent order (its passes shared by the workers at any thread count), of rays most of which enter
+// the mesh's bounds.
 constexpr std::size_t kManyRays = 140001;
 
 // Rays from a shell around the origin aimed into a box of half size 1.5 (most hit a radius-2 sphere), every 5th
@@ -62,36 +62,65 @@ template <class T> bool sameBytes(const RaycastHit<T>& a, const RaycastHit<T>& b
          a.flags == b.flags;
 }
 
-TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThreadCount) {
-  using T = TypeParam;
-  Rng rng(4401);
+// The single query per ray of a batch: its hit, hit flag and Status code; `failed` counts the failed rays.
+template <class T> struct SingleRaycasts {
+  std::vector<RaycastHit<T>> hits;
+  std::vector<std::uint8_t> has;
+  std::vector<StatusCode> codes;
+  std::size_t failed = 0, hitCount = 0;
+  SingleRaycasts(const RayBatch<T>& batch, const Shape<T>& mesh, const Transform<T>& pose)
+      : hits(batch.origins.count), has(batch.origins.count, 0), codes(batch.origins.count) {
+    for (std::size_t i = 0; i < batch.origins.count; ++i) {
+      std::uint32_t n = 0;
+      const Status s =
+          raycast(batch.origins[i], batch.unitDirs[i], mesh, pose, batch.maxDist, batch.hitFlags, 1u, &hits[i], n);
+      codes[i] = s.code;
+      has[i] = n > 0 ? 1 : 0;
+      failed += s.ok() ? 0 : 1;
+      hitCount += n;
+    }
+  }
+  // The batch's outputs against these, item by item (a failed item leaves its outputs untouched: has 7).
+  void expectSameAs(const std::vector<RaycastHit<T>>& batchHits, const std::vector<std::uint8_t>& batchHas,
+                    const std::vector<Status>& statuses) const {
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+      ASSERT_EQ(statuses[i].code, codes[i]) << i;
+      if (codes[i] != StatusCode::Ok) {
+        ASSERT_EQ(batchHas[i], 7) << "a failed item leaves its output untouched: " << i;
+        continue;
+      }
+      ASSERT_EQ(batchHas[i], has[i]) << i;
+      if (has[i]) {
+        ASSERT_TRUE(sameBytes(batchHits[i], hits[i])) << i;
+      }
+    }
+  }
+};
+
+// A scaled icosphere mesh at a random pose.
+template <class T> Shape<T> scaledIcosphere(Rng& rng, Transform<T>& pose) {
   const auto ico = meshtest::icosphere<T>(3);
   Shape<T> mesh;
-  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
+  EXPECT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
                                                      MeshScale<T>(Vec3<T>(T(2), T(1.5), T(1)))),
                              mesh)
                   .ok());
-  const Transform<T> pose = rng.pose<T>(1);
+  pose = rng.pose<T>(1);
+  return mesh;
+}
+
+TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThreadCount) {
+  using T = TypeParam;
+  Rng rng(4401);
+  Transform<T> pose;
+  const Shape<T> mesh = scaledIcosphere(rng, pose);
   std::vector<Vec3<T>> origins, dirs;
   manyRays(rng, origins, dirs);
   RayBatch<T> batch = batchOf(origins, dirs);
   batch.hitFlags = kDefaultHitFlags | HitFlag::MeshBothSides;
-
-  // The single query per ray.
-  std::vector<RaycastHit<T>> ref(kManyRays);
-  std::vector<std::uint8_t> refHas(kManyRays, 0);
-  std::vector<StatusCode> refCode(kManyRays);
-  std::size_t failed = 0, hitCount = 0;
-  for (std::size_t i = 0; i < kManyRays; ++i) {
-    std::uint32_t n = 0;
-    const Status s = raycast(origins[i], dirs[i], mesh, pose, batch.maxDist, batch.hitFlags, 1u, &ref[i], n);
-    refCode[i] = s.code;
-    refHas[i] = n > 0 ? 1 : 0;
-    failed += s.ok() ? 0 : 1;
-    hitCount += n;
-  }
-  ASSERT_EQ(failed, 5u);
-  ASSERT_GT(hitCount, kManyRays / 2);
+  const SingleRaycasts<T> ref(batch, mesh, pose);
+  ASSERT_EQ(ref.failed, 5u);
+  ASSERT_GT(ref.hitCount, kManyRays / 2);
 
   BatchSettings inputOrder{1, 64};
   inputOrder.coherentRayOrder = false;
@@ -108,21 +137,37 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
     const Status s = raycastBatch(batch, mesh, pose, hits.data(), has.data(), statuses.data(), setting);
     EXPECT_EQ(s.code, StatusCode::Warning);
     EXPECT_EQ(s.index(), 5u);
-    for (std::size_t i = 0; i < kManyRays; ++i) {
-      ASSERT_EQ(statuses[i].code, refCode[i]) << i;
-      if (refCode[i] != StatusCode::Ok) {
-        ASSERT_EQ(has[i], 7) << "a failed item leaves its output untouched: " << i;
-        continue;
-      }
-      ASSERT_EQ(has[i], refHas[i]) << i;
-      if (has[i]) {
-        ASSERT_TRUE(sameBytes(hits[i], ref[i])) << i;
-      }
-    }
+    ref.expectSameAs(hits, has, statuses);
   }
   EXPECT_GT(kept.bytes(), kManyRays * sizeof(Vec3<T>));  // the rays' copies at least
   kept.release();
   EXPECT_EQ(kept.bytes(), 0u);
+}
+
+// A pool failing midway through any pass of the coherent order (its keys, copies, sorts, casts or copy-out) leaves
+// the answers of the single queries: the block is cast again on the calling thread.
+TYPED_TEST(BatchRayOrder, APoolFailingInAnyPassOfTheOrderLeavesTheSingleRaycastsAnswers) {
+  using T = TypeParam;
+  Rng rng(4402);
+  Transform<T> pose;
+  const Shape<T> mesh = scaledIcosphere(rng, pose);
+  std::vector<Vec3<T>> origins, dirs;
+  manyRays(rng, origins, dirs);
+  RayBatch<T> batch = batchOf(origins, dirs);
+  batch.hitFlags = kDefaultHitFlags | HitFlag::MeshBothSides;
+  const SingleRaycasts<T> ref(batch, mesh, pose);
+  for (int run = 0; run < 5; ++run) {  // the order's five pooled passes
+    SCOPED_TRACE(::testing::Message() << "failing pool run " << run);
+    std::vector<RaycastHit<T>> hits(kManyRays);
+    std::vector<std::uint8_t> has(kManyRays, 7);
+    std::vector<Status> statuses(kManyRays);
+    detail::failBatchPoolRun(run);
+    const Status s = raycastBatch(batch, mesh, pose, hits.data(), has.data(), statuses.data(), BatchSettings{2, 64});
+    detail::failBatchPoolRun(-1);
+    EXPECT_EQ(s.code, StatusCode::Warning);
+    EXPECT_EQ(s.index(), 5u);  // each failed ray counted once
+    ref.expectSameAs(hits, has, statuses);
+  }
 }
 
 template <class T> bool sameFields(const RaycastHit<T>& a, const RaycastHit<T>& b) {

@@ -64,9 +64,10 @@ class BatchScratchAccess;
 }
 
 // Scratch memory kept between batch calls by their caller: a mesh ray batch cast in coherent order (below) that is
-// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (68-84
-// bytes a ray of a block in double, 36-52 in float: see BatchSettings::coherentRayOrder). A caller casting batch
-// after batch on one thread keeps one; one batch call at a time may use it. The memory is held until release() or destruction.
+// given one reuses the arrays an earlier call grew instead of allocating fresh ones and faulting them in (72-88
+// bytes a ray of a block in double, 40-56 in float, and up to 16 more for each further worker: see
+// BatchSettings::coherentRayOrder). A caller casting batch after batch keeps one; one batch call at a time may use
+// it. The memory is held until release() or destruction.
 class BatchScratch {
  public:
   BatchScratch() noexcept;
@@ -91,10 +92,10 @@ struct BatchSettings {
   // to 1,048,576 input rays, each sorted by where its rays pass the mesh's bounds and by their direction, so
   // neighbouring rays walk the same nodes while they are in cache; the workers share each block (grain does not
   // apply to them). Each ray's answer and Status are the same in either order; false keeps the input order (rays that
-  // are already coherent). Memory: 68 bytes (double; 36 in float) a ray of the largest block and, per worker, 16
-  // bytes a ray of its largest bucket, each array in whole 2 MB pages: for 1M rays on one worker about 72 MB
-  // (double) when they spread over the buckets, at most 84 MB (52 MB in float) when they all fall in one; freed on
-  // return unless `scratch` keeps it.
+  // are already coherent). Memory: 72 bytes (double; 40 in float) a ray of the largest block and, for each worker,
+  // 16 bytes a ray of that block's largest bucket, each array in whole 2 MB pages: for 1M rays on one worker about
+  // 76 MB (double) when they spread over the buckets, at most 88 MB (56 MB in float) when they all fall in one (16 MB
+  // more for each further worker); freed on return unless `scratch` keeps it.
   bool coherentRayOrder = true;
   BatchScratch* scratch = nullptr;  // memory kept between calls (BatchScratch); nullptr: each call allocates its own
 };

@@ -56,31 +56,49 @@ int arenaThreads(const BatchSettings& settings) {
 }
 
 // Runs range(begin, end, slot) over [0, n) in ranges of `grain` (the last may be shorter) on the pool, slot <
-// arenaThreads(settings) the worker's index in the arena; range returns how many of its items failed. Returns the
-// number of failed items.
+// arenaThreads(settings) the worker's index in the arena; range returns how many of its items failed, added to
+// `failed`. False when the pool failed to run them all (out of memory or threads): some ranges may have run.
+std::atomic<int> gFailingPoolRun{-1};  // detail::failBatchPoolRun
+std::atomic<int> gPoolRuns{0};
+
 template <class Range>
-std::size_t runRanges(std::size_t n, std::size_t grain, const BatchSettings& settings, const Range& range) {
+bool tryRunRanges(std::size_t n, std::size_t grain, const BatchSettings& settings, const Range& range,
+                  std::size_t& failed) {
   if (grain == 0) grain = 1;
-  if (settings.threads == 1 || n <= grain) return range(std::size_t(0), n, 0u);
-  std::atomic<std::size_t> failed{0};
+  if (settings.threads == 1 || n <= grain) {
+    failed += range(std::size_t(0), n, 0u);
+    return true;
+  }
+  std::atomic<std::size_t> rangesFailed{0};
+  const bool failsMidway = gFailingPoolRun.load() >= 0 && gPoolRuns.fetch_add(1) == gFailingPoolRun.load();
   try {
     tbb::task_arena arena(arenaThreads(settings));
     arena.execute([&] {
       tbb::parallel_for(
           tbb::blocked_range<std::size_t>(0, n, grain),
           [&](const tbb::blocked_range<std::size_t>& r) {
+            if (failsMidway && r.begin() >= n / 2) throw std::bad_alloc();
             const int index = tbb::this_task_arena::current_thread_index();
             const std::size_t f = range(r.begin(), r.end(), index < 0 ? 0u : std::uint32_t(index));
-            if (f) failed.fetch_add(f, std::memory_order_relaxed);
+            if (f) rangesFailed.fetch_add(f, std::memory_order_relaxed);
           },
           tbb::simple_partitioner());
     });
   } catch (...) {
-    // The pool could not start (out of memory or threads): the loop on this thread gives the same answers. Items
-    // are pure functions of their input, so recomputing those already done rewrites the same bytes.
-    return range(std::size_t(0), n, 0u);
+    return false;
   }
-  return failed.load();
+  failed += rangesFailed.load();
+  return true;
+}
+
+// tryRunRanges, and when the pool fails the loop on this thread, which gives the same answers: items are pure
+// functions of their input, so recomputing those already done rewrites the same bytes. Returns the number of failed
+// items.
+template <class Range>
+std::size_t runRanges(std::size_t n, std::size_t grain, const BatchSettings& settings, const Range& range) {
+  std::size_t failed = 0;
+  if (tryRunRanges(n, grain, settings, range, failed)) return failed;
+  return range(std::size_t(0), n, 0u);
 }
 
 // Runs item(i, slot) for i in [0, n) in ranges of settings.grain; item returns true when item i succeeded. Returns
@@ -176,7 +194,8 @@ template <class T> struct HitColumnsOut {
     write(i, count > 0, h.distance, h.position, h.normal, h.faceIndex);
   }
   void store(std::size_t i, const detail::MeshRayHit<T>& c, const Vec3<T>& position) const {
-    write(i, c.flags.bits() != 0, c.distance, position, c.normal, c.faceIndex);
+    const bool hit = c.flags.bits() != 0;  // a miss wrote its flags alone
+    write(i, hit, hit ? c.distance : T(0), position, hit ? c.normal : Vec3<T>::Zero(), hit ? c.faceIndex : 0u);
   }
   void write(std::size_t i, bool hit, T distance, const Vec3<T>& position, const Vec3<T>& normal,
              std::uint32_t faceIndex) const {
@@ -264,9 +283,9 @@ template <class E> class ScratchArray {
 };
 
 // The arrays of castBlockInKeyOrder, kept from block to block (their first use costs page faults). The block's, in
-// the first worker slot's scratch: per ray of a block its key, then its slot (4 bytes), and a slot holding its copy,
-// then its hit (one 64-byte cache line in double, 32 bytes in float); each worker's: 16 bytes a ray of the largest
-// bucket for its sorts.
+// the first worker slot's scratch: per ray of a block its key, then its slot (4 bytes), its place in key order (4
+// bytes), and a slot holding its copy, then its hit (one 64-byte cache line in double, 32 bytes in float): 72 bytes a
+// ray in double, 40 in float; each worker's: 16 bytes a ray of the block's largest bucket for its sorts.
 template <class T> struct KeyOrderScratch {
   struct Ray {  // a ray of the block, copied in coarse key order
     Vec3<T> origin, dir;
@@ -287,17 +306,19 @@ template <class T> struct KeyOrderScratch {
   ScratchArray<std::uint64_t> items;  // a bucket's fine keys << 32 | ray in the bucket, and their sort's scratch
   ScratchArray<Slot> slots;
   ScratchArray<std::uint32_t> rank;   // by ray within the block: its key, then its slot, or kAnswered
+  ScratchArray<std::uint32_t> order;  // the slots in key order
   std::vector<std::uint32_t> starts;  // where each coarse bucket begins in slots
   // By part of the block (in input order) and bucket: the part's ray count, then where its next ray is copied.
   std::vector<std::uint32_t> next;
 
   std::size_t bytes() const noexcept {
-    return items.size * sizeof(std::uint64_t) + slots.size * sizeof(Slot) + rank.size * sizeof(std::uint32_t) +
+    return items.size * sizeof(std::uint64_t) + slots.size * sizeof(Slot) +
+           (rank.size + order.size) * sizeof(std::uint32_t) +
            (starts.capacity() + next.capacity()) * sizeof(std::uint32_t);
   }
   bool reserve(std::size_t m, std::size_t buckets, std::size_t parts) {
     try {
-      if (!slots.reserve(m) || !rank.reserve(m)) return false;
+      if (!slots.reserve(m) || !rank.reserve(m) || !order.reserve(m)) return false;
       starts.resize(buckets + 1);
       next.resize(buckets * parts);
       return true;
@@ -311,6 +332,13 @@ template <class T> struct KeyOrderScratch {
 template <class T> using WorkerScratch = std::vector<std::unique_ptr<KeyOrderScratch<T>>>;
 
 }  // namespace
+
+namespace detail {
+void failBatchPoolRun(int run) {
+  gPoolRuns.store(0);
+  gFailingPoolRun.store(run);
+}
+}  // namespace detail
 
 struct BatchScratch::Impl {
   WorkerScratch<float> f;
@@ -351,13 +379,16 @@ namespace {
 // Rays [begin, end) of a batch cast in key order (batch/ray_order.h) by the workers together; returns how many
 // failed. Rays that miss the mesh's bounds are cast at once in input order. The others are copied, in one sequential
 // pass over each part of the caller's arrays (a part a worker), into buckets of the key's top bits
-// (RayOrderSettings::coarseBits), each ray's slot noted at its index (rank); the buckets are then taken by the
-// workers as they come free, each sorted by the remaining bits and cast from its copies, each hit written over the
-// copy it was cast from. A last pass in input order copies each ray's hit from its slot (read a few rays ahead) to
+// (RayOrderSettings::coarseBits), each ray's slot noted at its index (rank); the buckets are then sorted by the
+// remaining bits, as the workers come free, into one list of slots in key order, and the rays cast from their copies
+// by runs of that list, each hit written over the copy it was cast from. A last pass in input order copies each ray's hit from its slot (read a few rays ahead) to
 // the caller's arrays, written sequentially. So every write of the casts stays within a bucket's slots: a scattered
 // write there (the hits, or rank, at input indices) waits for its cache line and holds up the cast's own stores
-// behind it (a 4-byte rank write per cast cost about 60 ms a million rays). A ray failing the quick checks takes the
-// per-index path (the single query's Status). Without memory for the scratch the block keeps input order.
+// behind it (a 4-byte rank write per cast cost about 60 ms a million rays; the slots read in key order stay within
+// a bucket's). A ray failing the quick checks takes the
+// per-index path (the single query's Status). Without memory for the scratch the block keeps input order; when the
+// pool fails during a pass (the passes cannot be run twice: a cast overwrites its ray) the whole block is cast again
+// in input order on this thread, which writes the same bytes.
 template <class T, class Out>
 std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
                                 const detail::RayOrderSettings& order, const WorkerScratch<T>& workers,
@@ -369,6 +400,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   constexpr std::size_t kComparisonSortRays = 256;
   constexpr std::size_t kHitAhead = 24;       // rays (one cache line each)
   constexpr std::size_t kCopyOutGrain = 8192;  // rays
+  constexpr std::size_t kCastGrain = 1024;     // rays
   const RayBatch<T>& rays = items.rays;
   // A key's bits: coarseBits (its bucket), fineBits (its place in the bucket), unsortedBits.
   const int fineBits = order.sortedBits - order.coarseBits, unsortedBits = 30 - order.sortedBits;
@@ -386,13 +418,24 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     });
   };
   if (!scratch.reserve(size, buckets, parts)) return inputOrder([](std::size_t) { return true; });
+  bool pooled = true;  // every pass so far ran whole
+  auto pass = [&](std::size_t n, std::size_t grain, const auto& range) {
+    std::size_t passFailed = 0;
+    pooled = pooled && tryRunRanges(n, grain, settings, range, passFailed);
+    return passFailed;
+  };
+  auto castAgainOnThisThread = [&] {
+    std::size_t blockFailed = 0;
+    for (std::size_t j = 0; j < size; ++j) blockFailed += items(begin + j) ? 0 : 1;
+    return blockFailed;
+  };
   std::uint32_t* rank = scratch.rank.data;
   std::uint32_t* starts = scratch.starts.data();
   std::uint32_t* next = scratch.next.data();
   // Each part's keys (in rank until the rays are copied) and its count of rays in each bucket.
   // (Each pass copies the values its loop reads into locals: read through the closure, they were loaded again after
   // every store through a pointer that might alias them.)
-  std::size_t failed = runRanges(parts, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+  std::size_t failed = pass(parts, 1, [&](std::size_t first, std::size_t last, std::uint32_t) {
     const int shift = bucketShift;
     std::uint32_t* const keys = rank;
     std::size_t partFailed = 0;
@@ -416,6 +459,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     }
     return partFailed;
   });
+  if (!pooled) return castAgainOnThisThread();
   // Where each bucket begins, and within it each part's rays in part order (so the slots hold each bucket's rays in
   // input order, whatever the number of parts).
   std::uint32_t largest = 0, placed = 0;  // the largest bucket; the rays placed so far
@@ -435,7 +479,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     }
   }
   // The rays copied into their buckets, part by part.
-  runRanges(parts, 1, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+  pass(parts, 1, [&](std::size_t first, std::size_t last, std::uint32_t) {
     const int shift = bucketShift;
     std::uint32_t* const ranks = rank;
     typename Scratch::Slot* const to = scratch.slots.data;
@@ -454,16 +498,18 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     }
     return std::size_t(0);
   });
-  // Each bucket sorted and cast by the worker that takes it.
+  // Each bucket sorted by the worker that takes it: keyOrder lists the slots in key order.
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
   typename Scratch::Slot* slots = scratch.slots.data;
-  runRanges(buckets, 1, settings, [&](std::size_t firstBucket, std::size_t lastBucket, std::uint32_t worker) {
+  std::uint32_t* keyOrder = scratch.order.data;
+  if (!pooled) return castAgainOnThisThread();
+  pass(buckets, 1, [&](std::size_t firstBucket, std::size_t lastBucket, std::uint32_t worker) {
     const int unsorted = unsortedBits;
     const std::uint32_t mask = fineMask;
     for (std::size_t b = firstBucket; b < lastBucket; ++b) {
       const std::size_t first = starts[b], count = starts[b + 1] - first;
       if (count == 0) continue;
-      typename Scratch::Slot* bucket = slots + first;
+      const typename Scratch::Slot* bucket = slots + first;
       std::uint64_t* fine = workers[worker]->items.data;
       for (std::size_t j = 0; j < count; ++j) {
         fine[j] = std::uint64_t((bucket[j].ray.key >> unsorted) & mask) << 32 | std::uint64_t(j);
@@ -476,25 +522,35 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       } else {
         sorted = detail::sortByKey(fine, fine + count, count, fineBits);
       }
-      for (std::size_t j = 0; j < count; ++j) {
-        if (j + kPrefetchAhead < count) prefetchRead(&bucket[sorted[j + kPrefetchAhead] & 0xffffffffu]);
-        const std::size_t at = sorted[j] & 0xffffffffu;
-        const Ray& r = bucket[at].ray;  // copied into the query before its slot takes the hit
-        Vec3<T> normalized;
-        const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
-        if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
-          const detail::RayQuery<T> query = detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u);
-          items.mesh.castOne(query, *new (&bucket[at].hit) typename Scratch::Hit);
-        } else {
-          new (&bucket[at].hit) typename Scratch::Hit;
-          bucket[at].hit.flags = Scratch::kByIndex;
-        }
+      for (std::size_t j = 0; j < count; ++j) keyOrder[first + j] = std::uint32_t(first + (sorted[j] & 0xffffffffu));
+    }
+    return std::size_t(0);
+  });
+  // The rays cast in that order, in runs of kCastGrain (a bucket holding most rays, as from one sensor inside the
+  // bounds, is shared by the workers), each hit written over the ray it was cast from.
+  if (!pooled) return castAgainOnThisThread();
+  pass(placed, kCastGrain, [&](std::size_t first, std::size_t last, std::uint32_t) {
+    const std::uint32_t* const sortedSlots = keyOrder;
+    typename Scratch::Slot* const all = slots;
+    for (std::size_t p = first; p < last; ++p) {
+      if (p + kPrefetchAhead < last) prefetchRead(&all[sortedSlots[p + kPrefetchAhead]]);
+      typename Scratch::Slot& slot = all[sortedSlots[p]];
+      const Ray& r = slot.ray;  // copied into the query before the slot takes the hit
+      Vec3<T> normalized;
+      const Vec3<T>* dir = directionOf(rays, r.dir, normalized);
+      if (dir != nullptr && detail::rayIsValid(r.origin, *dir, items.pose.p)) {
+        const detail::RayQuery<T> query = detail::rayQuery(r.origin, *dir, rays.maxDist, rays.hitFlags, 1u);
+        items.mesh.castOne(query, *new (&slot.hit) typename Scratch::Hit);
+      } else {
+        new (&slot.hit) typename Scratch::Hit;
+        slot.hit.flags = Scratch::kByIndex;
       }
     }
     return std::size_t(0);
   });
   // The outputs in input order, each hit read kHitAhead rays ahead.
-  return failed + runRanges(size, kCopyOutGrain, settings, [&](std::size_t first, std::size_t last, std::uint32_t) {
+  if (!pooled) return castAgainOnThisThread();
+  failed += pass(size, kCopyOutGrain, [&](std::size_t first, std::size_t last, std::uint32_t) {
     const std::uint32_t* const ranks = rank;
     const typename Scratch::Slot* const from = slots;
     const std::size_t offset = begin;
@@ -522,6 +578,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     }
     return rangeFailed;
   });
+  return pooled ? failed : castAgainOnThisThread();
 }
 
 // Whether a batch casts in key order: asked for, and at least minRays rays.

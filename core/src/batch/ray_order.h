@@ -15,9 +15,9 @@ struct RayOrderSettings {
   // Batches smaller than this keep the input order: their rays are too sparse for neighbours in key order to share
   // nodes, and the keys, sorts and copies would be lost.
   std::size_t minRays = 32768;
-  // Rays are ordered in consecutive blocks of at most this many (a worker's scratch: about 68 bytes a ray in double,
-  // 36 in float; each array at least one 2 MB page). The whole block is cast in key order: the larger the block, the
-  // nearer neighbours in key order are (docs/performance.md: one 1M block against 128k blocks).
+  // Rays are ordered in consecutive blocks of at most this many (the block's scratch, shared by the workers: 72 bytes
+  // a ray in double, 40 in float; each array at least one 2 MB page). The whole block is cast in key order: the larger
+  // the block, the nearer neighbours in key order are (docs/performance.md: one 1M block against 128k blocks).
   std::size_t blockRays = std::size_t(1) << 20;
   // A block's rays are first copied into buckets of this many top bits of the key (a histogram and 1,024 write
   // streams stay in L1 and L2), then each bucket is sorted by the next sortedBits - coarseBits bits and cast from its
@@ -61,6 +61,11 @@ template <class T> class RayOrderKey {
 void setRayOrderKeysScalarOnly(bool scalarOnly);
 // Whether keyRays keys 8 rays at a time on this build and CPU (when not set scalar-only).
 bool rayOrderKeysHaveWidePath();
+
+// For tests of the batches' recovery: the pool run numbered `run` from now on (counting the runs that use the pool,
+// from 0) fails with std::bad_alloc in its ranges past the middle, as a pool running out of memory midway would; -1
+// (the default) fails none. Not for use while a batch runs.
+void failBatchPoolRun(int run);
 
 // Sorts items of the form (key << 32 | payload), key below 2^keyBits (keyBits at most 32), by key: LSD radix sort
 // in as few passes of at most 11 bits as the key needs (a pass whose digit is the same for every item is skipped);
