@@ -97,28 +97,41 @@ template <class T> struct SingleRaycasts {
   }
 };
 
-// A scaled icosphere mesh at a random pose.
-template <class T> Shape<T> scaledIcosphere(Rng& rng, Transform<T>& pose) {
-  const auto ico = meshtest::icosphere<T>(3);
+// kManyRays rays (manyRays) at a scaled icosphere mesh at a random pose, both faces, and the single query per ray.
+template <class T> struct ManyRaysAtAMesh {
+  Rng rng;
+  Transform<T> pose;
   Shape<T> mesh;
-  EXPECT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
-                                                     MeshScale<T>(Vec3<T>(T(2), T(1.5), T(1)))),
-                             mesh)
-                  .ok());
-  pose = rng.pose<T>(1);
-  return mesh;
-}
+  std::vector<Vec3<T>> origins, dirs;
+  RayBatch<T> batch;
+  SingleRaycasts<T> ref;
+  explicit ManyRaysAtAMesh(std::uint64_t seed)
+      : rng(seed), mesh(scaledIcosphere()), batch(rays()), ref(batch, mesh, pose) {}
+
+ private:
+  Shape<T> scaledIcosphere() {
+    const auto ico = meshtest::icosphere<T>(3);
+    Shape<T> m;
+    EXPECT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(meshtest::cook(ico.vertices, ico.triangles),
+                                                       MeshScale<T>(Vec3<T>(T(2), T(1.5), T(1)))),
+                               m)
+                    .ok());
+    pose = rng.pose<T>(1);
+    return m;
+  }
+  RayBatch<T> rays() {
+    manyRays(rng, origins, dirs);
+    RayBatch<T> b = batchOf(origins, dirs);
+    b.hitFlags = kDefaultHitFlags | HitFlag::MeshBothSides;
+    return b;
+  }
+};
 
 TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThreadCount) {
   using T = TypeParam;
-  Rng rng(4401);
-  Transform<T> pose;
-  const Shape<T> mesh = scaledIcosphere(rng, pose);
-  std::vector<Vec3<T>> origins, dirs;
-  manyRays(rng, origins, dirs);
-  RayBatch<T> batch = batchOf(origins, dirs);
-  batch.hitFlags = kDefaultHitFlags | HitFlag::MeshBothSides;
-  const SingleRaycasts<T> ref(batch, mesh, pose);
+  const ManyRaysAtAMesh<T> at(4401);
+  const RayBatch<T>& batch = at.batch;
+  const SingleRaycasts<T>& ref = at.ref;
   ASSERT_EQ(ref.failed, 5u);
   ASSERT_GT(ref.hitCount, kManyRays / 2);
 
@@ -134,7 +147,7 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
     std::vector<RaycastHit<T>> hits(kManyRays);
     std::vector<std::uint8_t> has(kManyRays, 7);
     std::vector<Status> statuses(kManyRays);
-    const Status s = raycastBatch(batch, mesh, pose, hits.data(), has.data(), statuses.data(), setting);
+    const Status s = raycastBatch(batch, at.mesh, at.pose, hits.data(), has.data(), statuses.data(), setting);
     EXPECT_EQ(s.code, StatusCode::Warning);
     EXPECT_EQ(s.index(), 5u);
     ref.expectSameAs(hits, has, statuses);
@@ -148,25 +161,19 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
 // the answers of the single queries: the block is cast again on the calling thread.
 TYPED_TEST(BatchRayOrder, APoolFailingInAnyPassOfTheOrderLeavesTheSingleRaycastsAnswers) {
   using T = TypeParam;
-  Rng rng(4402);
-  Transform<T> pose;
-  const Shape<T> mesh = scaledIcosphere(rng, pose);
-  std::vector<Vec3<T>> origins, dirs;
-  manyRays(rng, origins, dirs);
-  RayBatch<T> batch = batchOf(origins, dirs);
-  batch.hitFlags = kDefaultHitFlags | HitFlag::MeshBothSides;
-  const SingleRaycasts<T> ref(batch, mesh, pose);
+  const ManyRaysAtAMesh<T> at(4402);
   for (int run = 0; run < 5; ++run) {  // the order's five pooled passes
     SCOPED_TRACE(::testing::Message() << "failing pool run " << run);
     std::vector<RaycastHit<T>> hits(kManyRays);
     std::vector<std::uint8_t> has(kManyRays, 7);
     std::vector<Status> statuses(kManyRays);
     detail::failBatchPoolRun(run);
-    const Status s = raycastBatch(batch, mesh, pose, hits.data(), has.data(), statuses.data(), BatchSettings{2, 64});
+    const Status s =
+        raycastBatch(at.batch, at.mesh, at.pose, hits.data(), has.data(), statuses.data(), BatchSettings{2, 64});
     detail::failBatchPoolRun(-1);
     EXPECT_EQ(s.code, StatusCode::Warning);
     EXPECT_EQ(s.index(), 5u);  // each failed ray counted once
-    ref.expectSameAs(hits, has, statuses);
+    at.ref.expectSameAs(hits, has, statuses);
   }
 }
 
