@@ -158,7 +158,7 @@ TYPED_TEST(BatchRayOrder, LargeMeshBatchesEqualSingleRaycastsBitForBitAtAnyThrea
 }
 
 // A pool failing midway through any pass of the coherent order (its keys, copies, sorts, casts or copy-out) leaves
-// the answers of the single queries: the block is cast again on the calling thread.
+// the answers of the single queries: the block is cast again in input order.
 TYPED_TEST(BatchRayOrder, APoolFailingInAnyPassOfTheOrderLeavesTheSingleRaycastsAnswers) {
   using T = TypeParam;
   const ManyRaysAtAMesh<T> at(4402);

@@ -388,7 +388,7 @@ namespace {
 // a bucket's). A ray failing the quick checks takes the
 // per-index path (the single query's Status). Without memory for the scratch the block keeps input order; when the
 // pool fails during a pass (the passes cannot be run twice: a cast overwrites its ray) the whole block is cast again
-// in input order on this thread, which writes the same bytes.
+// in input order, which writes the same bytes.
 template <class T, class Out>
 std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
                                 const detail::RayOrderSettings& order, const WorkerScratch<T>& workers,
@@ -417,17 +417,14 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
       return failed;
     });
   };
-  if (!scratch.reserve(size, buckets, parts)) return inputOrder([](std::size_t) { return true; });
+  // The whole block in input order: every ray's answer written again, the same bytes.
+  auto wholeBlockInInputOrder = [&] { return inputOrder([](std::size_t) { return true; }); };
+  if (!scratch.reserve(size, buckets, parts)) return wholeBlockInInputOrder();
   bool pooled = true;  // every pass so far ran whole
   auto pass = [&](std::size_t n, std::size_t grain, const auto& range) {
     std::size_t passFailed = 0;
     pooled = pooled && tryRunRanges(n, grain, settings, range, passFailed);
     return passFailed;
-  };
-  auto castAgainOnThisThread = [&] {
-    std::size_t blockFailed = 0;
-    for (std::size_t j = 0; j < size; ++j) blockFailed += items(begin + j) ? 0 : 1;
-    return blockFailed;
   };
   std::uint32_t* rank = scratch.rank.data;
   std::uint32_t* starts = scratch.starts.data();
@@ -459,7 +456,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     }
     return partFailed;
   });
-  if (!pooled) return castAgainOnThisThread();
+  if (!pooled) return wholeBlockInInputOrder();
   // Where each bucket begins, and within it each part's rays in part order (so the slots hold each bucket's rays in
   // input order, whatever the number of parts).
   std::uint32_t largest = 0, placed = 0;  // the largest bucket; the rays placed so far
@@ -502,7 +499,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
   typename Scratch::Slot* slots = scratch.slots.data;
   std::uint32_t* keyOrder = scratch.order.data;
-  if (!pooled) return castAgainOnThisThread();
+  if (!pooled) return wholeBlockInInputOrder();
   pass(buckets, 1, [&](std::size_t firstBucket, std::size_t lastBucket, std::uint32_t worker) {
     const int unsorted = unsortedBits;
     const std::uint32_t mask = fineMask;
@@ -528,7 +525,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
   });
   // The rays cast in that order, in runs of kCastGrain (a bucket holding most rays, as from one sensor inside the
   // bounds, is shared by the workers), each hit written over the ray it was cast from.
-  if (!pooled) return castAgainOnThisThread();
+  if (!pooled) return wholeBlockInInputOrder();
   pass(placed, kCastGrain, [&](std::size_t first, std::size_t last, std::uint32_t) {
     const std::uint32_t* const sortedSlots = keyOrder;
     typename Scratch::Slot* const all = slots;
@@ -549,7 +546,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     return std::size_t(0);
   });
   // The outputs in input order, each hit read kHitAhead rays ahead.
-  if (!pooled) return castAgainOnThisThread();
+  if (!pooled) return wholeBlockInInputOrder();
   failed += pass(size, kCopyOutGrain, [&](std::size_t first, std::size_t last, std::uint32_t) {
     const std::uint32_t* const ranks = rank;
     const typename Scratch::Slot* const from = slots;
@@ -578,7 +575,7 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     }
     return rangeFailed;
   });
-  return pooled ? failed : castAgainOnThisThread();
+  return pooled ? failed : wholeBlockInInputOrder();
 }
 
 // Whether a batch casts in key order: asked for, and at least minRays rays.
