@@ -55,12 +55,12 @@ int arenaThreads(const BatchSettings& settings) {
   return settings.threads == 0 || settings.threads > std::uint32_t(hardware) ? hardware : int(settings.threads);
 }
 
+std::atomic<int> gFailingPoolRun{-1};  // detail::failBatchPoolRun: the pool run that fails, or -1
+std::atomic<int> gPoolRuns{0};         // pool runs since failBatchPoolRun
+
 // Runs range(begin, end, slot) over [0, n) in ranges of `grain` (the last may be shorter) on the pool, slot <
 // arenaThreads(settings) the worker's index in the arena; range returns how many of its items failed, added to
 // `failed`. False when the pool failed to run them all (out of memory or threads): some ranges may have run.
-std::atomic<int> gFailingPoolRun{-1};  // detail::failBatchPoolRun
-std::atomic<int> gPoolRuns{0};
-
 template <class Range>
 bool tryRunRanges(std::size_t n, std::size_t grain, const BatchSettings& settings, const Range& range,
                   std::size_t& failed) {
@@ -381,14 +381,13 @@ namespace {
 // pass over each part of the caller's arrays (a part a worker), into buckets of the key's top bits
 // (RayOrderSettings::coarseBits), each ray's slot noted at its index (rank); the buckets are then sorted by the
 // remaining bits, as the workers come free, into one list of slots in key order, and the rays cast from their copies
-// by runs of that list, each hit written over the copy it was cast from. A last pass in input order copies each ray's hit from its slot (read a few rays ahead) to
-// the caller's arrays, written sequentially. So every write of the casts stays within a bucket's slots: a scattered
-// write there (the hits, or rank, at input indices) waits for its cache line and holds up the cast's own stores
-// behind it (a 4-byte rank write per cast cost about 60 ms a million rays; the slots read in key order stay within
-// a bucket's). A ray failing the quick checks takes the
-// per-index path (the single query's Status). Without memory for the scratch the block keeps input order; when the
-// pool fails during a pass (the passes cannot be run twice: a cast overwrites its ray) the whole block is cast again
-// in input order, which writes the same bytes.
+// by runs of that list, each hit written over the copy it was cast from. A last pass in input order copies each
+// ray's hit from its slot (read a few rays ahead) to the caller's arrays, written sequentially. So every write of the
+// casts goes to the slot just read: a scattered write there (the hits, or rank, at input indices) waits for its cache
+// line and holds up the cast's own stores behind it (a 4-byte rank write per cast cost about 60 ms a million rays).
+// A ray failing the quick checks takes the per-index path (the single query's Status). Without memory for the
+// scratch the block keeps input order; when the pool fails during a pass (the passes cannot be run twice: a cast
+// overwrites its ray) the whole block is cast again in input order, which writes the same bytes.
 template <class T, class Out>
 std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail::RayOrderKey<T>& key,
                                 const detail::RayOrderSettings& order, const WorkerScratch<T>& workers,
@@ -495,11 +494,11 @@ std::size_t castBlockInKeyOrder(const MeshRayItems<T, Out>& items, const detail:
     }
     return std::size_t(0);
   });
+  if (!pooled) return wholeBlockInInputOrder();
   // Each bucket sorted by the worker that takes it: keyOrder lists the slots in key order.
   const std::uint32_t fineMask = (1u << fineBits) - 1u;
   typename Scratch::Slot* slots = scratch.slots.data;
   std::uint32_t* keyOrder = scratch.order.data;
-  if (!pooled) return wholeBlockInInputOrder();
   pass(buckets, 1, [&](std::size_t firstBucket, std::size_t lastBucket, std::uint32_t worker) {
     const int unsorted = unsortedBits;
     const std::uint32_t mask = fineMask;
