@@ -252,5 +252,35 @@ TYPED_TEST(MeshRaycastPacket, LeafTrianglesLoadTheSameFromRegistersAndLaneByLane
     for (int a = 0; a < 3; ++a) EXPECT_EQ(three.v[k][a][3], T(0));
 }
 
+#ifdef GQ_SSE42
+// The float mesh caster's watertight constants come from SSE registers (makeWatertightRay4Sse): the dominant axis,
+// the swap and the shear must be makeWatertightRay's bit for bit, ties between components and signed zeros included,
+// or the wide and scalar tests would disagree with the scalar test on shared edges.
+TEST(WatertightRaySse, ConstantsAreTheScalarConstructionsBitForBit) {
+  std::mt19937_64 rng(41);
+  std::normal_distribution<double> n;
+  std::uniform_int_distribution<int> pick(0, 5);
+  const float special[6] = {0.0f, -0.0f, 0.5f, -0.5f, 1.0f, -1.0f};
+  int checked = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const Eigen::Vector3d g = normal3(n, rng);
+    Vec3<float> dir = g.normalized().cast<float>();
+    // Every third ray has components drawn from a few values, so ties (|x| = |y|, ...) and signed zeros occur.
+    if (i % 3 == 0) dir = Vec3<float>(special[pick(rng)], special[pick(rng)], special[pick(rng)]);
+    if (dir.cwiseAbs().maxCoeff() == 0.0f) continue;
+    const Vec3<float> org = (normal3(n, rng) * 10.0).cast<float>();
+    const detail::WatertightRay4<float> expected = detail::makeWatertightRay4(detail::makeWatertightRay(org, dir));
+    const detail::WatertightRay4<float> sse =
+        detail::makeWatertightRay4Sse(_mm_setr_ps(org.x(), org.y(), org.z(), 0.0f),
+                                      _mm_setr_ps(dir.x(), dir.y(), dir.z(), 0.0f));
+    ASSERT_EQ(std::memcmp(&expected, &sse, sizeof sse), 0)
+        << "dir " << dir.transpose() << ": kx " << sse.ray.kx << " ky " << sse.ray.ky << " kz " << sse.ray.kz
+        << " (expected " << expected.ray.kx << " " << expected.ray.ky << " " << expected.ray.kz << ")";
+    ++checked;
+  }
+  EXPECT_GT(checked, 190000);
+}
+#endif
+
 }  // namespace
 }  // namespace gq

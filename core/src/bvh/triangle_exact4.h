@@ -10,6 +10,7 @@
 // per-triangle vertex copies (TriangleMesh::triangleVertices, contiguous per leaf) and transposed in registers.
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -223,6 +224,62 @@ template <class T>
 [[gnu::always_inline]] inline WatertightRay4<T> makeWatertightRay4(const WatertightRay<T>& ray) {
   return WatertightRay4<T>{ray, ray.org[ray.kx], ray.org[ray.ky], ray.org[ray.kz]};
 }
+
+#ifdef GQ_SSE42
+namespace watertight_sse {
+// Per (kz, negative dominant component): the byte shuffle taking (x, y, z, -) to (0, v[kx], v[ky], v[kz]), and
+// kx, ky, kz as makeWatertightRay picks them (kx = kz + 1 mod 3, ky = kx + 1 mod 3, swapped when negative).
+struct Axes {
+  alignas(16) std::int8_t shuffle[16];
+  alignas(16) std::int32_t k[4];
+};
+constexpr Axes axes(int kz, bool negative) {
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (negative) {
+    const int t = kx;
+    kx = ky;
+    ky = t;
+  }
+  Axes a{};
+  const int from[4] = {-1, kx, ky, kz};
+  for (int lane = 0; lane < 4; ++lane)
+    for (int b = 0; b < 4; ++b) a.shuffle[4 * lane + b] = from[lane] < 0 ? std::int8_t(-128) : std::int8_t(4 * from[lane] + b);
+  a.k[0] = kx;
+  a.k[1] = ky;
+  a.k[2] = kz;
+  return a;
+}
+inline constexpr Axes kAxes[6] = {axes(0, false), axes(0, true), axes(1, false), axes(1, true), axes(2, false), axes(2, true)};
+}  // namespace watertight_sse
+
+// makeWatertightRay4(makeWatertightRay(org, dir)) for float in SSE registers, bit for bit: the same dominant axis
+// (x if |x| exceeds |y| and |z|, else y if |y| exceeds |z|, else z), the same swap, and sx, sy, sz as the same
+// correctly rounded divisions (one 4-lane division). o and d: x, y, z in lanes 0-2.
+[[gnu::always_inline]] inline WatertightRay4<float> makeWatertightRay4Sse(__m128 o, __m128 d) {
+  static_assert(sizeof(WatertightRay4<float>) == 48, "three 16-byte rows: org kx | ky kz sx sy | sz ox oy oz");
+  const __m128 a = _mm_andnot_ps(_mm_set1_ps(-0.0f), d);
+  const int gtNext = _mm_movemask_ps(_mm_cmpgt_ps(a, _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1))));  // x>y y>z z>x
+  const int xGtZ = _mm_movemask_ps(_mm_cmpgt_ps(a, _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2)))) & 1;
+  const int xWins = gtNext & xGtZ & 1, yWins = ~gtNext & (gtNext >> 1) & 1;
+  const int kz = 2 - 2 * xWins - yWins;
+  const int negative = (_mm_movemask_ps(d) >> kz) & 1;
+  const watertight_sse::Axes& ax = watertight_sse::kAxes[2 * kz + negative];
+  const __m128i shuffle = _mm_load_si128(reinterpret_cast<const __m128i*>(ax.shuffle));
+  const __m128 dp = _mm_castsi128_ps(_mm_shuffle_epi8(_mm_castps_si128(d), shuffle));  // 0 dkx dky dkz
+  const __m128 op = _mm_castsi128_ps(_mm_shuffle_epi8(_mm_castps_si128(o), shuffle));  // 0 okx oky okz
+  // (1, dkx, dky, dkz) / dkz: sz, sx, sy in lanes 0-2.
+  const __m128 s = _mm_div_ps(_mm_blend_ps(dp, _mm_set1_ps(1.0f), 1), _mm_shuffle_ps(dp, dp, _MM_SHUFFLE(3, 3, 3, 3)));
+  const __m128 k = _mm_load_ps(reinterpret_cast<const float*>(ax.k));
+  const __m128 row0 = _mm_insert_ps(o, k, 0x30);                       // org.x org.y org.z kx
+  const __m128 row1 = _mm_shuffle_ps(k, s, _MM_SHUFFLE(2, 1, 2, 1));   // ky kz sx sy
+  const __m128 row2 = _mm_blend_ps(op, s, 1);                          // sz ox oy oz
+  WatertightRay4<float> r;
+  std::memcpy(reinterpret_cast<char*>(&r), &row0, 16);
+  std::memcpy(reinterpret_cast<char*>(&r) + 16, &row1, 16);
+  std::memcpy(reinterpret_cast<char*>(&r) + 32, &row2, 16);
+  return r;
+}
+#endif
 
 // The hits of the lanes the wide test decides alone (bit i of `decided`): the scalar test's t, u, v and side, bit for
 // bit (the same IEEE operations: 1 / det, then products). Other candidate lanes need the scalar test.

@@ -52,8 +52,15 @@ template <class T> class MeshRaycaster {
   // Inlined into its callers (the single cast and a batch's), so the ray constants stay in registers.
   [[gnu::always_inline]] MeshRaycaster(const TriangleMesh<T>& mesh, const Vec3<T>& org, const Vec3<T>& dir,
                                        bool cullBackFaces)
-      : mesh_(mesh), ray4_(makeWatertightRay4(makeWatertightRay(org, dir))), bvhRay_(makeBvhRay<8>(org, dir)),
-        cull_(cullBackFaces) {}
+      : mesh_(mesh), ray4_(makeRay4(org, dir)), bvhRay_(makeBvhRay<8>(org, dir)), cull_(cullBackFaces) {}
+
+  // The watertight constants (in SSE registers for float: the same bits).
+  [[gnu::always_inline]] static WatertightRay4<T> makeRay4(const Vec3<T>& org, const Vec3<T>& dir) {
+#ifdef GQ_SSE42
+    if constexpr (kFloat) return makeWatertightRay4Sse(floatLanes(org), floatLanes(dir));
+#endif
+    return makeWatertightRay4(makeWatertightRay(org, dir));
+  }
 
   // Out of line: it runs only on the lanes the wide test cannot decide (an exactly zero edge function, a non-finite
   // hit); inlined into the walk, its registers were paid at every leaf (any hit about 10 instructions a ray fewer).
