@@ -3,6 +3,8 @@
 // the lazily derived data is built once under concurrent first use.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <atomic>
 #include <limits>
 #include <memory>
@@ -237,6 +239,52 @@ TYPED_TEST(PreparedShape, SingleShapeQueriesAnswerAsTheGeometryOverloadsBitForBi
       expectSame(bPrepared.min, bPlain.min, "bounds " + where);
       expectSame(bPrepared.max, bPlain.max, "bounds " + where);
     }
+}
+
+// A mesh shape with no scale and an identity pose rotation takes its own one-hit cast (no instance frame): its
+// hits must be the geometry path's bit for bit, every field and flag, for every hit-flag combination, on single- and
+// double-sided meshes, closest and any hit, with MeshMultiple asking for one hit.
+TYPED_TEST(PreparedShape, OneHitMeshRaycastsPlacedAsCookedAnswerAsTheGeometryOverloadBitForBit) {
+  using T = TypeParam;
+  Rng rng(44);
+  int hits = 0;
+  for (MeshGeometryFlag sides : {MeshGeometryFlag::None, MeshGeometryFlag::DoubleSided}) {
+    const Geometry<T> geom = TriangleMeshGeometry<T>(wavyMesh<T>(), MeshScale<T>(), sides);
+    Shape<T> shape;
+    ASSERT_TRUE(Shape<T>::make(geom, shape).ok());
+    for (int k = 0; k < 400; ++k) {
+      const Transform<T> pose(rng.inBox<T>(1.0), Quat<T>::Identity());
+      // Origins above and below the sheet, aimed at a point on it (about half the rays come from behind its faces).
+      const Vec3<T> target = pose.p + rng.inBox<T>(1.2);
+      const Vec3<T> origin = target + rng.unitVector<T>() * T(2);
+      const Vec3<T> dir = (target - origin).normalized();
+      const std::uint32_t bits = std::uint32_t(k) % 64u;
+      HitFlags flags;
+      if (bits & 1u) flags |= HitFlag::Position;
+      if (bits & 2u) flags |= HitFlag::Normal;
+      if (bits & 4u) flags |= HitFlag::UV;
+      if (bits & 8u) flags |= HitFlag::AnyHit;
+      if (bits & 16u) flags |= HitFlag::MeshBothSides;
+      if (bits & 32u) flags |= HitFlag::MeshMultiple;  // with maxHits 1: one hit all the same
+      const std::string where = std::string(sides == MeshGeometryFlag::None ? "single" : "double") + "-sided ray " +
+                                std::to_string(k);
+      RaycastHit<T> cooked, plain;
+      std::uint32_t nCooked = 0, nPlain = 0;
+      expectSameStatus(raycast(origin, dir, shape, pose, T(5), flags, 1, &cooked, nCooked),
+                       raycast(origin, dir, geom, pose, T(5), flags, 1, &plain, nPlain), where);
+      ASSERT_EQ(nCooked, nPlain) << where;
+      if (nCooked == 0) continue;
+      ++hits;
+      EXPECT_EQ(std::memcmp(&cooked.distance, &plain.distance, sizeof(T)), 0) << where;
+      expectSame(cooked.position, plain.position, where);
+      expectSame(cooked.normal, plain.normal, where);
+      EXPECT_EQ(std::memcmp(&cooked.u, &plain.u, sizeof(T)), 0) << where;
+      EXPECT_EQ(std::memcmp(&cooked.v, &plain.v, sizeof(T)), 0) << where;
+      EXPECT_EQ(cooked.faceIndex, plain.faceIndex) << where;
+      EXPECT_EQ(cooked.flags.bits(), plain.flags.bits()) << where;
+    }
+  }
+  EXPECT_GT(hits, 400);
 }
 
 TYPED_TEST(PreparedShape, BadPosesAndDirectionsAreRejectedAsOnTheGeometryPath) {

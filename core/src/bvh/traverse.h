@@ -109,9 +109,10 @@ inline constexpr float kInf = std::numeric_limits<float>::infinity();
 // the conservative sides of an inexact one) are within the float slab whenever the T origin is within the T box, the
 // planes being rounded outward. (Clamped, a ray lying in the plane of the face its clamp's sign points at would exit
 // it at 0.)
-template <int W, class T> inline void setZeroAxesInverse(BvhRay<W>& r, const Vec3<T>& dir, int zeroAxes) {
+// signBits: bit i, the sign bit of component i.
+template <int W> inline void setZeroAxesInverse(BvhRay<W>& r, int signBits, int zeroAxes) {
   for (int i = 0; i < 3; ++i)
-    if ((zeroAxes >> i) & 1) r.negInvDir[i] = std::signbit(dir[i]) ? kInf : -kInf;
+    if ((zeroAxes >> i) & 1) r.negInvDir[i] = (signBits >> i) & 1 ? kInf : -kInf;
 }
 
 // The near and far plane offsets of a direction whose sign bits are `negative`.
@@ -145,7 +146,10 @@ template <int W, class T> inline BvhRay<W> makeBvhRayScalar(const Vec3<T>& org, 
   }
   r.negInvDir[3] = 1.0f;
   r.org[3] = r.farOrg[3] = 0.0f;
-  if (zeroAxes != 0) [[unlikely]] setZeroAxesInverse(r, dir, zeroAxes);
+  if (zeroAxes != 0) [[unlikely]] {
+    setZeroAxesInverse(r, int(std::signbit(dir[0])) | int(std::signbit(dir[1])) << 1 | int(std::signbit(dir[2])) << 2,
+                       zeroAxes);
+  }
   // A clamped axis leaves the slab no sooner than the ray does along it, or never: the clamp's exit distance,
   // |gap| / kTinyDir, can come before the ray's own, so the far inverse is infinite there (far distances +inf inside
   // the slab, -inf past its far plane, NaN on it, which the tests ignore; the far origin is inside the float slab
@@ -161,35 +165,55 @@ template <int W, class T> inline BvhRay<W> makeBvhRayScalar(const Vec3<T>& org, 
 }
 
 #ifdef GQ_SSE42
-// makeBvhRayScalar on 3 lanes at once: the same conversions, the same clamp (the sign bit kept, -0 included) and the
-// same correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the clamped
-// direction are the loop's `negInvDir > 0` (-1 / x flips the sign; it is 0 only for an infinite x, a direction
-// overflowing float, whose slab values are 0 or NaN with either plane order).
-// Forced inline (as the mesh kernel's ray constants): GCC left it out of line once the kernel had two instances.
-template <int W, class T>
-[[gnu::always_inline]] inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
-  using namespace bvh_ray;
-  BvhRay<W> r;
+namespace bvh_ray {
+// The direction's part of makeBvhRayScalar on 3 lanes at once (d: the float direction in lanes 0-2, zeroAxes: its
+// components exactly zero in T): the same conversions, the same clamp (the sign bit kept, -0 included) and the same
+// correctly rounded divisions, so the constants are the loop's bit for bit. The sign bits of the clamped direction
+// are the direction's, and the loop's `negInvDir > 0` (-1 / x flips the sign; it is 0 only for an infinite x, a
+// direction overflowing float, whose slab values are 0 or NaN with either plane order).
+template <int W> [[gnu::always_inline]] inline void setDirection(BvhRay<W>& r, __m128 d, int zeroAxes) {
   const __m128 signBit = _mm_set1_ps(-0.0f), tiny = _mm_set1_ps(kTinyDir);
-  const __m128 d = floatLanes(dir);
-  // Axes whose component is exactly zero (T's own compare: a double too small for float is not zero).
-  int zeroAxes;
-  if constexpr (std::is_same_v<T, float>) {
-    zeroAxes = _mm_movemask_ps(_mm_cmpeq_ps(d, _mm_setzero_ps())) & 7;
-  } else {
-    zeroAxes = _mm_movemask_pd(_mm_cmpeq_pd(_mm_loadu_pd(dir.data()), _mm_setzero_pd())) | int(dir[2] == 0.0) << 2;
-  }
   const __m128 small = _mm_cmplt_ps(_mm_andnot_ps(signBit, d), tiny);
   const __m128 clamped = _mm_blendv_ps(d, _mm_or_ps(_mm_and_ps(d, signBit), tiny), small);
   __m128 negInv = _mm_div_ps(_mm_set1_ps(-1.0f), clamped);
-  const int negative = _mm_movemask_ps(clamped) & 7;
-  const __m128 o = floatLanes(org);
+  _mm_store_ps(r.negInvDir, negInv);
+  if (zeroAxes != 0) [[unlikely]] {
+    setZeroAxesInverse(r, _mm_movemask_ps(d), zeroAxes);  // a T zero's sign is its float's (conversion keeps it)
+    negInv = _mm_load_ps(r.negInvDir);
+  }
+  // The loop's near and far inverses (the fourth lane, from floatLanes' 0 clamped to kTinyDir, is never read).
+  const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad), _mm_set1_ps(kInf), small);
+  _mm_store_ps(r.nearInv, _mm_mul_ps(negInv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));
+  _mm_store_ps(r.farInv, _mm_mul_ps(negInv, farScale));
+  setPlaneOffsets(r, _mm_movemask_ps(clamped) & 7);
+}
+}  // namespace bvh_ray
+
+// makeBvhRay of a float ray given as lanes (x, y, z in lanes 0-2, lane 3 0).
+template <int W> [[gnu::always_inline]] inline BvhRay<W> makeBvhRayLanes(__m128 o, __m128 d) {
+  BvhRay<W> r;
+  _mm_store_ps(r.org, o);
+  _mm_store_ps(r.farOrg, o);
+  bvh_ray::setDirection(r, d, _mm_movemask_ps(_mm_cmpeq_ps(d, _mm_setzero_ps())) & 7);
+  return r;
+}
+
+// makeBvhRayScalar on 3 lanes at once, bit for bit (BvhSlab compares them).
+// Forced inline (as the mesh kernel's ray constants): GCC left it out of line once the kernel had two instances.
+template <int W, class T>
+[[gnu::always_inline]] inline BvhRay<W> makeBvhRay(const Vec3<T>& org, const Vec3<T>& dir) {
   if constexpr (std::is_same_v<T, float>) {
-    _mm_store_ps(r.org, o);
-    _mm_store_ps(r.farOrg, o);
+    return makeBvhRayLanes<W>(floatLanes(org), floatLanes(dir));
   } else {
+    BvhRay<W> r;
+    const __m128 d = floatLanes(dir);
+    // Axes whose component is exactly zero (T's own compare: a double too small for float is not zero).
+    const int zeroAxes =
+        _mm_movemask_pd(_mm_cmpeq_pd(_mm_loadu_pd(dir.data()), _mm_setzero_pd())) | int(dir[2] == 0.0) << 2;
+    bvh_ray::setDirection(r, d, zeroAxes);
     // floatsAround on 3 lanes: the rounded float's bit pattern moved one unit towards the double where it passed it
     // (towards -inf: -1 on a positive float, +1 on a negative one; a double rounded to -0 is negative, to +0 positive).
+    const __m128 o = floatLanes(org);
     const __m128d lo = _mm_loadu_pd(org.data()), hi = _mm_set_sd(org[2]);
     const __m128d backLo = _mm_cvtps_pd(o), backHi = _mm_cvtps_pd(_mm_movehl_ps(o, o));
     auto lanes3 = [](__m128d a, __m128d b) {  // the 64-bit masks' low halves as 32-bit lanes 0-2
@@ -202,20 +226,11 @@ template <int W, class T>
                                      _mm_set1_epi32(1));  // +1 on a positive float, -1 on a negative one
     const __m128 below = _mm_castsi128_ps(_mm_sub_epi32(bits, _mm_and_si128(roundedUp, up1)));
     const __m128 above = _mm_castsi128_ps(_mm_add_epi32(bits, _mm_and_si128(roundedDown, up1)));
-    _mm_store_ps(r.org, _mm_blendv_ps(above, below, clamped));  // the scalar loop's choice by the sign bit
-    _mm_store_ps(r.farOrg, _mm_blendv_ps(below, above, clamped));
+    // The scalar loop's choice by the sign bit (the clamped direction's is the direction's).
+    _mm_store_ps(r.org, _mm_blendv_ps(above, below, d));
+    _mm_store_ps(r.farOrg, _mm_blendv_ps(below, above, d));
+    return r;
   }
-  _mm_store_ps(r.negInvDir, negInv);
-  if (zeroAxes != 0) [[unlikely]] {
-    setZeroAxesInverse(r, dir, zeroAxes);
-    negInv = _mm_load_ps(r.negInvDir);
-  }
-  // The loop's near and far inverses (the fourth lane, from floatLanes' 0 clamped to kTinyDir, is never read).
-  const __m128 farScale = _mm_blendv_ps(_mm_set1_ps(1.0f + BvhRay<W>::kRelPad), _mm_set1_ps(kInf), small);
-  _mm_store_ps(r.nearInv, _mm_mul_ps(negInv, _mm_set1_ps(1.0f - BvhRay<W>::kRelPad)));
-  _mm_store_ps(r.farInv, _mm_mul_ps(negInv, farScale));
-  setPlaneOffsets(r, negative);
-  return r;
 }
 #else
 // Forced inline (as the mesh kernel's ray constants): GCC left it out of line once the kernel had two instances.

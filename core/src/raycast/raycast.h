@@ -110,6 +110,11 @@ template <class T> class TriangleMeshRays {
   // cast() for one hit (ray.maxHits 1) written as a MeshRayHit: its fields are cast()'s bit for bit but the position,
   // whose flag it keeps when asked; flags 0 when nothing is hit. Returns the hit count.
   std::uint32_t castOne(const RayQuery<T>& ray, MeshRayHit<T>& hit) const;
+  // One hit (closest or any) of a ray passing the success-path checks (rayIsValid, raySettingsAreValid) on an
+  // unscaled mesh whose pose rotation is the identity (a mesh placed as cooked): cast() without the instance frame.
+  static std::uint32_t castOneCooked(const TriangleMeshGeometry<T>& g, const Transform<T>& pose,
+                                     const Vec3<T>& origin, const Vec3<T>& dir, T maxDist, HitFlags flags,
+                                     RaycastHit<T>& hit);
 
  private:
   [[gnu::always_inline]] Vec3<T> toMesh(const Vec3<T>& v) const {
@@ -119,11 +124,15 @@ template <class T> class TriangleMeshRays {
     if (diagonal_) return Vec3<T>(v.x() * d.x(), v.y() * d.y(), v.z() * d.z());
     return invScale_ * v;
   }
-  // Hit: RaycastHit or MeshRayHit (no position).
-  template <class Hit>
-  void writeHit(const RayQuery<T>& ray, std::uint32_t cooked, const TriangleRayHit<T>& tri, Hit& hit) const;
+  // Hit: RaycastHit or MeshRayHit (no position). frame: the instance frame, unused with kCooked (see castOneCooked).
+  template <bool kCooked, class Hit>
+  static void writeHitIn(const TriangleMeshRays* frame, const TriangleMeshGeometry<T>& g, const Vec3<T>& origin,
+                         const Vec3<T>& dir, HitFlags asked, std::uint32_t cooked, const TriangleRayHit<T>& tri,
+                         Hit& hit);
   template <class Hit> std::uint32_t castInto(const RayQuery<T>& ray, Hit* hits) const;
-  void writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir, bool frontFace, Vec3<T>& normal) const;
+  template <bool kCooked>
+  static void writeNormalIn(const TriangleMeshRays* frame, const TriangleMeshGeometry<T>& g, const Vec3<T>* v,
+                            const Vec3<T>& rayDir, bool frontFace, Vec3<T>& normal);
 
   const TriangleMeshGeometry<T>& g_;
   const Transform<T>& pose_;

@@ -54,6 +54,24 @@ template <class T> class MeshRaycaster {
                                        bool cullBackFaces)
       : mesh_(mesh), ray4_(makeRay4(org, dir)), bvhRay_(makeBvhRay<8>(org, dir)), cull_(cullBackFaces) {}
 
+#ifdef GQ_SSE42
+  // A float ray given as lanes (x, y, z in lanes 0-2, lane 3 0).
+  [[gnu::always_inline]] MeshRaycaster(const TriangleMesh<T>& mesh, __m128 org, __m128 dir, bool cullBackFaces)
+      : mesh_(mesh), ray4_(makeWatertightRay4Sse(org, dir)), bvhRay_(makeBvhRayLanes<8>(org, dir)),
+        cull_(cullBackFaces) {}
+#endif
+
+  // The caster of origin + t dir on a mesh whose pose is the translation p alone (mesh space: origin - p); a float
+  // ray goes to the constants in SSE lanes.
+  [[gnu::always_inline]] static MeshRaycaster translated(const TriangleMesh<T>& mesh, const Vec3<T>& origin,
+                                                         const Vec3<T>& p, const Vec3<T>& dir, bool cullBackFaces) {
+#ifdef GQ_SSE42
+    if constexpr (kFloat)
+      return MeshRaycaster(mesh, _mm_sub_ps(floatLanes(origin), floatLanes(p)), floatLanes(dir), cullBackFaces);
+#endif
+    return MeshRaycaster(mesh, Vec3<T>(origin - p), dir, cullBackFaces);
+  }
+
   // The watertight constants (in SSE registers for float: the same bits).
   [[gnu::always_inline]] static WatertightRay4<T> makeRay4(const Vec3<T>& org, const Vec3<T>& dir) {
 #ifdef GQ_SSE42
@@ -277,6 +295,14 @@ template <class Walk, class... Args> auto withLanes(MeshWalk w, Args&&... args) 
   return withBaselineLanes<Walk>(args...);
 }
 
+// The one-hit walk the flags ask for (any hit or closest hit): true when `best` was found.
+template <class T>
+[[gnu::always_inline]] inline bool walkOneHit(MeshWalk walk, const MeshRaycaster<T>& caster, T maxDist,
+                                              HitFlags flags, RawHit<T>& best) {
+  return flags.has(HitFlag::AnyHit) ? withLanes<AnyWalk>(walk, caster, maxDist, best)
+                                    : withLanes<ClosestWalk>(walk, caster, maxDist, best);
+}
+
 }  // namespace
 
 // Mesh space of the instance: S^-1 and the mirror flag. The identity scale (the common case) skips the matrix
@@ -305,13 +331,17 @@ template <class T>
 // meshes report the side the ray hit. A float mesh with an identity scale and pose rotation (the common case) takes
 // it 4 lanes wide: Eigen's cross product and tryUnit's d / sqrt(|d|^2) as the same IEEE operations.
 template <class T>
-[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeNormal(const Vec3<T>* v, const Vec3<T>& rayDir,
-                                                                    bool frontFace, Vec3<T>& normal) const {
-  const bool flip = g_.doubleSided() && !frontFace;
+template <bool kCooked>
+[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeNormalIn(const TriangleMeshRays* frame,
+                                                                      const TriangleMeshGeometry<T>& g,
+                                                                      const Vec3<T>* v, const Vec3<T>& rayDir,
+                                                                      bool frontFace, Vec3<T>& normal) {
+  const bool flip = g.doubleSided() && !frontFace;
+  const bool scaled = !kCooked && frame->scaled_, rotated = !kCooked && frame->rotated_;
 #ifdef GQ_SSE42
   if constexpr (std::is_same_v<T, float>) {
     __m128 unit;
-    if (!scaled_ && !rotated_ && unitTriangleNormal(v[0].data(), unit)) {
+    if (!scaled && !rotated && unitTriangleNormal(v[0].data(), unit)) {
       if (flip) unit = _mm_xor_ps(unit, _mm_set1_ps(-0.0f));
       _mm_storel_pi(reinterpret_cast<__m64*>(normal.data()), unit);
       _mm_store_ss(normal.data() + 2, _mm_movehl_ps(unit, unit));
@@ -325,8 +355,8 @@ template <class T>
   const T ax = v[1].x() - v[0].x(), ay = v[1].y() - v[0].y(), az = v[1].z() - v[0].z();
   const T bx = v[2].x() - v[0].x(), by = v[2].y() - v[0].y(), bz = v[2].z() - v[0].z();
   Vec3<T> n(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx);
-  n = toMesh(n);  // S^-1 = S^-T is also the normal transform
-  if (rotated_) n = pose_.rotate(n);
+  if (scaled) n = frame->toMesh(n);  // S^-1 = S^-T is also the normal transform
+  if (rotated) n = frame->pose_.rotate(n);
   // tryUnit's common case inline (n / sqrt(|n|^2), Eigen's order of the squared norm); unitOr for the others.
   const T len2 = n.squaredNorm();
   if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) {
@@ -338,31 +368,37 @@ template <class T>
   normal = flip ? Vec3<T>(-n) : n;
 }
 
-// The requested fields of one hit, written in place. A MeshRayHit has no position: it keeps the flag when asked.
+// The requested fields of one hit, written in place, in the instance frame `frame`, or (kCooked, frame unused) for
+// an unscaled mesh placed as cooked. A MeshRayHit has no position: it keeps the flag when asked.
 template <class T>
-template <class Hit>
-[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeHit(const RayQuery<T>& ray, std::uint32_t cooked,
-                                                                  const TriangleRayHit<T>& tri, Hit& hit) const {
+template <bool kCooked, class Hit>
+[[gnu::always_inline]] inline void TriangleMeshRays<T>::writeHitIn(const TriangleMeshRays* frame,
+                                                                    const TriangleMeshGeometry<T>& g,
+                                                                    const Vec3<T>& origin, const Vec3<T>& dir,
+                                                                    HitFlags asked, std::uint32_t cooked,
+                                                                    const TriangleRayHit<T>& tri, Hit& hit) {
   // Every field written once: the requested ones, RaycastHit's defaults for the others.
-  const TriangleMesh<T>& mesh = *g_.mesh;
+  const TriangleMesh<T>& mesh = *g.mesh;
   HitFlags flags = HitFlag::FaceIndex;
   if constexpr (std::is_same_v<Hit, RaycastHit<T>>) {
     hit.position = Vec3<T>::Zero();
-    if (ray.flags.has(HitFlag::Position)) hit.position = ray.origin + ray.dir * tri.t;
+    if (asked.has(HitFlag::Position)) hit.position = origin + dir * tri.t;
   }
-  if (ray.flags.has(HitFlag::Position)) flags |= HitFlag::Position;
+  if (asked.has(HitFlag::Position)) flags |= HitFlag::Position;
   hit.normal = Vec3<T>::Zero();
-  if (ray.flags.has(HitFlag::Normal)) {
-    writeNormal(&mesh.triangleVertices[3 * std::size_t(cooked)], ray.dir, tri.frontFace, hit.normal);
+  if (asked.has(HitFlag::Normal)) {
+    writeNormalIn<kCooked>(frame, g, &mesh.triangleVertices[3 * std::size_t(cooked)], dir, tri.frontFace,
+                           hit.normal);
     flags |= HitFlag::Normal;
   }
   hit.distance = tri.t;
   hit.faceIndex = mesh.inputIndex[cooked];
   hit.u = T(0);
   hit.v = T(0);
-  if (ray.flags.has(HitFlag::UV)) {
-    hit.u = flips_ ? tri.v : tri.u;
-    hit.v = flips_ ? tri.u : tri.v;
+  if (asked.has(HitFlag::UV)) {
+    const bool flips = !kCooked && frame->flips_;
+    hit.u = flips ? tri.v : tri.u;
+    hit.v = flips ? tri.u : tri.v;
     flags |= HitFlag::UV;
   }
   hit.flags = flags;
@@ -391,14 +427,13 @@ template <class Hit>
     thread_local std::vector<RawHit<T>> raw;
     raw.clear();
     const std::uint32_t n = withLanes<MultipleWalk>(walk, caster, ray.maxDist, ray.maxHits, raw);
-    for (std::uint32_t i = 0; i < n; ++i) writeHit(ray, raw[i].cooked, raw[i].tri, hits[i]);
+    for (std::uint32_t i = 0; i < n; ++i)
+      writeHitIn<false>(this, g_, ray.origin, ray.dir, ray.flags, raw[i].cooked, raw[i].tri, hits[i]);
     return n;
   }
   RawHit<T> best;
-  const bool found = ray.flags.has(HitFlag::AnyHit) ? withLanes<AnyWalk>(walk, caster, ray.maxDist, best)
-                                                    : withLanes<ClosestWalk>(walk, caster, ray.maxDist, best);
-  if (!found) return 0;
-  writeHit(ray, best.cooked, best.tri, hits[0]);
+  if (!walkOneHit(walk, caster, ray.maxDist, ray.flags, best)) return 0;
+  writeHitIn<false>(this, g_, ray.origin, ray.dir, ray.flags, best.cooked, best.tri, hits[0]);
   return 1;
 }
 
@@ -413,6 +448,20 @@ std::uint32_t TriangleMeshRays<T>::castOne(const RayQuery<T>& ray, MeshRayHit<T>
   const std::uint32_t n = castInto(ray, &hit);
   if (n == 0) hit.flags = HitFlags();
   return n;
+}
+
+template <class T>
+std::uint32_t TriangleMeshRays<T>::castOneCooked(const TriangleMeshGeometry<T>& g, const Transform<T>& pose,
+                                                 const Vec3<T>& origin, const Vec3<T>& dir, T maxDist,
+                                                 HitFlags flags, RaycastHit<T>& hit) {
+  const T maxD = std::min(maxDist, std::numeric_limits<T>::max());  // as rayQuery
+  if (!(maxD > T(0))) return 0;  // a zero-length ray never hits a mesh
+  const bool cull = !(g.doubleSided() || flags.has(HitFlag::MeshBothSides));
+  RawHit<T> best;
+  const MeshRaycaster<T> caster = MeshRaycaster<T>::translated(*g.mesh, origin, pose.p, dir, cull);
+  if (!walkOneHit(meshWalk(), caster, maxD, flags, best)) return 0;
+  writeHitIn<true>(nullptr, g, origin, dir, flags, best.cooked, best.tri, hit);
+  return 1;
 }
 
 template class TriangleMeshRays<float>;
@@ -430,6 +479,13 @@ Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Sha
                         RaycastHit<T>* hits, std::uint32_t& hitCount) noexcept {
   if (!(rayIsValid(origin, unitDir, pose.p) & raySettingsAreValid(pose, maxDist, hitFlags, maxHits, hits)))
     return raycastShapeChecked(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
+  // One hit on an unscaled mesh placed as cooked (the common case): no instance frame, no query object.
+  if (ShapeAccess<T>::rayMeshUnscaled(shape) && isIdentityRotation(pose.q) &&
+      !(hitFlags.has(HitFlag::MeshMultiple) && maxHits > 1)) {
+    hitCount = TriangleMeshRays<T>::castOneCooked(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose,
+                                                  origin, unitDir, maxDist, hitFlags, hits[0]);
+    return Status();
+  }
   // Keeping several hits may allocate (the first time a thread keeps that many): guarded.
   return guarded([&]() __attribute__((always_inline)) -> Status {
     const RayQuery<T> ray = rayQuery(origin, unitDir, maxDist, hitFlags, maxHits);
