@@ -473,6 +473,25 @@ std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transf
   return TriangleMeshRays<T>(g, pose).cast(ray, hits);
 }
 
+namespace {
+// raycastMeshShape's cast in the instance frame (a scaled or rotated mesh, or several hits), out of line: its frame
+// and registers are not paid by the one-hit casts on meshes placed as cooked.
+template <class T>
+[[gnu::noinline]] Status castInInstanceFrame(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
+                                             const Transform<T>& pose, T maxDist, HitFlags hitFlags,
+                                             std::uint32_t maxHits, RaycastHit<T>* hits,
+                                             std::uint32_t& hitCount) noexcept {
+  // Keeping several hits may allocate (the first time a thread keeps that many): guarded.
+  return guarded([&]() __attribute__((always_inline)) -> Status {
+    const RayQuery<T> ray = rayQuery(origin, unitDir, maxDist, hitFlags, maxHits);
+    const TriangleMeshRays<T> rays(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose,
+                                   !ShapeAccess<T>::rayMeshUnscaled(shape));
+    hitCount = rays.cast(ray, hits);
+    return Status();
+  });
+}
+}  // namespace
+
 template <class T>
 Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
                         const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
@@ -486,14 +505,7 @@ Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Sha
                                                   origin, unitDir, maxDist, hitFlags, hits[0]);
     return Status();
   }
-  // Keeping several hits may allocate (the first time a thread keeps that many): guarded.
-  return guarded([&]() __attribute__((always_inline)) -> Status {
-    const RayQuery<T> ray = rayQuery(origin, unitDir, maxDist, hitFlags, maxHits);
-    const TriangleMeshRays<T> rays(shape.geometry().template get<TriangleMeshGeometry<T>>(), pose,
-                                   !ShapeAccess<T>::rayMeshUnscaled(shape));
-    hitCount = rays.cast(ray, hits);
-    return Status();
-  });
+  return castInInstanceFrame(origin, unitDir, shape, pose, maxDist, hitFlags, maxHits, hits, hitCount);
 }
 
 template Status raycastMeshShape<float>(const Vec3<float>&, const Vec3<float>&, const Shape<float>&,
