@@ -76,7 +76,8 @@ template <class T> struct TriangleRayHit;
 
 // The Shape<T> raycast on a triangle-mesh shape (gq/shape.h's contract): inputs passing the success-path predicate
 // (rayIsValid, raySettingsAreValid) take the mesh kernel of raycastTriangleMesh without the dispatch table, with the
-// shape's identity scale known from Shape::make; others take raycastShapeChecked, whose Status names the problem.
+// shape's identity scale known from Shape::make (one hit on an unscaled mesh with an identity pose rotation:
+// TriangleMeshRays::castOneCooked); others take raycastShapeChecked, whose Status names the problem.
 template <class T>
 Status raycastMeshShape(const Vec3<T>& origin, const Vec3<T>& unitDir, const Shape<T>& shape,
                         const Transform<T>& pose, T maxDist, HitFlags hitFlags, std::uint32_t maxHits,
