@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include <atomic>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
@@ -243,21 +244,26 @@ TYPED_TEST(PreparedShape, SingleShapeQueriesAnswerAsTheGeometryOverloadsBitForBi
 
 // A mesh shape with no scale and an identity pose rotation takes its own one-hit cast (no instance frame): its
 // hits must be the geometry path's bit for bit, every field and flag, for every hit-flag combination, on single- and
-// double-sided meshes, closest and any hit, with MeshMultiple asking for one hit.
+// double-sided meshes, closest and any hit, with MeshMultiple asking for one hit or several (the instance-frame
+// cast), maxDist finite, infinite or 0, and directions with exactly zero, negative zero and tied components.
 TYPED_TEST(PreparedShape, OneHitMeshRaycastsPlacedAsCookedAnswerAsTheGeometryOverloadBitForBit) {
   using T = TypeParam;
+  const T inf = std::numeric_limits<T>::infinity();
+  const T r = T(1) / std::sqrt(T(2));
+  const Vec3<T> special[] = {Vec3<T>(0, -1, 0), Vec3<T>(T(-0.0), 1, T(-0.0)), Vec3<T>(r, -r, 0),
+                             Vec3<T>(0, r, -r),  Vec3<T>(-r, T(-0.0), r),      Vec3<T>(1, 0, 0)};
   Rng rng(44);
   int hits = 0;
   for (MeshGeometryFlag sides : {MeshGeometryFlag::None, MeshGeometryFlag::DoubleSided}) {
     const Geometry<T> geom = TriangleMeshGeometry<T>(wavyMesh<T>(), MeshScale<T>(), sides);
     Shape<T> shape;
     ASSERT_TRUE(Shape<T>::make(geom, shape).ok());
-    for (int k = 0; k < 400; ++k) {
+    for (int k = 0; k < 600; ++k) {
       const Transform<T> pose(rng.inBox<T>(1.0), Quat<T>::Identity());
-      // Origins above and below the sheet, aimed at a point on it (about half the rays come from behind its faces).
+      // Origins 2 units from a point on or near the sheet, aimed at it (about half come from behind its faces).
       const Vec3<T> target = pose.p + rng.inBox<T>(1.2);
-      const Vec3<T> origin = target + rng.unitVector<T>() * T(2);
-      const Vec3<T> dir = (target - origin).normalized();
+      const Vec3<T> dir = k % 4 == 0 ? special[(k / 4) % 6] : rng.unitVector<T>();
+      const Vec3<T> origin = target - dir * T(2);
       const std::uint32_t bits = std::uint32_t(k) % 64u;
       HitFlags flags;
       if (bits & 1u) flags |= HitFlag::Position;
@@ -265,26 +271,58 @@ TYPED_TEST(PreparedShape, OneHitMeshRaycastsPlacedAsCookedAnswerAsTheGeometryOve
       if (bits & 4u) flags |= HitFlag::UV;
       if (bits & 8u) flags |= HitFlag::AnyHit;
       if (bits & 16u) flags |= HitFlag::MeshBothSides;
-      if (bits & 32u) flags |= HitFlag::MeshMultiple;  // with maxHits 1: one hit all the same
+      if (bits & 32u) flags |= HitFlag::MeshMultiple;
+      const std::uint32_t maxHits = k % 5 == 1 ? 3u : 1u;  // 3 without MeshMultiple: one hit all the same
+      const T maxDist = k % 7 == 3 ? inf : k % 7 == 5 ? T(0) : T(5);
       const std::string where = std::string(sides == MeshGeometryFlag::None ? "single" : "double") + "-sided ray " +
                                 std::to_string(k);
-      RaycastHit<T> cooked, plain;
+      RaycastHit<T> cooked[3], plain[3];
       std::uint32_t nCooked = 0, nPlain = 0;
-      expectSameStatus(raycast(origin, dir, shape, pose, T(5), flags, 1, &cooked, nCooked),
-                       raycast(origin, dir, geom, pose, T(5), flags, 1, &plain, nPlain), where);
+      expectSameStatus(raycast(origin, dir, shape, pose, maxDist, flags, maxHits, cooked, nCooked),
+                       raycast(origin, dir, geom, pose, maxDist, flags, maxHits, plain, nPlain), where);
       ASSERT_EQ(nCooked, nPlain) << where;
-      if (nCooked == 0) continue;
-      ++hits;
-      EXPECT_EQ(std::memcmp(&cooked.distance, &plain.distance, sizeof(T)), 0) << where;
-      expectSame(cooked.position, plain.position, where);
-      expectSame(cooked.normal, plain.normal, where);
-      EXPECT_EQ(std::memcmp(&cooked.u, &plain.u, sizeof(T)), 0) << where;
-      EXPECT_EQ(std::memcmp(&cooked.v, &plain.v, sizeof(T)), 0) << where;
-      EXPECT_EQ(cooked.faceIndex, plain.faceIndex) << where;
-      EXPECT_EQ(cooked.flags.bits(), plain.flags.bits()) << where;
+      if (maxDist == T(0)) EXPECT_EQ(nCooked, 0u) << where;
+      for (std::uint32_t h = 0; h < nCooked; ++h) {
+        ++hits;
+        EXPECT_EQ(std::memcmp(&cooked[h].distance, &plain[h].distance, sizeof(T)), 0) << where;
+        expectSame(cooked[h].position, plain[h].position, where);
+        expectSame(cooked[h].normal, plain[h].normal, where);
+        EXPECT_EQ(std::memcmp(&cooked[h].u, &plain[h].u, sizeof(T)), 0) << where;
+        EXPECT_EQ(std::memcmp(&cooked[h].v, &plain[h].v, sizeof(T)), 0) << where;
+        EXPECT_EQ(cooked[h].faceIndex, plain[h].faceIndex) << where;
+        EXPECT_EQ(cooked[h].flags.bits(), plain[h].flags.bits()) << where;
+      }
     }
   }
-  EXPECT_GT(hits, 400);
+  EXPECT_GT(hits, 500);
+}
+
+// A ray marched from its last hit passes that hit's position (and here its normal, as the direction) to the next
+// raycast, which writes the same hit: the answer must be the one for copies of those inputs.
+TYPED_TEST(PreparedShape, MeshRaycastsReadTheirRayBeforeWritingAHitItAliases) {
+  using T = TypeParam;
+  Shape<T> shape;
+  ASSERT_TRUE(Shape<T>::make(TriangleMeshGeometry<T>(wavyMesh<T>(), MeshScale<T>(), MeshGeometryFlag::DoubleSided),
+                             shape)
+                  .ok());
+  const HitFlags flags = kDefaultHitFlags;
+  for (const Transform<T>& pose :
+       {Transform<T>(Vec3<T>(T(0.1), 0, 0), Quat<T>::Identity()),                    // the one-hit cast placed as cooked
+        Transform<T>(Vec3<T>(T(0.1), 0, 0), Quat<T>(Eigen::AngleAxis<T>(T(0.2), Vec3<T>::UnitX())))}) {
+    const Vec3<T> origin(T(0.3), T(2), T(0.2)), dir(0, -1, 0);
+    RaycastHit<T> expected;
+    std::uint32_t n = 0;
+    ASSERT_TRUE(raycast(origin, dir, shape, pose, T(10), flags, 1, &expected, n).ok());
+    ASSERT_EQ(n, 1u);
+    RaycastHit<T> hit;
+    hit.position = origin;
+    hit.normal = dir;
+    ASSERT_TRUE(raycast(hit.position, hit.normal, shape, pose, T(10), flags, 1, &hit, n).ok());
+    ASSERT_EQ(n, 1u);
+    EXPECT_EQ(hit.distance, expected.distance);
+    expectSame(hit.position, expected.position, "aliased origin");
+    expectSame(hit.normal, expected.normal, "aliased direction");
+  }
 }
 
 TYPED_TEST(PreparedShape, BadPosesAndDirectionsAreRejectedAsOnTheGeometryPath) {

@@ -9,6 +9,7 @@
 // non-finite hit. The triangles are read from the mesh's
 // per-triangle vertex copies (TriangleMesh::triangleVertices, contiguous per leaf) and transposed in registers.
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -253,10 +254,14 @@ inline constexpr Axes kAxes[6] = {axes(0, false), axes(0, true), axes(1, false),
 }  // namespace watertight_sse
 
 // makeWatertightRay4(makeWatertightRay(org, dir)) for float in SSE registers, bit for bit: the same dominant axis
-// (x if |x| exceeds |y| and |z|, else y if |y| exceeds |z|, else z), the same swap, and sx, sy, sz as the same
-// correctly rounded divisions (one 4-lane division). o and d: x, y, z in lanes 0-2.
+// (x if |x| exceeds |y| and |z|, else y if |y| exceeds |z|, else z), the same swap (by the sign bit of dir[kz], which
+// is dir[kz] < 0 for any direction but a zero or NaN one), and sx, sy, sz as the same correctly rounded divisions
+// (one 4-lane division). o and d: x, y, z in lanes 0-2. The result is written as three rows of 16 bytes.
 [[gnu::always_inline]] inline WatertightRay4<float> makeWatertightRay4Sse(__m128 o, __m128 d) {
-  static_assert(sizeof(WatertightRay4<float>) == 48, "three 16-byte rows: org kx | ky kz sx sy | sz ox oy oz");
+  using Ray4 = WatertightRay4<float>;
+  static_assert(std::is_standard_layout_v<Ray4> && sizeof(Ray4) == 48 && offsetof(Ray4, ray.kx) == 12 &&
+                    offsetof(Ray4, ray.sx) == 24 && offsetof(Ray4, ox) == 36,
+                "three 16-byte rows: org kx | ky kz sx sy | sz ox oy oz");
   const __m128 a = _mm_andnot_ps(_mm_set1_ps(-0.0f), d);
   const int gtNext = _mm_movemask_ps(_mm_cmpgt_ps(a, _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1))));  // x>y y>z z>x
   const int xGtZ = _mm_movemask_ps(_mm_cmpgt_ps(a, _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2)))) & 1;

@@ -32,11 +32,14 @@ template <class T> struct RayQuery {
 // themselves at one. A hit has a finite distance: an entry parameter that overflows T (a far ray all but parallel to
 // a box face or a plane, found by fuzz_raycast) lies beyond every representable distance, so maxDist = inf means the
 // largest finite T and every kernel's "t > maxDist" test rejects it.
+template <class T> [[gnu::always_inline]] inline T finiteMaxDist(T maxDist) {
+  return std::min(maxDist, std::numeric_limits<T>::max());
+}
 template <class T>
 [[gnu::always_inline]] inline RayQuery<T> rayQuery(const Vec3<T>& origin, const Vec3<T>& unitDir, T maxDist,
                                                    HitFlags flags, std::uint32_t maxHits) {
   const std::uint32_t cap = flags.has(HitFlag::MeshMultiple) ? maxHits : 1u;
-  return RayQuery<T>{origin, unitDir, std::min(maxDist, std::numeric_limits<T>::max()), flags, cap};
+  return RayQuery<T>{origin, unitDir, finiteMaxDist(maxDist), flags, cap};
 }
 
 // The façade's checks on its success path as predicates of a few compares; a failing input takes the full checks,

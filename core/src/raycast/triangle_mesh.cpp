@@ -68,8 +68,9 @@ template <class T> class MeshRaycaster {
 #ifdef GQ_SSE42
     if constexpr (kFloat)
       return MeshRaycaster(mesh, _mm_sub_ps(floatLanes(origin), floatLanes(p)), floatLanes(dir), cullBackFaces);
+    else
 #endif
-    return MeshRaycaster(mesh, Vec3<T>(origin - p), dir, cullBackFaces);
+      return MeshRaycaster(mesh, Vec3<T>(origin - p), dir, cullBackFaces);
   }
 
   // The watertight constants (in SSE registers for float: the same bits).
@@ -295,6 +296,12 @@ template <class Walk, class... Args> auto withLanes(MeshWalk w, Args&&... args) 
   return withBaselineLanes<Walk>(args...);
 }
 
+// Single-sided meshes cull back faces unless the ray asks for both sides.
+template <class T>
+[[gnu::always_inline]] inline bool cullsBackFaces(const TriangleMeshGeometry<T>& g, HitFlags flags) {
+  return !(g.doubleSided() || flags.has(HitFlag::MeshBothSides));
+}
+
 // The one-hit walk the flags ask for (any hit or closest hit): true when `best` was found.
 template <class T>
 [[gnu::always_inline]] inline bool walkOneHit(MeshWalk walk, const MeshRaycaster<T>& caster, T maxDist,
@@ -377,20 +384,24 @@ template <bool kCooked, class Hit>
                                                                     const Vec3<T>& origin, const Vec3<T>& dir,
                                                                     HitFlags asked, std::uint32_t cooked,
                                                                     const TriangleRayHit<T>& tri, Hit& hit) {
-  // Every field written once: the requested ones, RaycastHit's defaults for the others.
+  // Every field written once: the requested ones, RaycastHit's defaults for the others. origin and dir may be this
+  // hit's position and normal (a ray marched from its last hit): the position is computed before the normal is
+  // written, the normal (which reads dir only before writing) before the position.
   const TriangleMesh<T>& mesh = *g.mesh;
   HitFlags flags = HitFlag::FaceIndex;
-  if constexpr (std::is_same_v<Hit, RaycastHit<T>>) {
-    hit.position = Vec3<T>::Zero();
-    if (asked.has(HitFlag::Position)) hit.position = origin + dir * tri.t;
+  Vec3<T> position = Vec3<T>::Zero();
+  if (asked.has(HitFlag::Position)) {
+    if constexpr (std::is_same_v<Hit, RaycastHit<T>>) position = origin + dir * tri.t;
+    flags |= HitFlag::Position;
   }
-  if (asked.has(HitFlag::Position)) flags |= HitFlag::Position;
-  hit.normal = Vec3<T>::Zero();
   if (asked.has(HitFlag::Normal)) {
     writeNormalIn<kCooked>(frame, g, &mesh.triangleVertices[3 * std::size_t(cooked)], dir, tri.frontFace,
                            hit.normal);
     flags |= HitFlag::Normal;
+  } else {
+    hit.normal = Vec3<T>::Zero();
   }
+  if constexpr (std::is_same_v<Hit, RaycastHit<T>>) hit.position = position;
   hit.distance = tri.t;
   hit.faceIndex = mesh.inputIndex[cooked];
   hit.u = T(0);
@@ -419,7 +430,7 @@ template <class Hit>
     org = toMesh(org);
     dir = toMesh(dir);
   }
-  const bool cull = !(g_.doubleSided() || ray.flags.has(HitFlag::MeshBothSides));
+  const bool cull = cullsBackFaces(g_, ray.flags);
   const MeshRaycaster<T> caster(*g_.mesh, org, dir, cull);
   const MeshWalk walk = MeshWalk(walk_);
   if (std::is_same_v<Hit, RaycastHit<T>> && ray.maxHits > 1) {
@@ -454,13 +465,13 @@ template <class T>
 std::uint32_t TriangleMeshRays<T>::castOneCooked(const TriangleMeshGeometry<T>& g, const Transform<T>& pose,
                                                  const Vec3<T>& origin, const Vec3<T>& dir, T maxDist,
                                                  HitFlags flags, RaycastHit<T>& hit) {
-  const T maxD = std::min(maxDist, std::numeric_limits<T>::max());  // as rayQuery
+  const T maxD = finiteMaxDist(maxDist);
   if (!(maxD > T(0))) return 0;  // a zero-length ray never hits a mesh
-  const bool cull = !(g.doubleSided() || flags.has(HitFlag::MeshBothSides));
   RawHit<T> best;
-  const MeshRaycaster<T> caster = MeshRaycaster<T>::translated(*g.mesh, origin, pose.p, dir, cull);
+  const MeshRaycaster<T> caster =
+      MeshRaycaster<T>::translated(*g.mesh, origin, pose.p, dir, cullsBackFaces(g, flags));
   if (!walkOneHit(meshWalk(), caster, maxD, flags, best)) return 0;
-  writeHitIn<true>(nullptr, g, origin, dir, flags, best.cooked, best.tri, hit);
+  writeHitIn<true>(nullptr, g, origin, dir, flags, best.cooked, best.tri, hit);  // origin, dir may alias hit
   return 1;
 }
 
