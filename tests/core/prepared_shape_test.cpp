@@ -307,7 +307,8 @@ TYPED_TEST(PreparedShape, MeshRaycastsReadTheirRayBeforeWritingAHitItAliases) {
                   .ok());
   const HitFlags flags = kDefaultHitFlags;
   for (const Transform<T>& pose :
-       {Transform<T>(Vec3<T>(T(0.1), 0, 0), Quat<T>::Identity()),                    // the one-hit cast placed as cooked
+       {Transform<T>(Vec3<T>(T(0.1), 0, 0), Quat<T>::Identity()),  // the one-hit cast placed as cooked
+        // the instance-frame cast
         Transform<T>(Vec3<T>(T(0.1), 0, 0), Quat<T>(Eigen::AngleAxis<T>(T(0.2), Vec3<T>::UnitX())))}) {
     const Vec3<T> origin(T(0.3), T(2), T(0.2)), dir(0, -1, 0);
     RaycastHit<T> expected;

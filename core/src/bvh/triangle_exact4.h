@@ -244,13 +244,15 @@ constexpr Axes axes(int kz, bool negative) {
   Axes a{};
   const int from[4] = {-1, kx, ky, kz};
   for (int lane = 0; lane < 4; ++lane)
-    for (int b = 0; b < 4; ++b) a.shuffle[4 * lane + b] = from[lane] < 0 ? std::int8_t(-128) : std::int8_t(4 * from[lane] + b);
+    for (int b = 0; b < 4; ++b)
+      a.shuffle[4 * lane + b] = from[lane] < 0 ? std::int8_t(-128) : std::int8_t(4 * from[lane] + b);
   a.k[0] = kx;
   a.k[1] = ky;
   a.k[2] = kz;
   return a;
 }
-inline constexpr Axes kAxes[6] = {axes(0, false), axes(0, true), axes(1, false), axes(1, true), axes(2, false), axes(2, true)};
+inline constexpr Axes kAxes[6] = {axes(0, false), axes(0, true),  axes(1, false),
+                                  axes(1, true),  axes(2, false), axes(2, true)};
 }  // namespace watertight_sse
 
 // makeWatertightRay4(makeWatertightRay(org, dir)) for float in SSE registers, bit for bit: the same dominant axis
