@@ -113,6 +113,58 @@ TYPED_TEST(MeshCook, BvhLeavesHoldEveryTriangleOnceInsideTheirBoxes) {
   checkBvh(*small);
 }
 
+// TriangleMesh::leafVertices: each leaf of n triangles holds rows of n values from 9 x its first cooked index on (row
+// 3 k + a: vertex k's axis a), leafLane names each triangle's lane and leaf size, triangleVertex reads the input vertex
+// back, and 3 zeros follow the last leaf.
+template <class T> void checkLeafVertices(const TriangleMesh<T>& mesh) {
+  const std::size_t n = mesh.triangles.size();
+  ASSERT_EQ(mesh.leafVertices.size(), 9 * n + 3);
+  ASSERT_EQ(mesh.leafLane.size(), n);
+  for (std::size_t i = 9 * n; i < mesh.leafVertices.size(); ++i) EXPECT_EQ(mesh.leafVertices[i], T(0));
+  std::vector<int> seen(n, 0);
+  auto check = [&](std::uint32_t ref) {
+    if (!MeshBvhNode::isLeaf(ref)) return;
+    const std::uint32_t first = MeshBvhNode::leafFirst(ref), count = MeshBvhNode::leafCount(ref);
+    for (std::uint32_t lane = 0; lane < count; ++lane) {
+      const std::uint32_t c = first + lane;
+      ++seen[c];
+      EXPECT_EQ(mesh.leafLane[c], lane | count << 2);
+      for (int k = 0; k < 3; ++k) {
+        const Vec3<T>& v = mesh.vertices[mesh.triangles[c][k]];
+        EXPECT_EQ(mesh.triangleVertex(c, k), v);
+        for (int a = 0; a < 3; ++a) EXPECT_EQ(mesh.leafVertices[9 * first + (3 * k + a) * count + lane], v[a]);
+      }
+    }
+  };
+  check(mesh.accel->bvh.rootChild);
+  for (const MeshBvhNode& node : mesh.accel->bvh.nodes)
+    for (std::uint32_t ref : node.child) check(ref);
+  for (int s : seen) EXPECT_EQ(s, 1);
+}
+
+TYPED_TEST(MeshCook, LeafVerticesAreEachLeafsTrianglesAsRowsInCookedOrder) {
+  using T = TypeParam;
+  const MeshData<T> sphere = meshtest::icosphere<T>(3);
+  const auto mesh = meshtest::cook(sphere.vertices, sphere.triangles);
+  ASSERT_NE(mesh, nullptr);
+  checkLeafVertices(*mesh);
+  // Leaves of every size occur: one leaf of 1, 2 and 3 triangles (a root leaf), and a mesh whose leaves vary.
+  for (std::uint32_t count : {1u, 2u, 3u}) {
+    MeshData<T> m = meshtest::quadStack<T>(2);
+    m.triangles.resize(count);
+    const auto small = meshtest::cook(m.vertices, m.triangles);
+    ASSERT_NE(small, nullptr);
+    ASSERT_EQ(MeshBvhNode::leafCount(small->accel->bvh.rootChild), count);
+    checkLeafVertices(*small);
+  }
+  std::vector<int> sizes(5, 0);
+  for (const MeshBvhNode& node : mesh->accel->bvh.nodes)
+    for (std::uint32_t ref : node.child)
+      if (MeshBvhNode::isLeaf(ref)) ++sizes[MeshBvhNode::leafCount(ref)];
+  EXPECT_GT(sizes[4], 0);
+  EXPECT_GT(sizes[1] + sizes[2] + sizes[3], 0) << "the sphere's leaves are all full: the strides below 4 go untested";
+}
+
 // The bunny from the shared data folder (skipped when it is missing).
 template <class T> class MeshCookData : public ::testing::Test {};
 TYPED_TEST_SUITE(MeshCookData, Scalars);

@@ -43,7 +43,7 @@ template <class T> MeshData<T> randomLeaf(std::mt19937_64& rng, const Vec3<T>& c
 #ifdef GQ_SSE42
 // The test as the AVX2 walk runs it (double 4 lanes to a register), inlined into AVX2 code as there.
 template <class T>
-__attribute__((target("avx2"), flatten)) int exactTriangleHitsAvx2(const detail::TriangleVertices4<T>& tris,
+__attribute__((target("avx2"), flatten)) int exactTriangleHitsAvx2(const detail::LeafRows<T>& tris,
                                                                    const detail::WatertightRay4<T>& ray, T maxT,
                                                                    bool cull, detail::TriangleHits4<T>& hits) {
   return detail::exactTriangleHits<T, true>(tris, ray, maxT, cull, hits);
@@ -54,7 +54,7 @@ __attribute__((target("avx2"), flatten)) int exactTriangleHitsAvx2(const detail:
 // Double: a different kernel (4 lanes to a 256-bit register). Float: the same 4-lane kernel compiled into AVX2 code,
 // which must not change an operation (no contraction to FMA); the AVX2 walk's float loader is checked apart below.
 template <class T>
-void expectAvx2FormAgrees(const detail::TriangleVertices4<T>& tris, const detail::WatertightRay4<T>& ray, T maxT,
+void expectAvx2FormAgrees(const detail::LeafRows<T>& tris, const detail::WatertightRay4<T>& ray, T maxT,
                           bool cull, int mask, const detail::TriangleHits4<T>& hits) {
 #ifdef GQ_SSE42
   if (!__builtin_cpu_supports("avx2")) return;
@@ -78,12 +78,9 @@ struct Counts {
   int decided = 0;  // hits the wide test computed itself
 };
 
-// The leaf's triangles as the raycast loads them: from the mesh's vertex copies, 4 readable or zero-padded.
-template <class T> detail::TriangleVertices4<T> leafTriangles(const TriangleMesh<T>& mesh, bool fourReadable) {
-  detail::TriangleVertices4<T> tris;
-  detail::loadTriangles4(mesh.triangleVertices.data(), MeshBvhNode::leafCount(mesh.accel->bvh.rootChild), fourReadable,
-                         tris);
-  return tris;
+// The root leaf's triangles as the raycast reads them: the mesh's leaf rows, stride the leaf's triangle count.
+template <class T> detail::LeafRows<T> leafTriangles(const TriangleMesh<T>& mesh) {
+  return {mesh.leafVertices.data(), MeshBvhNode::leafCount(mesh.accel->bvh.rootChild)};
 }
 
 // Fires the rays at the leaf and checks the wide test against the scalar test for both culling modes.
@@ -92,7 +89,7 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
                bool tightMaxT, Counts& counts) {
   ASSERT_TRUE(MeshBvhNode::isLeaf(mesh.accel->bvh.rootChild));
   const std::uint32_t count = MeshBvhNode::leafCount(mesh.accel->bvh.rootChild);
-  const detail::TriangleVertices4<T> tris = leafTriangles(mesh, count == 4);
+  const detail::LeafRows<T> tris = leafTriangles(mesh);
   for (std::size_t r = 0; r < origins.size(); ++r) {
     const Vec3<T> dir = (targets[r] - origins[r]).normalized();
     const detail::WatertightRay<T> exactRay = detail::makeWatertightRay(origins[r], dir);
@@ -101,18 +98,21 @@ void checkLeaf(const TriangleMesh<T>& mesh, const std::vector<Vec3<T>>& origins,
       T maxT = std::numeric_limits<T>::max() / T(4);
       if (tightMaxT) {  // the exact distance of the first triangle hit, so t == maxT must still be kept
         for (std::uint32_t i = 0; i < count; ++i) {
-          const Vec3<T>* v = &mesh.triangleVertices[3 * i];
           detail::TriangleRayHit<T> h;
-          if (detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h)) { maxT = h.t; break; }
+          if (detail::intersectRayTriangle(exactRay, mesh.triangleVertex(i, 0), mesh.triangleVertex(i, 1),
+                                           mesh.triangleVertex(i, 2), maxT, cull, h)) {
+            maxT = h.t;
+            break;
+          }
         }
       }
       detail::TriangleHits4<T> laneHits;
       const int mask = detail::exactTriangleHits(tris, wideRay, maxT, cull, laneHits);
       expectAvx2FormAgrees(tris, wideRay, maxT, cull, mask, laneHits);
       for (std::uint32_t i = 0; i < count; ++i) {
-        const Vec3<T>* v = &mesh.triangleVertices[3 * i];
         detail::TriangleRayHit<T> h;
-        const bool exact = detail::intersectRayTriangle(exactRay, v[0], v[1], v[2], maxT, cull, h);
+        const bool exact = detail::intersectRayTriangle(exactRay, mesh.triangleVertex(i, 0), mesh.triangleVertex(i, 1),
+                                                        mesh.triangleVertex(i, 2), maxT, cull, h);
         if ((laneHits.decided >> i) & 1) {  // a lane decided wide: the scalar test's hit, bit for bit
           ++counts.decided;
           EXPECT_TRUE(exact) << "the wide test decided a lane the scalar test rejects";
@@ -199,7 +199,7 @@ TYPED_TEST(MeshRaycastPacket, WideTestRejectsTrianglesTheRayMisses) {
   const auto mesh = meshtest::cook(m.vertices, m.triangles);
   ASSERT_NE(mesh, nullptr);
   ASSERT_TRUE(MeshBvhNode::isLeaf(mesh->accel->bvh.rootChild));
-  const detail::TriangleVertices4<T> tris = leafTriangles(*mesh, true);
+  const detail::LeafRows<T> tris = leafTriangles(*mesh);
   auto candidates = [&](const Vec3<T>& origin, const Vec3<T>& dir, T maxT, bool cull) {
     detail::TriangleHits4<T> hits;
     return detail::exactTriangleHits(tris, detail::makeWatertightRay4(detail::makeWatertightRay(origin, dir)), maxT,
@@ -219,37 +219,6 @@ TYPED_TEST(MeshRaycastPacket, WideTestRejectsTrianglesTheRayMisses) {
     // maxT short of the plane drops the triangle too.
     EXPECT_EQ(candidates(origin, dir, T(50), false), 0);
   }
-}
-
-TYPED_TEST(MeshRaycastPacket, LeafTrianglesLoadTheSameFromRegistersAndLaneByLane) {
-  using T = TypeParam;
-  std::mt19937_64 rng(5);
-  const MeshData<T> m = randomLeaf<T>(rng, Vec3<T>(T(1), T(-2), T(3)), 0.5);
-  const auto mesh = meshtest::cook(m.vertices, m.triangles);
-  ASSERT_NE(mesh, nullptr);
-  ASSERT_EQ(MeshBvhNode::leafCount(mesh->accel->bvh.rootChild), 4u);
-  const detail::TriangleVertices4<T> wide = leafTriangles(*mesh, true), lanes = leafTriangles(*mesh, false);
-  for (int k = 0; k < 3; ++k)
-    for (int a = 0; a < 3; ++a)
-      for (int i = 0; i < 4; ++i) {
-        EXPECT_EQ(wide.v[k][a][i], lanes.v[k][a][i]);
-        EXPECT_EQ(wide.v[k][a][i], mesh->triangleVertices[3 * std::size_t(i) + std::size_t(k)][a]);
-      }
-#ifdef GQ_SSE42
-  // The AVX2 walk's 256-bit loads: the same rows.
-  if (__builtin_cpu_supports("avx2")) {
-    detail::TriangleVertices4<T> avx2;
-    detail::loadFourTriangles4Avx2(mesh->triangleVertices.data(), avx2);
-    for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a)
-        for (int i = 0; i < 4; ++i) EXPECT_EQ(avx2.v[k][a][i], wide.v[k][a][i]);
-  }
-#endif
-  // Fewer than 4 triangles stored: the missing lanes are zero.
-  detail::TriangleVertices4<T> three;
-  detail::loadTriangles4(mesh->triangleVertices.data(), 3, false, three);
-  for (int k = 0; k < 3; ++k)
-    for (int a = 0; a < 3; ++a) EXPECT_EQ(three.v[k][a][3], T(0));
 }
 
 #ifdef GQ_SSE42

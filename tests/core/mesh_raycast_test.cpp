@@ -123,7 +123,7 @@ TYPED_TEST(MeshRaycast, NormalIsTheUnitCrossProductOfTheHitTriangleBitForBit) {
   for (int k = 0; k < 300; ++k) {
     const std::vector<Vec3<T>> v = {draw3<T>(coordinate, rng), draw3<T>(coordinate, rng), draw3<T>(coordinate, rng)};
     const auto mesh = meshtest::cook(v, {{0u, 1u, 2u}});
-    const Vec3<T>* c = mesh->triangleVertices.data();
+    const Vec3<T> c[3] = {mesh->triangleVertex(0, 0), mesh->triangleVertex(0, 1), mesh->triangleVertex(0, 2)};
     const Vec3<T> n = (c[1] - c[0]).cross(c[2] - c[0]);
     if (!(n.squaredNorm() > T(1e-6))) continue;  // a sliver: its centroid ray may graze an edge
     const Vec3<T> unit = n / std::sqrt(n.squaredNorm());
@@ -176,7 +176,8 @@ TYPED_TEST(MeshRaycast, NormalUnderScaleAndPoseIsTheUnitTransformedCrossProductB
       const Vec3<T> d = i % 2 == 0 ? Vec3<T>((target - o).normalized()) : Vec3<T>(draw3<T>(u, rng).normalized());
       RaycastHit<T> hit;
       if (this->cast(g, pose, o, d, T(100), kDefaultHitFlags | HitFlag::MeshBothSides, 1, &hit) == 0) continue;
-      const Vec3<T>* c = &mesh->triangleVertices[3 * std::size_t(mesh->cookedIndex[hit.faceIndex])];
+      const std::uint32_t k = mesh->cookedIndex[hit.faceIndex];
+      const Vec3<T> c[3] = {mesh->triangleVertex(k, 0), mesh->triangleVertex(k, 1), mesh->triangleVertex(k, 2)};
       Vec3<T> n = (c[1] - c[0]).cross(c[2] - c[0]);
       n = Vec3<T>(n.x() * (T(1) / s.x()), n.y() * (T(1) / s.y()), n.z() * (T(1) / s.z()));
       n = pose.rotate(n);

@@ -164,7 +164,7 @@ TYPED_TEST(MeshRaycastWalks, ClosestHitIsTheLeastDistanceThenInputIndexOverAllTr
         std::uint32_t bestCooked = 0;
         detail::TriangleRayHit<T> best;
         for (std::uint32_t c = 0; c < mesh->inputIndex.size(); ++c) {
-          const Vec3<T>* v = &mesh->triangleVertices[3 * std::size_t(c)];
+          const Vec3<T> v[3] = {mesh->triangleVertex(c, 0), mesh->triangleVertex(c, 1), mesh->triangleVertex(c, 2)};
           detail::TriangleRayHit<T> h;
           if (!detail::intersectRayTriangle(ray, v[0], v[1], v[2], std::numeric_limits<T>::infinity(), !bothSides, h))
             continue;
@@ -227,7 +227,7 @@ TEST(MeshRaycastWalks, RaysFromBeyondTheFloatRangeSkipEmptyLanesAndFindTheCloses
       const detail::WatertightRay<double> ray = detail::makeWatertightRay(origin, dir);
       double best = kInf;
       for (std::uint32_t c = 0; c < mesh->inputIndex.size(); ++c) {
-        const Vec3<double>* v = &mesh->triangleVertices[3 * std::size_t(c)];
+        const Vec3<double> v[3] = {mesh->triangleVertex(c, 0), mesh->triangleVertex(c, 1), mesh->triangleVertex(c, 2)};
         detail::TriangleRayHit<double> h;
         if (detail::intersectRayTriangle(ray, v[0], v[1], v[2], kInf, true, h)) best = std::min(best, h.t);
       }

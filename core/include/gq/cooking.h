@@ -2,6 +2,7 @@
 // Cooking: convex hulls (qhull), validated triangle meshes with a BVH, heightfields, and mesh files (assimp).
 // Cooked data is immutable and shared: std::shared_ptr<const X>, safe to use from any number of threads.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -69,10 +70,26 @@ template <class T> struct TriangleMesh {
   // Vertices on the convex hull of the used vertices (all used vertices when the mesh is flat): the exact
   // world AABB under any scale and pose is the AABB of these.
   std::vector<std::uint32_t> hullVertices;
-  // Copies of the 3 vertices of every cooked triangle, in leaf order: a leaf's triangles are contiguous in memory
-  // (one cache-friendly read instead of an index load plus three scattered vertex loads per triangle).
-  std::vector<Vec3<T>> triangleVertices;
+  // Copies of the cooked triangles' vertices, leaf by leaf, as rows: the BVH leaf of n triangles (n <= 4) whose first
+  // is cooked triangle f holds 9 n values from 9 f on, row 3 k + a being vertex k's axis a of its n triangles in
+  // cooked order. A ray test loads a row of 4 lanes per instruction with no transpose (lanes past n belong to the
+  // next row or leaf and are ignored); 3 zeros follow the last leaf so such a load never reads past the end.
+  std::vector<T> leafVertices;
+  // Per cooked triangle: its lane in its leaf (bits 0-1) and the leaf's triangle count (bits 2-4).
+  std::vector<std::uint8_t> leafLane;
   std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
+  // Where cooked triangle `cooked`'s values are: vertex k's axis a at [(3 k + a) stride] from the pointer returned.
+  const T* triangleValues(std::uint32_t cooked, std::uint32_t& stride) const {
+    const std::uint32_t code = leafLane[cooked], lane = code & 3u;
+    stride = code >> 2;
+    return leafVertices.data() + (9 * std::size_t(cooked) - 8 * std::size_t(lane));  // 9 (cooked - lane) + lane
+  }
+  // Vertex k (0-2) of cooked triangle `cooked`, as stored (the input vertex; triangles[cooked][k] indexes it).
+  Vec3<T> triangleVertex(std::uint32_t cooked, int k) const {
+    std::uint32_t n;
+    const T* x = triangleValues(cooked, n) + std::size_t(3 * std::uint32_t(k) * n);
+    return Vec3<T>(x[0], x[n], x[2 * n]);
+  }
 };
 
 struct MeshCookReport {

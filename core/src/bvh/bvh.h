@@ -69,7 +69,7 @@ using MeshBvh = Bvh8;
 namespace detail {
 // What cookTriangleMesh builds for the queries (declared opaque in gq/cooking.h): the BVH over the cooked
 // triangles. Leaves hold no triangle data of their own: a leaf's triangles are contiguous in the mesh's
-// triangleVertices (cooked order), which the ray kernels read directly (bvh/triangle_exact4.h).
+// leafVertices (cooked order, rows per leaf), which the ray kernels read directly (bvh/triangle_exact4.h).
 // 8-wide: each node's children are tested by one AVX2 instruction per plane (or two SSE halves).
 struct MeshAccel {
   Bvh8 bvh;

@@ -6,8 +6,8 @@
 // with a NaN edge function from overflow, accepts with a NaN hit, which the mesh raycast rejects): no margin and no
 // pre-test copy of the triangles are needed. Lanes it cannot decide exactly the same way are kept as candidates for
 // the scalar test: an edge function that is exactly zero (the scalar test re-evaluates it in a wider type) and a
-// non-finite hit. The triangles are read from the mesh's
-// per-triangle vertex copies (TriangleMesh::triangleVertices, contiguous per leaf) and transposed in registers.
+// non-finite hit. The triangles are read from the mesh's per-leaf vertex rows (TriangleMesh::leafVertices): one load
+// a row, no transpose.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -24,129 +24,24 @@
 
 namespace gq::detail {
 
-// The 4 triangles of a leaf in structure-of-arrays form: v[vertex][axis][lane].
-template <class T> struct alignas(16) TriangleVertices4 {
-  T v[3][3][4];
+// A leaf's triangles as TriangleMesh::leafVertices stores them: row 3 k + a (vertex k, axis a) from rows + (3 k + a)
+// stride on, lane i the leaf's triangle i (stride: the leaf's triangle count; the lanes of a 4-lane load past it hold
+// the next row's values, which the caller ignores).
+template <class T> struct LeafRows {
+  const T* rows;
+  std::uint32_t stride;
+  const T* row(int vertex, int axis) const { return rows + std::size_t(3 * vertex + axis) * stride; }
 };
 
-// Loads `count` (1..4) triangles starting at `tv` (3 vertices each, as TriangleMesh::triangleVertices stores them).
-// With `fourReadable` (4 triangles are stored from tv on) the lanes past count hold the following triangles and the
-// caller ignores them; otherwise they are zero.
-inline void loadTriangles4(const Vec3<float>* tv, std::uint32_t count, bool fourReadable, TriangleVertices4<float>& out) {
 #ifdef GQ_SSE42
-  if (fourReadable) {
-    // Triangle i is 9 floats: components 0-3, 4-7 and 8, each group transposed to 4 lanes.
-    const float* f = tv->data();
-    __m128 a0 = _mm_loadu_ps(f), a1 = _mm_loadu_ps(f + 9), a2 = _mm_loadu_ps(f + 18), a3 = _mm_loadu_ps(f + 27);
-    __m128 b0 = _mm_loadu_ps(f + 4), b1 = _mm_loadu_ps(f + 13), b2 = _mm_loadu_ps(f + 22), b3 = _mm_loadu_ps(f + 31);
-    _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
-    _MM_TRANSPOSE4_PS(b0, b1, b2, b3);
-    const __m128 c01 = _mm_unpacklo_ps(_mm_load_ss(f + 8), _mm_load_ss(f + 17));
-    const __m128 c23 = _mm_unpacklo_ps(_mm_load_ss(f + 26), _mm_load_ss(f + 35));
-    float* o = &out.v[0][0][0];
-    _mm_store_ps(o, a0); _mm_store_ps(o + 4, a1); _mm_store_ps(o + 8, a2); _mm_store_ps(o + 12, a3);
-    _mm_store_ps(o + 16, b0); _mm_store_ps(o + 20, b1); _mm_store_ps(o + 24, b2); _mm_store_ps(o + 28, b3);
-    _mm_store_ps(o + 32, _mm_movelh_ps(c01, c23));
-    return;
-  }
-#else
-  (void)fourReadable;
-#endif
-  out = TriangleVertices4<float>{};
-  for (std::uint32_t i = 0; i < count; ++i)
-    for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) out.v[k][a][i] = tv[3 * i + std::uint32_t(k)][a];
-}
-
-#ifdef GQ_SSE42
-// loadTriangles4 of 4 stored float triangles with 256-bit loads, for the AVX2 walk: triangle i's first 8 floats in one
-// register, the 4 registers transposed two rows at a time (rows r and r + 4 share a register), the 9th floats gathered
-// apart. The same values as loadTriangles4 (25 instructions instead of 37).
-__attribute__((target("avx2"))) inline void loadFourTriangles4Avx2(const Vec3<float>* tv,
-                                                                  TriangleVertices4<float>& out) {
-  const float* f = tv->data();
-  const __m256 r0 = _mm256_loadu_ps(f), r1 = _mm256_loadu_ps(f + 9), r2 = _mm256_loadu_ps(f + 18),
-               r3 = _mm256_loadu_ps(f + 27);
-  const __m256 lo01 = _mm256_unpacklo_ps(r0, r1), hi01 = _mm256_unpackhi_ps(r0, r1);
-  const __m256 lo23 = _mm256_unpacklo_ps(r2, r3), hi23 = _mm256_unpackhi_ps(r2, r3);
-  // (Casts, not a lambda: a lambda does not inherit the target attribute.)
-  const __m256d l01 = _mm256_castps_pd(lo01), l23 = _mm256_castps_pd(lo23);
-  const __m256d h01 = _mm256_castps_pd(hi01), h23 = _mm256_castps_pd(hi23);
-  const __m256 rows04 = _mm256_castpd_ps(_mm256_unpacklo_pd(l01, l23));
-  const __m256 rows15 = _mm256_castpd_ps(_mm256_unpackhi_pd(l01, l23));
-  const __m256 rows26 = _mm256_castpd_ps(_mm256_unpacklo_pd(h01, h23));
-  const __m256 rows37 = _mm256_castpd_ps(_mm256_unpackhi_pd(h01, h23));
-  float* o = &out.v[0][0][0];  // row r (vertex r / 3, axis r % 3) at o + 4 r
-  _mm_store_ps(o, _mm256_castps256_ps128(rows04));
-  _mm_store_ps(o + 4, _mm256_castps256_ps128(rows15));
-  _mm_store_ps(o + 8, _mm256_castps256_ps128(rows26));
-  _mm_store_ps(o + 12, _mm256_castps256_ps128(rows37));
-  _mm_store_ps(o + 16, _mm256_extractf128_ps(rows04, 1));
-  _mm_store_ps(o + 20, _mm256_extractf128_ps(rows15, 1));
-  _mm_store_ps(o + 24, _mm256_extractf128_ps(rows26, 1));
-  _mm_store_ps(o + 28, _mm256_extractf128_ps(rows37, 1));
-  _mm_store_ps(o + 32, _mm_setr_ps(f[8], f[17], f[26], f[35]));
-}
-#endif
-
-inline void loadTriangles4(const Vec3<double>* tv, std::uint32_t count, bool fourReadable,
-                           TriangleVertices4<double>& out) {
-#ifdef GQ_SSE42
-  if (fourReadable) {
-    // Triangle i is 9 doubles; two triangles at a time, two components per load.
-    const double* d = tv->data();
-    double* o = &out.v[0][0][0];
-    for (int pair = 0; pair < 2; ++pair) {
-      const double* p = d + 18 * pair;
-      double* q = o + 2 * pair;
-      for (int k = 0; k < 8; k += 2) {
-        const __m128d x = _mm_loadu_pd(p + k), y = _mm_loadu_pd(p + 9 + k);
-        _mm_store_pd(q + 4 * k, _mm_unpacklo_pd(x, y));
-        _mm_store_pd(q + 4 * (k + 1), _mm_unpackhi_pd(x, y));
-      }
-      _mm_store_pd(q + 32, _mm_loadh_pd(_mm_load_sd(p + 8), p + 17));
-    }
-    return;
-  }
-#else
-  (void)fourReadable;
-#endif
-  out = TriangleVertices4<double>{};
-  for (std::uint32_t i = 0; i < count; ++i)
-    for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) out.v[k][a][i] = tv[3 * i + std::uint32_t(k)][a];
-}
-
-#ifdef GQ_SSE42
-// loadTriangles4 of 4 stored double triangles for the AVX2 walk: each triangle's 9 doubles as rows 0-3, 4-7 and 8;
-// two 4 x 4 transposes (unpacks, then 128-bit halves exchanged) give whole rows. The same values as loadTriangles4.
-__attribute__((target("avx2"))) inline void loadFourTriangles4Avx2(const Vec3<double>* tv,
-                                                                  TriangleVertices4<double>& out) {
-  const double* d = tv->data();
-  double* o = &out.v[0][0][0];  // row r (vertex r / 3, axis r % 3) at o + 4 r
-  for (int half = 0; half < 2; ++half) {  // rows 0-3 from each triangle's doubles 0-3, rows 4-7 from 4-7
-    const __m256d a0 = _mm256_loadu_pd(d + 4 * half), a1 = _mm256_loadu_pd(d + 9 + 4 * half);
-    const __m256d a2 = _mm256_loadu_pd(d + 18 + 4 * half), a3 = _mm256_loadu_pd(d + 27 + 4 * half);
-    const __m256d lo01 = _mm256_unpacklo_pd(a0, a1), hi01 = _mm256_unpackhi_pd(a0, a1);
-    const __m256d lo23 = _mm256_unpacklo_pd(a2, a3), hi23 = _mm256_unpackhi_pd(a2, a3);
-    double* q = o + 16 * half;
-    _mm256_storeu_pd(q, _mm256_permute2f128_pd(lo01, lo23, 0x20));
-    _mm256_storeu_pd(q + 4, _mm256_permute2f128_pd(hi01, hi23, 0x20));
-    _mm256_storeu_pd(q + 8, _mm256_permute2f128_pd(lo01, lo23, 0x31));
-    _mm256_storeu_pd(q + 12, _mm256_permute2f128_pd(hi01, hi23, 0x31));
-  }
-  _mm256_storeu_pd(o + 32, _mm256_setr_pd(d[8], d[17], d[26], d[35]));
-}
-#endif
-
-#ifdef GQ_SSE42
-// The same SSE operation on float (4 lanes) and double (2 lanes) registers, so one kernel serves both.
+// The same SSE operation on float (4 lanes) and double (2 lanes) registers, so one kernel serves both. (Unaligned
+// loads: a leaf's rows start wherever its triangle count puts them.)
 namespace lanes {
 template <class T> struct Reg;
 template <> struct Reg<float> {
   using type = __m128;
   static constexpr int kWidth = 4;
-  static __m128 load(const float* p) { return _mm_load_ps(p); }
+  static __m128 load(const float* p) { return _mm_loadu_ps(p); }
   static __m128 set1(float x) { return _mm_set1_ps(x); }
   static void store(float* p, __m128 x) { _mm_store_ps(p, x); }
   static int mask(__m128 x) { return _mm_movemask_ps(x); }
@@ -155,7 +50,7 @@ template <> struct Reg<float> {
 template <> struct Reg<double> {
   using type = __m128d;
   static constexpr int kWidth = 2;
-  static __m128d load(const double* p) { return _mm_load_pd(p); }
+  static __m128d load(const double* p) { return _mm_loadu_pd(p); }
   static __m128d set1(double x) { return _mm_set1_pd(x); }
   static void store(double* p, __m128d x) { _mm_store_pd(p, x); }
   static int mask(__m128d x) { return _mm_movemask_pd(x); }
@@ -185,7 +80,7 @@ inline __m128 le(__m128 a, __m128 b) { return _mm_cmple_ps(a, b); }
 inline __m128d le(__m128d a, __m128d b) { return _mm_cmple_pd(a, b); }
 
 // Double on 4 lanes with AVX2, for the AVX2 walk (only on CPUs that have it): the same operations as Reg<double>'s two
-// halves, so the same bits. (Unaligned loads and stores: the leaf arrays are 16-byte aligned.)
+// halves, so the same bits.
 struct Reg256d {
   using type = __m256d;
   static constexpr int kWidth = 4;
@@ -313,7 +208,7 @@ namespace lanes {
 
 // The SSE form (float 4 lanes, double 2).
 template <class T>
-inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r4, int lane0, T maxT,
+inline int exactLanes(const LeafRows<T>& p, const WatertightRay4<T>& r4, int lane0, T maxT,
                       bool cullBackFaces, TriangleHits4<T>& hits) {
   return exactLanesWith<T, Reg<T>>(p, r4, lane0, maxT, cullBackFaces, hits);
 }
@@ -325,7 +220,7 @@ inline int exactLanes(const TriangleVertices4<T>& p, const WatertightRay4<T>& r4
 // the hit written to `hits` (bit i of hits.decided).
 // kAvx2 (callers on CPUs with AVX2): double lanes 4 to a register instead of 2.
 template <class T, bool kAvx2 = false>
-inline int exactTriangleHits(const TriangleVertices4<T>& p, const WatertightRay4<T>& r, T maxT, bool cullBackFaces,
+inline int exactTriangleHits(const LeafRows<T>& p, const WatertightRay4<T>& r, T maxT, bool cullBackFaces,
                              TriangleHits4<T>& hits) {
   hits.decided = 0;
   hits.frontMask = 0;
@@ -342,9 +237,8 @@ inline int exactTriangleHits(const TriangleVertices4<T>& p, const WatertightRay4
   // Scalar build: the scalar test decides every lane it accepts with a finite hit.
   int mask = 0;
   for (int i = 0; i < 4; ++i) {
-    const Vec3<T> v0(p.v[0][0][i], p.v[0][1][i], p.v[0][2][i]);
-    const Vec3<T> v1(p.v[1][0][i], p.v[1][1][i], p.v[1][2][i]);
-    const Vec3<T> v2(p.v[2][0][i], p.v[2][1][i], p.v[2][2][i]);
+    auto vertex = [&](int k) { return Vec3<T>(p.row(k, 0)[i], p.row(k, 1)[i], p.row(k, 2)[i]); };
+    const Vec3<T> v0 = vertex(0), v1 = vertex(1), v2 = vertex(2);
     TriangleRayHit<T> hit;
     if (!intersectRayTriangle(r.ray, v0, v1, v2, maxT, cullBackFaces, hit)) continue;
     mask |= 1 << i;

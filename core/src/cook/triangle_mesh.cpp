@@ -84,6 +84,28 @@ template <class T> std::vector<std::uint32_t> hullVertexIndices(const std::vecto
   return out;
 }
 
+// The cooked triangles' vertex rows, leaf by leaf (TriangleMesh::leafVertices, leafLane), from the tree's leaves
+// (each cooked triangle is in exactly one).
+template <class T> void storeLeafVertices(const MeshBvh& bvh, TriangleMesh<T>& mesh) {
+  const std::size_t n = mesh.triangles.size();
+  mesh.leafVertices.assign(9 * n + 3, T(0));
+  mesh.leafLane.assign(n, 0);
+  auto store = [&](std::uint32_t ref) {
+    if (!MeshBvhNode::isLeaf(ref)) return;
+    const std::uint32_t first = MeshBvhNode::leafFirst(ref), count = MeshBvhNode::leafCount(ref);
+    T* rows = mesh.leafVertices.data() + 9 * std::size_t(first);
+    for (std::uint32_t lane = 0; lane < count; ++lane) {
+      mesh.leafLane[first + lane] = std::uint8_t(lane | count << 2);
+      for (std::uint32_t k = 0; k < 3; ++k)
+        for (std::uint32_t a = 0; a < 3; ++a)
+          rows[(3 * k + a) * count + lane] = mesh.vertices[mesh.triangles[first + lane][k]][a];
+    }
+  };
+  store(bvh.rootChild);
+  for (const MeshBvhNode& node : bvh.nodes)
+    for (std::uint32_t ref : node.child) store(ref);
+}
+
 }  // namespace
 
 template <class T>
@@ -115,17 +137,16 @@ Status cookTriangleMesh(const std::vector<Vec3<T>>& vertices, const std::vector<
     mesh->triangles.resize(kept.size());
     mesh->inputIndex.resize(kept.size());
     mesh->cookedIndex.assign(triangles.size(), kRemovedTriangle);
-    mesh->triangleVertices.reserve(3 * kept.size());
     std::vector<char> usedFlag(vertices.size(), 0);
     for (std::uint32_t c = 0; c < order.size(); ++c) {
       const std::uint32_t input = kept[order[c]];
       mesh->triangles[c] = triangles[input];
       mesh->inputIndex[c] = input;
       mesh->cookedIndex[input] = c;
-      for (std::uint32_t v : triangles[input]) mesh->triangleVertices.push_back(vertices[v]);
       for (std::uint32_t v : triangles[input]) usedFlag[v] = 1;
     }
-    mesh->bvhBytes = accel->bvh.bytes();
+    storeLeafVertices(accel->bvh, *mesh);
+    mesh->bvhBytes = accel->bvh.bytes() + mesh->leafLane.size();
     mesh->accel = std::move(accel);
     std::vector<std::uint32_t> used;
     for (std::uint32_t v = 0; v < vertices.size(); ++v)

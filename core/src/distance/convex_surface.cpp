@@ -50,7 +50,7 @@ template <class T> void nearestOnMesh(const TriangleQueryShape<T>& shape, const 
     if (e.lower > best.boundSq()) continue;
     if (MeshBvhNode::isLeaf(e.ref)) {
       for (std::uint32_t k = 0; k < MeshBvhNode::leafCount(e.ref); ++k) {
-        const Triangle<T> tri = mesh.triangle(MeshBvhNode::leafFirst(e.ref) + k);
+        const Triangle<T> tri = mesh.leafTriangle(e.ref, k);
         if (boxDistanceSq(box, triangleBounds(tri)) > best.boundSq()) continue;
         if (ballBound && best.bounded() && shape.distanceLowerBound(tri) > best.bound()) continue;
         DistanceResult<T> r;

@@ -62,11 +62,11 @@ bool forEachTrianglePair(const MeshSurface<T>& a, const MeshSurface<T>& b, T mar
       const std::uint32_t firstA = MeshBvhNode::leafFirst(e.refA), countA = MeshBvhNode::leafCount(e.refA);
       const std::uint32_t firstB = MeshBvhNode::leafFirst(e.refB), countB = MeshBvhNode::leafCount(e.refB);
       for (std::uint32_t i = 0; i < countA; ++i) {
-        trisA[i] = a.triangle(firstA + i);
+        trisA[i] = a.leafTriangle(e.refA, i);
         boxesA[i] = triangleBounds(trisA[i]);
       }
       for (std::uint32_t j = 0; j < countB; ++j) {
-        trisB[j] = b.triangle(firstB + j);
+        trisB[j] = b.leafTriangle(e.refB, j);
         boxesB[j] = triangleBounds(trisB[j]);
       }
       for (std::uint32_t i = 0; i < countA; ++i)
@@ -143,10 +143,10 @@ MeshPairClosest<T> closestMeshPair(const MeshSurface<T>& a, const MeshSurface<T>
     if (leafA && leafB) {
       for (std::uint32_t i = 0; i < MeshBvhNode::leafCount(p.refA); ++i) {
         const std::uint32_t ia = MeshBvhNode::leafFirst(p.refA) + i;
-        const Triangle<T> ta = a.triangle(ia);
+        const Triangle<T> ta = a.leafTriangle(p.refA, i);
         for (std::uint32_t j = 0; j < MeshBvhNode::leafCount(p.refB); ++j) {
           const std::uint32_t ib = MeshBvhNode::leafFirst(p.refB) + j;
-          const Triangle<T> tb = b.triangle(ib);
+          const Triangle<T> tb = b.leafTriangle(p.refB, j);
           if (boxDistanceSq(triangleBounds(ta), triangleBounds(tb)) > best.distSq) continue;
           const TrianglePairClosest<T> c = closestTriangleTriangle(ta, tb);
           if (c.distSq < best.distSq) best = {c.distSq, ia, ib, c.onA, c.onB, true};

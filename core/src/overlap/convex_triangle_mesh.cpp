@@ -18,7 +18,9 @@ Status overlapConvexTriangleMesh(const Geometry<T>& g0, const Transform<T>& p0, 
     const BoxFaceCull<T> cull(*box, p0, mesh.meshToWorld(), mesh.position(), mesh.mesh().localBounds);
     overlapping = mesh.forEachCookedTriangle(
         meshBox,
-        [&](std::uint32_t k) { return !cull.separates(mesh.cookedVertices(k)) && shape.overlaps(mesh.triangle(k)); },
+        [&](std::uint32_t k) {
+          return !cull.separates(mesh.cookedVertices(k).data()) && shape.overlaps(mesh.triangle(k));
+        },
         [&](const Bounds3<T>& node) { return cull.separatesBox(node); });
     return Status();
   }

@@ -13,6 +13,7 @@
 #include "gq/geometry.h"
 #include "gq/hit.h"
 #include "gq/transform.h"
+#include "mesh/triangle.h"
 
 namespace gq {
 template <class T> class Shape;
@@ -75,8 +76,6 @@ template <class T>
 std::uint32_t raycastConvex(const ConvexMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
 template <class T>
 std::uint32_t raycastTriangleMesh(const TriangleMeshGeometry<T>& g, const Transform<T>& pose, const RayQuery<T>& ray, RaycastHit<T>* hits);
-template <class T> struct TriangleRayHit;
-
 // The Shape<T> raycast on a triangle-mesh shape (gq/shape.h's contract): inputs passing the success-path predicate
 // (rayIsValid, raySettingsAreValid) take the mesh kernel of raycastTriangleMesh without the dispatch table, with the
 // shape's identity scale known from Shape::make (one hit on an unscaled mesh with an identity pose rotation:
@@ -100,6 +99,15 @@ template <class T> struct MeshRayHit {
   T u, v;
   std::uint32_t faceIndex;
   HitFlags flags;
+};
+
+// A triangle the mesh walk hit: its cooked index, the exact test's hit, and where its vertex values are
+// (TriangleMesh::triangleValues: vertex k's axis a at values[(3 k + a) stride]), so the hit fill looks nothing up.
+template <class T> struct MeshTriangleHit {
+  std::uint32_t cooked;
+  std::uint32_t stride;
+  const T* values;
+  TriangleRayHit<T> tri;
 };
 
 // Raycasts against one mesh at one pose (a single raycast, or a batch's rays): the mesh frame and the node test the
@@ -131,12 +139,11 @@ template <class T> class TriangleMeshRays {
   // Hit: RaycastHit or MeshRayHit (no position). frame: the instance frame, unused with kCooked (see castOneCooked).
   template <bool kCooked, class Hit>
   static void writeHitIn(const TriangleMeshRays* frame, const TriangleMeshGeometry<T>& g, const Vec3<T>& origin,
-                         const Vec3<T>& dir, HitFlags asked, std::uint32_t cooked, const TriangleRayHit<T>& tri,
-                         Hit& hit);
+                         const Vec3<T>& dir, HitFlags asked, const MeshTriangleHit<T>& found, Hit& hit);
   template <class Hit> std::uint32_t castInto(const RayQuery<T>& ray, Hit* hits) const;
   template <bool kCooked>
-  static void writeNormalIn(const TriangleMeshRays* frame, const TriangleMeshGeometry<T>& g, const Vec3<T>* v,
-                            const Vec3<T>& rayDir, bool frontFace, Vec3<T>& normal);
+  static void writeNormalIn(const TriangleMeshRays* frame, const TriangleMeshGeometry<T>& g,
+                            const MeshTriangleHit<T>& found, const Vec3<T>& rayDir, Vec3<T>& normal);
 
   const TriangleMeshGeometry<T>& g_;
   const Transform<T>& pose_;

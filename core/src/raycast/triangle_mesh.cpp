@@ -21,21 +21,23 @@
 namespace gq::detail {
 namespace {
 
-template <class T> struct RawHit {
-  std::uint32_t cooked;
-  TriangleRayHit<T> tri;
-};
-
 #ifdef GQ_SSE42
-// The unit normal of the float triangle whose 9 coordinates start at v: (v1 - v0) x (v2 - v0) as Eigen's cross()
+// The unit normal of the float triangle hit: (v1 - v0) x (v2 - v0) as Eigen's cross()
 // computes each lane (a.y b.z - a.z b.y ...), divided by sqrt(x^2 + (y^2 + z^2)) as tryUnit does (the order of
 // Eigen's squaredNorm on a 3-vector). False (unit unwritten) where tryUnit would rescale: a squared length outside
 // the normal float range.
-[[gnu::always_inline]] inline bool unitTriangleNormal(const float* v, __m128& unit) {
-  const __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 3);
-  const __m128 z1v2 = _mm_loadu_ps(v + 5);                         // z1 x2 y2 z2 (the 4 loads stay inside the 9)
-  const __m128 v2 = _mm_shuffle_ps(z1v2, z1v2, _MM_SHUFFLE(0, 3, 2, 1));  // x2 y2 z2 z1
-  const __m128 a = _mm_sub_ps(v1, v0), b = _mm_sub_ps(v2, v0);
+[[gnu::always_inline]] inline bool unitTriangleNormal(const MeshTriangleHit<float>& found, __m128& unit) {
+  const float* x = found.values;
+  const std::uint32_t stride = found.stride;
+  // Vertex k's x, y, z in lanes 0-2 (lane 3 unused): p[0], p[stride], p[2 stride] each in its lane of a 4-lane load
+  // (from p, p + stride - 1, p + 2 stride - 2: within the leaf's rows and the padding after the last leaf).
+  auto vertex = [&](std::uint32_t k) __attribute__((always_inline)) {
+    const float* p = x + 3 * k * stride;
+    const __m128 xy = _mm_blend_ps(_mm_loadu_ps(p), _mm_loadu_ps(p + stride - 1), 2);
+    return _mm_blend_ps(xy, _mm_loadu_ps(p + 2 * stride - 2), 4);
+  };
+  const __m128 v0 = vertex(0);
+  const __m128 a = _mm_sub_ps(vertex(1), v0), b = _mm_sub_ps(vertex(2), v0);
   const __m128 aYzx = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)), aZxy = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2));
   const __m128 bYzx = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 0, 2, 1)), bZxy = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 1, 0, 2));
   const __m128 n = _mm_sub_ps(_mm_mul_ps(aYzx, bZxy), _mm_mul_ps(aZxy, bYzx));
@@ -84,35 +86,24 @@ template <class T> class MeshRaycaster {
   // Out of line: it runs only on the lanes the wide test cannot decide (an exactly zero edge function, a non-finite
   // hit); inlined into the walk, its registers were paid at every leaf (any hit about 10 instructions a ray fewer).
   [[gnu::noinline]] bool testTriangle(std::uint32_t cooked, T maxT, TriangleRayHit<T>& hit) const {
-    const Vec3<T>* v = &mesh_.triangleVertices[3 * std::size_t(cooked)];
     // Coordinates near the scalar's limit (|x| ~ 1e307) overflow the watertight test's products: its NaN t would
     // pass the t <= maxT test, so a hit must also be finite.
-    return intersectRayTriangle(ray4_.ray, v[0], v[1], v[2], maxT, cull_, hit) && std::isfinite(hit.t) &&
+    return intersectRayTriangle(ray4_.ray, mesh_.triangleVertex(cooked, 0), mesh_.triangleVertex(cooked, 1),
+                                mesh_.triangleVertex(cooked, 2), maxT, cull_, hit) &&
+           std::isfinite(hit.t) &&
            std::isfinite(hit.u) && std::isfinite(hit.v);
   }
 
   // The leaf's triangles (cooked first + i) that the exact test may accept within maxT, as a bit mask over i, tested
   // 4 wide; the lanes it decides come with their hit in `hits` (hits.decided), bit-identical to the scalar test's, so
   // only the other candidates need testTriangle.
-  // kAvx2: called from the AVX2 walk, which loads 4 triangles with 256-bit loads.
-  template <bool kAvx2> int candidates(std::uint32_t leafRef, T maxT, TriangleHits4<T>& hits) const {
-    const std::uint32_t first = MeshBvhNode::leafFirst(leafRef), count = MeshBvhNode::leafCount(leafRef);
-    TriangleVertices4<T> tris;
-    const Vec3<T>* tv = mesh_.triangleVertices.data() + 3 * std::size_t(first);
-    // 4 triangles (12 vertices) stored from tv on: the vertices left from tv by a pointer difference (no division by
-    // the element size, no pointer formed past the end).
-    const bool fourReadable = (mesh_.triangleVertices.data() + mesh_.triangleVertices.size()) - tv >= 12;
-#ifdef GQ_SSE42
-    if constexpr (kAvx2) {
-      if (fourReadable) loadFourTriangles4Avx2(tv, tris);
-      else loadTriangles4(tv, count, false, tris);
-    } else {
-      loadTriangles4(tv, count, fourReadable, tris);
-    }
-#else
-    loadTriangles4(tv, count, fourReadable, tris);
-#endif
-    return exactTriangleHits<T, kAvx2>(tris, ray4_, maxT, cull_, hits) & ((1 << count) - 1);
+  // kAvx2: called from the AVX2 walk (double lanes 4 to a register).
+  template <bool kAvx2> int candidates(const LeafRows<T>& rows, T maxT, TriangleHits4<T>& hits) const {
+    return exactTriangleHits<T, kAvx2>(rows, ray4_, maxT, cull_, hits) & ((1 << rows.stride) - 1);
+  }
+  LeafRows<T> leafRows(std::uint32_t leafRef) const {
+    return {mesh_.leafVertices.data() + 9 * std::size_t(MeshBvhNode::leafFirst(leafRef)),
+            MeshBvhNode::leafCount(leafRef)};
   }
 
   // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the wide test when it decided the
@@ -134,13 +125,12 @@ template <class T> class MeshRaycaster {
   // with b: the answers then do not depend on the order the leaves come in.
   template <bool kAvx2, class Fn> bool forEachHitNear(std::uint32_t ref, T b, Fn&& fn) const {
     const T bound = b * (T(1) + T(8) * std::numeric_limits<T>::epsilon()) + std::numeric_limits<T>::min();
-    const std::uint32_t first = MeshBvhNode::leafFirst(ref);
+    const LeafRows<T> rows = leafRows(ref);
     TriangleHits4<T> laneHits;
-    for (int mask = candidates<kAvx2>(ref, bound, laneHits); mask; mask &= mask - 1) {
+    for (int mask = candidates<kAvx2>(rows, bound, laneHits); mask; mask &= mask - 1) {
       const int lane = __builtin_ctz(unsigned(mask));
-      const std::uint32_t c = first + std::uint32_t(lane);
-      TriangleRayHit<T> h;
-      if (laneHit(laneHits, lane, c, bound, h) && fn(c, h)) return true;
+      MeshTriangleHit<T> h{MeshBvhNode::leafFirst(ref) + std::uint32_t(lane), rows.stride, rows.rows + lane, {}};
+      if (laneHit(laneHits, lane, h.cooked, bound, h.tri) && fn(h)) return true;
     }
     return false;
   }
@@ -148,18 +138,20 @@ template <class T> class MeshRaycaster {
   // Closest hit within maxDist: leaves nearest first, each hit lowering the walk's bound. The hit is the least
   // distance, then the least input index (shared edges), over the triangles hit at t <= maxDist, whatever order the
   // leaves come in.
-  template <class Lanes> bool closest(T maxDist, RawHit<T>& best) const {
+  template <class Lanes> bool closest(T maxDist, MeshTriangleHit<T>& best) const {
     T bestT = maxDist;
     float tMax = floatCeil(maxDist);
     bool found = false;
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
       bool lowered = false;
-      forEachHitNear<Lanes::kAvx2>(ref, bestT, [&](std::uint32_t c, const TriangleRayHit<T>& h) {
-        const bool before = found ? h.t < bestT || (h.t == bestT && mesh_.inputIndex[c] < mesh_.inputIndex[best.cooked])
-                                  : h.t <= maxDist;
+      forEachHitNear<Lanes::kAvx2>(ref, bestT, [&](const MeshTriangleHit<T>& h) {
+        const T t = h.tri.t;
+        const bool before =
+            found ? t < bestT || (t == bestT && mesh_.inputIndex[h.cooked] < mesh_.inputIndex[best.cooked])
+                  : t <= maxDist;
         if (before) {
-          best = RawHit<T>{c, h};
-          bestT = h.t;
+          best = h;
+          bestT = t;
           found = true;
           lowered = true;
         }
@@ -174,13 +166,13 @@ template <class T> class MeshRaycaster {
   // The first hit found within maxDist (any hit): the walk stops there. Children are pushed in lane order, unsorted
   // (lanes hold them largest surface area first): with 8-wide nodes this was measured cheaper per ray than
   // nearest-first on the shared meshes' rays.
-  template <class Lanes> bool any(T maxDist, RawHit<T>& best) const {
+  template <class Lanes> bool any(T maxDist, MeshTriangleHit<T>& best) const {
     float tMax = floatCeil(maxDist);
     bool found = false;
     walkRayLeaves<false, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
-      return forEachHitNear<Lanes::kAvx2>(ref, maxDist, [&](std::uint32_t c, const TriangleRayHit<T>& h) {
-        if (!(h.t <= maxDist)) return false;
-        best = RawHit<T>{c, h};
+      return forEachHitNear<Lanes::kAvx2>(ref, maxDist, [&](const MeshTriangleHit<T>& h) {
+        if (!(h.tri.t <= maxDist)) return false;
+        best = h;
         found = true;
         return true;
       });
@@ -189,20 +181,22 @@ template <class T> class MeshRaycaster {
   }
 
   // Up to `cap` closest hits within maxDist, sorted by distance.
-  template <class Lanes> std::uint32_t multiple(T maxDist, std::uint32_t cap, std::vector<RawHit<T>>& hits) const {
-    auto farther = [](const RawHit<T>& a, const RawHit<T>& b) { return a.tri.t < b.tri.t; };  // max-heap on t
+  template <class Lanes>
+  std::uint32_t multiple(T maxDist, std::uint32_t cap, std::vector<MeshTriangleHit<T>>& hits) const {
+    // A max-heap on t.
+    auto farther = [](const MeshTriangleHit<T>& a, const MeshTriangleHit<T>& b) { return a.tri.t < b.tri.t; };
     T limit = maxDist;
     float tMax = floatCeil(maxDist);
     walkRayLeaves<true, !kFloat, Lanes>(mesh_.accel->bvh, bvhRay_, tMax, [&](std::uint32_t ref) {
-      forEachHitNear<Lanes::kAvx2>(ref, limit, [&](std::uint32_t c, const TriangleRayHit<T>& h) {
+      forEachHitNear<Lanes::kAvx2>(ref, limit, [&](const MeshTriangleHit<T>& h) {
         // Once full, only hits closer than the farthest kept one matter (limit is then its distance).
         const bool full = hits.size() == cap;
-        if (!(h.t <= maxDist) || (full && !(h.t < limit))) return false;
+        if (!(h.tri.t <= maxDist) || (full && !(h.tri.t < limit))) return false;
         if (full) {
           std::pop_heap(hits.begin(), hits.end(), farther);
           hits.pop_back();
         }
-        hits.push_back(RawHit<T>{c, h});
+        hits.push_back(h);
         std::push_heap(hits.begin(), hits.end(), farther);
         if (hits.size() == cap) {
           limit = hits.front().tri.t;
@@ -259,18 +253,19 @@ MeshWalk meshWalk() {
 
 // The three walks as types, for withLanes: Walk::run<Lanes>(caster, args...) calls one of MeshRaycaster's walks.
 struct ClosestWalk {
-  template <class Lanes, class T> static bool run(const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
+  template <class Lanes, class T> static bool run(const MeshRaycaster<T>& c, T maxDist, MeshTriangleHit<T>& best) {
     return c.template closest<Lanes>(maxDist, best);
   }
 };
 struct AnyWalk {
-  template <class Lanes, class T> static bool run(const MeshRaycaster<T>& c, T maxDist, RawHit<T>& best) {
+  template <class Lanes, class T> static bool run(const MeshRaycaster<T>& c, T maxDist, MeshTriangleHit<T>& best) {
     return c.template any<Lanes>(maxDist, best);
   }
 };
 struct MultipleWalk {
   template <class Lanes, class T>
-  static std::uint32_t run(const MeshRaycaster<T>& c, T maxDist, std::uint32_t cap, std::vector<RawHit<T>>& hits) {
+  static std::uint32_t run(const MeshRaycaster<T>& c, T maxDist, std::uint32_t cap,
+                           std::vector<MeshTriangleHit<T>>& hits) {
     return c.template multiple<Lanes>(maxDist, cap, hits);
   }
 };
@@ -305,7 +300,7 @@ template <class T>
 // The one-hit walk the flags ask for (any hit or closest hit): true when `best` was found.
 template <class T>
 [[gnu::always_inline]] inline bool walkOneHit(MeshWalk walk, const MeshRaycaster<T>& caster, T maxDist,
-                                              HitFlags flags, RawHit<T>& best) {
+                                              HitFlags flags, MeshTriangleHit<T>& best) {
   return flags.has(HitFlag::AnyHit) ? withLanes<AnyWalk>(walk, caster, maxDist, best)
                                     : withLanes<ClosestWalk>(walk, caster, maxDist, best);
 }
@@ -333,7 +328,7 @@ template <class T>
   invScale_ = r * invScaleDiagonal_.asDiagonal() * r.transpose();
 }
 
-// The world normal of the triangle at v (cooked order, mesh space): S^-1 n_mesh rotated by the pose, with
+// The world normal of the triangle hit (mesh space): S^-1 n_mesh rotated by the pose, with
 // S^-1 = S^-T; under a mirrored scale the 1<->2 swap cancels the mirror, so it is outward either way. Double-sided
 // meshes report the side the ray hit. A float mesh with an identity scale and pose rotation (the common case) takes
 // it 4 lanes wide: Eigen's cross product and tryUnit's d / sqrt(|d|^2) as the same IEEE operations.
@@ -341,14 +336,14 @@ template <class T>
 template <bool kCooked>
 [[gnu::always_inline]] inline void TriangleMeshRays<T>::writeNormalIn(const TriangleMeshRays* frame,
                                                                       const TriangleMeshGeometry<T>& g,
-                                                                      const Vec3<T>* v, const Vec3<T>& rayDir,
-                                                                      bool frontFace, Vec3<T>& normal) {
-  const bool flip = g.doubleSided() && !frontFace;
+                                                                      const MeshTriangleHit<T>& found,
+                                                                      const Vec3<T>& rayDir, Vec3<T>& normal) {
+  const bool flip = g.doubleSided() && !found.tri.frontFace;
   const bool scaled = !kCooked && frame->scaled_, rotated = !kCooked && frame->rotated_;
 #ifdef GQ_SSE42
   if constexpr (std::is_same_v<T, float>) {
     __m128 unit;
-    if (!scaled && !rotated && unitTriangleNormal(v[0].data(), unit)) {
+    if (!scaled && !rotated && unitTriangleNormal(found, unit)) {
       if (flip) unit = _mm_xor_ps(unit, _mm_set1_ps(-0.0f));
       _mm_storel_pi(reinterpret_cast<__m64*>(normal.data()), unit);
       _mm_store_ss(normal.data() + 2, _mm_movehl_ps(unit, unit));
@@ -359,8 +354,10 @@ template <bool kCooked>
   // (v1 - v0) x (v2 - v0) in scalars, as Eigen's cross() computes each component (a.y b.z - a.z b.y ...), so the
   // vectors stay in registers; for float with SSE this is reached only when the SSE path above does not apply or its
   // range test failed (which the identity frame's test below then fails too).
-  const T ax = v[1].x() - v[0].x(), ay = v[1].y() - v[0].y(), az = v[1].z() - v[0].z();
-  const T bx = v[2].x() - v[0].x(), by = v[2].y() - v[0].y(), bz = v[2].z() - v[0].z();
+  const T* x = found.values;  // vertex k's axis a at x[(3 k + a) s]
+  const std::uint32_t s = found.stride;
+  const T ax = x[3 * s] - x[0], ay = x[4 * s] - x[s], az = x[5 * s] - x[2 * s];
+  const T bx = x[6 * s] - x[0], by = x[7 * s] - x[s], bz = x[8 * s] - x[2 * s];
   Vec3<T> n(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx);
   if (scaled) n = frame->toMesh(n);  // S^-1 = S^-T is also the normal transform
   if (rotated) n = frame->pose_.rotate(n);
@@ -382,12 +379,12 @@ template <bool kCooked, class Hit>
 [[gnu::always_inline]] inline void TriangleMeshRays<T>::writeHitIn(const TriangleMeshRays* frame,
                                                                     const TriangleMeshGeometry<T>& g,
                                                                     const Vec3<T>& origin, const Vec3<T>& dir,
-                                                                    HitFlags asked, std::uint32_t cooked,
-                                                                    const TriangleRayHit<T>& tri, Hit& hit) {
+                                                                    HitFlags asked, const MeshTriangleHit<T>& found,
+                                                                    Hit& hit) {
   // Every field written once: the requested ones, RaycastHit's defaults for the others. origin and dir may be this
   // hit's position and normal (a ray marched from its last hit): the position is computed before the normal is
   // written, the normal (which reads dir only before writing) before the position.
-  const TriangleMesh<T>& mesh = *g.mesh;
+  const TriangleRayHit<T>& tri = found.tri;
   HitFlags flags = HitFlag::FaceIndex;
   Vec3<T> position = Vec3<T>::Zero();
   if (asked.has(HitFlag::Position)) {
@@ -395,15 +392,14 @@ template <bool kCooked, class Hit>
     flags |= HitFlag::Position;
   }
   if (asked.has(HitFlag::Normal)) {
-    writeNormalIn<kCooked>(frame, g, &mesh.triangleVertices[3 * std::size_t(cooked)], dir, tri.frontFace,
-                           hit.normal);
+    writeNormalIn<kCooked>(frame, g, found, dir, hit.normal);
     flags |= HitFlag::Normal;
   } else {
     hit.normal = Vec3<T>::Zero();
   }
   if constexpr (std::is_same_v<Hit, RaycastHit<T>>) hit.position = position;
   hit.distance = tri.t;
-  hit.faceIndex = mesh.inputIndex[cooked];
+  hit.faceIndex = g.mesh->inputIndex[found.cooked];
   hit.u = T(0);
   hit.v = T(0);
   if (asked.has(HitFlag::UV)) {
@@ -435,16 +431,16 @@ template <class Hit>
   const MeshWalk walk = MeshWalk(walk_);
   if (std::is_same_v<Hit, RaycastHit<T>> && ray.maxHits > 1) {
     // Kept per thread (a mesh raycast runs no user code): no allocation once it holds the most hits a call kept.
-    thread_local std::vector<RawHit<T>> raw;
+    thread_local std::vector<MeshTriangleHit<T>> raw;
     raw.clear();
     const std::uint32_t n = withLanes<MultipleWalk>(walk, caster, ray.maxDist, ray.maxHits, raw);
     for (std::uint32_t i = 0; i < n; ++i)
-      writeHitIn<false>(this, g_, ray.origin, ray.dir, ray.flags, raw[i].cooked, raw[i].tri, hits[i]);
+      writeHitIn<false>(this, g_, ray.origin, ray.dir, ray.flags, raw[i], hits[i]);
     return n;
   }
-  RawHit<T> best;
+  MeshTriangleHit<T> best;
   if (!walkOneHit(walk, caster, ray.maxDist, ray.flags, best)) return 0;
-  writeHitIn<false>(this, g_, ray.origin, ray.dir, ray.flags, best.cooked, best.tri, hits[0]);
+  writeHitIn<false>(this, g_, ray.origin, ray.dir, ray.flags, best, hits[0]);
   return 1;
 }
 
@@ -467,11 +463,11 @@ std::uint32_t TriangleMeshRays<T>::castOneCooked(const TriangleMeshGeometry<T>& 
                                                  HitFlags flags, RaycastHit<T>& hit) {
   const T maxD = finiteMaxDist(maxDist);
   if (!(maxD > T(0))) return 0;  // a zero-length ray never hits a mesh
-  RawHit<T> best;
+  MeshTriangleHit<T> best;
   const MeshRaycaster<T> caster =
       MeshRaycaster<T>::translated(*g.mesh, origin, pose.p, dir, cullsBackFaces(g, flags));
   if (!walkOneHit(meshWalk(), caster, maxD, flags, best)) return 0;
-  writeHitIn<true>(nullptr, g, origin, dir, flags, best.cooked, best.tri, hit);  // origin, dir may alias hit
+  writeHitIn<true>(nullptr, g, origin, dir, flags, best, hit);  // origin, dir may alias hit
   return 1;
 }
 
