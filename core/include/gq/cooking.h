@@ -63,7 +63,7 @@ template <class T> struct TriangleMesh {
   std::vector<std::uint32_t> inputIndex;   // cooked -> input triangle index (reported as faceIndex)
   std::vector<std::uint32_t> cookedIndex;  // input -> cooked index, kRemovedTriangle if removed
   // The BVH over the cooked triangles (a private layout, built by cookTriangleMesh; null in a mesh not made by
-  // it, which validation rejects), and its size in bytes.
+  // it, which validation rejects), and its size in bytes with leafLane's.
   std::shared_ptr<const detail::MeshAccel> accel;
   std::size_t bvhBytes = 0;
   Bounds3<T> localBounds;
@@ -73,7 +73,8 @@ template <class T> struct TriangleMesh {
   // Copies of the cooked triangles' vertices, leaf by leaf, as rows: the BVH leaf of n triangles (n <= 4) whose first
   // is cooked triangle f holds 9 n values from 9 f on, row 3 k + a being vertex k's axis a of its n triangles in
   // cooked order. A ray test loads a row of 4 lanes per instruction with no transpose (lanes past n belong to the
-  // next row or leaf and are ignored); 3 zeros follow the last leaf so such a load never reads past the end.
+  // next row or leaf and are ignored); 3 zeros (a 4-lane load less one) follow the last leaf so such a load never
+  // reads past the end.
   std::vector<T> leafVertices;
   // Per cooked triangle: its lane in its leaf (bits 0-1) and the leaf's triangle count (bits 2-4).
   std::vector<std::uint8_t> leafLane;

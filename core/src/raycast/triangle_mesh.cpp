@@ -119,7 +119,7 @@ template <class T> class MeshRaycaster {
     return testTriangle(cooked, maxT, h);
   }
 
-  // The leaf's triangles the watertight test hits at a distance up to about b, in lane order: fn(cooked, hit) for
+  // The leaf's triangles the watertight test hits at a distance up to about b, in lane order: fn(MeshTriangleHit) for
   // each until it returns true (then true). The tests compare t scaled by their determinant, which rounds either way of
   // a hit at the bound itself, so they get a bound a few units above b, and callers compare the hits' own distances
   // with b: the answers then do not depend on the order the leaves come in.
