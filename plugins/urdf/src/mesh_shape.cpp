@@ -79,7 +79,8 @@ namespace {
 
 template <class T> std::size_t meshBytes(const TriangleMesh<T>& m, std::size_t bvhBytes) {
   return m.vertices.size() * sizeof(Vec3<T>) + m.triangles.size() * sizeof(TriangleIndices) +
-         (m.inputIndex.size() + m.cookedIndex.size() + m.hullVertices.size()) * sizeof(std::uint32_t) + bvhBytes;
+         (m.inputIndex.size() + m.cookedIndex.size() + m.hullVertices.size()) * sizeof(std::uint32_t) +
+         m.leafVertices.size() * sizeof(T) + bvhBytes;
 }
 
 template <class T> Shape<T> meshSourceShape(const MeshData<T>& mesh, Representation rep) {
