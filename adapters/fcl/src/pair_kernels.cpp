@@ -111,9 +111,10 @@ void nearestFirst(const gq::kernels::MeshInstance<T>& instance, const Vec3<T>& c
   const TriangleMesh<T>& m = instance.mesh;
   const Vec3<T> c = T(3) * (instance.invScale * instance.pose.transformInv(centre));
   for (std::uint32_t i = 0; i < count; ++i) {
-    std::uint32_t s;  // vertex k's axis a at x[(3 k + a) s]
+    std::uint32_t s;
     const T* x = m.triangleValues(m.cookedIndex[page[i]], s);
-    const Vec3<T> sum(x[0] + x[3 * s] + x[6 * s], x[s] + x[4 * s] + x[7 * s], x[2 * s] + x[5 * s] + x[8 * s]);
+    const Vec3<T> sum = TriangleMesh<T>::vertexIn(x, s, 0) + TriangleMesh<T>::vertexIn(x, s, 1) +
+                        TriangleMesh<T>::vertexIn(x, s, 2);
     const T d = (sum - c).squaredNorm();
     // NaN (an overflowing centre) would break the sort's ordering: such keys go last, as +inf.
     keyed.push_back({d <= std::numeric_limits<T>::max() ? d : std::numeric_limits<T>::infinity(), i, page[i]});

@@ -79,6 +79,15 @@ template <class T> struct TriangleMesh {
   // Per cooked triangle: its lane in its leaf (bits 0-1) and the leaf's triangle count (bits 2-4).
   std::vector<std::uint8_t> leafLane;
   std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
+  // The rows of the leaf whose first triangle is cooked triangle `first`.
+  const T* leafValues(std::uint32_t first) const { return leafVertices.data() + 9 * std::size_t(first); }
+  T* leafValues(std::uint32_t first) { return leafVertices.data() + 9 * std::size_t(first); }
+  // Vertex k (0-2) of the triangle whose values start at `values`, rows `stride` apart (as triangleValues gives
+  // them, or a leaf's rows from leafValues plus the triangle's lane, its stride the leaf's triangle count).
+  static Vec3<T> vertexIn(const T* values, std::uint32_t stride, int k) {
+    const T* v = values + std::size_t(3 * std::uint32_t(k) * stride);
+    return Vec3<T>(v[0], v[stride], v[2 * stride]);
+  }
   // Where cooked triangle `cooked`'s values are: vertex k's axis a at [(3 k + a) stride] from the pointer returned.
   const T* triangleValues(std::uint32_t cooked, std::uint32_t& stride) const {
     const std::uint32_t code = leafLane[cooked], lane = code & 3u;
@@ -88,8 +97,8 @@ template <class T> struct TriangleMesh {
   // Vertex k (0-2) of cooked triangle `cooked`, as stored (the input vertex; triangles[cooked][k] indexes it).
   Vec3<T> triangleVertex(std::uint32_t cooked, int k) const {
     std::uint32_t n;
-    const T* x = triangleValues(cooked, n) + std::size_t(3 * std::uint32_t(k) * n);
-    return Vec3<T>(x[0], x[n], x[2 * n]);
+    const T* x = triangleValues(cooked, n);
+    return vertexIn(x, n, k);
   }
 };
 

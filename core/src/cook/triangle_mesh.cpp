@@ -93,7 +93,7 @@ template <class T> void storeLeafVertices(const MeshBvh& bvh, TriangleMesh<T>& m
   auto store = [&](std::uint32_t ref) {
     if (!MeshBvhNode::isLeaf(ref)) return;
     const std::uint32_t first = MeshBvhNode::leafFirst(ref), count = MeshBvhNode::leafCount(ref);
-    T* rows = mesh.leafVertices.data() + 9 * std::size_t(first);
+    T* rows = mesh.leafValues(first);
     for (std::uint32_t lane = 0; lane < count; ++lane) {
       mesh.leafLane[first + lane] = std::uint8_t(lane | count << 2);
       for (std::uint32_t k = 0; k < 3; ++k)

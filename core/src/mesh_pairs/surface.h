@@ -108,7 +108,7 @@ template <class T> class MeshSurface {
   // triangle() of the leaf's triangle `lane` (cooked leafFirst(ref) + lane), read from the leaf's rows directly.
   // A full leaf (the common case) reads at constant offsets.
   [[gnu::always_inline]] Triangle<T> leafTriangle(std::uint32_t ref, std::uint32_t lane) const {
-    const T* x = inst_.mesh.leafVertices.data() + 9 * std::size_t(MeshBvhNode::leafFirst(ref)) + lane;
+    const T* x = inst_.mesh.leafValues(MeshBvhNode::leafFirst(ref)) + lane;
     const std::uint32_t count = MeshBvhNode::leafCount(ref);
     return count == MeshBvhNode::kMaxLeafSize ? placed(x, MeshBvhNode::kMaxLeafSize) : placed(x, count);
   }
@@ -117,7 +117,8 @@ template <class T> class MeshSurface {
   std::array<Vec3<T>, 3> cookedVertices(std::uint32_t cooked) const {
     std::uint32_t s;
     const T* x = inst_.mesh.triangleValues(cooked, s);
-    return {vertexAt(x, s, 0), vertexAt(x, s, 1), vertexAt(x, s, 2)};
+    using Mesh = TriangleMesh<T>;
+    return {Mesh::vertexIn(x, s, 0), Mesh::vertexIn(x, s, 1), Mesh::vertexIn(x, s, 2)};
   }
   // World point x to mesh space: worldToMesh() (x - position()). Mesh space to world: meshToWorld() v + position().
   const Mat3<T>& worldToMesh() const { return invLinear_; }
@@ -205,15 +206,11 @@ template <class T> class MeshSurface {
   static constexpr int kStackSize = 512;
 
  private:
-  // Vertex k of the triangle whose values start at x, rows `stride` apart (TriangleMesh::leafVertices).
-  [[gnu::always_inline]] static Vec3<T> vertexAt(const T* x, std::uint32_t stride, int k) {
-    const T* v = x + std::size_t(3 * std::uint32_t(k) * stride);
-    return Vec3<T>(v[0], v[stride], v[2 * stride]);
-  }
   // The world triangle of the values at x (vertices 1 and 2 swapped under a mirrored scale). Forced inline, as its
   // callers: the leaf loops of the mesh pairs are otherwise left calls (about 10 % more instructions a query).
   [[gnu::always_inline]] Triangle<T> placed(const T* x, std::uint32_t stride) const {
-    const Vec3<T> v[3] = {vertexAt(x, stride, 0), vertexAt(x, stride, 1), vertexAt(x, stride, 2)};
+    using Mesh = TriangleMesh<T>;
+    const Vec3<T> v[3] = {Mesh::vertexIn(x, stride, 0), Mesh::vertexIn(x, stride, 1), Mesh::vertexIn(x, stride, 2)};
     Triangle<T> t;
     if (translationOnly_) {  // R S = I: det S = 1, no mirror
       for (int k = 0; k < 3; ++k) t.verts[k] = v[k] + inst_.pose.p;

@@ -102,8 +102,7 @@ template <class T> class MeshRaycaster {
     return exactTriangleHits<T, kAvx2>(rows, ray4_, maxT, cull_, hits) & ((1 << rows.stride) - 1);
   }
   LeafRows<T> leafRows(std::uint32_t leafRef) const {
-    return {mesh_.leafVertices.data() + 9 * std::size_t(MeshBvhNode::leafFirst(leafRef)),
-            MeshBvhNode::leafCount(leafRef)};
+    return {mesh_.leafValues(MeshBvhNode::leafFirst(leafRef)), MeshBvhNode::leafCount(leafRef)};
   }
 
   // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the wide test when it decided the
@@ -354,10 +353,11 @@ template <bool kCooked>
   // (v1 - v0) x (v2 - v0) in scalars, as Eigen's cross() computes each component (a.y b.z - a.z b.y ...), so the
   // vectors stay in registers; for float with SSE this is reached only when the SSE path above does not apply or its
   // range test failed (which the identity frame's test below then fails too).
-  const T* x = found.values;  // vertex k's axis a at x[(3 k + a) s]
-  const std::uint32_t s = found.stride;
-  const T ax = x[3 * s] - x[0], ay = x[4 * s] - x[s], az = x[5 * s] - x[2 * s];
-  const T bx = x[6 * s] - x[0], by = x[7 * s] - x[s], bz = x[8 * s] - x[2 * s];
+  using Mesh = TriangleMesh<T>;
+  const Vec3<T> v0 = Mesh::vertexIn(found.values, found.stride, 0);
+  const Vec3<T> v1 = Mesh::vertexIn(found.values, found.stride, 1), v2 = Mesh::vertexIn(found.values, found.stride, 2);
+  const T ax = v1.x() - v0.x(), ay = v1.y() - v0.y(), az = v1.z() - v0.z();
+  const T bx = v2.x() - v0.x(), by = v2.y() - v0.y(), bz = v2.z() - v0.z();
   Vec3<T> n(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx);
   if (scaled) n = frame->toMesh(n);  // S^-1 = S^-T is also the normal transform
   if (rotated) n = frame->pose_.rotate(n);
