@@ -115,7 +115,7 @@ TYPED_TEST(MeshCook, BvhLeavesHoldEveryTriangleOnceInsideTheirBoxes) {
 
 // TriangleMesh::leafVertices: each leaf of n triangles holds rows of n values from 9 x its first cooked index on (row
 // 3 k + a: vertex k's axis a), leafLane names each triangle's lane and leaf size, triangleVertex reads the input vertex
-// back, and 3 zeros follow the last leaf.
+// back, as vertexIn does from leafValues (the leaf's rows) and from triangleValues, and 3 zeros follow the last leaf.
 template <class T> void checkLeafVertices(const TriangleMesh<T>& mesh) {
   const std::size_t n = mesh.triangles.size();
   ASSERT_EQ(mesh.leafVertices.size(), 9 * n + 3);
@@ -129,9 +129,14 @@ template <class T> void checkLeafVertices(const TriangleMesh<T>& mesh) {
       const std::uint32_t c = first + lane;
       ++seen[c];
       EXPECT_EQ(mesh.leafLane[c], lane | count << 2);
+      std::uint32_t stride = 0;
+      const T* values = mesh.triangleValues(c, stride);
+      EXPECT_EQ(stride, count);
+      EXPECT_EQ(values, mesh.leafValues(first) + lane);
       for (int k = 0; k < 3; ++k) {
         const Vec3<T>& v = mesh.vertices[mesh.triangles[c][k]];
         EXPECT_EQ(mesh.triangleVertex(c, k), v);
+        EXPECT_EQ(TriangleMesh<T>::vertexIn(mesh.leafValues(first) + lane, count, k), v);
         for (int a = 0; a < 3; ++a) EXPECT_EQ(mesh.leafVertices[9 * first + (3 * k + a) * count + lane], v[a]);
       }
     }

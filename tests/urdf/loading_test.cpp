@@ -149,6 +149,49 @@ TYPED_TEST(UrdfLoading, MeshScaleStretchesEachAxis) {
   EXPECT_NEAR(m.shapes[0].origin.p.z(), T(1.5), tol);
 }
 
+// A mesh shape's memory counts every array of its cooked mesh: among them the vertex rows the ray and pair kernels
+// read (TriangleMesh::leafVertices). The mesh: a unit cube whose faces are 8 x 8 grids (768 triangles), so its rows
+// (36 or 72 bytes a triangle) outweigh its 8-vertex hull, which the shape's bytes also count.
+TYPED_TEST(UrdfLoading, MeshShapeBytesCountTheCookedVertexRows) {
+  using T = TypeParam;
+  constexpr int kCells = 8;
+  {
+    std::ofstream obj(scratchDir() / "pkgroot" / "my_pkg" / "meshes" / "grid_cube.obj");
+    int base = 1;
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side = 0; side < 2; ++side) {
+        for (int i = 0; i <= kCells; ++i)
+          for (int j = 0; j <= kCells; ++j) {
+            double p[3];
+            p[axis] = side;
+            p[(axis + 1) % 3] = double(i) / kCells;
+            p[(axis + 2) % 3] = double(j) / kCells;
+            obj << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+          }
+        for (int i = 0; i < kCells; ++i)
+          for (int j = 0; j < kCells; ++j) {
+            const int a = base + i * (kCells + 1) + j, b = a + 1, c = a + kCells + 1, d = c + 1;
+            obj << "f " << a << ' ' << c << ' ' << d << "\nf " << a << ' ' << d << ' ' << b << '\n';
+          }
+        base += (kCells + 1) * (kCells + 1);
+      }
+  }
+  RobotModel<T> m;
+  const Status s = loadString(oneLinkUrdf("<mesh filename=\"package://my_pkg/meshes/grid_cube.obj\"/>"), "", m,
+                              Representation::Mesh);
+  ASSERT_TRUE(s.ok()) << s.toString();
+  ASSERT_EQ(m.shapes.size(), 1u);
+  const auto* mesh = m.shapes[0].geometry.template getIf<TriangleMeshGeometry<T>>();
+  ASSERT_NE(mesh, nullptr);
+  const TriangleMesh<T>& cooked = *mesh->mesh;
+  ASSERT_EQ(cooked.triangles.size(), std::size_t(6 * 2 * kCells * kCells));
+  const std::size_t indexBytes =
+      (cooked.inputIndex.size() + cooked.cookedIndex.size() + cooked.hullVertices.size()) * sizeof(std::uint32_t);
+  EXPECT_GE(m.shapes[0].bytes, cooked.vertices.size() * sizeof(Vec3<T>) +
+                                   cooked.triangles.size() * sizeof(TriangleIndices) + indexBytes +
+                                   cooked.leafVertices.size() * sizeof(T) + cooked.bvhBytes);
+}
+
 // A URDF cylinder (axis Z) is gq's exact custom Cylinder (axis X) turned onto Z: no polygonal approximation, so a
 // ball grazing the rim between where a 64-gon prism's vertices would be touches it, and error 0 is reported.
 TYPED_TEST(UrdfLoading, CylinderIsTheExactCustomCylinderAlongZ) {
