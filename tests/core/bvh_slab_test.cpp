@@ -59,10 +59,11 @@ Bvh8Node nodeWith(const Bounds3<float>& box, int lane) {
   return n;
 }
 
-// The masks and entry distances of every node test this build and CPU run.
+// The masks and entry distances of every node test this build and CPU run on this ray (the AVX2 walk's short form on
+// the rays it is chosen for).
 template <bool kFarOrigin> struct NodeTests {
-  int masks[3] = {0, 0, 0};
-  float entry[3] = {0, 0, 0};
+  int masks[4] = {0, 0, 0, 0};
+  float entry[4] = {0, 0, 0, 0};
   int count = 0;
   void run(const Bvh8Node& node, const detail::BvhRay<8>& ray, float tMax, int lane) {
     alignas(32) float tn[8];
@@ -73,15 +74,20 @@ template <bool kFarOrigin> struct NodeTests {
     masks[count] = detail::Bvh8LanesSse::test<kFarOrigin>(node, sse, tMax, tn);
     entry[count++] = tn[lane];
     if (detail::hasAvx2()) {
-      masks[count] = runAvx2(node, ray, tMax, tn);
+      masks[count] = runAvx2<detail::Bvh8LanesAvx2>(node, ray, tMax, tn);
       entry[count++] = tn[lane];
+      if (ray.mayGiveNaN == 0) {
+        masks[count] = runAvx2<detail::Bvh8LanesAvx2NaNFree>(node, ray, tMax, tn);
+        entry[count++] = tn[lane];
+      }
     }
 #endif
   }
 #ifdef GQ_SSE42
+  template <class Lanes>
   __attribute__((target("avx2"))) static int runAvx2(const Bvh8Node& node, const detail::BvhRay<8>& ray, float tMax,
                                                      float* tn) {
-    return detail::Bvh8LanesAvx2::test<kFarOrigin>(node, ray, tMax, tn);
+    return Lanes::template test<kFarOrigin>(node, ray, tMax, tn);
   }
 #endif
 };
@@ -141,11 +147,47 @@ TYPED_TEST(BvhSlab, NodeTestsEnterEveryBoxTheRayEntersWithAConservativeEntryDist
       missed += ((tests.masks[k] >> lane) & 1) == 0;
       lateEntry += static_cast<long double>(tests.entry[k]) > tEnter;  // the walk drops entries by this distance
       EXPECT_EQ(tests.masks[k] & ~(1 << lane), 0) << "an empty lane was entered";
+      // Every form gives the same mask and entry distance, so every CPU walks the same nodes in the same order.
+      EXPECT_EQ(tests.masks[k], tests.masks[0]);
+      EXPECT_EQ(std::memcmp(&tests.entry[k], &tests.entry[0], sizeof(float)), 0) << tests.entry[k];
     }
   }
   EXPECT_EQ(missed, 0);
   EXPECT_EQ(lateEntry, 0);
   EXPECT_GT(entered, 100000);  // most rays enter: the check is not vacuous
+}
+
+// A ray parallel to two axes (a vertical sensor ray) whose origin lies on a box's plane of one of them: the slab
+// distance on that plane is NaN (0 * inf), so BvhRay::mayGiveNaN sends the ray to the NaN-first node test, which still
+// rejects the boxes beside the ray along the other axis (a max taking two NaN-able operands would pass over the
+// rejecting distance); ordinary rays can take the short form. Checked on every node test the ray would get.
+TYPED_TEST(BvhSlab, RaysParallelToTwoAxesWithTheOriginOnAPlaneMissTheBoxesBesideThem) {
+  using T = TypeParam;
+  constexpr bool kFarOrigin = !std::is_same_v<T, float>;
+  const Bounds3<float> box = detail::roundOutward<double>(Vec3<double>(1, 0, -2), Vec3<double>(2, 1, -1));
+  const Bvh8Node node = nodeWith(box, 3);
+  int rays = 0;
+  for (const T x : {T(0.5), T(3), T(1.5)})    // beside the box below x, beside it above x, over it
+    for (const T y : {T(0), T(1), T(0.5)})    // on the box's min y plane, on its max y plane, between them
+      for (const T dz : {T(-1), T(1)}) {
+        const Vec3<T> org(x, y, T(5) * -dz), dir(T(0), T(0), dz);
+        const detail::BvhRay<8> ray = detail::makeBvhRay<8>(org, dir);
+        EXPECT_NE(ray.mayGiveNaN, 0u);
+        NodeTests<kFarOrigin> tests;
+        tests.run(node, ray, std::numeric_limits<float>::infinity(), 3);
+        const bool over = x == T(1.5);
+        for (int k = 0; k < tests.count; ++k) EXPECT_EQ(tests.masks[k], over ? 1 << 3 : 0) << x << " " << y;
+        ++rays;
+      }
+  EXPECT_EQ(rays, 18);
+  // An ordinary ray has no NaN slab distance; a component below the clamp, or (double) an origin beyond float's
+  // range, may.
+  EXPECT_NE(detail::makeBvhRay<8>(Vec3<T>(T(0.5), T(0), T(5)), Vec3<T>(T(0.6), T(0), T(-0.8))).mayGiveNaN, 0u);
+  EXPECT_EQ(detail::makeBvhRay<8>(Vec3<T>(T(0.5), T(0.25), T(5)), Vec3<T>(T(0.6), T(0.48), T(-0.64))).mayGiveNaN, 0u);
+  EXPECT_NE(detail::makeBvhRay<8>(Vec3<T>(T(0.5), T(0.25), T(5)), Vec3<T>(T(1e-25), T(0.6), T(-0.8))).mayGiveNaN, 0u);
+  if constexpr (std::is_same_v<T, double>)
+    EXPECT_NE(detail::makeBvhRay<8>(Vec3<T>(T(1e39), T(0.25), T(5)), Vec3<T>(T(0.6), T(0.48), T(-0.64))).mayGiveNaN,
+              0u);
 }
 
 // A double origin gives the node tests two floats: the near planes' origin on the side that makes entries earlier and
@@ -213,6 +255,7 @@ TYPED_TEST(BvhSlab, SseRayConstantsAreTheScalarLoopsBitForBit) {
       EXPECT_EQ(sse.nearOffset[a], loop.nearOffset[a]);
       EXPECT_EQ(sse.farOffset[a], loop.farOffset[a]);
     }
+    EXPECT_EQ(sse.mayGiveNaN != 0, loop.mayGiveNaN != 0) << dir.transpose() << " " << org.transpose();
   }
   EXPECT_GT(zeros, 1000);  // exact zeros of both signs are among the components
 }

@@ -113,14 +113,15 @@ TYPED_TEST(MeshCook, BvhLeavesHoldEveryTriangleOnceInsideTheirBoxes) {
   checkBvh(*small);
 }
 
-// TriangleMesh::leafVertices: each leaf of n triangles holds rows of n values from 9 x its first cooked index on (row
-// 3 k + a: vertex k's axis a), leafLane names each triangle's lane and leaf size, triangleVertex reads the input vertex
-// back, as vertexIn does from leafValues (the leaf's rows) and from triangleValues, and 3 zeros follow the last leaf.
+// TriangleMesh::leafVertices: each leaf of n triangles holds rows of n values from 10 x its first cooked index on (row
+// 3 k + a: vertex k's axis a; row 9: input indices, which inputIndexIn reads back, here normal numbers), leafLane
+// names each triangle's lane and leaf size, triangleVertex reads the input vertex back, as vertexIn does from
+// leafValues (the leaf's rows) and from triangleValues, and 3 zeros follow the last leaf.
 template <class T> void checkLeafVertices(const TriangleMesh<T>& mesh) {
   const std::size_t n = mesh.triangles.size();
-  ASSERT_EQ(mesh.leafVertices.size(), 9 * n + 3);
+  ASSERT_EQ(mesh.leafVertices.size(), 10 * n + 3);
   ASSERT_EQ(mesh.leafLane.size(), n);
-  for (std::size_t i = 9 * n; i < mesh.leafVertices.size(); ++i) EXPECT_EQ(mesh.leafVertices[i], T(0));
+  for (std::size_t i = 10 * n; i < mesh.leafVertices.size(); ++i) EXPECT_EQ(mesh.leafVertices[i], T(0));
   std::vector<int> seen(n, 0);
   auto check = [&](std::uint32_t ref) {
     if (!MeshBvhNode::isLeaf(ref)) return;
@@ -137,8 +138,12 @@ template <class T> void checkLeafVertices(const TriangleMesh<T>& mesh) {
         const Vec3<T>& v = mesh.vertices[mesh.triangles[c][k]];
         EXPECT_EQ(mesh.triangleVertex(c, k), v);
         EXPECT_EQ(TriangleMesh<T>::vertexIn(mesh.leafValues(first) + lane, count, k), v);
-        for (int a = 0; a < 3; ++a) EXPECT_EQ(mesh.leafVertices[9 * first + (3 * k + a) * count + lane], v[a]);
+        for (int a = 0; a < 3; ++a) EXPECT_EQ(mesh.leafVertices[10 * first + (3 * k + a) * count + lane], v[a]);
       }
+      const T index = mesh.leafVertices[10 * first + 9 * count + lane];
+      EXPECT_TRUE(std::isnormal(index)) << index;
+      EXPECT_EQ(TriangleMesh<T>::inputIndexIn(values, stride), mesh.inputIndex[c]);
+      EXPECT_EQ(TriangleMesh<T>::inputIndexIn(mesh.leafValues(first) + lane, count), mesh.inputIndex[c]);
     }
   };
   check(mesh.accel->bvh.rootChild);
@@ -168,6 +173,20 @@ TYPED_TEST(MeshCook, LeafVerticesAreEachLeafsTrianglesAsRowsInCookedOrder) {
       if (MeshBvhNode::isLeaf(ref)) ++sizes[MeshBvhNode::leafCount(ref)];
   EXPECT_GT(sizes[4], 0);
   EXPECT_GT(sizes[1] + sizes[2] + sizes[3], 0) << "the sphere's leaves are all full: the strides below 4 go untested";
+}
+
+// Row 9's encoding reads back every index, and is never a denormal for any index in double and any below 2^30 in
+// float (a normal number in double).
+TYPED_TEST(MeshCook, LeafIndexValuesReadBackAndAreNeverDenormal) {
+  using T = TypeParam;
+  using Mesh = TriangleMesh<T>;
+  for (std::uint32_t index : {0u, 1u, 2u, 12345u, (1u << 23) - 1, 1u << 23, (1u << 24) + 1, (1u << 30) - 1, 1u << 30,
+                              0x7fffffffu, 0x80000000u, 0xfffffffeu, 0xffffffffu}) {
+    const T stored[10] = {T(1), T(2), T(3), T(4), T(5), T(6), T(7), T(8), T(9), Mesh::indexValue(index)};
+    EXPECT_EQ(Mesh::inputIndexIn(stored, 1), index);
+    if (sizeof(T) == 8 || index < (1u << 30)) EXPECT_NE(std::fpclassify(stored[9]), FP_SUBNORMAL) << index;
+    if (sizeof(T) == 8) EXPECT_TRUE(std::isnormal(stored[9])) << index;
+  }
 }
 
 // The bunny from the shared data folder (skipped when it is missing).

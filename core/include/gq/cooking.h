@@ -4,9 +4,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "gq/geometry.h"
@@ -70,29 +72,44 @@ template <class T> struct TriangleMesh {
   // Vertices on the convex hull of the used vertices (all used vertices when the mesh is flat): the exact
   // world AABB under any scale and pose is the AABB of these.
   std::vector<std::uint32_t> hullVertices;
-  // Copies of the cooked triangles' vertices, leaf by leaf, as rows: the BVH leaf of n triangles (n <= 4) whose first
-  // is cooked triangle f holds 9 n values from 9 f on, row 3 k + a being vertex k's axis a of its n triangles in
-  // cooked order. A ray test loads a row of 4 lanes per instruction with no transpose (lanes past n belong to the
-  // next row or leaf and are ignored); 3 zeros (a 4-lane load less one) follow the last leaf so such a load never
-  // reads past the end.
+  // Copies of the cooked triangles' vertices and input indices, leaf by leaf, as rows: the BVH leaf of n triangles
+  // (n <= 4) whose first is cooked triangle f holds 10 n values from 10 f on, row 3 k + a being vertex k's axis a of
+  // its n triangles in cooked order and row 9 their input indices (indexValue). A ray test loads a row of 4 lanes per
+  // instruction with no transpose (lanes past n belong to the next row or leaf and are ignored), and its hit reads
+  // the input index from the rows it tested; 3 zeros (a 4-lane load less one) follow the last leaf so such a load
+  // never reads past the end.
   std::vector<T> leafVertices;
   // Per cooked triangle: its lane in its leaf (bits 0-1) and the leaf's triangle count (bits 2-4).
   std::vector<std::uint8_t> leafLane;
   std::uint32_t inputTriangleCount() const { return static_cast<std::uint32_t>(cookedIndex.size()); }
   // The rows of the leaf whose first triangle is cooked triangle `first`.
-  const T* leafValues(std::uint32_t first) const { return leafVertices.data() + 9 * std::size_t(first); }
-  T* leafValues(std::uint32_t first) { return leafVertices.data() + 9 * std::size_t(first); }
+  const T* leafValues(std::uint32_t first) const { return leafVertices.data() + 10 * std::size_t(first); }
+  T* leafValues(std::uint32_t first) { return leafVertices.data() + 10 * std::size_t(first); }
   // Vertex k (0-2) of the triangle whose values start at `values`, rows `stride` apart (as triangleValues gives
   // them, or a leaf's rows from leafValues plus the triangle's lane, its stride the leaf's triangle count).
   static Vec3<T> vertexIn(const T* values, std::uint32_t stride, int k) {
     const T* v = values + std::size_t(3 * std::uint32_t(k) * stride);
     return Vec3<T>(v[0], v[stride], v[2 * stride]);
   }
+  // An input index as row 9 stores it: the index's bits with T's highest exponent bit flipped, so that the value is
+  // never a denormal (masked lanes of a row load compute on it, and denormal operands are slow) for any index in
+  // double and any below 2^30 in float; inputIndexIn reads it back from the values vertexIn reads.
+  static T indexValue(std::uint32_t index) {
+    Bits bits = Bits(index) ^ kIndexFlip;
+    T value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+  }
+  static std::uint32_t inputIndexIn(const T* values, std::uint32_t stride) {
+    Bits bits;
+    std::memcpy(&bits, values + 9 * std::size_t(stride), sizeof bits);
+    return std::uint32_t(bits ^ kIndexFlip);
+  }
   // Where cooked triangle `cooked`'s values are: vertex k's axis a at [(3 k + a) stride] from the pointer returned.
   const T* triangleValues(std::uint32_t cooked, std::uint32_t& stride) const {
     const std::uint32_t code = leafLane[cooked], lane = code & 3u;
     stride = code >> 2;
-    return leafVertices.data() + (9 * std::size_t(cooked) - 8 * std::size_t(lane));  // 9 (cooked - lane) + lane
+    return leafVertices.data() + (10 * std::size_t(cooked) - 9 * std::size_t(lane));  // 10 (cooked - lane) + lane
   }
   // Vertex k (0-2) of cooked triangle `cooked`, as stored (the input vertex; triangles[cooked][k] indexes it).
   Vec3<T> triangleVertex(std::uint32_t cooked, int k) const {
@@ -100,6 +117,10 @@ template <class T> struct TriangleMesh {
     const T* x = triangleValues(cooked, n);
     return vertexIn(x, n, k);
   }
+
+ private:
+  using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+  static constexpr Bits kIndexFlip = Bits(1) << (8 * sizeof(T) - 2);
 };
 
 struct MeshCookReport {

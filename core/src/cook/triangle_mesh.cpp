@@ -84,11 +84,11 @@ template <class T> std::vector<std::uint32_t> hullVertexIndices(const std::vecto
   return out;
 }
 
-// The cooked triangles' vertex rows, leaf by leaf (TriangleMesh::leafVertices, leafLane), from the tree's leaves
-// (each cooked triangle is in exactly one).
+// The cooked triangles' vertex and index rows, leaf by leaf (TriangleMesh::leafVertices, leafLane), from the tree's
+// leaves (each cooked triangle is in exactly one).
 template <class T> void storeLeafVertices(const MeshBvh& bvh, TriangleMesh<T>& mesh) {
   const std::size_t n = mesh.triangles.size();
-  mesh.leafVertices.assign(9 * n + 3, T(0));
+  mesh.leafVertices.assign(10 * n + 3, T(0));
   mesh.leafLane.assign(n, 0);
   auto store = [&](std::uint32_t ref) {
     if (!MeshBvhNode::isLeaf(ref)) return;
@@ -99,6 +99,7 @@ template <class T> void storeLeafVertices(const MeshBvh& bvh, TriangleMesh<T>& m
       for (std::uint32_t k = 0; k < 3; ++k)
         for (std::uint32_t a = 0; a < 3; ++a)
           rows[(3 * k + a) * count + lane] = mesh.vertices[mesh.triangles[first + lane][k]][a];
+      rows[9 * count + lane] = TriangleMesh<T>::indexValue(mesh.inputIndex[first + lane]);
     }
   };
   store(bvh.rootChild);

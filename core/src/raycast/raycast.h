@@ -101,8 +101,9 @@ template <class T> struct MeshRayHit {
   HitFlags flags;
 };
 
-// A triangle the mesh walk hit: its cooked index, the exact test's hit, and where its vertex values are
-// (TriangleMesh::triangleValues: vertex k's axis a at values[(3 k + a) stride]), so the hit fill looks nothing up.
+// A triangle the mesh walk hit: its cooked index, the exact test's hit, and where its values are (TriangleMesh::
+// triangleValues: vertex k's axis a at values[(3 k + a) stride], its input index at values[9 stride]), so the hit fill
+// looks nothing up.
 template <class T> struct MeshTriangleHit {
   std::uint32_t cooked;
   std::uint32_t stride;

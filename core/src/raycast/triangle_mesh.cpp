@@ -101,8 +101,13 @@ template <class T> class MeshRaycaster {
   template <bool kAvx2> int candidates(const LeafRows<T>& rows, T maxT, TriangleHits4<T>& hits) const {
     return exactTriangleHits<T, kAvx2>(rows, ray4_, maxT, cull_, hits) & ((1 << rows.stride) - 1);
   }
+  bool slabsMayGiveNaN() const { return bvhRay_.mayGiveNaN != 0; }
   LeafRows<T> leafRows(std::uint32_t leafRef) const {
     return {mesh_.leafValues(MeshBvhNode::leafFirst(leafRef)), MeshBvhNode::leafCount(leafRef)};
+  }
+
+  static std::uint32_t inputIndexOf(const MeshTriangleHit<T>& h) {
+    return TriangleMesh<T>::inputIndexIn(h.values, h.stride);
   }
 
   // The hit of candidate lane `lane` (triangle `cooked`) within maxT: taken from the wide test when it decided the
@@ -146,7 +151,7 @@ template <class T> class MeshRaycaster {
       forEachHitNear<Lanes::kAvx2>(ref, bestT, [&](const MeshTriangleHit<T>& h) {
         const T t = h.tri.t;
         const bool before =
-            found ? t < bestT || (t == bestT && mesh_.inputIndex[h.cooked] < mesh_.inputIndex[best.cooked])
+            found ? t < bestT || (t == bestT && inputIndexOf(h) < inputIndexOf(best))
                   : t <= maxDist;
         if (before) {
           best = h;
@@ -273,9 +278,11 @@ struct MultipleWalk {
 // the walk into it). (Arguments passed through, not captured by a lambda: the walk read the ray constants through the
 // closure's pointers, measured 105 instructions more per bunny ray.)
 #ifdef GQ_SSE42
-template <class Walk, class... Args>
-__attribute__((target("avx2"), flatten)) auto withAvx2Lanes(Args&&... args) {
-  return Walk::template run<Bvh8LanesAvx2>(args...);
+// The node test's short form for the rays it serves (Bvh8LanesAvx2NaNFree), the NaN-first one for the others.
+template <class Walk, class T, class... Args>
+__attribute__((target("avx2"), flatten)) auto withAvx2Lanes(const MeshRaycaster<T>& caster, Args&&... args) {
+  if (caster.slabsMayGiveNaN()) return Walk::template run<Bvh8LanesAvx2>(caster, args...);
+  return Walk::template run<Bvh8LanesAvx2NaNFree>(caster, args...);
 }
 #endif
 // The baseline walk out of line too: inlined into the caller, its registers and stack frame would be paid by every ray.
@@ -399,7 +406,7 @@ template <bool kCooked, class Hit>
   }
   if constexpr (std::is_same_v<Hit, RaycastHit<T>>) hit.position = position;
   hit.distance = tri.t;
-  hit.faceIndex = g.mesh->inputIndex[found.cooked];
+  hit.faceIndex = TriangleMesh<T>::inputIndexIn(found.values, found.stride);  // from the rows the hit was tested on
   hit.u = T(0);
   hit.v = T(0);
   if (asked.has(HitFlag::UV)) {

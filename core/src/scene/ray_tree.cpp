@@ -57,7 +57,10 @@ template <class T>
 __attribute__((target("avx2"), flatten)) void walkAvx2(const Bvh8& bvh, const std::uint32_t* instanceOf,
                                                       const BvhRay<8>& ray, T limit,
                                                       typename SceneRayTree<T>::Visit visit, void* context) {
-  walkLeaves<Bvh8LanesAvx2>(bvh, instanceOf, ray, limit, visit, context);
+  if (ray.mayGiveNaN)
+    walkLeaves<Bvh8LanesAvx2>(bvh, instanceOf, ray, limit, visit, context);
+  else
+    walkLeaves<Bvh8LanesAvx2NaNFree>(bvh, instanceOf, ray, limit, visit, context);
 }
 #endif
 
