@@ -15,11 +15,13 @@ namespace gq {
 // (one AVX load per bound plane; a node is exactly 4 cache lines and its address a shift of its index).
 template <int W> struct alignas(64) BvhNode {
   static constexpr int kWidth = W;
+  // child[i]: an inner node index, or a leaf (kLeafBit set): first primitive and count, see bvh kernels. First, in the
+  // cache line of minX, which every node test reads: the reference of the child a ray takes is then fetched with the
+  // bounds, not after the test.
+  std::uint32_t child[W];
   // Structure-of-arrays child bounds: lane i belongs to child i.
   float minX[W], minY[W], minZ[W];
   float maxX[W], maxY[W], maxZ[W];
-  // child[i]: an inner node index, or a leaf (kLeafBit set): first primitive and count, see bvh kernels.
-  std::uint32_t child[W];
   static constexpr std::uint32_t kLeafBit = 0x80000000u;
   static constexpr std::uint32_t kEmpty = 0xffffffffu;
   // Leaf reference layout: kLeafBit | (count - 1) << kLeafCountShift | first primitive (28 bits).
