@@ -317,7 +317,7 @@ __attribute__((target("avx2"))) inline __m256 slab8(const float* plane, const fl
 // kNaNFirst: the max and min NaN-first, as intersectLanes4, for any ray. Otherwise, for rays none of whose slab
 // distances can be NaN (BvhRay::mayGiveNaN zero), the same max and min in two steps, not a chain of three: max and min
 // of non-NaN values are exact, so the masks and entry distances are the same, and the node test is on the walk's
-// critical path (measured 2-4 % off a bunny ray). (Two levels cannot take both operands of one max NaN-first: a ray
+// critical path (measured about 1 % off a bunny ray). (Two levels cannot take both operands of one max NaN-first: a ray
 // parallel to two axes with its origin on a box's plane would then enter boxes beside it.)
 template <bool kFarOrigin, bool kNaNFirst>
 __attribute__((target("avx2"))) inline int intersectLanes8(const Bvh8Node& node, const BvhRay<8>& ray, float tMax,
