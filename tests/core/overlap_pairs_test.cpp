@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "gq/custom.h"
 #include "gq/query.h"
@@ -22,6 +23,32 @@ TYPED_TEST(Overlap, SphereSphereTouchingCountsAsOverlapping) {
   const Geometry<T> s = SphereGeometry<T>(T(0.5));
   EXPECT_TRUE(overlaps<T>(s, Transform<T>(), s, Transform<T>(Vec3<T>(1, 0, 0))));
   EXPECT_FALSE(overlaps<T>(s, Transform<T>(), s, Transform<T>(Vec3<T>(1 + 8 * gap<T>(), 0, 0))));
+}
+
+// Radii whose squares underflow T: |d| <= r is still decided on the sizes themselves (squared, a distance 1e6 radii
+// away and the radius both rounded to 0 and read as touching), by overlap and penetration of sphere against sphere,
+// box and capsule (found by fuzz_pair_queries: spheres 7e-304 and 2e-323 wide, 1.8e-284 apart). (Radii whose squares
+// overflow are beyond the supported magnitude, which validation rejects.)
+TYPED_TEST(Overlap, SpheresWhoseSquaredSizesUnderflowAreApartOrOverlappingByTheirSizes) {
+  using T = TypeParam;
+  const bool isFloat = std::is_same_v<T, float>;
+  for (const T r : {T(isFloat ? 1e-25 : 1e-200), T(isFloat ? 1e-30 : 1e-300)}) {
+    const T far = r * T(1e6);  // far apart relative to the radii (the square of either side leaves the range)
+    const std::vector<Geometry<T>> others = {SphereGeometry<T>(r), BoxGeometry<T>(r, r, r), CapsuleGeometry<T>(r, r)};
+    for (const Geometry<T>& other : others) {
+      const Geometry<T> sphere = SphereGeometry<T>(r);
+      const Transform<T> apart(Vec3<T>(0, far, 0)), touching(Vec3<T>(0, r, 0));
+      EXPECT_FALSE(overlaps<T>(sphere, Transform<T>(), other, apart)) << r << " " << int(other.type());
+      EXPECT_TRUE(overlaps<T>(sphere, Transform<T>(), other, touching)) << r << " " << int(other.type());
+      PenetrationResult<T> pen;
+      ASSERT_TRUE(computePenetration(pen, sphere, Transform<T>(), other, apart).ok());
+      EXPECT_FALSE(pen.penetrating) << r << " " << int(other.type());
+      ASSERT_TRUE(computePenetration(pen, sphere, Transform<T>(), other, touching).ok());
+      EXPECT_TRUE(pen.penetrating) << r << " " << int(other.type());
+      EXPECT_GT(pen.depth, T(0));
+      EXPECT_LE(pen.depth, T(2.5) * r);
+    }
+  }
 }
 
 TYPED_TEST(Overlap, PlaneIsASolidHalfSpace) {

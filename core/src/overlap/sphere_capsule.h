@@ -2,6 +2,7 @@
 // Sphere/capsule overlap, inline: the façade's cell (dispatch/overlap.cpp) runs it without a call or the poses'
 // copies, and the public kernels (sphere_capsule.cpp) are this code.
 #include "common/rotated_axis.h"
+#include "common/unit_vector.h"
 #include "gq/geometry.h"
 #include "shapes/segment.h"
 
@@ -12,8 +13,7 @@ template <class T>
 [[gnu::always_inline]] inline bool sphereCapsuleOverlaps(const Vec3<T>& c0, T r0, const Vec3<T>& c1, const Vec3<T>& a1,
                                                          T r1) {
   const Vec3<T> q = closestPointOnSegment(Vec3<T>(c1 - a1), Vec3<T>(c1 + a1), c0);
-  const T r = r0 + r1;
-  return (c0 - q).squaredNorm() <= r * r;
+  return normWithin(Vec3<T>(c0 - q), r0 + r1);
 }
 
 // The capsule's half axis is its rotation's X column times the half height (rotatedX).

@@ -17,9 +17,8 @@ template <class T>
   const Vec3<T> c = p1.transformInv(p0.p);
   const Vec3<T> q = c.cwiseMax(-g1.halfExtents).cwiseMin(g1.halfExtents);
   const Vec3<T> d = c - q;
-  const T dist2 = d.squaredNorm();
-  if (dist2 > T(0)) {
-    const T len = std::sqrt(dist2);
+  if (q != c) {  // outside (|d|^2 may underflow to 0 while d is not 0)
+    const T dist2 = d.squaredNorm(), len = normFromSquared(d, dist2);
     if (len > g0.radius) return false;
     Vec3<T> unit;
     if (!tryUnitWithNorm(d, dist2, len, unit)) [[unlikely]]

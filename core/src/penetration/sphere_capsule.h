@@ -19,7 +19,7 @@ template <class T>
   const Vec3<T> axis = rotatedX(p1.q, g1.halfHeight);
   const Vec3<T> q = closestPointOnSegment(Vec3<T>(p1.p - axis), Vec3<T>(p1.p + axis), p0.p);
   const Vec3<T> d = p0.p - q;
-  const T len2 = d.squaredNorm(), len = std::sqrt(len2);
+  const T len2 = d.squaredNorm(), len = normFromSquared(d, len2);
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;
   if (!tryUnitWithNorm(d, len2, len, direction)) [[unlikely]]

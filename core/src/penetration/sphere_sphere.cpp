@@ -8,7 +8,7 @@ template <class T>
 bool penetrationSphereSphere(const SphereGeometry<T>& g0, const Transform<T>& p0, const SphereGeometry<T>& g1, const Transform<T>& p1,
                              Vec3<T>& direction, T& depth) {
   const Vec3<T> d = p0.p - p1.p;
-  const T len2 = d.squaredNorm(), len = std::sqrt(len2);
+  const T len2 = d.squaredNorm(), len = normFromSquared(d, len2);
   const T pen = g0.radius + g1.radius - len;
   if (!(pen >= T(0))) return false;
   if (!tryUnitWithNorm(d, len2, len, direction)) direction = Vec3<T>::UnitX();

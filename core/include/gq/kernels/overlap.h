@@ -9,6 +9,7 @@
 
 #include "gq/geometry.h"
 #include "gq/kernels/gjk.h"
+#include "gq/kernels/vector.h"
 #include "gq/transform.h"
 
 namespace gq::kernels {
@@ -38,13 +39,12 @@ namespace gq::kernels {
 // The sphere pairs' closed forms are a few instructions: inline (as calls, with the centre spilled to pass it, they
 // cost the adapter's sphere rows 10-20 instructions each).
 template <class T> inline bool overlapSphereSphere(const Vec3<T>& c0, T r0, const Vec3<T>& c1, T r1) {
-  const T r = r0 + r1;
-  return (c0 - c1).squaredNorm() <= r * r;
+  return normWithin(Vec3<T>(c0 - c1), r0 + r1);
 }
 template <class T> bool overlapSphereCapsule(const Vec3<T>& c0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1);
 template <class T> inline bool overlapSphereBox(const Vec3<T>& cInBox, T r0, const Vec3<T>& h) {
   const Vec3<T> q = cInBox.cwiseMax(-h).cwiseMin(h);  // the box point nearest the centre
-  return (cInBox - q).squaredNorm() <= r0 * r0;
+  return normWithin(Vec3<T>(cInBox - q), r0);
 }
 template <class T> bool overlapCapsuleCapsule(const Vec3<T>& c0, const Vec3<T>& a0, T r0, const Vec3<T>& c1, const Vec3<T>& a1, T r1);
 template <class T> bool overlapCapsuleBox(const Vec3<T>& cInBox, const Vec3<T>& aInBox, T r0, const Vec3<T>& h);

@@ -33,6 +33,22 @@ template <class T> inline T rangeSafeNorm(const Vec3<T>& d) {
   return scale * (d / scale).norm();
 }
 
+// |d| <= r: the squares compared while r^2 is in T's normal range, rangeSafeNorm(d) <= r where it is not (a radius
+// whose square under- or overflows: |d|^2 would then round with it, 0 <= 0 for spheres 1e20 radii apart).
+template <class T> inline bool normWithin(const Vec3<T>& d, T r) {
+  const T rr = r * r;
+  if (rr >= std::numeric_limits<T>::min() && rr <= std::numeric_limits<T>::max()) [[likely]]
+    return d.squaredNorm() <= rr;
+  return rangeSafeNorm(d) <= r;
+}
+
+// |d| given len2 = |d|^2: its square root, or rangeSafeNorm(d) where len2 over- or underflowed.
+template <class T> inline T normFromSquared(const Vec3<T>& d, T len2) {
+  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) [[likely]]
+    return std::sqrt(len2);
+  return rangeSafeNorm(d);
+}
+
 // d / |d|, or `fallback` for d = 0 (or non-finite d).
 template <class T> inline Vec3<T> unitOr(const Vec3<T>& d, const Vec3<T>& fallback) {
   Vec3<T> unit;
